@@ -1,0 +1,48 @@
+#include "cli_util.hpp"
+
+#include <fmt/format.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstring>
+#include <fstream>
+#include <sstream>
+
+#include "fogdrift/csv.hpp"
+#include "fogdrift/error.hpp"
+
+namespace fogdrift::app {
+
+std::vector<double> parse_number_list(const std::string& text, const std::string& option) {
+  std::vector<double> values;
+  std::size_t pos = 0;
+  while (pos <= text.size()) {
+    const std::size_t comma = text.find(',', pos);
+    const std::string item =
+        text.substr(pos, comma == std::string::npos ? std::string::npos : comma - pos);
+    const auto v = csv::parse_number(item);
+    if (!v) {
+      throw OptionError(option, fmt::format("'{}' in '{}' is not a number (give a comma-separated "
+                                            "list such as -40,-30,25)",
+                                            item, text));
+    }
+    values.push_back(*v);
+    if (comma == std::string::npos) break;
+    pos = comma + 1;
+  }
+  return values;
+}
+
+std::string read_text_file(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(path, 0, 0, fmt::format("cannot open ({})", std::strerror(errno)));
+  std::stringstream buffer;
+  buffer << in.rdbuf();
+  return buffer.str();
+}
+
+bool stderr_is_terminal() {
+  return ::isatty(STDERR_FILENO) == 1;
+}
+
+}  // namespace fogdrift::app

@@ -1,0 +1,18 @@
+// Small helpers shared by the subcommands: parsing lists, reading files, terminal detection.
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace fogdrift::app {
+
+/// "-40,-30,25" -> {-40, -30, 25}; throws OptionError naming `option` on a bad element.
+std::vector<double> parse_number_list(const std::string& text, const std::string& option);
+
+/// Whole file as text; throws InputError if it cannot be read.
+std::string read_text_file(const std::string& path);
+
+/// True when standard error is a terminal (progress lines are shown only then).
+bool stderr_is_terminal();
+
+}  // namespace fogdrift::app

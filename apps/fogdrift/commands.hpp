@@ -1,0 +1,14 @@
+// Subcommands of the fogdrift tool. Each file adds one subcommand to the app; the library does
+// the work, the command decides what to print.
+#pragma once
+
+#include <CLI/CLI.hpp>
+
+namespace fogdrift::app {
+
+void add_simulate(CLI::App& app);
+void add_inspect(CLI::App& app);
+void add_import(CLI::App& app);
+void add_demo(CLI::App& app);
+
+}  // namespace fogdrift::app

@@ -1,0 +1,143 @@
+// fogdrift inspect: validate a recording or a campaign and summarise it (like svm-checkdata).
+#include <fmt/format.h>
+
+#include <filesystem>
+#include <iostream>
+#include <memory>
+#include <nlohmann/json.hpp>
+
+#include "commands.hpp"
+#include "fogdrift/campaign.hpp"
+#include "fogdrift/error.hpp"
+#include "fogdrift/inspect.hpp"
+#include "fogdrift/recording.hpp"
+
+namespace fs = std::filesystem;
+
+namespace fogdrift::app {
+namespace {
+
+nlohmann::ordered_json summary_json(const RecordingSummary& s) {
+  nlohmann::ordered_json j;
+  j["samples"] = s.samples;
+  j["start_s"] = s.start_s;
+  j["end_s"] = s.end_s;
+  j["duration_s"] = s.duration_s;
+  j["sample_rate_hz"] = s.sample_rate_hz;
+  j["gaps"] = s.gaps;
+  j["longest_step_s"] = s.longest_gap_s;
+  for (const auto& c : s.columns) {
+    j["columns"][c.name] = {{"min", c.min}, {"max", c.max}, {"mean", c.mean}, {"std", c.std}};
+  }
+  j["extra_columns"] = s.extra_columns;
+  return j;
+}
+
+void print_recording(const std::string& path, const RecordingSummary& s) {
+  std::cout << fmt::format("{}: valid fogdrift recording\n", path);
+  std::cout << fmt::format("  samples     {}\n  time        {} .. {} s ({:.1f} min)\n", s.samples,
+                           s.start_s, s.end_s, s.duration_s / 60.0);
+  std::cout << fmt::format(
+      "  sampling    {:.6g} Hz (median step {:.6g} s), {} gaps > 1.5 steps, "
+      "longest step {:.6g} s\n",
+      s.sample_rate_hz, s.sample_interval_s, s.gaps, s.longest_gap_s);
+  std::cout << fmt::format("  {:<16}{:>14}{:>14}{:>14}{:>14}\n", "column", "min", "max", "mean",
+                           "std");
+  for (const auto& c : s.columns) {
+    std::cout << fmt::format("  {:<16}{:>14.6g}{:>14.6g}{:>14.6g}{:>14.6g}\n", c.name, c.min, c.max,
+                             c.mean, c.std);
+  }
+  if (!s.extra_columns.empty()) {
+    std::string list;
+    for (const auto& e : s.extra_columns) list += (list.empty() ? "" : ", ") + e;
+    std::cout << "  extra       " << list << " (kept, not used by the method)\n";
+  }
+}
+
+int inspect_campaign(const fs::path& path, bool json) {
+  const Campaign c = read_campaign(path);
+  int failures = 0;
+  nlohmann::ordered_json out;
+  out["campaign"] = c.dir.string();
+  out["latitude_deg"] = c.latitude_deg;
+  if (!json) {
+    std::cout << fmt::format("{}: campaign, latitude {}°, {} recordings\n", c.dir.string(),
+                             c.latitude_deg, c.recordings.size());
+    std::cout << fmt::format(
+        "  {:<28}{:<12}{:<6}{:>4}{:>8}{:>8}{:>9}{:>6}{:>17}{:>17}{:>17}{:>11}"
+        "{:>10}\n",
+        "file", "scenario", "role", "rep", "T0 °C", "samples", "min", "Hz", "T_fog °C", "T_acc1 °C",
+        "T_acc2 °C", "gyro °/h", "std °/h");
+  }
+  for (const auto& e : c.recordings) {
+    nlohmann::ordered_json r;
+    r["file"] = e.file;
+    r["scenario"] = to_string(e.scenario);
+    r["role"] = to_string(e.role);
+    try {
+      const Recording rec = read_recording(c.path_of(e));
+      const RecordingSummary s = summarize(rec);
+      r["summary"] = summary_json(s);
+      if (!json) {
+        auto range = [&](std::size_t i) {
+          return fmt::format("{:.2f}..{:.2f}", s.columns[i].min, s.columns[i].max);
+        };
+        std::cout << fmt::format(
+            "  {:<28}{:<12}{:<6}{:>4}{:>8.1f}{:>8}{:>9.1f}{:>6.3g}{:>17}{:>17}{:>17}{:>11.4f}"
+            "{:>10.4f}\n",
+            e.file, to_string(e.scenario), to_string(e.role), e.repetition, e.initial_temp_degc,
+            s.samples, s.duration_s / 60.0, s.sample_rate_hz, range(1), range(2), range(3),
+            s.columns[0].mean, s.columns[0].std);
+      }
+    } catch (const InputError& err) {
+      ++failures;
+      r["error"] = err.what();
+      std::cerr << "fogdrift: error: " << err.what() << "\n";
+    }
+    out["recordings"].push_back(r);
+  }
+  out["valid"] = failures == 0;
+  if (json)
+    std::cout << out.dump(2) << "\n";
+  else if (failures == 0)
+    std::cout << "campaign is valid\n";
+  else
+    std::cout << fmt::format("campaign has {} invalid recording(s)\n", failures);
+  return failures == 0 ? 0 : 1;
+}
+
+}  // namespace
+
+void add_inspect(CLI::App& app) {
+  auto* cmd = app.add_subcommand(
+      "inspect",
+      "Validate a recording (CSV) or a campaign (folder or campaign.json) and summarise it:\n"
+      "duration, sample rate, gaps, temperature ranges per thermometer, gyro mean and STD.\n"
+      "Exit status 0 when everything is valid, 1 with the error (file:line:column: rule) "
+      "otherwise.");
+  auto path = std::make_shared<std::string>();
+  auto json = std::make_shared<bool>(false);
+  cmd->add_option("PATH", *path, "Recording CSV, campaign folder or campaign.json")->required();
+  cmd->add_flag("--json", *json, "Print the summary as JSON");
+  cmd->callback([path, json] {
+    const fs::path p(*path);
+    int status = 0;
+    if (fs::is_directory(p) || p.extension() == ".json") {
+      status = inspect_campaign(p, *json);
+    } else {
+      const Recording rec = read_recording(p);
+      const RecordingSummary s = summarize(rec);
+      if (*json) {
+        nlohmann::ordered_json j = summary_json(s);
+        j["file"] = p.string();
+        j["valid"] = true;
+        std::cout << j.dump(2) << "\n";
+      } else {
+        print_recording(p.string(), s);
+      }
+    }
+    if (status != 0) throw CLI::RuntimeError(status);
+  });
+}
+
+}  // namespace fogdrift::app

@@ -1,0 +1,155 @@
+// fogdrift simulate: the built-in north-finding-system simulator and the paper's protocols.
+#include <fmt/format.h>
+
+#include <chrono>
+#include <iostream>
+#include <memory>
+
+#include "cli_util.hpp"
+#include "commands.hpp"
+#include "fogdrift/error.hpp"
+#include "fogdrift/sim/instrument.hpp"
+#include "fogdrift/sim/scenarios.hpp"
+
+namespace fogdrift::app {
+namespace {
+
+struct SimulateArgs {
+  std::string out;
+  std::uint64_t seed = 1;
+  std::string instrument_file;
+  double rate_hz = 1.0;
+  double latitude_deg = 30.0;
+  std::string temps;
+  bool force = false;
+  int repetitions = 4;
+  int test_repetitions = 1;
+  int findings = 0;
+  double position_s = 90.0;
+  double warmup_s = 7200.0;
+};
+
+sim::Instrument load_instrument(const std::string& file) {
+  if (file.empty()) return sim::Instrument{};
+  return sim::instrument_from_json(read_text_file(file), file);
+}
+
+void add_common(CLI::App* cmd, SimulateArgs& a) {
+  cmd->add_option("--out,-o", a.out, "Campaign folder to create (must not exist or be empty)")
+      ->required();
+  cmd->add_option("--seed", a.seed, "Random seed; the same seed gives the same files")
+      ->capture_default_str();
+  cmd->add_option("--instrument", a.instrument_file,
+                  "Instrument parameters (JSON); omitted ones keep their defaults. "
+                  "'fogdrift simulate --print-instrument' prints them all");
+  cmd->add_option("--rate-hz", a.rate_hz, "Logger output rate, Hz")->capture_default_str();
+  cmd->add_option("--latitude", a.latitude_deg, "Site latitude, degrees")->capture_default_str();
+  cmd->add_flag("--force", a.force, "Replace --out if it exists (only after success)");
+}
+
+void finish(const SimulateArgs& a, const sim::SimulatedCampaign& campaign,
+            std::chrono::steady_clock::time_point start, std::string_view scenario) {
+  sim::write_campaign(a.out, campaign, a.force);
+  const double elapsed =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  std::cout << fmt::format("wrote {} {} recordings and campaign.json to {} (seed {}, {:.1f} s)\n",
+                           campaign.recordings.size(), scenario, a.out, a.seed, elapsed);
+}
+
+}  // namespace
+
+void add_simulate(CLI::App& app) {
+  auto* cmd = app.add_subcommand(
+      "simulate",
+      "Simulate a north-finding system in a thermal chamber and write a campaign folder.\n"
+      "The model (thermal network, IEEE Std 952 drift, FOG noise, accelerometers, turntable) is\n"
+      "described in docs/simulator.md. Examples:\n"
+      "  fogdrift simulate calibration --out cal --seed 1     # paper §4.1: 11 temps x 4 reps\n"
+      "  fogdrift simulate northfind --out nf --temps -32,17,54\n"
+      "  fogdrift simulate stable --out st\n"
+      "  fogdrift simulate --print-instrument > unit.json     # edit, then --instrument unit.json");
+  auto args = std::make_shared<SimulateArgs>();
+  auto print = std::make_shared<bool>(false);
+  cmd->add_flag("--print-instrument", *print,
+                "Print the default instrument parameters as JSON and exit");
+  cmd->require_subcommand(0, 1);
+  cmd->callback([cmd, print] {
+    if (*print) {
+      std::cout << sim::to_json(sim::Instrument{});
+    } else if (cmd->get_subcommands().empty()) {
+      throw CLI::CallForHelp();
+    }
+  });
+
+  auto* cal = cmd->add_subcommand(
+      "calibration",
+      "Paper §4.1: chamber steps from -40 to 60 °C by 10 °C, one-hour cycles (20 min soak, 30 min "
+      "powered and recorded, 10 min ramp), repeated; the last repetition is the test set.");
+  add_common(cal, *args);
+  cal->add_option("--temps", args->temps, "Chamber temperatures, °C, comma-separated")
+      ->default_str("-40,-30,...,60");
+  cal->add_option("--repetitions", args->repetitions, "Temperature sweeps")->capture_default_str();
+  cal->add_option("--test-repetitions", args->test_repetitions, "The last N sweeps get role 'test'")
+      ->capture_default_str();
+  cal->callback([args] {
+    const auto start = std::chrono::steady_clock::now();
+    sim::CalibrationOptions o;
+    if (!args->temps.empty()) o.temps_degc = parse_number_list(args->temps, "--temps");
+    o.repetitions = args->repetitions;
+    o.test_repetitions = args->test_repetitions;
+    o.seed = args->seed;
+    o.output_rate_hz = args->rate_hz;
+    o.latitude_deg = args->latitude_deg;
+    finish(*args, sim::simulate_calibration(load_instrument(args->instrument_file), o), start,
+           "calibration");
+  });
+
+  auto* nf = cmd->add_subcommand(
+      "northfind",
+      "Paper §4.2: at each initial temperature, power on and make four-position north-findings "
+      "back to back during the start-up; the true azimuth is in the manifest.");
+  add_common(nf, *args);
+  nf->add_option("--temps", args->temps, "Initial temperatures, °C, comma-separated")
+      ->default_str("-32,-16,-5,17,28,43,54");
+  nf->add_option("--findings", args->findings, "Findings per recording")->default_str("5");
+  nf->add_option("--position-s", args->position_s, "Seconds per position, rotation included")
+      ->capture_default_str();
+  nf->callback([args] {
+    const auto start = std::chrono::steady_clock::now();
+    sim::NorthfindOptions o;
+    if (!args->temps.empty()) o.temps_degc = parse_number_list(args->temps, "--temps");
+    if (args->findings != 0) o.findings = args->findings;
+    o.position_s = args->position_s;
+    o.seed = args->seed;
+    o.output_rate_hz = args->rate_hz;
+    o.latitude_deg = args->latitude_deg;
+    finish(*args, sim::simulate_northfind(load_instrument(args->instrument_file), o), start,
+           "northfind");
+  });
+
+  auto* st = cmd->add_subcommand(
+      "stable",
+      "The stable-stage reference: four-position findings after a long powered warm-up at room "
+      "temperature.");
+  add_common(st, *args);
+  st->add_option("--temps", args->temps, "Temperatures, °C, comma-separated")->default_str("25");
+  st->add_option("--findings", args->findings, "Findings per recording")->default_str("20");
+  st->add_option("--warmup-s", args->warmup_s, "Powered warm-up before recording, s")
+      ->capture_default_str();
+  st->add_option("--position-s", args->position_s, "Seconds per position, rotation included")
+      ->capture_default_str();
+  st->callback([args] {
+    const auto start = std::chrono::steady_clock::now();
+    sim::NorthfindOptions o = sim::stable_defaults();
+    if (!args->temps.empty()) o.temps_degc = parse_number_list(args->temps, "--temps");
+    if (args->findings != 0) o.findings = args->findings;
+    o.warmup_s = args->warmup_s;
+    o.position_s = args->position_s;
+    o.seed = args->seed;
+    o.output_rate_hz = args->rate_hz;
+    o.latitude_deg = args->latitude_deg;
+    finish(*args, sim::simulate_stable(load_instrument(args->instrument_file), o), start, "stable");
+  });
+}
+
+}  // namespace fogdrift::app

@@ -1,0 +1,29 @@
+// Atomic output: a file or a folder appears complete under its final name, or not at all.
+//
+// Writers produce into a temporary sibling ("NAME.tmp-XXXXXX") and rename it into place once
+// everything is written and flushed, so a failed run never leaves a half-written output behind.
+#pragma once
+
+#include <filesystem>
+#include <functional>
+#include <ostream>
+#include <string>
+
+namespace fogdrift {
+
+/// Writes `path` atomically. `write` fills the stream; if it throws, or the stream fails, the
+/// temporary file is removed, `path` is left as it was, and the error propagates.
+void write_file_atomically(const std::filesystem::path& path,
+                           const std::function<void(std::ostream&)>& write);
+
+/// Convenience: writes `text` to `path` atomically.
+void write_text_atomically(const std::filesystem::path& path, const std::string& text);
+
+/// Fills a folder atomically. `fill` receives a fresh temporary folder beside `dir`; when it
+/// returns, the folder is renamed to `dir`. `dir` must not exist or be empty, unless `replace`
+/// is true, in which case an existing `dir` is replaced only after `fill` succeeded. On any error
+/// the temporary folder is removed and `dir` is left untouched.
+void fill_directory_atomically(const std::filesystem::path& dir, bool replace,
+                               const std::function<void(const std::filesystem::path&)>& fill);
+
+}  // namespace fogdrift

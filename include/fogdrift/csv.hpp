@@ -1,0 +1,51 @@
+// Strict, locale-independent CSV reading and writing shared by recordings and the importer.
+//
+// The dialect is RFC 4180 as pandas, MATLAB (readtable) and Excel write it: one header row, a
+// delimiter (comma by default), fields optionally in double quotes with "" for a quote, LF or
+// CRLF line ends, an optional UTF-8 byte-order mark. Numbers are read with std::from_chars, never
+// through the C locale, and written in the shortest form that reads back to the same double.
+#pragma once
+
+#include <cstddef>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace fogdrift::csv {
+
+/// A CSV file read into memory, as text fields. Every row has the header's number of fields.
+struct Table {
+  std::string file;                            ///< name used in error messages
+  std::vector<std::string> header;             ///< column names, in file order, unique
+  std::vector<std::vector<std::string>> rows;  ///< data rows
+  std::vector<std::size_t> row_line;           ///< 1-based line of each data row in the file
+
+  /// Index of the column named `name`, if present.
+  std::optional<std::size_t> find(std::string_view name) const;
+};
+
+struct ReadOptions {
+  char delimiter = ',';  ///< field separator: ',' (default), ';' or '\t'
+};
+
+/// Reads and tokenises `path`. Throws InputError for: a missing or unreadable file, an empty file,
+/// an empty or duplicated column name, a row with a different number of fields than the header,
+/// an empty line between data rows, an unterminated quote. Trailing empty lines are allowed.
+Table read(const std::string& path, const ReadOptions& options = {});
+
+/// Same as read(), from text already in memory; `file` names it in error messages.
+Table parse(std::string_view text, const std::string& file, const ReadOptions& options = {});
+
+/// Parses a finite decimal number ("1.5", "-2e-3", "+4"); surrounding spaces are allowed.
+/// Returns nothing for an empty field, text, "nan", "inf" or an out-of-range value.
+/// With `decimal_comma`, a single ',' is read as the decimal point ("1,5").
+std::optional<double> parse_number(std::string_view field, bool decimal_comma = false);
+
+/// Shortest decimal text that reads back to exactly `value` (std::to_chars), e.g. "0.1", "1e-07".
+std::string format_number(double value);
+
+/// `field` quoted when it holds the delimiter, a quote, a line break or edge spaces.
+std::string quote(std::string_view field, char delimiter = ',');
+
+}  // namespace fogdrift::csv

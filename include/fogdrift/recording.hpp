@@ -1,0 +1,71 @@
+// A recording: one logger file of a north-finding system (NFS), one row per sample.
+//
+// File format (docs/formats.md): CSV with a header row. Required columns, in any order:
+//   time_s          seconds since power-on, strictly increasing
+//   gyro_dph        FOG rate output, °/h
+//   temp_fog_degc   FOG built-in thermometer, °C
+//   temp_acc1_degc  accelerometer 1 built-in thermometer, °C
+//   temp_acc2_degc  accelerometer 2 built-in thermometer, °C
+// Optional columns: accel_x_g, accel_y_g (accelerometers, g), table_deg (turntable angle, °),
+// chamber_degc (chamber air, °C, for reference only). Any other column is kept verbatim and
+// ignored by the method.
+#pragma once
+
+#include <cstddef>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace fogdrift {
+
+/// A column fogdrift does not interpret, kept as text so that a round trip loses nothing.
+struct ExtraColumn {
+  std::string name;
+  std::vector<std::string> cells;
+};
+
+struct Recording {
+  std::vector<double> time_s;
+  std::vector<double> gyro_dph;
+  std::vector<double> temp_fog_degc;
+  std::vector<double> temp_acc1_degc;
+  std::vector<double> temp_acc2_degc;
+  std::optional<std::vector<double>> accel_x_g;
+  std::optional<std::vector<double>> accel_y_g;
+  std::optional<std::vector<double>> table_deg;
+  std::optional<std::vector<double>> chamber_degc;
+  std::vector<ExtraColumn> extra;
+  /// Where the recording was read from (for messages); empty for one made in memory.
+  std::string source;
+
+  std::size_t size() const { return time_s.size(); }
+
+  /// Column `name` as numbers: a known column, or an extra one parsed strictly.
+  /// Throws InputError (file, line, column) if an extra cell is not a finite number, and
+  /// std::out_of_range naming the column if there is no such column.
+  std::vector<double> numeric_column(std::string_view name) const;
+  bool has_column(std::string_view name) const;
+};
+
+/// The required and optional column names, in the order fogdrift writes them.
+const std::vector<std::string>& required_columns();
+const std::vector<std::string>& optional_columns();
+
+/// Reads a recording, strictly: throws InputError naming file, line and column for a missing
+/// required column, a non-number, NaN or Inf in a known column, a time that does not strictly
+/// increase, a negative time, fewer than 2 samples, and every CSV-level fault of csv::read.
+Recording read_recording(const std::filesystem::path& path);
+
+/// Checks the invariants read_recording() enforces on a recording built in memory (equal column
+/// lengths, finite values, strictly increasing time). Throws InputError naming `source`.
+void validate(const Recording& recording);
+
+/// Writes the recording atomically: known columns in the canonical order, then the extras.
+void write_recording(const std::filesystem::path& path, const Recording& recording);
+
+/// The recording as CSV text (what write_recording() writes).
+std::string to_csv(const Recording& recording);
+
+}  // namespace fogdrift

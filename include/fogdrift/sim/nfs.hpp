@@ -1,0 +1,55 @@
+// The north-finding system in its chamber, advanced in time: thermal network, thermometers, FOG,
+// accelerometers and turntable together (docs/simulator.md). Scenarios (scenarios.hpp) drive it.
+#pragma once
+
+#include <cstdint>
+#include <functional>
+
+#include "fogdrift/recording.hpp"
+#include "fogdrift/sim/instrument.hpp"
+#include "fogdrift/sim/thermal_network.hpp"
+#include "fogdrift/sim/turntable.hpp"
+
+namespace fogdrift::sim {
+
+/// Chamber air temperature, °C, as a function of the simulator's absolute time, s.
+using AirProfile = std::function<double(double time_s)>;
+
+/// What one powered recording looks like.
+struct RecordSetup {
+  double duration_s = 1800.0;   ///< powered time recorded, s (a whole number of samples)
+  double output_rate_hz = 1.0;  ///< logger rate, Hz; 1/rate must be a multiple of fine_step_s
+  double latitude_deg = 30.0;   ///< site latitude, °
+  Platform platform{0.0, 0.0, 0.0};
+  TurntableSchedule table;       ///< times relative to the start of the recording
+  std::uint64_t seed = 1;        ///< noise of this recording (FOG, thermometers, accelerometers)
+  bool write_true_drift = true;  ///< add the simulator's ground truth column drift_true_dph
+};
+
+class NfsSimulator {
+ public:
+  /// Starts at absolute time `time_s` with every node at `initial_degc`.
+  NfsSimulator(const Instrument& instrument, const NodeTemps& initial_degc, double time_s = 0.0);
+
+  /// Advances the thermal state only (nothing is logged), powered or not, at the fine step.
+  void advance(double duration_s, const AirProfile& air, bool powered);
+
+  /// Records `setup.duration_s` of powered operation from now. Time stamps in the recording are
+  /// seconds since `power_on_time_s` (absolute); each sample is the mean rate over the interval
+  /// that ends at its stamp, and the thermometers and accelerometers are read at the stamp.
+  Recording record(const RecordSetup& setup, const AirProfile& air, double power_on_time_s);
+
+  double time_s() const { return time_s_; }
+  const NodeTemps& temps_degc() const { return temps_; }
+
+ private:
+  void step(double dt_s, const AirProfile& air, bool powered);
+
+  Instrument instrument_;
+  ThermalNetwork network_;
+  NodeTemps temps_;
+  std::array<double, 3> thermometer_state_degc_;  // fog, acc1, acc2 after their lags
+  double time_s_;
+};
+
+}  // namespace fogdrift::sim

@@ -1,0 +1,73 @@
+// The paper's protocols as simulated campaigns (METHOD.md §3; docs/simulator.md §4).
+//
+//   calibration  paper §4.1: from −40 °C to 60 °C in 10 °C steps, one-hour cycles (20 min soak,
+//                30 min powered and recorded, 10 min ramp to the next temperature), repeated 4
+//                times; repetitions 1–3 train, 4 test.
+//   northfind    paper §4.2: at each initial temperature the instrument is soaked to equilibrium,
+//                powered on, and makes five four-position north-findings back to back.
+//   stable       the same north-findings after a long powered warm-up at room temperature.
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "fogdrift/campaign.hpp"
+#include "fogdrift/recording.hpp"
+#include "fogdrift/sim/instrument.hpp"
+
+namespace fogdrift::sim {
+
+struct CalibrationOptions {
+  /// Chamber temperatures of the cycles, °C, in order (default −40, −30, …, 60).
+  std::vector<double> temps_degc{-40, -30, -20, -10, 0, 10, 20, 30, 40, 50, 60};
+  int repetitions = 4;        ///< whole temperature sweeps, >= 1
+  int test_repetitions = 1;   ///< the last this many repetitions get role "test", >= 0
+  double soak_s = 1200.0;     ///< unpowered soak at the cycle temperature before power-on, s
+  double powered_s = 1800.0;  ///< powered and recorded time per cycle, s
+  double ramp_s = 600.0;      ///< unpowered ramp to the next temperature, s
+  double chamber_setpoint_sd_degc = 0.2;  ///< σ of the chamber's reached set point per cycle, °C
+  double azimuth_deg = 0.0;               ///< heading of the FOG axis in the chamber, ° from north
+  double latitude_deg = 30.0;             ///< site latitude, °
+  double output_rate_hz = 1.0;            ///< logger rate, Hz
+  std::uint64_t seed = 1;
+};
+
+struct NorthfindOptions {
+  /// Initial (chamber) temperatures, °C; one recording each (default: the paper's seven).
+  std::vector<double> temps_degc{-32, -16, -5, 17, 28, 43, 54};
+  int findings = 5;             ///< four-position findings per recording, back to back, >= 1
+  double position_s = 90.0;     ///< time per position including the rotation into it, s
+  double warmup_s = 0.0;        ///< powered time before recording starts (0: start-up), s
+  double latitude_deg = 30.0;   ///< site latitude, °
+  double output_rate_hz = 1.0;  ///< logger rate, Hz
+  std::uint64_t seed = 1;
+};
+
+/// The stable-stage protocol: 20 findings at 25 °C after a 2-hour warm-up.
+NorthfindOptions stable_defaults();
+
+/// Recordings in memory with the manifest that describes them.
+struct SimulatedCampaign {
+  Campaign campaign;
+  std::vector<Recording> recordings;  ///< same order as campaign.recordings
+};
+
+/// Throws OptionError naming the option and the rule for impossible settings.
+void validate(const CalibrationOptions& options);
+void validate(const NorthfindOptions& options);
+
+SimulatedCampaign simulate_calibration(const Instrument& instrument,
+                                       const CalibrationOptions& options);
+SimulatedCampaign simulate_northfind(const Instrument& instrument, const NorthfindOptions& options);
+SimulatedCampaign simulate_stable(const Instrument& instrument, const NorthfindOptions& options);
+
+/// Writes every recording and campaign.json into `dir` atomically (all or nothing).
+void write_campaign(const std::filesystem::path& dir, const SimulatedCampaign& campaign,
+                    bool replace);
+
+/// "m40C", "25C", "m2.5C": a temperature as it appears in file names.
+std::string temperature_tag(double temp_degc);
+
+}  // namespace fogdrift::sim

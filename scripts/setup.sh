@@ -1,0 +1,26 @@
+#!/usr/bin/env bash
+# Installs the Debian packages fogdrift builds and tests with, only those that are missing.
+# Run as root on Debian 12 (or with sudo available). Safe to run again.
+set -euo pipefail
+
+packages=(
+  g++ cmake ninja-build pkg-config     # toolchain
+  libeigen3-dev libcli11-dev nlohmann-json3-dev libfmt-dev   # library dependencies
+  libgtest-dev libgmock-dev            # tests
+)
+
+missing=()
+for p in "${packages[@]}"; do
+  if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed"; then
+    missing+=("$p")
+  fi
+done
+
+if [ ${#missing[@]} -gt 0 ]; then
+  echo "fogdrift setup: installing ${missing[*]}" >&2
+  sudo_cmd=""
+  if [ "$(id -u)" -ne 0 ]; then sudo_cmd="sudo"; fi
+  export DEBIAN_FRONTEND=noninteractive
+  $sudo_cmd apt-get update -qq
+  $sudo_cmd apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+fi

@@ -1,0 +1,225 @@
+#include "fogdrift/campaign.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <set>
+#include <sstream>
+
+#include "fogdrift/atomic_file.hpp"
+#include "fogdrift/error.hpp"
+
+namespace fs = std::filesystem;
+using json = nlohmann::ordered_json;
+
+namespace fogdrift {
+namespace {
+
+// Content errors carry the JSON path in the message; line/column are unknown after parsing.
+[[noreturn]] void fail(const std::string& file, const std::string& json_path,
+                       const std::string& rule) {
+  throw InputError(file, 0, 0, fmt::format("{}: {}", json_path, rule));
+}
+
+// Line and column (1-based) of a byte offset, for syntax errors.
+std::pair<std::size_t, std::size_t> line_column(const std::string& text, std::size_t byte) {
+  std::size_t line = 1, column = 1;
+  for (std::size_t i = 0; i < byte && i < text.size(); ++i) {
+    if (text[i] == '\n') {
+      ++line;
+      column = 1;
+    } else {
+      ++column;
+    }
+  }
+  return {line, column};
+}
+
+void check_keys(const json& object, const std::set<std::string>& known, const std::string& file,
+                const std::string& path) {
+  for (const auto& [key, value] : object.items()) {
+    if (!known.count(key)) {
+      std::string list;
+      for (const auto& k : known) list += (list.empty() ? "" : ", ") + k;
+      fail(file, path.empty() ? key : path + "." + key,
+           fmt::format("unknown field (known: {}; free-form text goes under \"notes\")", list));
+    }
+  }
+}
+
+double number_in(const json& object, const std::string& key, double lo, double hi, bool hi_open,
+                 const std::string& file, const std::string& path) {
+  const std::string where = path.empty() ? key : path + "." + key;
+  if (!object.contains(key)) fail(file, where, "required field is missing");
+  const json& v = object.at(key);
+  if (!v.is_number()) fail(file, where, fmt::format("must be a number, found {}", v.dump()));
+  const double x = v.get<double>();
+  const bool above = hi_open ? !(x < hi) : !(x <= hi);
+  if (!std::isfinite(x) || x < lo || above) {
+    fail(file, where,
+         fmt::format("{} is outside [{}, {}{}", v.dump(), lo, hi, hi_open ? ")" : "]"));
+  }
+  return x;
+}
+
+std::string string_field(const json& object, const std::string& key, const std::string& file,
+                         const std::string& path) {
+  const std::string where = path + "." + key;
+  if (!object.contains(key)) fail(file, where, "required field is missing");
+  const json& v = object.at(key);
+  if (!v.is_string()) fail(file, where, fmt::format("must be a string, found {}", v.dump()));
+  return v.get<std::string>();
+}
+
+}  // namespace
+
+std::string_view to_string(Scenario scenario) {
+  switch (scenario) {
+    case Scenario::calibration:
+      return "calibration";
+    case Scenario::northfind:
+      return "northfind";
+    case Scenario::stable:
+      return "stable";
+  }
+  return "?";
+}
+
+std::string_view to_string(Role role) {
+  return role == Role::train ? "train" : "test";
+}
+
+Campaign read_campaign(const fs::path& path) {
+  const fs::path manifest = fs::is_directory(path) ? path / "campaign.json" : path;
+  const std::string file = manifest.string();
+  std::ifstream in(manifest, std::ios::binary);
+  if (!in) {
+    throw InputError(file, 0, 0,
+                     fs::exists(manifest) ? "cannot be read"
+                                          : "not found (a campaign folder holds campaign.json)");
+  }
+  std::stringstream buffer;
+  buffer << in.rdbuf();
+  const std::string text = buffer.str();
+  json doc;
+  try {
+    doc = json::parse(text);
+  } catch (const json::parse_error& e) {
+    const auto [line, column] = line_column(text, e.byte == 0 ? 0 : e.byte - 1);
+    std::string what = e.what();
+    const auto cut = what.find("syntax error");
+    throw InputError(file, line, column,
+                     "invalid JSON: " + (cut == std::string::npos ? what : what.substr(cut)));
+  }
+  if (!doc.is_object()) fail(file, "(top level)", "must be a JSON object");
+  check_keys(doc, {"format", "latitude_deg", "recordings", "generator", "notes"}, file, "");
+  if (!doc.contains("format")) fail(file, "format", "required field is missing");
+  if (!doc["format"].is_string() || doc["format"].get<std::string>() != kCampaignFormat) {
+    fail(file, "format",
+         fmt::format("is {}, expected \"{}\" (a newer fogdrift may be needed)",
+                     doc["format"].dump(), kCampaignFormat));
+  }
+
+  Campaign c;
+  c.dir = manifest.has_parent_path() ? manifest.parent_path() : fs::path(".");
+  c.latitude_deg = number_in(doc, "latitude_deg", -90, 90, false, file, "");
+  if (doc.contains("generator")) c.generator_json = doc["generator"].dump();
+  if (doc.contains("notes")) c.notes_json = doc["notes"].dump();
+  if (!doc.contains("recordings")) fail(file, "recordings", "required field is missing");
+  const json& list = doc["recordings"];
+  if (!list.is_array() || list.empty()) fail(file, "recordings", "must be a non-empty array");
+
+  std::set<std::string> seen_files;
+  for (std::size_t i = 0; i < list.size(); ++i) {
+    const std::string path_i = fmt::format("recordings[{}]", i);
+    const json& r = list[i];
+    if (!r.is_object()) fail(file, path_i, "must be an object");
+    check_keys(r,
+               {"file", "scenario", "role", "repetition", "initial_temp_degc", "true_azimuth_deg",
+                "input_rate_dph", "notes"},
+               file, path_i);
+    CampaignEntry e;
+    e.file = string_field(r, "file", file, path_i);
+    if (e.file.empty()) fail(file, path_i + ".file", "must not be empty");
+    if (fs::path(e.file).is_absolute()) {
+      fail(file, path_i + ".file", "must be relative to the campaign folder");
+    }
+    if (!seen_files.insert(fs::path(e.file).lexically_normal().string()).second) {
+      fail(file, path_i + ".file", fmt::format("\"{}\" is listed twice", e.file));
+    }
+    const std::string scenario = string_field(r, "scenario", file, path_i);
+    if (scenario == "calibration")
+      e.scenario = Scenario::calibration;
+    else if (scenario == "northfind")
+      e.scenario = Scenario::northfind;
+    else if (scenario == "stable")
+      e.scenario = Scenario::stable;
+    else
+      fail(file, path_i + ".scenario",
+           fmt::format("\"{}\" is not one of calibration, northfind, stable", scenario));
+    const std::string role = string_field(r, "role", file, path_i);
+    if (role == "train")
+      e.role = Role::train;
+    else if (role == "test")
+      e.role = Role::test;
+    else
+      fail(file, path_i + ".role", fmt::format("\"{}\" is not one of train, test", role));
+    if (r.contains("repetition")) {
+      const json& v = r["repetition"];
+      if (!v.is_number_integer() || v.get<long long>() < 1 || v.get<long long>() > 1000000) {
+        fail(file, path_i + ".repetition", fmt::format("{} is not an integer >= 1", v.dump()));
+      }
+      e.repetition = v.get<int>();
+    }
+    e.initial_temp_degc = number_in(r, "initial_temp_degc", -70, 100, false, file, path_i);
+    if (r.contains("true_azimuth_deg")) {
+      e.true_azimuth_deg = number_in(r, "true_azimuth_deg", 0, 360, true, file, path_i);
+    } else if (e.scenario != Scenario::calibration) {
+      fail(file, path_i + ".true_azimuth_deg",
+           fmt::format("required for a {} recording (the north-finding reference)", scenario));
+    }
+    if (r.contains("input_rate_dph")) {
+      e.input_rate_dph = number_in(r, "input_rate_dph", -1e7, 1e7, false, file, path_i);
+    }
+    if (r.contains("notes")) e.notes_json = r["notes"].dump();
+    const fs::path rec_path = c.dir / e.file;
+    if (!fs::is_regular_file(rec_path)) {
+      fail(file, path_i + ".file",
+           fmt::format("recording \"{}\" does not exist", rec_path.string()));
+    }
+    c.recordings.push_back(std::move(e));
+  }
+  return c;
+}
+
+std::string manifest_json(const Campaign& c) {
+  using ojson = nlohmann::ordered_json;
+  ojson doc = ojson::object();
+  doc["format"] = kCampaignFormat;
+  doc["latitude_deg"] = c.latitude_deg;
+  if (!c.generator_json.empty()) doc["generator"] = ojson::parse(c.generator_json);
+  if (!c.notes_json.empty()) doc["notes"] = ojson::parse(c.notes_json);
+  ojson list = ojson::array();
+  for (const auto& e : c.recordings) {
+    ojson r = ojson::object();
+    r["file"] = e.file;
+    r["scenario"] = to_string(e.scenario);
+    r["role"] = to_string(e.role);
+    r["repetition"] = e.repetition;
+    r["initial_temp_degc"] = e.initial_temp_degc;
+    if (e.true_azimuth_deg) r["true_azimuth_deg"] = *e.true_azimuth_deg;
+    if (e.input_rate_dph) r["input_rate_dph"] = *e.input_rate_dph;
+    if (!e.notes_json.empty()) r["notes"] = ojson::parse(e.notes_json);
+    list.push_back(std::move(r));
+  }
+  doc["recordings"] = std::move(list);
+  return doc.dump(2) + "\n";
+}
+
+void write_manifest(const fs::path& dir, const Campaign& campaign) {
+  write_text_atomically(dir / "campaign.json", manifest_json(campaign));
+}
+
+}  // namespace fogdrift

@@ -1,0 +1,207 @@
+#include "fogdrift/csv.hpp"
+
+#include <fmt/format.h>
+
+#include <cctype>
+#include <cerrno>
+#include <charconv>
+#include <cmath>
+#include <cstring>
+#include <fstream>
+#include <sstream>
+#include <unordered_set>
+
+#include "fogdrift/error.hpp"
+
+namespace fogdrift::csv {
+namespace {
+
+std::string_view trim(std::string_view s) {
+  while (!s.empty() && (s.front() == ' ' || s.front() == '\t')) s.remove_prefix(1);
+  while (!s.empty() && (s.back() == ' ' || s.back() == '\t')) s.remove_suffix(1);
+  return s;
+}
+
+// Splits one physical line into fields. Quotes may not span lines.
+std::vector<std::string> split_line(std::string_view line, char delimiter, const std::string& file,
+                                    std::size_t line_no) {
+  std::vector<std::string> fields;
+  std::string field;
+  std::size_t i = 0;
+  while (true) {
+    field.clear();
+    // Leading spaces before an opening quote are tolerated, as pandas does with skipinitialspace.
+    std::size_t j = i;
+    while (j < line.size() && line[j] == ' ') ++j;
+    if (j < line.size() && line[j] == '"') {
+      i = j + 1;
+      bool closed = false;
+      while (i < line.size()) {
+        if (line[i] == '"') {
+          if (i + 1 < line.size() && line[i + 1] == '"') {
+            field += '"';
+            i += 2;
+            continue;
+          }
+          closed = true;
+          ++i;
+          break;
+        }
+        field += line[i++];
+      }
+      if (!closed) {
+        throw InputError(file, line_no, fields.size() + 1,
+                         "unterminated quoted field (quotes must close on the same line)");
+      }
+      while (i < line.size() && line[i] == ' ') ++i;
+      if (i < line.size() && line[i] != delimiter) {
+        throw InputError(file, line_no, fields.size() + 1, "unexpected text after a closing quote");
+      }
+    } else {
+      const std::size_t end = line.find(delimiter, i);
+      field.assign(
+          line.substr(i, end == std::string_view::npos ? std::string_view::npos : end - i));
+      i = end == std::string_view::npos ? line.size() : end;
+    }
+    fields.push_back(field);
+    if (i >= line.size()) break;
+    ++i;  // skip the delimiter
+    if (i == line.size()) {
+      fields.emplace_back();  // a trailing delimiter makes one more (empty) field
+      break;
+    }
+  }
+  return fields;
+}
+
+}  // namespace
+
+std::optional<std::size_t> Table::find(std::string_view name) const {
+  for (std::size_t i = 0; i < header.size(); ++i) {
+    if (header[i] == name) return i;
+  }
+  return std::nullopt;
+}
+
+Table read(const std::string& path, const ReadOptions& options) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(path, 0, 0, fmt::format("cannot open ({})", std::strerror(errno)));
+  std::ostringstream buffer;
+  buffer << in.rdbuf();
+  return parse(buffer.str(), path, options);
+}
+
+Table parse(std::string_view text, const std::string& file, const ReadOptions& options) {
+  Table table;
+  table.file = file;
+  if (text.size() >= 3 && static_cast<unsigned char>(text[0]) == 0xEF &&
+      static_cast<unsigned char>(text[1]) == 0xBB && static_cast<unsigned char>(text[2]) == 0xBF) {
+    text.remove_prefix(3);
+  }
+  if (text.find('\0') != std::string_view::npos) {
+    throw InputError(file, 0, 0, "contains a NUL byte: this is not a text CSV file");
+  }
+
+  std::size_t pos = 0;
+  std::size_t line_no = 0;
+  std::size_t pending_blank_line = 0;  // first blank line seen after the header, if any
+  bool have_header = false;
+  while (pos < text.size()) {
+    std::size_t end = text.find('\n', pos);
+    if (end == std::string_view::npos) end = text.size();
+    std::string_view line = text.substr(pos, end - pos);
+    pos = end + 1;
+    ++line_no;
+    if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
+    if (trim(line).empty()) {
+      if (!have_header) {
+        throw InputError(file, line_no, 0, "empty line where the header row was expected");
+      }
+      if (pending_blank_line == 0) pending_blank_line = line_no;
+      continue;
+    }
+    if (pending_blank_line != 0) {
+      throw InputError(file, pending_blank_line, 0, "empty line between data rows");
+    }
+    std::vector<std::string> fields = split_line(line, options.delimiter, file, line_no);
+    if (!have_header) {
+      std::unordered_set<std::string> seen;
+      for (std::size_t c = 0; c < fields.size(); ++c) {
+        std::string name(trim(fields[c]));
+        if (name.empty()) throw InputError(file, line_no, c + 1, "empty column name in the header");
+        if (!seen.insert(name).second) {
+          throw InputError(file, line_no, c + 1,
+                           fmt::format("duplicated column name '{}' in the header", name));
+        }
+        fields[c] = std::move(name);
+      }
+      table.header = std::move(fields);
+      have_header = true;
+      continue;
+    }
+    if (fields.size() != table.header.size()) {
+      throw InputError(file, line_no, 0,
+                       fmt::format("row has {} fields but the header has {} columns", fields.size(),
+                                   table.header.size()));
+    }
+    table.rows.push_back(std::move(fields));
+    table.row_line.push_back(line_no);
+  }
+  if (!have_header) throw InputError(file, 0, 0, "empty file: a header row is required");
+  return table;
+}
+
+std::optional<double> parse_number(std::string_view field, bool decimal_comma) {
+  field = trim(field);
+  if (field.empty()) return std::nullopt;
+  if (field.front() == '+') field.remove_prefix(1);
+  if (field.empty()) return std::nullopt;
+  std::string replaced;
+  if (decimal_comma) {
+    if (field.find('.') != std::string_view::npos) return std::nullopt;
+    replaced.assign(field);
+    const auto comma = replaced.find(',');
+    if (comma != std::string::npos) {
+      if (replaced.find(',', comma + 1) != std::string::npos) return std::nullopt;
+      replaced[comma] = '.';
+    }
+    field = replaced;
+  }
+  // from_chars accepts "nan" and "inf"; fogdrift never does.
+  for (char ch : field) {
+    if (!(std::isdigit(static_cast<unsigned char>(ch)) || ch == '.' || ch == '-' || ch == 'e' ||
+          ch == 'E' || ch == '+')) {
+      return std::nullopt;
+    }
+  }
+  double value = 0.0;
+  const char* first = field.data();
+  const char* last = field.data() + field.size();
+  const auto result = std::from_chars(first, last, value, std::chars_format::general);
+  if (result.ec != std::errc() || result.ptr != last || !std::isfinite(value)) return std::nullopt;
+  return value;
+}
+
+std::string format_number(double value) {
+  char buffer[32];
+  const auto result = std::to_chars(buffer, buffer + sizeof buffer, value);
+  return std::string(buffer, result.ptr);
+}
+
+std::string quote(std::string_view field, char delimiter) {
+  const bool needs = field.find(delimiter) != std::string_view::npos ||
+                     field.find('"') != std::string_view::npos ||
+                     field.find('\n') != std::string_view::npos ||
+                     field.find('\r') != std::string_view::npos ||
+                     (!field.empty() && (field.front() == ' ' || field.back() == ' '));
+  if (!needs) return std::string(field);
+  std::string out = "\"";
+  for (char ch : field) {
+    if (ch == '"') out += '"';
+    out += ch;
+  }
+  out += '"';
+  return out;
+}
+
+}  // namespace fogdrift::csv

@@ -1,0 +1,198 @@
+#include "fogdrift/import.hpp"
+
+#include <fmt/format.h>
+
+#include <numbers>
+#include <set>
+
+#include "fogdrift/csv.hpp"
+#include "fogdrift/error.hpp"
+
+namespace fogdrift {
+namespace {
+
+bool starts_with(std::string_view s, std::string_view p) {
+  return s.substr(0, p.size()) == p;
+}
+
+bool is_fogdrift_column(std::string_view name) {
+  for (const auto& n : required_columns())
+    if (n == name) return true;
+  for (const auto& n : optional_columns())
+    if (n == name) return true;
+  return false;
+}
+
+}  // namespace
+
+LinearConversion parse_unit(std::string_view column, std::string_view unit) {
+  const std::string option = fmt::format("--unit {}={}", column, unit);
+  constexpr double kRadToDeg = 180.0 / std::numbers::pi;
+  auto unknown = [&](std::string_view accepted) -> LinearConversion {
+    throw OptionError(
+        option, fmt::format("unknown unit '{}' for {} (accepted: {})", unit, column, accepted));
+  };
+  if (column == "time_s") {
+    if (unit == "s") return {1.0, 0.0};
+    if (unit == "ms") return {1e-3, 0.0};
+    if (unit == "us") return {1e-6, 0.0};
+    return unknown("s, ms, us");
+  }
+  if (column == "gyro_dph") {
+    if (unit == "deg/h") return {1.0, 0.0};
+    if (unit == "deg/s") return {3600.0, 0.0};
+    if (unit == "rad/s") return {kRadToDeg * 3600.0, 0.0};
+    if (unit == "mrad/s") return {kRadToDeg * 3.6, 0.0};
+    if (unit == "arcsec/s") return {1.0, 0.0};  // 1″/s = (1/3600)°/s = 1 °/h
+    return unknown("deg/h, deg/s, rad/s, mrad/s, arcsec/s");
+  }
+  if (starts_with(column, "temp_") || column == "chamber_degc") {
+    if (unit == "degC") return {1.0, 0.0};
+    if (unit == "K") return {1.0, -273.15};
+    if (unit == "degF") return {5.0 / 9.0, -32.0 * 5.0 / 9.0};
+    if (starts_with(unit, "counts:")) {
+      const std::string_view rest = unit.substr(7);
+      const auto colon = rest.find(':');
+      if (colon == std::string_view::npos) {
+        throw OptionError(option,
+                          "counts needs a scale and an offset: counts:SCALE:OFFSET, "
+                          "meaning °C = counts·SCALE + OFFSET");
+      }
+      const auto scale = csv::parse_number(rest.substr(0, colon));
+      const auto offset = csv::parse_number(rest.substr(colon + 1));
+      if (!scale || !offset || *scale == 0.0) {
+        throw OptionError(option, "counts:SCALE:OFFSET needs finite numbers and a non-zero SCALE");
+      }
+      return {*scale, *offset};
+    }
+    return unknown("degC, K, degF, counts:SCALE:OFFSET");
+  }
+  if (column == "accel_x_g" || column == "accel_y_g") {
+    if (unit == "g") return {1.0, 0.0};
+    if (unit == "mg") return {1e-3, 0.0};
+    if (unit == "m/s2") return {1.0 / 9.80665, 0.0};
+    return unknown("g, mg, m/s2");
+  }
+  if (column == "table_deg") {
+    if (unit == "deg") return {1.0, 0.0};
+    if (unit == "rad") return {kRadToDeg, 0.0};
+    return unknown("deg, rad");
+  }
+  throw OptionError(option, fmt::format("'{}' is not a fogdrift column", column));
+}
+
+Recording import_recording(const std::filesystem::path& path, const ImportOptions& options) {
+  if (options.decimal_comma && options.delimiter == ',') {
+    throw OptionError("--decimal-comma", "needs a delimiter other than ',' (use --delimiter ';')");
+  }
+  for (const auto& [target, source] : options.columns) {
+    if (!is_fogdrift_column(target)) {
+      throw OptionError(fmt::format("--map {}={}", target, source),
+                        fmt::format("'{}' is not a fogdrift column (known: time_s, gyro_dph, "
+                                    "temp_fog_degc, temp_acc1_degc, temp_acc2_degc, accel_x_g, "
+                                    "accel_y_g, table_deg, chamber_degc)",
+                                    target));
+    }
+  }
+  for (const auto& [target, conversion] : options.conversions) {
+    if (!is_fogdrift_column(target)) {
+      throw OptionError(fmt::format("--unit {}", target), "not a fogdrift column");
+    }
+  }
+
+  const csv::Table table = csv::read(path.string(), {options.delimiter});
+  const std::string& file = table.file;
+  std::string available;
+  for (const auto& h : table.header) available += (available.empty() ? "'" : ", '") + h + "'";
+
+  Recording rec;
+  rec.source = path.string();
+  std::set<std::size_t> used;
+  auto column_for = [&](const std::string& target) -> std::optional<std::size_t> {
+    const auto it = options.columns.find(target);
+    if (it == options.columns.end()) return table.find(target);
+    const auto index = table.find(it->second);
+    if (!index) {
+      throw OptionError(
+          fmt::format("--map {}={}", target, it->second),
+          fmt::format("{} has no column '{}' (columns: {})", file, it->second, available));
+    }
+    return index;
+  };
+  auto convert = [&](const std::string& target, std::size_t c) {
+    const auto conv_it = options.conversions.find(target);
+    const LinearConversion conv =
+        conv_it == options.conversions.end() ? LinearConversion{} : conv_it->second;
+    std::vector<double> values;
+    values.reserve(table.rows.size());
+    for (std::size_t i = 0; i < table.rows.size(); ++i) {
+      const std::string& cell = table.rows[i][c];
+      const auto v = csv::parse_number(cell, options.decimal_comma);
+      if (!v) {
+        throw InputError(file, table.row_line[i], c + 1,
+                         fmt::format("column '{}' (for {}): '{}' is not a finite number",
+                                     table.header[c], target, cell));
+      }
+      values.push_back(*v * conv.scale + conv.offset);
+    }
+    used.insert(c);
+    return values;
+  };
+
+  for (const auto& [target, source] : options.columns) column_for(target);  // mapped columns exist
+  for (const auto& target : required_columns()) {
+    const auto c = column_for(target);
+    if (!c) {
+      throw OptionError(fmt::format("--map {}=COLUMN", target),
+                        fmt::format("{} has no column '{}'; say which column holds it (columns: "
+                                    "{})",
+                                    file, target, available));
+    }
+  }
+  if (table.rows.size() < 2) {
+    throw InputError(
+        file, 0, 0,
+        fmt::format("has {} data rows; a recording needs at least 2 samples", table.rows.size()));
+  }
+  rec.time_s = convert("time_s", *column_for("time_s"));
+  rec.gyro_dph = convert("gyro_dph", *column_for("gyro_dph"));
+  rec.temp_fog_degc = convert("temp_fog_degc", *column_for("temp_fog_degc"));
+  rec.temp_acc1_degc = convert("temp_acc1_degc", *column_for("temp_acc1_degc"));
+  rec.temp_acc2_degc = convert("temp_acc2_degc", *column_for("temp_acc2_degc"));
+  if (auto c = column_for("accel_x_g")) rec.accel_x_g = convert("accel_x_g", *c);
+  if (auto c = column_for("accel_y_g")) rec.accel_y_g = convert("accel_y_g", *c);
+  if (auto c = column_for("table_deg")) rec.table_deg = convert("table_deg", *c);
+  if (auto c = column_for("chamber_degc")) rec.chamber_degc = convert("chamber_degc", *c);
+
+  if (options.time_from_zero) {
+    const double t0 = rec.time_s.front();
+    for (double& t : rec.time_s) t -= t0;
+  }
+  const std::size_t time_col = *column_for("time_s") + 1;
+  for (std::size_t i = 0; i < rec.time_s.size(); ++i) {
+    if (i == 0 && rec.time_s[0] < 0.0) {
+      throw InputError(file, table.row_line[0], time_col,
+                       "time is negative after conversion (use --time-from-zero for loggers "
+                       "that do not count from power-on)");
+    }
+    if (i > 0 && !(rec.time_s[i] > rec.time_s[i - 1])) {
+      throw InputError(file, table.row_line[i], time_col, "time does not strictly increase");
+    }
+  }
+
+  if (options.keep_extra) {
+    for (std::size_t c = 0; c < table.header.size(); ++c) {
+      if (used.count(c)) continue;
+      ExtraColumn extra;
+      extra.name =
+          is_fogdrift_column(table.header[c]) ? "source_" + table.header[c] : table.header[c];
+      extra.cells.reserve(table.rows.size());
+      for (const auto& row : table.rows) extra.cells.push_back(row[c]);
+      rec.extra.push_back(std::move(extra));
+    }
+  }
+  validate(rec);
+  return rec;
+}
+
+}  // namespace fogdrift

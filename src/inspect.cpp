@@ -1,0 +1,58 @@
+#include "fogdrift/inspect.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace fogdrift {
+
+ColumnRange column_range(const std::string& name, const std::vector<double>& v) {
+  ColumnRange r;
+  r.name = name;
+  if (v.empty()) return r;
+  r.min = *std::min_element(v.begin(), v.end());
+  r.max = *std::max_element(v.begin(), v.end());
+  // Two-pass mean and variance: exact enough for the long, offset-heavy series loggers write.
+  double sum = 0.0;
+  for (double x : v) sum += x;
+  r.mean = sum / static_cast<double>(v.size());
+  if (v.size() > 1) {
+    double ss = 0.0;
+    for (double x : v) ss += (x - r.mean) * (x - r.mean);
+    r.std = std::sqrt(ss / static_cast<double>(v.size() - 1));
+  }
+  return r;
+}
+
+RecordingSummary summarize(const Recording& rec) {
+  RecordingSummary s;
+  s.samples = rec.size();
+  if (rec.size() == 0) return s;
+  s.start_s = rec.time_s.front();
+  s.end_s = rec.time_s.back();
+  s.duration_s = s.end_s - s.start_s;
+  std::vector<double> steps;
+  steps.reserve(rec.size());
+  for (std::size_t i = 1; i < rec.size(); ++i) steps.push_back(rec.time_s[i] - rec.time_s[i - 1]);
+  if (!steps.empty()) {
+    std::vector<double> sorted = steps;
+    std::nth_element(sorted.begin(), sorted.begin() + sorted.size() / 2, sorted.end());
+    s.sample_interval_s = sorted[sorted.size() / 2];
+    s.sample_rate_hz = s.sample_interval_s > 0 ? 1.0 / s.sample_interval_s : 0.0;
+    for (double d : steps) {
+      if (d > 1.5 * s.sample_interval_s) ++s.gaps;
+      s.longest_gap_s = std::max(s.longest_gap_s, d);
+    }
+  }
+  s.columns.push_back(column_range("gyro_dph", rec.gyro_dph));
+  s.columns.push_back(column_range("temp_fog_degc", rec.temp_fog_degc));
+  s.columns.push_back(column_range("temp_acc1_degc", rec.temp_acc1_degc));
+  s.columns.push_back(column_range("temp_acc2_degc", rec.temp_acc2_degc));
+  if (rec.accel_x_g) s.columns.push_back(column_range("accel_x_g", *rec.accel_x_g));
+  if (rec.accel_y_g) s.columns.push_back(column_range("accel_y_g", *rec.accel_y_g));
+  if (rec.table_deg) s.columns.push_back(column_range("table_deg", *rec.table_deg));
+  if (rec.chamber_degc) s.columns.push_back(column_range("chamber_degc", *rec.chamber_degc));
+  for (const auto& e : rec.extra) s.extra_columns.push_back(e.name);
+  return s;
+}
+
+}  // namespace fogdrift

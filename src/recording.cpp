@@ -1,0 +1,229 @@
+#include "fogdrift/recording.hpp"
+
+#include <fmt/format.h>
+
+#include <cctype>
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+
+#include "fogdrift/atomic_file.hpp"
+#include "fogdrift/csv.hpp"
+#include "fogdrift/error.hpp"
+
+namespace fogdrift {
+namespace {
+
+std::vector<double>* known_column(Recording& r, std::string_view name, bool create) {
+  auto opt = [&](std::optional<std::vector<double>>& col) -> std::vector<double>* {
+    if (!col && create) col.emplace();
+    return col ? &*col : nullptr;
+  };
+  if (name == "time_s") return &r.time_s;
+  if (name == "gyro_dph") return &r.gyro_dph;
+  if (name == "temp_fog_degc") return &r.temp_fog_degc;
+  if (name == "temp_acc1_degc") return &r.temp_acc1_degc;
+  if (name == "temp_acc2_degc") return &r.temp_acc2_degc;
+  if (name == "accel_x_g") return opt(r.accel_x_g);
+  if (name == "accel_y_g") return opt(r.accel_y_g);
+  if (name == "table_deg") return opt(r.table_deg);
+  if (name == "chamber_degc") return opt(r.chamber_degc);
+  return nullptr;
+}
+
+const std::vector<double>* known_column(const Recording& r, std::string_view name) {
+  return known_column(const_cast<Recording&>(r), name, false);
+}
+
+bool is_known(std::string_view name) {
+  for (const auto& n : required_columns())
+    if (n == name) return true;
+  for (const auto& n : optional_columns())
+    if (n == name) return true;
+  return false;
+}
+
+void check_time(const std::vector<double>& time_s, const std::string& file,
+                const std::vector<std::size_t>* lines, std::size_t column) {
+  auto line_of = [&](std::size_t i) { return lines ? (*lines)[i] : i + 2; };
+  if (!time_s.empty() && time_s[0] < 0.0) {
+    throw InputError(file, line_of(0), column,
+                     fmt::format("time_s = {} is negative (time is seconds since power-on)",
+                                 csv::format_number(time_s[0])));
+  }
+  for (std::size_t i = 1; i < time_s.size(); ++i) {
+    if (!(time_s[i] > time_s[i - 1])) {
+      throw InputError(
+          file, line_of(i), column,
+          fmt::format("time_s = {} does not increase (previous row: {}); time must "
+                      "strictly increase",
+                      csv::format_number(time_s[i]), csv::format_number(time_s[i - 1])));
+    }
+  }
+}
+
+}  // namespace
+
+const std::vector<std::string>& required_columns() {
+  static const std::vector<std::string> names = {"time_s", "gyro_dph", "temp_fog_degc",
+                                                 "temp_acc1_degc", "temp_acc2_degc"};
+  return names;
+}
+
+const std::vector<std::string>& optional_columns() {
+  static const std::vector<std::string> names = {"accel_x_g", "accel_y_g", "table_deg",
+                                                 "chamber_degc"};
+  return names;
+}
+
+bool Recording::has_column(std::string_view name) const {
+  if (known_column(*this, name) != nullptr) return true;
+  for (const auto& e : extra)
+    if (e.name == name) return true;
+  return false;
+}
+
+std::vector<double> Recording::numeric_column(std::string_view name) const {
+  if (const auto* col = known_column(*this, name)) return *col;
+  for (std::size_t c = 0; c < extra.size(); ++c) {
+    if (extra[c].name != name) continue;
+    std::vector<double> values;
+    values.reserve(extra[c].cells.size());
+    for (std::size_t i = 0; i < extra[c].cells.size(); ++i) {
+      const auto v = csv::parse_number(extra[c].cells[i]);
+      if (!v) {
+        throw InputError(
+            source, i + 2, 0,
+            fmt::format("column '{}': '{}' is not a finite number", name, extra[c].cells[i]));
+      }
+      values.push_back(*v);
+    }
+    return values;
+  }
+  throw std::out_of_range(fmt::format("{}: no column '{}'", source, name));
+}
+
+Recording read_recording(const std::filesystem::path& path) {
+  const csv::Table table = csv::read(path.string());
+  const std::string& file = table.file;
+  for (const auto& name : required_columns()) {
+    if (!table.find(name)) {
+      throw InputError(file, 1, 0,
+                       fmt::format("missing required column '{}' (required: time_s, gyro_dph, "
+                                   "temp_fog_degc, temp_acc1_degc, temp_acc2_degc; use "
+                                   "'fogdrift import' for other names or units)",
+                                   name));
+    }
+  }
+  if (table.rows.size() < 2) {
+    throw InputError(
+        file, 0, 0,
+        fmt::format("has {} data rows; a recording needs at least 2 samples", table.rows.size()));
+  }
+
+  Recording rec;
+  rec.source = path.string();
+  const std::size_t n = table.rows.size();
+  for (std::size_t c = 0; c < table.header.size(); ++c) {
+    const std::string& name = table.header[c];
+    if (std::vector<double>* col = known_column(rec, name, true)) {
+      col->reserve(n);
+      for (std::size_t i = 0; i < n; ++i) {
+        const std::string& cell = table.rows[i][c];
+        const auto v = csv::parse_number(cell);
+        if (!v) {
+          std::string lower(cell);
+          for (char& ch : lower)
+            ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
+          const bool non_finite =
+              lower.find("nan") != std::string::npos || lower.find("inf") != std::string::npos;
+          const char* why = cell.empty() ? "is empty"
+                            : non_finite ? "is not finite (NaN and Inf are not allowed)"
+                                         : "is not a number";
+          throw InputError(file, table.row_line[i], c + 1,
+                           fmt::format("column '{}': value '{}' {}", name, cell, why));
+        }
+        col->push_back(*v);
+      }
+    } else {
+      ExtraColumn extra{name, {}};
+      extra.cells.reserve(n);
+      for (std::size_t i = 0; i < n; ++i) extra.cells.push_back(table.rows[i][c]);
+      rec.extra.push_back(std::move(extra));
+    }
+  }
+  check_time(rec.time_s, file, &table.row_line, *table.find("time_s") + 1);
+  return rec;
+}
+
+void validate(const Recording& r) {
+  const std::string file = r.source.empty() ? std::string("<recording>") : r.source;
+  const std::size_t n = r.size();
+  if (n < 2) throw InputError(file, 0, 0, "a recording needs at least 2 samples");
+  auto check = [&](const std::string& name, const std::vector<double>& col) {
+    if (col.size() != n) {
+      throw InputError(
+          file, 0, 0,
+          fmt::format("column '{}' has {} values but time_s has {}", name, col.size(), n));
+    }
+    for (std::size_t i = 0; i < n; ++i) {
+      if (!std::isfinite(col[i])) {
+        throw InputError(file, i + 2, 0, fmt::format("column '{}' is not finite", name));
+      }
+    }
+  };
+  for (const auto& name : required_columns()) check(name, *known_column(r, name));
+  for (const auto& name : optional_columns()) {
+    if (const auto* col = known_column(r, name)) check(name, *col);
+  }
+  for (const auto& e : r.extra) {
+    if (is_known(e.name)) {
+      throw InputError(file, 0, 0, fmt::format("extra column '{}' shadows a known column", e.name));
+    }
+    if (e.cells.size() != n) {
+      throw InputError(
+          file, 0, 0,
+          fmt::format("column '{}' has {} values but time_s has {}", e.name, e.cells.size(), n));
+    }
+  }
+  check_time(r.time_s, file, nullptr, 0);
+}
+
+std::string to_csv(const Recording& r) {
+  validate(r);
+  std::vector<std::pair<std::string, const std::vector<double>*>> numeric;
+  for (const auto& name : required_columns()) numeric.emplace_back(name, known_column(r, name));
+  for (const auto& name : optional_columns()) {
+    if (const auto* col = known_column(r, name)) numeric.emplace_back(name, col);
+  }
+  std::string out;
+  out.reserve(r.size() * 16 * (numeric.size() + r.extra.size()));
+  for (std::size_t c = 0; c < numeric.size(); ++c) {
+    if (c) out += ',';
+    out += numeric[c].first;
+  }
+  for (const auto& e : r.extra) {
+    out += ',';
+    out += csv::quote(e.name);
+  }
+  out += '\n';
+  for (std::size_t i = 0; i < r.size(); ++i) {
+    for (std::size_t c = 0; c < numeric.size(); ++c) {
+      if (c) out += ',';
+      out += csv::format_number((*numeric[c].second)[i]);
+    }
+    for (const auto& e : r.extra) {
+      out += ',';
+      out += csv::quote(e.cells[i]);
+    }
+    out += '\n';
+  }
+  return out;
+}
+
+void write_recording(const std::filesystem::path& path, const Recording& recording) {
+  const std::string text = to_csv(recording);
+  write_text_atomically(path, text);
+}
+
+}  // namespace fogdrift

@@ -1,0 +1,159 @@
+#include "fogdrift/sim/nfs.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+
+#include "fogdrift/error.hpp"
+#include "fogdrift/random.hpp"
+#include "fogdrift/sim/accelerometer.hpp"
+#include "fogdrift/sim/fog_error_model.hpp"
+
+namespace fogdrift::sim {
+namespace {
+
+constexpr int idx(Node n) {
+  return static_cast<int>(n);
+}
+constexpr std::array<Node, 3> kThermometerNode = {Node::coil_outer, Node::acc1, Node::acc2};
+
+// `value` rounded to a multiple of `step`, computed so that 0.01-type steps print exactly
+// ("-39.73", not "-39.730000000000004"): divide by 1/step when that is a whole number.
+double round_to(double value, double step) {
+  if (step <= 0.0) return value;
+  const double k = std::round(value / step);
+  const double inverse = std::round(1.0 / step);
+  if (inverse >= 1.0 && std::abs(inverse * step - 1.0) < 1e-12) return k / inverse;
+  return k * step;
+}
+
+double read_thermometer(const ThermometerParams& p, double lagged_degc, Rng& rng) {
+  return round_to(lagged_degc + p.offset_degc + p.noise_degc * rng.normal(), p.resolution_degc);
+}
+
+// Logger resolutions of the channels the instrument file does not quantise.
+constexpr double kAccelResolutionG = 1e-8;
+constexpr double kChamberResolutionDegc = 1e-3;
+constexpr double kTableResolutionDeg = 1e-6;
+
+// Number of fine steps in one output interval; the interval must be a whole number of steps.
+int substeps(double interval_s, double fine_step_s) {
+  const double ratio = interval_s / fine_step_s;
+  const double whole = std::round(ratio);
+  if (whole < 1.0 || std::abs(ratio - whole) > 1e-6 * ratio) {
+    throw OptionError("--rate-hz",
+                      fmt::format("the output interval {} s is not a whole number of fine steps "
+                                  "of {} s (instrument.fog.fine_step_s)",
+                                  interval_s, fine_step_s));
+  }
+  return static_cast<int>(whole);
+}
+
+}  // namespace
+
+NfsSimulator::NfsSimulator(const Instrument& instrument, const NodeTemps& initial, double time_s)
+    : instrument_(instrument), network_(instrument.thermal), temps_(initial), time_s_(time_s) {
+  validate(instrument_);
+  for (int i = 0; i < 3; ++i) thermometer_state_degc_[i] = temps_[idx(kThermometerNode[i])];
+}
+
+void NfsSimulator::step(double dt, const AirProfile& air, bool powered) {
+  network_.step(temps_, dt, air(time_s_), air(time_s_ + dt), powered);
+  const std::array<const ThermometerParams*, 3> therm = {
+      &instrument_.thermometer_fog, &instrument_.thermometer_acc1, &instrument_.thermometer_acc2};
+  for (int i = 0; i < 3; ++i) {
+    const double target = temps_[idx(kThermometerNode[i])];
+    const double lag = therm[i]->lag_s;
+    const double a = lag > 0.0 ? 1.0 - std::exp(-dt / lag) : 1.0;
+    thermometer_state_degc_[i] += a * (target - thermometer_state_degc_[i]);
+  }
+  time_s_ += dt;
+}
+
+void NfsSimulator::advance(double duration_s, const AirProfile& air, bool powered) {
+  if (duration_s <= 0.0) return;
+  const double fine = instrument_.fog.fine_step_s;
+  const long steps = std::max(1L, static_cast<long>(std::ceil(duration_s / fine - 1e-9)));
+  const double dt = duration_s / static_cast<double>(steps);
+  for (long s = 0; s < steps; ++s) step(dt, air, powered);
+}
+
+Recording NfsSimulator::record(const RecordSetup& setup, const AirProfile& air,
+                               double power_on_time_s) {
+  if (!(setup.output_rate_hz > 0.0) || !std::isfinite(setup.output_rate_hz)) {
+    throw OptionError("--rate-hz", fmt::format("{} must be a positive rate", setup.output_rate_hz));
+  }
+  const double interval = 1.0 / setup.output_rate_hz;
+  const int n_sub = substeps(interval, instrument_.fog.fine_step_s);
+  const double dt = interval / n_sub;
+  const long n_out = std::lround(setup.duration_s * setup.output_rate_hz);
+  if (n_out < 2) throw OptionError("duration", "a recording needs at least 2 samples");
+
+  const FogParams& fog = instrument_.fog;
+  Rng bias_rng(derive_seed(setup.seed, 1));
+  const double turn_on_bias_dph = fog.bias_dph + fog.bias_run_to_run_dph * bias_rng.normal();
+  FogNoise noise(fog, derive_seed(setup.seed, 2));
+  Rng sensor_rng(derive_seed(setup.seed, 3));
+  const Vec3 earth = earth_rate_enu_dph(setup.latitude_deg);
+
+  Recording rec;
+  for (auto* col :
+       {&rec.time_s, &rec.gyro_dph, &rec.temp_fog_degc, &rec.temp_acc1_degc, &rec.temp_acc2_degc}) {
+    col->reserve(n_out);
+  }
+  rec.accel_x_g.emplace();
+  rec.accel_y_g.emplace();
+  rec.table_deg.emplace();
+  rec.chamber_degc.emplace();
+  ExtraColumn truth{"drift_true_dph", {}};
+
+  const double start = time_s_;
+  for (long k = 0; k < n_out; ++k) {
+    double angle_arcsec = 0.0;
+    double drift_integral = 0.0;
+    for (int j = 0; j < n_sub; ++j) {
+      const double t_rel = (time_s_ - start) + 0.5 * dt;  // mid-step, relative to the recording
+      const NodeTemps rate = network_.derivative(temps_, air(time_s_), true);
+      const double coil_mean =
+          0.5 * (temps_[idx(Node::coil_inner)] + temps_[idx(Node::coil_outer)]);
+      const double coil_rate = 0.5 * (rate[idx(Node::coil_inner)] + rate[idx(Node::coil_outer)]);
+      const double gradient_rate = rate[idx(Node::coil_inner)] - rate[idx(Node::coil_outer)];
+      const double drift = thermal_drift(fog, coil_mean, coil_rate, gradient_rate).total_dph();
+      const double input = dot(earth, setup.platform.body_x(setup.table.angle_deg(t_rel)));
+      angle_arcsec += (input + turn_on_bias_dph + drift) * dt + noise.angle_increment_arcsec(dt);
+      drift_integral += drift * dt;
+      step(dt, air, true);
+    }
+    const double t_rel = time_s_ - start;
+    const double table = setup.table.angle_deg(t_rel);
+    // Stamps from the sample count, not the accumulated steps, so they print as 1, 2, 3 ...
+    const double stamp = (start - power_on_time_s) + static_cast<double>(k + 1) * interval;
+    rec.time_s.push_back(std::round(stamp * 1e9) / 1e9);
+    // The output is a whole number of quanta per interval; round away the product's last bits.
+    rec.gyro_dph.push_back(round_to(noise.quantize_arcsec(angle_arcsec) / interval, 1e-9));
+    rec.temp_fog_degc.push_back(
+        read_thermometer(instrument_.thermometer_fog, thermometer_state_degc_[0], sensor_rng));
+    rec.temp_acc1_degc.push_back(
+        read_thermometer(instrument_.thermometer_acc1, thermometer_state_degc_[1], sensor_rng));
+    rec.temp_acc2_degc.push_back(
+        read_thermometer(instrument_.thermometer_acc2, thermometer_state_degc_[2], sensor_rng));
+    rec.accel_x_g->push_back(
+        round_to(accelerometer_output_g(instrument_.accel_x, setup.platform.body_x(table),
+                                        temps_[idx(Node::acc1)], sensor_rng),
+                 kAccelResolutionG));
+    rec.accel_y_g->push_back(
+        round_to(accelerometer_output_g(instrument_.accel_y, setup.platform.body_y(table),
+                                        temps_[idx(Node::acc2)], sensor_rng),
+                 kAccelResolutionG));
+    double wrapped = std::fmod(table, 360.0);
+    if (wrapped < 0.0) wrapped += 360.0;
+    rec.table_deg->push_back(round_to(wrapped, kTableResolutionDeg));
+    rec.chamber_degc->push_back(round_to(air(time_s_), kChamberResolutionDegc));
+    if (setup.write_true_drift)
+      truth.cells.push_back(fmt::format("{:.9g}", drift_integral / interval));
+  }
+  if (setup.write_true_drift) rec.extra.push_back(std::move(truth));
+  return rec;
+}
+
+}  // namespace fogdrift::sim

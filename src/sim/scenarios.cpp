@@ -1,0 +1,252 @@
+#include "fogdrift/sim/scenarios.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <nlohmann/json.hpp>
+
+#include "fogdrift/atomic_file.hpp"
+#include "fogdrift/csv.hpp"
+#include "fogdrift/error.hpp"
+#include "fogdrift/random.hpp"
+#include "fogdrift/sim/nfs.hpp"
+#include "fogdrift/version.hpp"
+
+namespace fogdrift::sim {
+namespace {
+
+// Stream numbers below the run seed, so every recording has its own independent noise.
+constexpr std::uint64_t kCalibrationStream = 0;
+constexpr std::uint64_t kNorthfindStream = 1'000'000;
+constexpr std::uint64_t kStableStream = 2'000'000;
+constexpr std::uint64_t kChamberStream = 3'000'000;
+
+std::string generator_json(std::string_view scenario, std::uint64_t seed, double rate_hz) {
+  nlohmann::ordered_json g;
+  g["tool"] = "fogdrift simulate";
+  g["version"] = kVersion;
+  g["scenario"] = scenario;
+  g["seed"] = seed;
+  g["output_rate_hz"] = rate_hz;
+  return g.dump();
+}
+
+void check_temps(const std::vector<double>& temps, const std::string& option) {
+  if (temps.empty()) throw OptionError(option, "needs at least one temperature");
+  for (double t : temps) {
+    if (!std::isfinite(t) || t < -70.0 || t > 100.0) {
+      throw OptionError(option, fmt::format("{} °C is outside [-70, 100]", t));
+    }
+  }
+}
+
+void check_rate(double rate_hz) {
+  if (!std::isfinite(rate_hz) || rate_hz <= 0.0 || rate_hz > 1000.0) {
+    throw OptionError("--rate-hz", fmt::format("{} is outside (0, 1000] Hz", rate_hz));
+  }
+}
+
+void check_latitude(double latitude_deg) {
+  // The four-position method needs a horizontal Earth-rate component.
+  if (!std::isfinite(latitude_deg) || std::abs(latitude_deg) > 85.0) {
+    throw OptionError("--latitude", fmt::format("{}° is outside [-85, 85]", latitude_deg));
+  }
+}
+
+}  // namespace
+
+std::string temperature_tag(double t) {
+  std::string body = csv::format_number(std::abs(t));
+  return (t < 0 ? "m" : "") + body + "C";
+}
+
+NorthfindOptions stable_defaults() {
+  NorthfindOptions o;
+  o.temps_degc = {25.0};
+  o.findings = 20;
+  o.warmup_s = 7200.0;
+  return o;
+}
+
+void validate(const CalibrationOptions& o) {
+  check_temps(o.temps_degc, "--temps");
+  if (o.repetitions < 1 || o.repetitions > 100) {
+    throw OptionError("--repetitions", fmt::format("{} is outside [1, 100]", o.repetitions));
+  }
+  if (o.test_repetitions < 0 || o.test_repetitions > o.repetitions) {
+    throw OptionError("--test-repetitions", fmt::format("{} is outside [0, repetitions = {}]",
+                                                        o.test_repetitions, o.repetitions));
+  }
+  if (!(o.soak_s >= 0.0) || !(o.ramp_s >= 0.0) || !(o.powered_s > 0.0)) {
+    throw OptionError("cycle", "soak and ramp must be >= 0 s and the powered time > 0 s");
+  }
+  if (!(o.chamber_setpoint_sd_degc >= 0.0) || o.chamber_setpoint_sd_degc > 10.0) {
+    throw OptionError("chamber_setpoint_sd_degc", "must be in [0, 10] °C");
+  }
+  check_rate(o.output_rate_hz);
+  check_latitude(o.latitude_deg);
+}
+
+void validate(const NorthfindOptions& o) {
+  check_temps(o.temps_degc, "--temps");
+  if (o.findings < 1 || o.findings > 1000) {
+    throw OptionError("--findings", fmt::format("{} is outside [1, 1000]", o.findings));
+  }
+  if (!(o.position_s >= 20.0) || o.position_s > 36000.0) {
+    throw OptionError("--position-s", fmt::format("{} s is outside [20, 36000]", o.position_s));
+  }
+  if (!(o.warmup_s >= 0.0)) throw OptionError("--warmup-s", "must be >= 0 s");
+  check_rate(o.output_rate_hz);
+  check_latitude(o.latitude_deg);
+}
+
+SimulatedCampaign simulate_calibration(const Instrument& instrument, const CalibrationOptions& o) {
+  validate(instrument);
+  validate(o);
+  SimulatedCampaign out;
+  out.campaign.latitude_deg = o.latitude_deg;
+  out.campaign.generator_json = generator_json("calibration", o.seed, o.output_rate_hz);
+  const double cycle_s = o.soak_s + o.powered_s + o.ramp_s;
+  const std::size_t n_temps = o.temps_degc.size();
+
+  for (int rep = 1; rep <= o.repetitions; ++rep) {
+    // The chamber reaches each set point within its own control error, drawn per cycle.
+    Rng chamber_rng(derive_seed(o.seed, kChamberStream + static_cast<std::uint64_t>(rep)));
+    std::vector<double> reached(n_temps);
+    for (std::size_t i = 0; i < n_temps; ++i) {
+      reached[i] = o.temps_degc[i] + o.chamber_setpoint_sd_degc * chamber_rng.normal();
+    }
+    // Air profile of one sweep: hold for soak + powered time, then ramp to the next set point.
+    const AirProfile air = [&, cycle_s](double t) {
+      const double c = std::floor(t / cycle_s);
+      const std::size_t i = static_cast<std::size_t>(std::clamp(c, 0.0, double(n_temps - 1)));
+      const double into = t - static_cast<double>(i) * cycle_s;
+      const double hold = o.soak_s + o.powered_s;
+      if (into <= hold || i + 1 >= n_temps || o.ramp_s <= 0.0) return reached[i];
+      const double f = std::min(1.0, (into - hold) / o.ramp_s);
+      return reached[i] + f * (reached[i + 1] - reached[i]);
+    };
+    // Each sweep starts from equilibrium at its first temperature: between sweeps the chamber
+    // returns to it and soaks the instrument completely.
+    NodeTemps start;
+    start.fill(reached[0]);
+    NfsSimulator nfs(instrument, start, 0.0);
+    for (std::size_t i = 0; i < n_temps; ++i) {
+      const double cycle_start = static_cast<double>(i) * cycle_s;
+      nfs.advance(cycle_start + o.soak_s - nfs.time_s(), air, false);
+      RecordSetup setup;
+      setup.duration_s = o.powered_s;
+      setup.output_rate_hz = o.output_rate_hz;
+      setup.latitude_deg = o.latitude_deg;
+      setup.platform = Platform(o.azimuth_deg, instrument.turntable.tilt_east_deg,
+                                instrument.turntable.tilt_north_deg);
+      setup.table = TurntableSchedule(0.0);
+      setup.seed =
+          derive_seed(o.seed, kCalibrationStream + static_cast<std::uint64_t>(rep) * 1000 + i);
+      const double power_on = nfs.time_s();
+      Recording rec = nfs.record(setup, air, power_on);
+      nfs.advance(o.ramp_s, air, false);
+
+      CampaignEntry e;
+      e.file = fmt::format("cal_r{}_{}.csv", rep, temperature_tag(o.temps_degc[i]));
+      e.scenario = Scenario::calibration;
+      e.role = rep > o.repetitions - o.test_repetitions ? Role::test : Role::train;
+      e.repetition = rep;
+      e.initial_temp_degc = o.temps_degc[i];
+      e.true_azimuth_deg = setup.platform.true_azimuth_deg();
+      rec.source = e.file;
+      out.campaign.recordings.push_back(e);
+      out.recordings.push_back(std::move(rec));
+    }
+  }
+  return out;
+}
+
+namespace {
+
+SimulatedCampaign simulate_findings(const Instrument& instrument, const NorthfindOptions& o,
+                                    Scenario scenario, std::uint64_t stream) {
+  validate(instrument);
+  validate(o);
+  SimulatedCampaign out;
+  out.campaign.latitude_deg = o.latitude_deg;
+  out.campaign.generator_json =
+      generator_json(std::string(to_string(scenario)), o.seed, o.output_rate_hz);
+  const double rotation_s = 90.0 / instrument.turntable.rate_deg_per_s;
+  if (rotation_s + 10.0 > o.position_s) {
+    throw OptionError("--position-s",
+                      fmt::format("{} s leaves less than 10 s of dwell after a {} s rotation",
+                                  o.position_s, rotation_s));
+  }
+  for (std::size_t i = 0; i < o.temps_degc.size(); ++i) {
+    const std::uint64_t seed = derive_seed(o.seed, stream + i);
+    Rng setup_rng(derive_seed(seed, 100));
+    const double azimuth = 360.0 * setup_rng.uniform();
+    const double t0 = o.temps_degc[i];
+    const AirProfile air = [t0](double) { return t0; };
+
+    RecordSetup setup;
+    setup.duration_s = o.findings * 4 * o.position_s;
+    setup.output_rate_hz = o.output_rate_hz;
+    setup.latitude_deg = o.latitude_deg;
+    setup.platform =
+        Platform(azimuth, instrument.turntable.tilt_east_deg, instrument.turntable.tilt_north_deg);
+    // Positions 0°, 90°, 180°, 270°, then on to 360° = 0° for the next finding. The table reaches
+    // each position within its indexing error.
+    const double index_sd_deg = instrument.turntable.indexing_error_arcsec / 3600.0;
+    double error_deg = index_sd_deg * setup_rng.normal();
+    setup.table = TurntableSchedule(error_deg);
+    for (int p = 1; p < o.findings * 4; ++p) {
+      const double next_error = index_sd_deg * setup_rng.normal();
+      setup.table.add_move(p * o.position_s, 90.0 + next_error - error_deg,
+                           instrument.turntable.rate_deg_per_s);
+      error_deg = next_error;
+    }
+    setup.seed = seed;
+
+    NodeTemps start;
+    start.fill(t0);  // soaked to equilibrium before power-on
+    NfsSimulator nfs(instrument, start, 0.0);
+    nfs.advance(o.warmup_s, air, true);
+    Recording rec = nfs.record(setup, air, 0.0);
+
+    CampaignEntry e;
+    e.file = fmt::format("{}_{}.csv", scenario == Scenario::stable ? "stable" : "nf",
+                         temperature_tag(t0));
+    if (o.temps_degc.size() > 1 && std::count(o.temps_degc.begin(), o.temps_degc.end(), t0) > 1) {
+      e.file = fmt::format("{}_{}_{}.csv", scenario == Scenario::stable ? "stable" : "nf",
+                           temperature_tag(t0), i + 1);
+    }
+    e.scenario = scenario;
+    e.role = Role::test;
+    e.repetition = 1;
+    e.initial_temp_degc = t0;
+    e.true_azimuth_deg = setup.platform.true_azimuth_deg();
+    rec.source = e.file;
+    out.campaign.recordings.push_back(e);
+    out.recordings.push_back(std::move(rec));
+  }
+  return out;
+}
+
+}  // namespace
+
+SimulatedCampaign simulate_northfind(const Instrument& instrument, const NorthfindOptions& o) {
+  return simulate_findings(instrument, o, Scenario::northfind, kNorthfindStream);
+}
+
+SimulatedCampaign simulate_stable(const Instrument& instrument, const NorthfindOptions& o) {
+  return simulate_findings(instrument, o, Scenario::stable, kStableStream);
+}
+
+void write_campaign(const std::filesystem::path& dir, const SimulatedCampaign& sim, bool replace) {
+  fill_directory_atomically(dir, replace, [&](const std::filesystem::path& tmp) {
+    for (std::size_t i = 0; i < sim.recordings.size(); ++i) {
+      write_recording(tmp / sim.campaign.recordings[i].file, sim.recordings[i]);
+    }
+    write_manifest(tmp, sim.campaign);
+  });
+}
+
+}  // namespace fogdrift::sim

@@ -1,0 +1,76 @@
+#include "fogdrift/csv.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+
+#include "fogdrift/error.hpp"
+#include "fogdrift/random.hpp"
+
+namespace fogdrift::csv {
+namespace {
+
+TEST(CsvParse, QuotedFieldsCrlfAndByteOrderMark) {
+  const Table t = parse(
+      "\xEF\xBB\xBFtime_s,\"Rate X [rad/s], filtered\",note\r\n1,2,\"a \"\"b\"\"\"\r\n"
+      "2,3,plain\r\n\r\n",
+      "x.csv");
+  ASSERT_EQ(t.header.size(), 3u);
+  EXPECT_EQ(t.header[0], "time_s");  // the BOM is not part of the first name
+  EXPECT_EQ(t.header[1], "Rate X [rad/s], filtered");
+  ASSERT_EQ(t.rows.size(), 2u);
+  EXPECT_EQ(t.rows[0][2], "a \"b\"");
+  EXPECT_EQ(t.row_line[1], 3u);
+}
+
+TEST(CsvParse, SemicolonDelimiter) {
+  const Table t = parse("a;b\n1,5;2\n", "x.csv", {';'});
+  ASSERT_EQ(t.rows.size(), 1u);
+  EXPECT_EQ(t.rows[0][0], "1,5");
+}
+
+TEST(CsvParse, TrailingDelimiterMakesAnEmptyField) {
+  EXPECT_THROW(parse("a,b\n1,2,\n", "x.csv"), InputError);
+}
+
+TEST(ParseNumber, AcceptsDecimalForms) {
+  EXPECT_EQ(*parse_number("1.5"), 1.5);
+  EXPECT_EQ(*parse_number(" -2e-3 "), -2e-3);
+  EXPECT_EQ(*parse_number("+4"), 4.0);
+  EXPECT_EQ(*parse_number(".5"), 0.5);
+  EXPECT_EQ(*parse_number("1,25", true), 1.25);
+}
+
+TEST(ParseNumber, RejectsNonFiniteAndText) {
+  for (const char* bad : {"", " ", "nan", "NaN", "inf", "-Infinity", "1e999", "abc", "1.2.3",
+                          "0x10", "1,5", "--1", "+", "-"}) {
+    EXPECT_FALSE(parse_number(bad).has_value()) << "'" << bad << "'";
+  }
+  EXPECT_FALSE(parse_number("1.5", true).has_value());  // a '.' with decimal commas is ambiguous
+}
+
+TEST(FormatNumber, ShortestTextReadsBackExactly) {
+  Rng rng(42);
+  for (int i = 0; i < 20000; ++i) {
+    const double scale = std::pow(10.0, rng.uniform(-30.0, 30.0));
+    const double x = rng.normal() * scale;
+    const std::string text = format_number(x);
+    const auto back = parse_number(text);
+    ASSERT_TRUE(back.has_value()) << text;
+    ASSERT_EQ(*back, x) << text;
+  }
+  EXPECT_EQ(format_number(0.1), "0.1");
+  EXPECT_EQ(format_number(-39.73), "-39.73");
+  EXPECT_EQ(format_number(1800.0), "1800");
+}
+
+TEST(Quote, OnlyWhenNeeded) {
+  EXPECT_EQ(quote("plain"), "plain");
+  EXPECT_EQ(quote("a,b"), "\"a,b\"");
+  EXPECT_EQ(quote("say \"hi\""), "\"say \"\"hi\"\"\"");
+  EXPECT_EQ(quote(" edge"), "\" edge\"");
+}
+
+}  // namespace
+}  // namespace fogdrift::csv

@@ -1,0 +1,109 @@
+#include "fogdrift/import.hpp"
+
+#include <gtest/gtest.h>
+
+#include <numbers>
+
+#include "fogdrift/error.hpp"
+#include "test_util.hpp"
+
+namespace fogdrift {
+namespace {
+
+TEST(ParseUnit, ConversionsAgainstHandComputedValues) {
+  const double rad_s = 1e-5;  // 1e-5 rad/s = 1e-5·180/π·3600 °/h = 2.0626480624709636 °/h
+  const auto r = parse_unit("gyro_dph", "rad/s");
+  EXPECT_NEAR(rad_s * r.scale + r.offset, 2.0626480624709636, 1e-15);
+  EXPECT_DOUBLE_EQ(parse_unit("gyro_dph", "deg/s").scale, 3600.0);
+  EXPECT_DOUBLE_EQ(parse_unit("time_s", "ms").scale, 1e-3);
+  const auto k = parse_unit("temp_fog_degc", "K");
+  EXPECT_NEAR(300.0 * k.scale + k.offset, 26.85, 1e-12);
+  const auto f = parse_unit("temp_acc1_degc", "degF");
+  EXPECT_NEAR(-40.0 * f.scale + f.offset, -40.0, 1e-12);
+  EXPECT_NEAR(212.0 * f.scale + f.offset, 100.0, 1e-12);
+  const auto counts = parse_unit("temp_acc2_degc", "counts:0.0625:-50");
+  EXPECT_DOUBLE_EQ(1000.0 * counts.scale + counts.offset, 12.5);
+  EXPECT_NEAR(9.80665 * parse_unit("accel_x_g", "m/s2").scale, 1.0, 1e-15);
+  EXPECT_DOUBLE_EQ(std::numbers::pi * parse_unit("table_deg", "rad").scale, 180.0);
+}
+
+TEST(ParseUnit, UnknownUnitsNameTheOptionAndTheAcceptedUnits) {
+  try {
+    parse_unit("gyro_dph", "rpm");
+    FAIL();
+  } catch (const OptionError& e) {
+    const std::string m = e.what();
+    EXPECT_NE(m.find("--unit gyro_dph=rpm"), std::string::npos) << m;
+    EXPECT_NE(m.find("rad/s"), std::string::npos) << m;
+  }
+  EXPECT_THROW(parse_unit("temp_fog_degc", "counts:0.1"), OptionError);
+  EXPECT_THROW(parse_unit("temp_fog_degc", "counts:0:5"), OptionError);
+  EXPECT_THROW(parse_unit("pressure", "Pa"), OptionError);
+}
+
+TEST(Import, ForeignLoggerWithMappingUnitsAndSemicolons) {
+  test::TempDir dir;
+  test::write_file(dir / "logger.csv",
+                   "Zeit [ms];Rate X [rad/s];T0;T1;T2;Status\n"
+                   "5000;0,0001;1000;1010;990;OK\n"
+                   "6000;0,0002;1001;1011;991;OK\n");
+  ImportOptions o;
+  o.delimiter = ';';
+  o.decimal_comma = true;
+  o.time_from_zero = true;
+  o.columns = {{"time_s", "Zeit [ms]"},
+               {"gyro_dph", "Rate X [rad/s]"},
+               {"temp_fog_degc", "T0"},
+               {"temp_acc1_degc", "T1"},
+               {"temp_acc2_degc", "T2"}};
+  o.conversions = {{"time_s", parse_unit("time_s", "ms")},
+                   {"gyro_dph", parse_unit("gyro_dph", "rad/s")},
+                   {"temp_fog_degc", parse_unit("temp_fog_degc", "counts:0.0625:-40")},
+                   {"temp_acc1_degc", parse_unit("temp_acc1_degc", "counts:0.0625:-40")},
+                   {"temp_acc2_degc", parse_unit("temp_acc2_degc", "counts:0.0625:-40")}};
+  const Recording r = import_recording(dir / "logger.csv", o);
+  EXPECT_EQ(r.time_s, (std::vector<double>{0.0, 1.0}));
+  EXPECT_NEAR(r.gyro_dph[0], 20.626480624709636, 1e-12);
+  EXPECT_DOUBLE_EQ(r.temp_fog_degc[0], 22.5);
+  EXPECT_DOUBLE_EQ(r.temp_acc1_degc[1], 23.1875);
+  ASSERT_EQ(r.extra.size(), 1u);
+  EXPECT_EQ(r.extra[0].name, "Status");
+}
+
+TEST(Import, MappingToAnAbsentColumnListsTheColumns) {
+  test::TempDir dir;
+  test::write_file(dir / "l.csv", "t,w,a,b,c\n1,2,3,4,5\n2,2,3,4,5\n");
+  ImportOptions o;
+  o.columns = {{"gyro_dph", "Rate"}};
+  try {
+    import_recording(dir / "l.csv", o);
+    FAIL();
+  } catch (const OptionError& e) {
+    const std::string m = e.what();
+    EXPECT_NE(m.find("--map gyro_dph=Rate"), std::string::npos) << m;
+    EXPECT_NE(m.find("'t', 'w', 'a', 'b', 'c'"), std::string::npos) << m;
+  }
+}
+
+TEST(Import, BadCellNamesForeignLineAndColumn) {
+  test::TempDir dir;
+  test::write_file(dir / "l.csv", "t,w,a,b,c\n1,2,3,4,5\n2,x,3,4,5\n");
+  ImportOptions o;
+  o.columns = {{"time_s", "t"},
+               {"gyro_dph", "w"},
+               {"temp_fog_degc", "a"},
+               {"temp_acc1_degc", "b"},
+               {"temp_acc2_degc", "c"}};
+  try {
+    import_recording(dir / "l.csv", o);
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("l.csv:3:2: column 'w' (for gyro_dph)"), std::string::npos)
+        << e.what();
+  }
+  o.decimal_comma = true;  // impossible with ',' as the delimiter
+  EXPECT_THROW(import_recording(dir / "l.csv", o), OptionError);
+}
+
+}  // namespace
+}  // namespace fogdrift

@@ -1,0 +1,36 @@
+#include "fogdrift/inspect.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace fogdrift {
+namespace {
+
+TEST(Inspect, RateGapsAndRanges) {
+  Recording r;
+  for (double t : {1.0, 2.0, 3.0, 4.0, 7.0, 8.0, 9.0}) {
+    r.time_s.push_back(t);
+    r.gyro_dph.push_back(t);  // 1..9, so mean and STD are known
+    r.temp_fog_degc.push_back(-t);
+    r.temp_acc1_degc.push_back(0);
+    r.temp_acc2_degc.push_back(0);
+  }
+  const RecordingSummary s = summarize(r);
+  EXPECT_EQ(s.samples, 7u);
+  EXPECT_DOUBLE_EQ(s.duration_s, 8.0);
+  EXPECT_DOUBLE_EQ(s.sample_rate_hz, 1.0);
+  EXPECT_EQ(s.gaps, 1u);
+  EXPECT_DOUBLE_EQ(s.longest_gap_s, 3.0);
+  EXPECT_DOUBLE_EQ(s.columns[0].mean, 34.0 / 7.0);
+  EXPECT_DOUBLE_EQ(s.columns[1].min, -9.0);
+}
+
+TEST(Inspect, ColumnRangeStdIsTheSampleStd) {
+  const ColumnRange r = column_range("x", {2, 4, 4, 4, 5, 5, 7, 9});
+  EXPECT_DOUBLE_EQ(r.mean, 5.0);
+  EXPECT_DOUBLE_EQ(r.std, std::sqrt(32.0 / 7.0));
+}
+
+}  // namespace
+}  // namespace fogdrift

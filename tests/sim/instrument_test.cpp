@@ -1,0 +1,56 @@
+#include "fogdrift/sim/instrument.hpp"
+
+#include <gtest/gtest.h>
+
+#include "fogdrift/error.hpp"
+
+namespace fogdrift::sim {
+namespace {
+
+std::string message_of(const std::string& json) {
+  try {
+    instrument_from_json(json, "unit.json");
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(Instrument, DefaultsAreValidAndRoundTripThroughJson) {
+  Instrument in;
+  EXPECT_NO_THROW(validate(in));
+  in.fog.arw_deg_per_rth = 0.00123456789012345;
+  in.thermal.capacity_j_per_k[3] = 321.5;
+  const Instrument back = instrument_from_json(to_json(in), "x.json");
+  EXPECT_EQ(to_json(back), to_json(in));
+  EXPECT_EQ(back.fog.arw_deg_per_rth, 0.00123456789012345);
+}
+
+TEST(Instrument, PartialFileKeepsOtherDefaults) {
+  const Instrument in = instrument_from_json(R"({"fog": {"bias_dph": 0.5}})", "x.json");
+  EXPECT_EQ(in.fog.bias_dph, 0.5);
+  EXPECT_EQ(in.fog.arw_deg_per_rth, Instrument{}.fog.arw_deg_per_rth);
+}
+
+TEST(Instrument, BadFilesNameTheParameterAndTheRule) {
+  EXPECT_NE(message_of(R"({"fog": {"arw": 1}})").find("unit.json: fog.arw: unknown parameter"),
+            std::string::npos);
+  EXPECT_NE(message_of(R"({"fog": {"arw_deg_per_rth": "big"}})").find("must be a number"),
+            std::string::npos);
+  EXPECT_NE(message_of(R"({"thermal": {"capacity_j_per_k": {"housing": -1}}})")
+                .find("instrument.thermal.capacity_j_per_k.housing: -1 is outside (0"),
+            std::string::npos);
+  EXPECT_NE(message_of(R"({"format": "other/2"})").find("format"), std::string::npos);
+  EXPECT_NE(message_of("{ nope").find("invalid JSON"), std::string::npos);
+}
+
+TEST(Instrument, ParameterTableListsEveryField) {
+  Instrument in;
+  const std::string table = parameter_table_markdown();
+  for (const auto& f : instrument_fields(in)) {
+    EXPECT_NE(table.find("`" + f.path + "`"), std::string::npos) << f.path;
+  }
+}
+
+}  // namespace
+}  // namespace fogdrift::sim

@@ -1,0 +1,210 @@
+#include "fogdrift/sim/scenarios.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "fogdrift/campaign.hpp"
+#include "fogdrift/error.hpp"
+#include "fogdrift/eval/startup.hpp"
+#include "test_util.hpp"
+
+namespace fogdrift::sim {
+namespace {
+
+// One default calibration campaign shared by the statistics tests (it takes well under a second).
+const SimulatedCampaign& default_calibration() {
+  static const SimulatedCampaign campaign = [] {
+    CalibrationOptions o;
+    o.seed = 1;
+    return simulate_calibration(Instrument{}, o);
+  }();
+  return campaign;
+}
+
+double mean(const std::vector<double>& v) {
+  double s = 0;
+  for (double x : v) s += x;
+  return s / static_cast<double>(v.size());
+}
+
+TEST(Calibration, PaperProtocolShape) {
+  const auto& c = default_calibration();
+  ASSERT_EQ(c.recordings.size(), 44u);
+  int train = 0, test = 0;
+  for (std::size_t i = 0; i < c.recordings.size(); ++i) {
+    const auto& e = c.campaign.recordings[i];
+    const auto& r = c.recordings[i];
+    (e.role == Role::train ? train : test)++;
+    EXPECT_EQ(e.role == Role::test, e.repetition == 4) << e.file;
+    EXPECT_EQ(e.scenario, Scenario::calibration);
+    ASSERT_EQ(r.size(), 1800u) << e.file;
+    EXPECT_EQ(r.time_s.front(), 1.0);
+    EXPECT_EQ(r.time_s.back(), 1800.0);
+    // The chamber holds the cycle temperature (within its control error) while powered.
+    EXPECT_NEAR(r.chamber_degc->front(), e.initial_temp_degc, 1.0);
+    EXPECT_TRUE(r.has_column("drift_true_dph"));
+  }
+  EXPECT_EQ(train, 33);
+  EXPECT_EQ(test, 11);
+  EXPECT_EQ(c.campaign.recordings[0].file, "cal_r1_m40C.csv");
+}
+
+TEST(Calibration, SameSeedSameBytesOtherSeedOtherNoise) {
+  CalibrationOptions o;
+  o.temps_degc = {-40, 20};
+  o.repetitions = 2;
+  o.seed = 5;
+  const auto a = simulate_calibration(Instrument{}, o);
+  const auto b = simulate_calibration(Instrument{}, o);
+  o.seed = 6;
+  const auto c = simulate_calibration(Instrument{}, o);
+  ASSERT_EQ(a.recordings.size(), 4u);
+  for (std::size_t i = 0; i < a.recordings.size(); ++i) {
+    EXPECT_EQ(to_csv(a.recordings[i]), to_csv(b.recordings[i]));
+    EXPECT_NE(to_csv(a.recordings[i]), to_csv(c.recordings[i]));
+  }
+  EXPECT_EQ(manifest_json(a.campaign), manifest_json(b.campaign));
+}
+
+// The default instrument is paper-like (issue: denoised start-up STD 0.01–0.02 °/h, paper 0.0134).
+TEST(Calibration, StartUpDriftStatisticsArePaperLike) {
+  const auto& c = default_calibration();
+  std::vector<double> true_std, smooth_std;
+  for (std::size_t i = 0; i < c.recordings.size(); ++i) {
+    const auto& r = c.recordings[i];
+    const auto truth = eval::startup_stats(r.time_s, r.numeric_column("drift_true_dph"), 1);
+    const auto smooth = eval::startup_stats(r.time_s, r.gyro_dph, 61);
+    true_std.push_back(truth.std_dph);
+    smooth_std.push_back(smooth.std_dph);
+    // Falls sharply first, then rises: the minimum lies between 100 s and 500 s, and the end
+    // is above the start-up minimum by a clear margin.
+    EXPECT_GT(truth.min_time_s, 100.0) << c.campaign.recordings[i].file;
+    EXPECT_LT(truth.min_time_s, 500.0) << c.campaign.recordings[i].file;
+  }
+  EXPECT_GT(mean(true_std), 0.010);
+  EXPECT_LT(mean(true_std), 0.020);
+  EXPECT_GT(mean(smooth_std), 0.010);
+  EXPECT_LT(mean(smooth_std), 0.020);
+}
+
+TEST(Calibration, StartUpShapeDiffersWithInitialTemperature) {
+  const auto& c = default_calibration();
+  // Compare the normalised true-drift curves of the coldest and the hottest cycle.
+  auto curve = [&](std::size_t i) {
+    auto d = c.recordings[i].numeric_column("drift_true_dph");
+    const double m = mean(d);
+    double s = 0;
+    for (double& x : d) x -= m, s += x * x;
+    for (double& x : d) x /= std::sqrt(s);
+    return d;
+  };
+  const auto cold = curve(0), hot = curve(10);
+  double correlation = 0;
+  for (std::size_t k = 0; k < cold.size(); ++k) correlation += cold[k] * hot[k];
+  EXPECT_LT(correlation, 0.95);
+  const auto cold_stats = eval::startup_stats(c.recordings[0].time_s, cold, 1);
+  const auto hot_stats = eval::startup_stats(c.recordings[10].time_s, hot, 1);
+  EXPECT_GT(std::abs(cold_stats.min_time_s - hot_stats.min_time_s), 20.0);
+}
+
+Instrument ideal_instrument() {
+  Instrument in;
+  FogParams& f = in.fog;
+  f.bias_run_to_run_dph = 0;
+  f.static_d1_dph_per_k = f.static_d2_dph_per_k2 = f.static_d3_dph_per_k3 = 0;
+  f.rate_r0_dph_per_kps = 0;
+  f.shupe_s0_dph_per_kps = 0;
+  f.arw_deg_per_rth = f.bias_gm_sigma_dph = f.rrw_deg_per_h_rth = f.quantization_arcsec = 0;
+  in.accel_x.noise_g = in.accel_y.noise_g = 0;
+  in.accel_x.temp_coeff_g_per_k = in.accel_y.temp_coeff_g_per_k = 0;  // biases held constant
+  in.turntable.indexing_error_arcsec = 0;
+  return in;
+}
+
+TEST(Northfind, ZeroDriftAndNoiseGivesTheTrueAzimuth) {
+  NorthfindOptions o;
+  o.temps_degc = {-32, 54};
+  const auto nf = simulate_northfind(ideal_instrument(), o);
+  ASSERT_EQ(nf.recordings.size(), 2u);
+  for (std::size_t i = 0; i < nf.recordings.size(); ++i) {
+    const auto& e = nf.campaign.recordings[i];
+    EXPECT_EQ(e.scenario, Scenario::northfind);
+    ASSERT_TRUE(e.true_azimuth_deg.has_value());
+    const auto errors =
+        eval::northfind_errors_deg(nf.recordings[i], nf.campaign.latitude_deg, *e.true_azimuth_deg);
+    ASSERT_EQ(errors.size(), 5u);
+    // Constant turn-on bias and accelerometer biases (thermal part included) cancel exactly.
+    for (double err : errors) EXPECT_NEAR(err, 0.0, 1e-6) << e.file;
+  }
+}
+
+TEST(Northfind, StartUpIsWorseThanTheStableStageLikeThePaper) {
+  std::vector<double> startup, stable;
+  for (std::uint64_t seed = 1; seed <= 3; ++seed) {
+    NorthfindOptions o;
+    o.seed = seed;
+    const auto nf = simulate_northfind(Instrument{}, o);
+    for (std::size_t i = 0; i < nf.recordings.size(); ++i) {
+      startup.push_back(eval::rms(eval::northfind_errors_deg(
+          nf.recordings[i], 30.0, *nf.campaign.recordings[i].true_azimuth_deg)));
+    }
+    NorthfindOptions s = stable_defaults();
+    s.seed = seed;
+    const auto st = simulate_stable(Instrument{}, s);
+    ASSERT_EQ(st.campaign.recordings[0].scenario, Scenario::stable);
+    stable.push_back(eval::rms(eval::northfind_errors_deg(
+        st.recordings[0], 30.0, *st.campaign.recordings[0].true_azimuth_deg)));
+  }
+  // Paper Table 3: start-up raw mean 0.0209°, stable stage 0.012°.
+  EXPECT_GT(mean(stable), 0.007);
+  EXPECT_LT(mean(stable), 0.016);
+  EXPECT_GT(mean(startup), 0.014);
+  EXPECT_LT(mean(startup), 0.030);
+  EXPECT_GT(mean(startup), 1.6 * mean(stable));
+}
+
+TEST(Scenarios, ImpossibleOptionsNameTheOption) {
+  CalibrationOptions c;
+  c.repetitions = 0;
+  EXPECT_THROW(simulate_calibration(Instrument{}, c), OptionError);
+  c = CalibrationOptions{};
+  c.temps_degc = {-40, 150};
+  try {
+    simulate_calibration(Instrument{}, c);
+    FAIL();
+  } catch (const OptionError& e) {
+    EXPECT_NE(std::string(e.what()).find("--temps"), std::string::npos);
+  }
+  c = CalibrationOptions{};
+  c.output_rate_hz = 3.0;  // 1/3 s is not a whole number of 0.1 s steps
+  EXPECT_THROW(simulate_calibration(Instrument{}, c), OptionError);
+  NorthfindOptions n;
+  n.findings = 0;
+  EXPECT_THROW(simulate_northfind(Instrument{}, n), OptionError);
+  n = NorthfindOptions{};
+  n.position_s = 15;
+  EXPECT_THROW(simulate_northfind(Instrument{}, n), OptionError);
+}
+
+TEST(Scenarios, WrittenCampaignIsReadBackAndValid) {
+  test::TempDir dir;
+  CalibrationOptions o;
+  o.temps_degc = {0, 10};
+  o.repetitions = 2;
+  const auto sim = simulate_calibration(Instrument{}, o);
+  write_campaign(dir / "c", sim, false);
+  const Campaign back = read_campaign(dir / "c");
+  ASSERT_EQ(back.recordings.size(), 4u);
+  for (std::size_t i = 0; i < back.recordings.size(); ++i) {
+    const Recording r = read_recording(back.path_of(back.recordings[i]));
+    EXPECT_EQ(r.gyro_dph, sim.recordings[i].gyro_dph);
+    EXPECT_EQ(r.temp_fog_degc, sim.recordings[i].temp_fog_degc);
+  }
+  EXPECT_EQ(temperature_tag(-2.5), "m2.5C");
+  EXPECT_EQ(temperature_tag(25), "25C");
+}
+
+}  // namespace
+}  // namespace fogdrift::sim
