@@ -1,1 +1,113 @@
+#!/usr/bin/env bash
+# Runs the fogdrift tool as a user would and checks exit codes, messages and outputs.
+# Usage: cli_test.sh PATH/TO/fogdrift PATH/TO/tests/data
+set -u
+fd=$1
+data=$2
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+passed=0
+failed=0
 
+check() {  # check NAME CONDITION-COMMAND...
+  local name=$1
+  shift
+  if "$@"; then
+    passed=$((passed + 1))
+  else
+    failed=$((failed + 1))
+    echo "FAILED: $name" >&2
+  fi
+}
+
+# run EXPECTED_STATUS CMD... : runs, keeps stdout/stderr in $work/out, $work/err
+run() {
+  local expected=$1
+  shift
+  "$@" >"$work/out" 2>"$work/err"
+  local status=$?
+  if [ "$status" -ne "$expected" ]; then
+    echo "  '$*' exited $status, expected $expected; stderr:" >&2
+    sed 's/^/    /' "$work/err" >&2
+    return 1
+  fi
+}
+err_has() { grep -qF -- "$1" "$work/err" || { echo "  stderr lacks: $1" >&2; sed 's/^/    /' "$work/err" >&2; return 1; }; }
+out_has() { grep -qF -- "$1" "$work/out" || { echo "  stdout lacks: $1" >&2; return 1; }; }
+
+# --- help teaches ---------------------------------------------------------------------------
+check "help" run 0 "$fd" --help
+check "help lists simulate" out_has "simulate"
+check "simulate help has examples" run 0 "$fd" simulate --help
+check "simulate help example" out_has "fogdrift simulate calibration --out cal --seed 1"
+check "no subcommand is a usage error" run 106 "$fd"
+
+# --- simulate + inspect ---------------------------------------------------------------------
+check "simulate calibration" run 0 "$fd" simulate calibration --out "$work/cal" --seed 1
+check "44 recordings" test "$(ls "$work/cal"/*.csv | wc -l)" -eq 44
+check "manifest written" test -f "$work/cal/campaign.json"
+check "inspect accepts the campaign" run 0 "$fd" inspect "$work/cal"
+check "inspect says valid" out_has "campaign is valid"
+check "inspect json" run 0 "$fd" inspect --json "$work/cal"
+check "inspect json valid" out_has '"valid": true'
+check "inspect one recording" run 0 "$fd" inspect "$work/cal/cal_r4_20C.csv"
+check "same seed again" run 0 "$fd" simulate calibration --out "$work/cal_again" --seed 1
+check "same seed, same files" diff -r "$work/cal" "$work/cal_again"
+check "refuses a non-empty --out" run 1 "$fd" simulate calibration --out "$work/cal" --seed 2
+check "non-empty message" err_has "folder exists and is not empty"
+check "old campaign untouched" diff -r "$work/cal" "$work/cal_again"
+check "impossible rate" run 1 "$fd" simulate calibration --out "$work/bad_rate" --rate-hz 3
+check "rate message names option" err_has "--rate-hz"
+check "nothing left behind" test -z "$(ls -A "$work" | grep -v -e '^cal$' -e '^cal_again$' -e '^out$' -e '^err$')"
+check "northfind" run 0 "$fd" simulate northfind --out "$work/nf" --temps -32,17 --findings 2
+check "northfind inspect" run 0 "$fd" inspect "$work/nf"
+check "stable" run 0 "$fd" simulate stable --out "$work/st" --findings 3
+check "bad temps list" run 1 "$fd" simulate northfind --out "$work/x" --temps -32,warm
+check "bad temps message" err_has "option --temps: 'warm'"
+
+# --- instrument files -----------------------------------------------------------------------
+check "print instrument" run 0 "$fd" simulate --print-instrument
+cp "$work/out" "$work/unit.json"
+check "instrument round trip" run 0 "$fd" simulate stable --out "$work/st2" --findings 3 --instrument "$work/unit.json"
+check "default file = defaults" diff -r "$work/st" "$work/st2"
+printf '{"fog": {"arw": 0.1}}' >"$work/typo.json"
+check "unknown instrument key" run 1 "$fd" simulate stable --out "$work/x" --instrument "$work/typo.json"
+check "unknown key message" err_has "typo.json: fog.arw: unknown parameter"
+
+# --- malformed inputs: every case in the corpus --------------------------------------------
+while IFS=$'\t' read -r name expected; do
+  case "$name" in "#"* | "") continue ;; esac
+  check "inspect rejects $name" run 1 "$fd" inspect "$data/malformed/$name"
+  check "message for $name" err_has "$expected"
+done <"$data/malformed/EXPECTED.tsv"
+
+# --- import ---------------------------------------------------------------------------------
+printf 'Zeit [ms];Rate X [rad/s];T0;T1;T2;Status\n5000;0,0001;1000;1010;990;OK\n6000;0,0002;1001;1011;991;OK\n' >"$work/logger.csv"
+imp=(import "$work/logger.csv" --delimiter ';' --decimal-comma --time-from-zero
+  --map "time_s=Zeit [ms]" --unit time_s=ms --map "gyro_dph=Rate X [rad/s]" --unit gyro_dph=rad/s
+  --map temp_fog_degc=T0 --map temp_acc1_degc=T1 --map temp_acc2_degc=T2
+  --unit temp_fog_degc=counts:0.0625:-40 --unit temp_acc1_degc=counts:0.0625:-40
+  --unit temp_acc2_degc=counts:0.0625:-40)
+check "import" run 0 "$fd" "${imp[@]}" -o "$work/imported.csv"
+check "imported recording is valid" run 0 "$fd" inspect "$work/imported.csv"
+check "imported header" grep -q '^time_s,gyro_dph,temp_fog_degc,temp_acc1_degc,temp_acc2_degc,Status$' "$work/imported.csv"
+check "imported values" grep -q '^0,20.626480624709636,22.5,23.125,21.875,OK$' "$work/imported.csv"
+check "import with a bad unit" run 1 "$fd" "${imp[@]}" --unit gyro_dph=rpm -o "$work/bad_unit.csv"
+check "bad unit message" err_has "--unit gyro_dph=rpm: unknown unit 'rpm'"
+check "bad unit leaves no file" test ! -e "$work/bad_unit.csv"
+check "import of a missing column" run 1 "$fd" import "$work/logger.csv" --delimiter ';' -o "$work/x.csv"
+check "missing column message" err_has "say which column holds it"
+
+# --- change indicator: the demo's report, committed; a diff shows every behaviour change ------
+check "demo" run 0 "$fd" demo --seed 1
+grep -v '^finished in' "$work/out" >"$work/demo.txt"
+if ! diff -u "$data/change_indicator/demo_seed1.txt" "$work/demo.txt" >"$work/demo.diff"; then
+  echo "  the demo's output changed; if intended, update tests/data/change_indicator/demo_seed1.txt:" >&2
+  sed 's/^/    /' "$work/demo.diff" >&2
+  failed=$((failed + 1))
+else
+  passed=$((passed + 1))
+fi
+
+echo "cli: $passed passed, $failed failed"
+[ "$failed" -eq 0 ]
