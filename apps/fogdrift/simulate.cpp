@@ -70,11 +70,16 @@ void add_simulate(CLI::App& app) {
       "  fogdrift simulate --print-instrument > unit.json     # edit, then --instrument unit.json");
   auto args = std::make_shared<SimulateArgs>();
   auto print = std::make_shared<bool>(false);
+  auto print_table = std::make_shared<bool>(false);
   cmd->add_flag("--print-instrument", *print,
                 "Print the default instrument parameters as JSON and exit");
+  cmd->add_flag("--print-parameter-table", *print_table,
+                "Print the parameters as a Markdown table (units, ranges, meaning) and exit");
   cmd->require_subcommand(0, 1);
-  cmd->callback([cmd, print] {
-    if (*print) {
+  cmd->callback([cmd, print, print_table] {
+    if (*print_table) {
+      std::cout << sim::parameter_table_markdown();
+    } else if (*print) {
       std::cout << sim::to_json(sim::Instrument{});
     } else if (cmd->get_subcommands().empty()) {
       throw CLI::CallForHelp();
