@@ -74,6 +74,10 @@ printf '{"fog": {"arw": 0.1}}' >"$work/typo.json"
 check "unknown instrument key" run 1 "$fd" simulate stable --out "$work/x" --instrument "$work/typo.json"
 check "unknown key message" err_has "typo.json: fog.arw: unknown parameter"
 
+check "missing instrument file" run 1 "$fd" simulate stable --out "$work/x" --instrument "$work/none.json"
+check "missing instrument message" err_has "none.json: cannot open"
+check "several imports need a folder" run 1 "$fd" import "$work/typo.json" "$work/unit.json" -o "$work/nofolder"
+check "several imports message" err_has "must be an existing folder"
 check "parameter table" run 0 "$fd" simulate --print-parameter-table
 contains_file() { [[ "$(cat "$1")" == *"$(cat "$2")"* ]]; }
 check "docs/simulator.md holds the current parameter table" contains_file "$data/../../docs/simulator.md" "$work/out"
