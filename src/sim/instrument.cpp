@@ -139,12 +139,11 @@ std::string to_json(const Instrument& instrument) {
   nlohmann::ordered_json doc;
   doc["format"] = kInstrumentFormat;
   for (const auto& field : instrument_fields(copy)) {
-    doc[nlohmann::ordered_json::json_pointer("/" + [&] {
-      std::string p = field.path;
-      for (char& c : p)
-        if (c == '.') c = '/';
-      return p;
-    }())] = *field.value;
+    std::string pointer = "/";
+    pointer += field.path;
+    for (char& c : pointer)
+      if (c == '.') c = '/';
+    doc[nlohmann::ordered_json::json_pointer(pointer)] = *field.value;
   }
   return doc.dump(2) + "\n";
 }
