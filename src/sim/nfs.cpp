@@ -57,8 +57,12 @@ NfsSimulator::NfsSimulator(const Instrument& instrument, const NodeTemps& initia
   for (int i = 0; i < 3; ++i) thermometer_state_degc_[i] = temps_[idx(kThermometerNode[i])];
 }
 
-void NfsSimulator::step(double dt, const AirProfile& air, bool powered) {
-  network_.step(temps_, dt, air(time_s_), air(time_s_ + dt), powered);
+void NfsSimulator::step(double dt, const AirProfile& air, bool powered, const NodeTemps* rate) {
+  if (rate) {
+    network_.step(temps_, dt, air(time_s_), air(time_s_ + dt), powered, *rate);
+  } else {
+    network_.step(temps_, dt, air(time_s_), air(time_s_ + dt), powered);
+  }
   const std::array<const ThermometerParams*, 3> therm = {
       &instrument_.thermometer_fog, &instrument_.thermometer_acc1, &instrument_.thermometer_acc2};
   for (int i = 0; i < 3; ++i) {
@@ -122,7 +126,7 @@ Recording NfsSimulator::record(const RecordSetup& setup, const AirProfile& air,
       const double input = dot(earth, setup.platform.body_x(setup.table.angle_deg(t_rel)));
       angle_arcsec += (input + turn_on_bias_dph + drift) * dt + noise.angle_increment_arcsec(dt);
       drift_integral += drift * dt;
-      step(dt, air, true);
+      step(dt, air, true, &rate);
     }
     const double t_rel = time_s_ - start;
     const double table = setup.table.angle_deg(t_rel);

@@ -57,13 +57,17 @@ NodeTemps ThermalNetwork::derivative(const NodeTemps& t, double air_degc, bool p
 }
 
 void ThermalNetwork::step(NodeTemps& t, double dt, double air0, double air1, bool powered) const {
+  step(t, dt, air0, air1, powered, derivative(t, air0, powered));
+}
+
+void ThermalNetwork::step(NodeTemps& t, double dt, double air0, double air1, bool powered,
+                          const NodeTemps& k1) const {
   const double air_mid = 0.5 * (air0 + air1);
   auto add = [](const NodeTemps& a, const NodeTemps& b, double s) {
     NodeTemps r;
     for (int k = 0; k < kNodeCount; ++k) r[k] = a[k] + s * b[k];
     return r;
   };
-  const NodeTemps k1 = derivative(t, air0, powered);
   const NodeTemps k2 = derivative(add(t, k1, 0.5 * dt), air_mid, powered);
   const NodeTemps k3 = derivative(add(t, k2, 0.5 * dt), air_mid, powered);
   const NodeTemps k4 = derivative(add(t, k3, dt), air1, powered);

@@ -43,7 +43,9 @@ class NfsSimulator {
   const NodeTemps& temps_degc() const { return temps_; }
 
  private:
-  void step(double dt_s, const AirProfile& air, bool powered);
+  /// One fine step; `rate` is the network's derivative at the current state when the caller
+  /// already has it (it is the first Runge–Kutta stage), or null.
+  void step(double dt_s, const AirProfile& air, bool powered, const NodeTemps* rate = nullptr);
 
   Instrument instrument_;
   ThermalNetwork network_;

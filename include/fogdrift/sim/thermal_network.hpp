@@ -29,6 +29,9 @@ class ThermalNetwork {
   /// varies linearly from `air_start_degc` to `air_end_degc` over the step.
   void step(NodeTemps& temps_degc, double dt_s, double air_start_degc, double air_end_degc,
             bool powered) const;
+  /// Same, with the caller's derivative(temps_degc, air_start_degc, powered) as the first stage.
+  void step(NodeTemps& temps_degc, double dt_s, double air_start_degc, double air_end_degc,
+            bool powered, const NodeTemps& first_stage) const;
 
   /// Steady state for constant air temperature: all nodes equal to the air with power off; with
   /// power on, the solution of the linear heat balance (iterated for the cooler's |ΔT| term).
