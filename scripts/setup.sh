@@ -7,6 +7,7 @@ packages=(
   g++ cmake ninja-build pkg-config     # toolchain
   libeigen3-dev libcli11-dev nlohmann-json3-dev libfmt-dev   # library dependencies
   libgtest-dev libgmock-dev            # tests
+  libsvm-dev libsvm-tools              # LIBSVM: the reference the SVR engine is tested and benchmarked against
 )
 
 missing=()

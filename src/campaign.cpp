@@ -10,6 +10,7 @@
 
 #include "fogdrift/atomic_file.hpp"
 #include "fogdrift/error.hpp"
+#include "fogdrift/text_file.hpp"
 
 namespace fs = std::filesystem;
 using json = nlohmann::ordered_json;
@@ -21,20 +22,6 @@ namespace {
 [[noreturn]] void fail(const std::string& file, const std::string& json_path,
                        const std::string& rule) {
   throw InputError(file, 0, 0, fmt::format("{}: {}", json_path, rule));
-}
-
-// Line and column (1-based) of a byte offset, for syntax errors.
-std::pair<std::size_t, std::size_t> line_column(const std::string& text, std::size_t byte) {
-  std::size_t line = 1, column = 1;
-  for (std::size_t i = 0; i < byte && i < text.size(); ++i) {
-    if (text[i] == '\n') {
-      ++line;
-      column = 1;
-    } else {
-      ++column;
-    }
-  }
-  return {line, column};
 }
 
 void check_keys(const json& object, const std::set<std::string>& known, const std::string& file,
@@ -107,11 +94,7 @@ Campaign read_campaign(const fs::path& path) {
   try {
     doc = json::parse(text);
   } catch (const json::parse_error& e) {
-    const auto [line, column] = line_column(text, e.byte == 0 ? 0 : e.byte - 1);
-    std::string what = e.what();
-    const auto cut = what.find("syntax error");
-    throw InputError(file, line, column,
-                     "invalid JSON: " + (cut == std::string::npos ? what : what.substr(cut)));
+    throw_json_syntax_error(file, text, e.byte, e.what());
   }
   if (!doc.is_object()) fail(file, "(top level)", "must be a JSON object");
   check_keys(doc, {"format", "latitude_deg", "recordings", "generator", "notes"}, file, "");

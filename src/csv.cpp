@@ -12,6 +12,7 @@
 #include <unordered_set>
 
 #include "fogdrift/error.hpp"
+#include "fogdrift/text_file.hpp"
 
 namespace fogdrift::csv {
 namespace {
@@ -84,11 +85,7 @@ std::optional<std::size_t> Table::find(std::string_view name) const {
 }
 
 Table read(const std::string& path, const ReadOptions& options) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path, 0, 0, fmt::format("cannot open ({})", std::strerror(errno)));
-  std::ostringstream buffer;
-  buffer << in.rdbuf();
-  return parse(buffer.str(), path, options);
+  return parse(read_text_file(path), path, options);
 }
 
 Table parse(std::string_view text, const std::string& file, const ReadOptions& options) {

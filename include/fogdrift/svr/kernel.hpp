@@ -1,0 +1,132 @@
+// Kernels, training data and kernel rows for the ε-SVR engine (METHOD.md eq. 7).
+//
+// The RBF kernel is K(x, x') = exp(−‖x − x'‖² / (2σ²)) in the paper's σ, which is LIBSVM's
+// exp(−γ‖x − x'‖²) with γ = 1/(2σ²). Training evaluates it as LIBSVM does, through
+// ‖x‖² + ‖x'‖² − 2x·x' in double and a float result, so the engine sees the same kernel matrix.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <memory>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace fogdrift {
+class ThreadPool;
+}
+
+namespace fogdrift::svr {
+
+enum class KernelType { linear, rbf };
+
+/// "linear" or "rbf".
+std::string_view to_string(KernelType type);
+
+struct Kernel {
+  KernelType type = KernelType::rbf;
+  double gamma = 1.0;  ///< RBF: γ = 1/(2σ²), in 1/(feature unit)²; unused for linear
+
+  static Kernel rbf_gamma(double gamma) { return {KernelType::rbf, gamma}; }
+  /// The paper's parameterisation (eq. 7); σ in feature units.
+  static Kernel rbf_sigma(double sigma) { return {KernelType::rbf, 1.0 / (2.0 * sigma * sigma)}; }
+  static Kernel linear() { return {KernelType::linear, 0.0}; }
+  /// σ = 1/√(2γ).
+  double sigma() const;
+
+  /// K(a, b) evaluated as LIBSVM's prediction does (Σ(a_k − b_k)² for RBF), in double.
+  double operator()(const double* a, const double* b, std::size_t dims) const;
+
+  bool operator==(const Kernel&) const = default;
+};
+
+/// Dense regression data: `rows` samples of `cols` features, row-major, and one target each.
+struct Data {
+  std::size_t rows = 0;
+  std::size_t cols = 0;
+  std::vector<double> x;  ///< rows × cols, row-major
+  std::vector<double> y;  ///< rows
+
+  const double* row(std::size_t i) const { return x.data() + i * cols; }
+  /// The rows whose indices are given, in that order (for cross-validation folds).
+  Data subset(std::span<const std::size_t> indices) const;
+};
+
+/// Checks shapes and that every value is finite, and that there is at least one sample. Throws
+/// InputError whose file is `what` and whose line is the 1-based sample.
+void validate(const Data& data, std::string_view what = "training data");
+
+/// A data set prepared once for many fits: a feature-major copy for vectorised kernel rows, the
+/// squared norms, and, when it fits the memory budget and pays off, the matrix of pairwise
+/// squared distances, from which a row of any σ costs one exponential per entry.
+class TrainingSet {
+ public:
+  struct Options {
+    /// Largest distance matrix to keep, MB (float, N² × 4 bytes). The matrix is built only when
+    /// reading a row of it is cheaper than recomputing the row from the features, that is when
+    /// there are at least `distance_min_features` features. 0 disables it.
+    double distance_budget_mb = 1024;
+    std::size_t distance_min_features = 24;
+    ThreadPool* pool = nullptr;  ///< builds the distance matrix in parallel when given
+  };
+
+  explicit TrainingSet(Data data);
+  TrainingSet(Data data, const Options& options);
+
+  const Data& data() const { return data_; }
+  std::size_t size() const { return data_.rows; }
+  std::size_t dims() const { return data_.cols; }
+  bool has_distances() const { return !distances_.empty(); }
+  /// Bytes held (features twice, norms, distances).
+  std::size_t bytes() const;
+
+  /// Writes row i of the kernel matrix (size() floats). Safe to call from several threads.
+  void kernel_row(const Kernel& kernel, std::size_t i, float* out) const;
+  /// K(x_i, x_i) in double, LIBSVM's QD.
+  double kernel_diagonal(const Kernel& kernel, std::size_t i) const;
+
+ private:
+  Data data_;
+  std::vector<double> feature_major_;  // cols × rows
+  std::vector<double> squared_norms_;
+  std::vector<float> distances_;  // rows × rows, when kept
+};
+
+/// Kernel rows for one fit, with a least-recently-used cache bounded in bytes (LIBSVM's -m).
+/// Not thread-safe: each fit owns one.
+class KernelCache {
+ public:
+  /// `cache_mb` bounds the cached rows; at least two rows are always kept.
+  KernelCache(const TrainingSet& set, const Kernel& kernel, double cache_mb);
+  ~KernelCache();
+  KernelCache(const KernelCache&) = delete;
+  KernelCache& operator=(const KernelCache&) = delete;
+
+  std::size_t size() const { return n_; }
+  const Kernel& kernel() const { return kernel_; }
+  /// Row i (size() floats). Valid until the next call to row().
+  const float* row(std::size_t i);
+  double diagonal(std::size_t i) const { return diagonal_[i]; }
+  std::int64_t rows_computed() const { return rows_computed_; }
+  std::size_t capacity_rows() const { return capacity_; }
+
+ private:
+  const TrainingSet& set_;
+  Kernel kernel_;
+  std::size_t n_;
+  std::size_t capacity_;
+  std::vector<double> diagonal_;
+  std::vector<std::int32_t> slot_of_row_;  // −1 when not cached
+  std::vector<std::int32_t> row_of_slot_;
+  std::vector<std::int32_t> prev_, next_;  // LRU list of slots; head_ most recent
+  std::int32_t head_ = -1, tail_ = -1;
+  std::vector<std::unique_ptr<float[]>> slots_;
+  std::int64_t rows_computed_ = 0;
+
+  void touch(std::int32_t slot);
+  void unlink(std::int32_t slot);
+  void push_front(std::int32_t slot);
+};
+
+}  // namespace fogdrift::svr

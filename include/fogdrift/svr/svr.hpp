@@ -1,0 +1,102 @@
+// ε-support-vector regression (METHOD.md §2 step 3): fit, predict, save and load.
+//
+//   f(x) = Σ_i (α_i⁺ − α_i⁻)·K(x_i, x) + b,   b = −ρ                          (eq. 6)
+//
+// fit() solves the dual with the SMO engine (smo_solver.hpp) and keeps the support vectors.
+// Many fits of one data set share a TrainingSet; fit_batch() spreads candidates over a thread
+// pool and fit_c_path() warm-starts a sweep over C. Each fit is single-threaded and
+// deterministic, so results never depend on the thread count.
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "fogdrift/svr/kernel.hpp"
+#include "fogdrift/svr/smo_solver.hpp"
+
+namespace fogdrift {
+class ThreadPool;
+}
+
+namespace fogdrift::svr {
+
+struct Params {
+  Kernel kernel;            ///< default RBF with γ = 1 (σ = 1/√2)
+  double c = 1.0;           ///< regularisation C > 0 (LIBSVM -c)
+  double epsilon = 0.1;     ///< half-width ε ≥ 0 of the insensitive tube, target units (-p)
+  double tolerance = 1e-3;  ///< stopping tolerance > 0 (-e)
+  bool shrinking = true;    ///< (-h)
+  double cache_mb = 200;  ///< kernel rows per fit, MB (-m): half as computed, half in solver order
+  std::int64_t max_iterations = 0;  ///< 0: LIBSVM's max(10⁷, 200·l)
+};
+
+/// Names to use for each parameter in error messages (the CLI passes its flags).
+struct ParamNames {
+  std::string c = "C", gamma = "gamma", epsilon = "epsilon", tolerance = "tolerance",
+              cache_mb = "cache_mb", max_iterations = "max_iterations";
+};
+
+/// Throws OptionError naming the parameter: C ≤ 0, γ ≤ 0 (σ ≤ 0), ε < 0, tolerance ≤ 0, a cache
+/// below 0 MB or a negative iteration limit, or any of them not finite.
+void validate(const Params& params, const ParamNames& names = {});
+
+/// A trained regressor. predict() needs no allocation and is safe from several threads.
+struct Model {
+  Kernel kernel;
+  std::size_t dims = 0;
+  std::vector<double> support_vectors;  ///< n_sv × dims, row-major
+  std::vector<double> coef;             ///< α⁺ − α⁻ of each support vector
+  double rho = 0;                       ///< f(x) = Σ coef·K − ρ
+
+  std::size_t size() const { return coef.size(); }
+  /// f(x) for one sample of `dims` features, exactly as LIBSVM's svm_predict.
+  double predict(const double* x) const noexcept;
+  /// f for every row of `x` (row-major, dims columns) into `out`; parallel when a pool is given.
+  void predict(std::span<const double> x, std::span<double> out, ThreadPool* pool = nullptr) const;
+  std::vector<double> predict(const Data& data, ThreadPool* pool = nullptr) const;
+};
+
+struct FitSummary {
+  SolverSummary solver;
+  std::size_t n_sv = 0;   ///< support vectors, α⁺ ≠ α⁻
+  std::size_t n_bsv = 0;  ///< of which at the bound |α⁺ − α⁻| = C
+  double nu = 0;          ///< Σ|α⁺ − α⁻| / (C·l), LIBSVM's printed "nu"
+  double seconds = 0;     ///< wall time of the fit, kernel cache set-up included
+};
+
+struct FitResult {
+  Model model;
+  FitSummary summary;
+  DualSolution dual;  ///< for warm starts of later fits of the same data
+};
+
+/// Fits one model. `warm` (optional) is a previous fit of the same TrainingSet.
+FitResult fit(const TrainingSet& set, const Params& params, const DualSolution* warm = nullptr);
+
+/// Fits every parameter set, spread over the pool's threads (one fit per thread at a time, cache
+/// budgets as given per fit). Results in the order of `params`.
+std::vector<FitResult> fit_batch(const TrainingSet& set, std::span<const Params> params,
+                                 ThreadPool& pool);
+
+/// Fits `base` at each C of `c_values` in the order given, each warm-started from the previous
+/// one, sharing one kernel cache. Results in the order of `c_values`.
+std::vector<FitResult> fit_c_path(const TrainingSet& set, const Params& base,
+                                  std::span<const double> c_values);
+
+/// The model as JSON text: {"format": "fogdrift-svr", "version": 1, "kernel": …, "gamma": …,
+/// "dims": …, "rho": …, "coef": […], "support_vectors": [[…], …]}. Numbers are printed with
+/// the shortest text that reads back to the same double.
+std::string to_json(const Model& model);
+/// Parses to_json's output; `source` names the text in errors. Rejects another format, a
+/// newer version, missing or extra keys and inconsistent sizes with an InputError.
+Model model_from_json(const std::string& text, const std::string& source);
+/// Atomic write of to_json's text.
+void save_model(const Model& model, const std::filesystem::path& path);
+Model load_model(const std::filesystem::path& path);
+
+inline constexpr int kModelFormatVersion = 1;
+
+}  // namespace fogdrift::svr

@@ -1,0 +1,194 @@
+#include "fogdrift/svr/kernel.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cassert>
+#include <cmath>
+
+#include "fogdrift/error.hpp"
+#include "fogdrift/thread_pool.hpp"
+#include "svr/loops.hpp"
+
+namespace fogdrift::svr {
+
+std::string_view to_string(KernelType type) {
+  return type == KernelType::rbf ? "rbf" : "linear";
+}
+
+double Kernel::sigma() const {
+  return 1.0 / std::sqrt(2.0 * gamma);
+}
+
+double Kernel::operator()(const double* a, const double* b, std::size_t dims) const {
+  double sum = 0;
+  if (type == KernelType::linear) {
+    for (std::size_t k = 0; k < dims; ++k) sum += a[k] * b[k];
+    return sum;
+  }
+  for (std::size_t k = 0; k < dims; ++k) {
+    const double d = a[k] - b[k];
+    sum += d * d;
+  }
+  return std::exp(-gamma * sum);
+}
+
+Data Data::subset(std::span<const std::size_t> indices) const {
+  Data out;
+  out.rows = indices.size();
+  out.cols = cols;
+  out.x.reserve(indices.size() * cols);
+  out.y.reserve(indices.size());
+  for (std::size_t i : indices) {
+    assert(i < rows);
+    out.x.insert(out.x.end(), row(i), row(i) + cols);
+    out.y.push_back(y[i]);
+  }
+  return out;
+}
+
+void validate(const Data& data, std::string_view what) {
+  const std::string file(what);
+  if (data.rows == 0) throw InputError(file, 0, 0, "no samples");
+  if (data.x.size() != data.rows * data.cols || data.y.size() != data.rows)
+    throw InputError(file, 0, 0,
+                     fmt::format("{} samples of {} features need {} values and {} targets, "
+                                 "got {} and {}",
+                                 data.rows, data.cols, data.rows * data.cols, data.rows,
+                                 data.x.size(), data.y.size()));
+  for (std::size_t i = 0; i < data.rows; ++i) {
+    if (!std::isfinite(data.y[i]))
+      throw InputError(file, i + 1, 0, fmt::format("sample {}: target is {}", i + 1, data.y[i]));
+    for (std::size_t k = 0; k < data.cols; ++k) {
+      const double v = data.x[i * data.cols + k];
+      if (!std::isfinite(v))
+        throw InputError(file, i + 1, 0,
+                         fmt::format("sample {}: feature {} is {}", i + 1, k + 1, v));
+    }
+  }
+}
+
+TrainingSet::TrainingSet(Data data) : TrainingSet(std::move(data), Options{}) {}
+
+TrainingSet::TrainingSet(Data data, const Options& options) : data_(std::move(data)) {
+  validate(data_);
+  const std::size_t n = data_.rows, d = data_.cols;
+  feature_major_.resize(n * d);
+  squared_norms_.resize(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    double sq = 0;
+    for (std::size_t k = 0; k < d; ++k) {
+      const double v = data_.x[i * d + k];
+      feature_major_[k * n + i] = v;
+      sq += v * v;
+    }
+    squared_norms_[i] = sq;
+  }
+  const double matrix_mb = static_cast<double>(n) * static_cast<double>(n) * 4.0 / (1 << 20);
+  if (d >= options.distance_min_features && options.distance_budget_mb > 0 &&
+      matrix_mb <= options.distance_budget_mb) {
+    distances_.resize(n * n);
+    auto fill = [&](std::size_t i) {
+      detail::distance_row(data_.row(i), squared_norms_[i], feature_major_.data(),
+                           squared_norms_.data(), n, d, distances_.data() + i * n);
+    };
+    if (options.pool != nullptr) {
+      options.pool->parallel_for(n, fill);
+    } else {
+      for (std::size_t i = 0; i < n; ++i) fill(i);
+    }
+  }
+}
+
+std::size_t TrainingSet::bytes() const {
+  return (data_.x.size() + data_.y.size() + feature_major_.size() + squared_norms_.size()) *
+             sizeof(double) +
+         distances_.size() * sizeof(float);
+}
+
+void TrainingSet::kernel_row(const Kernel& kernel, std::size_t i, float* out) const {
+  const std::size_t n = data_.rows, d = data_.cols;
+  if (kernel.type == KernelType::linear) {
+    detail::linear_row(data_.row(i), feature_major_.data(), n, d, out);
+  } else if (!distances_.empty()) {
+    detail::rbf_row_from_distances(distances_.data() + i * n, n, kernel.gamma, out);
+  } else {
+    detail::rbf_row(data_.row(i), squared_norms_[i], feature_major_.data(), squared_norms_.data(),
+                    n, d, kernel.gamma, out);
+  }
+}
+
+double TrainingSet::kernel_diagonal(const Kernel& kernel, std::size_t i) const {
+  const double sq = squared_norms_[i];
+  if (kernel.type == KernelType::linear) return sq;
+  return std::exp(-kernel.gamma * ((sq + sq) - 2.0 * sq));
+}
+
+KernelCache::KernelCache(const TrainingSet& set, const Kernel& kernel, double cache_mb)
+    : set_(set), kernel_(kernel), n_(set.size()) {
+  const double row_bytes = static_cast<double>(n_) * sizeof(float);
+  const double rows = std::floor(std::max(0.0, cache_mb) * (1 << 20) / row_bytes);
+  capacity_ = static_cast<std::size_t>(std::clamp(rows, 2.0, static_cast<double>(n_)));
+  capacity_ = std::max<std::size_t>(capacity_, std::min<std::size_t>(2, n_));
+  diagonal_.resize(n_);
+  for (std::size_t i = 0; i < n_; ++i) diagonal_[i] = set.kernel_diagonal(kernel, i);
+  slot_of_row_.assign(n_, -1);
+  row_of_slot_.reserve(capacity_);
+  prev_.reserve(capacity_);
+  next_.reserve(capacity_);
+  slots_.reserve(capacity_);
+}
+
+KernelCache::~KernelCache() = default;
+
+void KernelCache::unlink(std::int32_t s) {
+  if (prev_[s] >= 0)
+    next_[prev_[s]] = next_[s];
+  else
+    head_ = next_[s];
+  if (next_[s] >= 0)
+    prev_[next_[s]] = prev_[s];
+  else
+    tail_ = prev_[s];
+}
+
+void KernelCache::push_front(std::int32_t s) {
+  prev_[s] = -1;
+  next_[s] = head_;
+  if (head_ >= 0) prev_[head_] = s;
+  head_ = s;
+  if (tail_ < 0) tail_ = s;
+}
+
+void KernelCache::touch(std::int32_t s) {
+  if (head_ == s) return;
+  unlink(s);
+  push_front(s);
+}
+
+const float* KernelCache::row(std::size_t i) {
+  std::int32_t s = slot_of_row_[i];
+  if (s >= 0) {
+    touch(s);
+    return slots_[s].get();
+  }
+  if (slots_.size() < capacity_) {
+    s = static_cast<std::int32_t>(slots_.size());
+    slots_.push_back(std::make_unique_for_overwrite<float[]>(n_));
+    row_of_slot_.push_back(-1);
+    prev_.push_back(-1);
+    next_.push_back(-1);
+  } else {
+    s = tail_;  // evict the least recently used row
+    unlink(s);
+    slot_of_row_[row_of_slot_[s]] = -1;
+  }
+  row_of_slot_[s] = static_cast<std::int32_t>(i);
+  slot_of_row_[i] = s;
+  push_front(s);
+  set_.kernel_row(kernel_, i, slots_[s].get());
+  ++rows_computed_;
+  return slots_[s].get();
+}
+
+}  // namespace fogdrift::svr

@@ -1,0 +1,85 @@
+// The inner loops of the SMO solver and of kernel-row evaluation, kept in one translation unit so
+// that they can be compiled for AVX2 next to a portable version (GCC's target_clones picks one at
+// load time) and with the floating-point flags they need:
+//  * -ffp-contract=off: no fused multiply-add, so every product and sum rounds exactly as in
+//    LIBSVM's scalar C++ and the engine walks the same path through the dual.
+//  * -ffinite-math-only -fno-signed-zeros: lets the compiler vectorise the max/min reductions of
+//    the working-set selection. The inputs are finite by validation, and sentinels are ±DBL_MAX.
+// Internal header: not installed, not part of the API.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+
+namespace fogdrift::svr::detail {
+
+/// Bound status of a dual variable (LIBSVM's alpha_status).
+enum : std::uint8_t { kLowerBound = 0, kUpperBound = 1, kFree = 2 };
+
+/// e^x for x ≤ 0, accurate to about one unit in the last place of a double and rounded to float.
+/// Agrees with (float)std::exp(x) except, very rarely, when std::exp(x) lies within 2 ulp of a
+/// float rounding boundary. Exposed for its test.
+float exp_to_float(double x);
+
+/// One row of the RBF kernel: out[j] = (float) exp(−γ·((‖x_i‖² + ‖x_j‖²) − 2·x_i·x_j)), the
+/// expression and rounding LIBSVM uses. `xt` holds the data feature-major (d × n), `sq` the
+/// squared norms, `xi` row i (d values, contiguous).
+void rbf_row(const double* xi, double sq_i, const double* xt, const double* sq, std::size_t n,
+             std::size_t d, double gamma, float* out);
+
+/// One row of the linear kernel: out[j] = (float) x_i·x_j.
+void linear_row(const double* xi, const double* xt, std::size_t n, std::size_t d, float* out);
+
+/// One RBF row from precomputed squared distances: out[j] = exp(−γ·dist[j]).
+void rbf_row_from_distances(const float* dist, std::size_t n, double gamma, float* out);
+
+/// Squared distances of row i to all rows, as LIBSVM forms them: (‖x_i‖² + ‖x_j‖²) − 2·x_i·x_j.
+void distance_row(const double* xi, double sq_i, const double* xt, const double* sq, std::size_t n,
+                  std::size_t d, float* out);
+
+// The solver works with kernel rows in its permuted variable order, unsigned: K_r[index[j]]. The
+// signs of Q_ij = y_i·y_j·K_ij are applied inside the loops below; every sign flip is exact, so
+// the results are bit for bit those of LIBSVM's signed rows.
+
+/// out[j] = row[index[j]] for begin ≤ j < end.
+void gather(const float* row, const std::int32_t* index, std::size_t begin, std::size_t end,
+            float* out);
+
+/// g[k] += y_k·(K_i[k]·a_i + K_j[k]·a_j) for k < len, with a_i = y_i·Δα_i, a_j = y_j·Δα_j: the
+/// gradient update after one SMO step (LIBSVM: G[k] += Q_i[k]·Δα_i + Q_j[k]·Δα_j).
+void update_gradient(double* g, const std::int8_t* y, const float* k_i, const float* k_j,
+                     double a_i, double a_j, std::size_t len);
+
+/// g[k] += y_k·(a·K[k]) for begin ≤ k < end (with a = y_i·scale: g += scale·Q_i).
+void add_scaled(double* g, const std::int8_t* y, const float* k_row, double a, std::size_t begin,
+                std::size_t end);
+
+/// First half of LIBSVM's second-order working-set selection: the last index t of
+/// argmax {−y_t·G_t : t ∈ I_up}. Returns −1 when I_up is empty.
+struct Selection {
+  double value = 0;
+  std::int64_t index = -1;
+};
+Selection select_i(const double* g, const std::int8_t* y, const std::uint8_t* status,
+                   std::size_t len);
+
+/// Second half: with G_max = −y_i·G_i, the last index j ∈ I_low with G_max + y_j·G_j > 0 that
+/// minimises −(G_max + y_j·G_j)² / (QD_i + QD_j − 2·K_ij) (τ for a non-positive denominator;
+/// LIBSVM writes the denominator QD_i + QD_j − 2·y_i·y_j·Q_ij, the same number); also returns
+/// max {y_j·G_j : j ∈ I_low} for the stopping rule. `k_i` is row i in solver order.
+struct SelectionJ {
+  double g_max2 = 0;
+  std::int64_t index = -1;
+};
+SelectionJ select_j(const double* g, const std::int8_t* y, const std::uint8_t* status,
+                    const float* k_i, const double* qd, double qd_i, double g_max, double tau,
+                    std::size_t len);
+
+/// The portable versions of the two selections, for the test that checks the vectorised ones.
+Selection select_i_reference(const double* g, const std::int8_t* y, const std::uint8_t* status,
+                             std::size_t len);
+SelectionJ select_j_reference(const double* g, const std::int8_t* y, const std::uint8_t* status,
+                              const float* k_i, const double* qd, double qd_i, double g_max,
+                              double tau, std::size_t len);
+
+}  // namespace fogdrift::svr::detail

@@ -1,0 +1,240 @@
+#include "fogdrift/svr/svr.hpp"
+
+#include <fmt/format.h>
+
+#include <chrono>
+#include <cmath>
+#include <nlohmann/json.hpp>
+#include <set>
+
+#include "fogdrift/atomic_file.hpp"
+#include "fogdrift/error.hpp"
+#include "fogdrift/text_file.hpp"
+#include "fogdrift/thread_pool.hpp"
+
+namespace fogdrift::svr {
+namespace {
+
+using ojson = nlohmann::ordered_json;
+
+void require(bool ok, const std::string& name, double value, const char* rule) {
+  if (!ok) throw OptionError(name, fmt::format("must be {} (got {})", rule, value));
+}
+
+// The model from a solved dual: support vectors are the samples with α⁺ ≠ α⁻.
+FitResult finish(const TrainingSet& set, const Params& params, DualSolution dual,
+                 SolverSummary solver, double seconds) {
+  FitResult r;
+  const std::size_t n = set.size(), d = set.dims();
+  r.model.kernel = params.kernel;
+  r.model.dims = d;
+  r.model.rho = solver.rho;
+  double sum_abs = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    const double a = dual.alpha[i] - dual.alpha[i + n];
+    sum_abs += std::fabs(a);
+    if (std::fabs(a) > 0) {
+      r.model.coef.push_back(a);
+      const double* row = set.data().row(i);
+      r.model.support_vectors.insert(r.model.support_vectors.end(), row, row + d);
+      if (std::fabs(a) >= params.c) ++r.summary.n_bsv;
+    }
+  }
+  r.summary.n_sv = r.model.coef.size();
+  r.summary.nu = sum_abs / (params.c * static_cast<double>(n));
+  r.summary.solver = solver;
+  r.summary.seconds = seconds;
+  r.dual = std::move(dual);
+  return r;
+}
+
+SolverOptions solver_options(const Params& p) {
+  return SolverOptions{p.tolerance, p.shrinking, p.max_iterations, p.cache_mb / 2};
+}
+
+FitResult fit_with(const TrainingSet& set, KernelCache& cache, const Params& params,
+                   const DualSolution* warm) {
+  const auto start = std::chrono::steady_clock::now();
+  DualSolution dual;
+  const SolverSummary s = solve_epsilon_svr(cache, set.data().y, params.c, params.epsilon,
+                                            solver_options(params), dual, warm);
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return finish(set, params, std::move(dual), s, seconds);
+}
+
+}  // namespace
+
+void validate(const Params& p, const ParamNames& names) {
+  require(std::isfinite(p.c) && p.c > 0, names.c, p.c, "a finite number > 0");
+  if (p.kernel.type == KernelType::rbf)
+    require(std::isfinite(p.kernel.gamma) && p.kernel.gamma > 0, names.gamma, p.kernel.gamma,
+            "a finite number > 0 (σ = 1/√(2γ) > 0)");
+  require(std::isfinite(p.epsilon) && p.epsilon >= 0, names.epsilon, p.epsilon,
+          "a finite number ≥ 0");
+  require(std::isfinite(p.tolerance) && p.tolerance > 0, names.tolerance, p.tolerance,
+          "a finite number > 0");
+  require(std::isfinite(p.cache_mb) && p.cache_mb >= 0, names.cache_mb, p.cache_mb,
+          "a finite number ≥ 0");
+  require(p.max_iterations >= 0, names.max_iterations, static_cast<double>(p.max_iterations),
+          "≥ 0");
+}
+
+double Model::predict(const double* x) const noexcept {
+  double sum = 0;
+  const std::size_t n = coef.size();
+  for (std::size_t i = 0; i < n; ++i)
+    sum += coef[i] * kernel(support_vectors.data() + i * dims, x, dims);
+  return sum - rho;
+}
+
+void Model::predict(std::span<const double> x, std::span<double> out, ThreadPool* pool) const {
+  const std::size_t rows = out.size();
+  if (x.size() != rows * dims)
+    throw std::invalid_argument(
+        fmt::format("predict: {} values are not {} rows of {} features", x.size(), rows, dims));
+  constexpr std::size_t kChunk = 64;
+  const std::size_t chunks = (rows + kChunk - 1) / kChunk;
+  auto run = [&](std::size_t c) {
+    const std::size_t end = std::min(rows, (c + 1) * kChunk);
+    for (std::size_t i = c * kChunk; i < end; ++i) out[i] = predict(x.data() + i * dims);
+  };
+  if (pool != nullptr) {
+    pool->parallel_for(chunks, run);
+  } else {
+    for (std::size_t c = 0; c < chunks; ++c) run(c);
+  }
+}
+
+std::vector<double> Model::predict(const Data& data, ThreadPool* pool) const {
+  if (data.cols != dims)
+    throw std::invalid_argument(
+        fmt::format("predict: data has {} features, the model {}", data.cols, dims));
+  std::vector<double> out(data.rows);
+  predict(data.x, out, pool);
+  return out;
+}
+
+FitResult fit(const TrainingSet& set, const Params& params, const DualSolution* warm) {
+  validate(params);
+  const auto start = std::chrono::steady_clock::now();
+  KernelCache cache(set, params.kernel, params.cache_mb / 2);
+  FitResult r = fit_with(set, cache, params, warm);
+  r.summary.seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return r;
+}
+
+std::vector<FitResult> fit_batch(const TrainingSet& set, std::span<const Params> params,
+                                 ThreadPool& pool) {
+  for (const auto& p : params) validate(p);
+  std::vector<FitResult> out(params.size());
+  pool.parallel_for(params.size(), [&](std::size_t k) { out[k] = fit(set, params[k]); });
+  return out;
+}
+
+std::vector<FitResult> fit_c_path(const TrainingSet& set, const Params& base,
+                                  std::span<const double> c_values) {
+  validate(base);
+  std::vector<FitResult> out;
+  out.reserve(c_values.size());
+  KernelCache cache(set, base.kernel, base.cache_mb / 2);
+  for (double c : c_values) {
+    Params p = base;
+    p.c = c;
+    validate(p);
+    out.push_back(fit_with(set, cache, p, out.empty() ? nullptr : &out.back().dual));
+  }
+  return out;
+}
+
+std::string to_json(const Model& m) {
+  ojson doc;
+  doc["format"] = "fogdrift-svr";
+  doc["version"] = kModelFormatVersion;
+  doc["kernel"] = std::string(to_string(m.kernel.type));
+  if (m.kernel.type == KernelType::rbf) {
+    doc["gamma"] = m.kernel.gamma;
+    doc["sigma"] = m.kernel.sigma();
+  }
+  doc["dims"] = m.dims;
+  doc["rho"] = m.rho;
+  doc["coef"] = m.coef;
+  ojson svs = ojson::array();
+  for (std::size_t i = 0; i < m.size(); ++i) {
+    svs.push_back(std::vector<double>(m.support_vectors.begin() + i * m.dims,
+                                      m.support_vectors.begin() + (i + 1) * m.dims));
+  }
+  doc["support_vectors"] = std::move(svs);
+  return doc.dump(1) + "\n";
+}
+
+Model model_from_json(const std::string& text, const std::string& source) {
+  ojson doc;
+  try {
+    doc = ojson::parse(text);
+  } catch (const ojson::parse_error& e) {
+    throw_json_syntax_error(source, text, e.byte, e.what());
+  }
+  auto fail = [&](const std::string& where, const std::string& rule) -> void {
+    throw InputError(source, 0, 0, fmt::format("{}: {}", where, rule));
+  };
+  if (!doc.is_object()) fail("(top level)", "must be a JSON object");
+  if (!doc.contains("format") || doc["format"] != "fogdrift-svr")
+    fail("format", "must be \"fogdrift-svr\" (is this an SVR model written by fogdrift?)");
+  if (!doc.contains("version") || !doc["version"].is_number_integer())
+    fail("version", "required integer field is missing");
+  const int version = doc["version"].get<int>();
+  if (version != kModelFormatVersion)
+    fail("version",
+         fmt::format("model format version {} is not supported (this fogdrift reads "
+                     "version {}{})",
+                     version, kModelFormatVersion,
+                     version > kModelFormatVersion ? "; written by a newer fogdrift" : ""));
+  const std::set<std::string> known{"format", "version", "kernel", "gamma",          "sigma",
+                                    "dims",   "rho",     "coef",   "support_vectors"};
+  for (const auto& [key, value] : doc.items())
+    if (!known.count(key)) fail(key, "unknown field");
+  Model m;
+  try {
+    const std::string kernel = doc.at("kernel").get<std::string>();
+    if (kernel == "rbf") {
+      m.kernel = Kernel::rbf_gamma(doc.at("gamma").get<double>());
+      if (!(m.kernel.gamma > 0) || !std::isfinite(m.kernel.gamma)) fail("gamma", "must be > 0");
+    } else if (kernel == "linear") {
+      m.kernel = Kernel::linear();
+    } else {
+      fail("kernel", "must be \"rbf\" or \"linear\"");
+    }
+    m.dims = doc.at("dims").get<std::size_t>();
+    m.rho = doc.at("rho").get<double>();
+    m.coef = doc.at("coef").get<std::vector<double>>();
+    const auto& svs = doc.at("support_vectors");
+    if (!svs.is_array() || svs.size() != m.coef.size())
+      fail("support_vectors",
+           fmt::format("must hold one vector per coefficient ({})", m.coef.size()));
+    for (std::size_t i = 0; i < svs.size(); ++i) {
+      const auto v = svs[i].get<std::vector<double>>();
+      if (v.size() != m.dims)
+        fail(fmt::format("support_vectors[{}]", i),
+             fmt::format("has {} values, dims is {}", v.size(), m.dims));
+      m.support_vectors.insert(m.support_vectors.end(), v.begin(), v.end());
+    }
+  } catch (const ojson::exception& e) {
+    fail("(model)", fmt::format("missing or mistyped field ({})", e.what()));
+  }
+  for (double v : m.coef)
+    if (!std::isfinite(v)) fail("coef", "must be finite numbers");
+  if (!std::isfinite(m.rho)) fail("rho", "must be a finite number");
+  return m;
+}
+
+void save_model(const Model& model, const std::filesystem::path& path) {
+  write_text_atomically(path, to_json(model));
+}
+
+Model load_model(const std::filesystem::path& path) {
+  return model_from_json(read_text_file(path), path.string());
+}
+
+}  // namespace fogdrift::svr

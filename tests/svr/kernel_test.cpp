@@ -1,0 +1,133 @@
+// Kernel rows, the fast exponential and the vectorised selections, each against a plain
+// reference computation.
+#include "fogdrift/svr/kernel.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cfloat>
+#include <cmath>
+#include <cstring>
+
+#include "fogdrift/random.hpp"
+#include "svr/datasets.hpp"
+#include "svr/loops.hpp"
+
+namespace fogdrift::svr {
+namespace {
+
+TEST(FastExp, RoundsToTheSameFloatAsStdExp) {
+  Rng rng(3);
+  int differ = 0;
+  const int n = 200000;
+  for (int k = 0; k < n; ++k) {
+    const double x = -rng.uniform(0, 110);
+    const float a = detail::exp_to_float(x);
+    const float b = static_cast<float>(std::exp(x));
+    if (a != b) {
+      ++differ;
+      // Only a double rounding near a float boundary can differ, by one float ulp.
+      EXPECT_EQ(std::nextafter(a, b), b) << x;
+    }
+  }
+  EXPECT_LE(differ, 2) << "of " << n;
+  EXPECT_EQ(detail::exp_to_float(0.0), 1.0f);
+  EXPECT_EQ(detail::exp_to_float(-800.0), 0.0f);
+}
+
+TEST(KernelRows, MatchLibsvmsFormulaInDouble) {
+  const Data d = testing::smooth(300, 5, 0.0, 2);
+  const TrainingSet set(d);
+  for (const Kernel k : {Kernel::rbf_sigma(0.8), Kernel::linear()}) {
+    std::vector<float> row(d.rows);
+    int differ = 0;
+    for (std::size_t i = 0; i < d.rows; i += 13) {
+      set.kernel_row(k, i, row.data());
+      double sq_i = 0;
+      for (std::size_t f = 0; f < d.cols; ++f) sq_i += d.row(i)[f] * d.row(i)[f];
+      for (std::size_t j = 0; j < d.rows; ++j) {
+        double dot = 0, sq_j = 0;
+        for (std::size_t f = 0; f < d.cols; ++f) {
+          dot += d.row(i)[f] * d.row(j)[f];
+          sq_j += d.row(j)[f] * d.row(j)[f];
+        }
+        const double v =
+            k.type == KernelType::linear ? dot : std::exp(-k.gamma * ((sq_i + sq_j) - 2 * dot));
+        if (static_cast<float>(v) != row[j]) ++differ;
+        EXPECT_NEAR(row[j], v, 1e-6);
+      }
+    }
+    EXPECT_LE(differ, 1);
+  }
+}
+
+TEST(KernelRows, DistanceMatrixGivesTheSameRowsToFloatRounding) {
+  const Data d = testing::smooth(200, 30, 0.0, 3);
+  const TrainingSet direct(d, TrainingSet::Options{0, 24, nullptr});
+  const TrainingSet with_distances(d);
+  ASSERT_FALSE(direct.has_distances());
+  ASSERT_TRUE(with_distances.has_distances());
+  std::vector<float> a(d.rows), b(d.rows);
+  for (double sigma : {1.0, 3.0, 10.0}) {
+    const Kernel k = Kernel::rbf_sigma(sigma);
+    for (std::size_t i = 0; i < d.rows; i += 17) {
+      direct.kernel_row(k, i, a.data());
+      with_distances.kernel_row(k, i, b.data());
+      for (std::size_t j = 0; j < d.rows; ++j) EXPECT_NEAR(a[j], b[j], 1e-5) << sigma;
+    }
+  }
+}
+
+TEST(KernelCache, EvictsTheLeastRecentlyUsedRow) {
+  const Data d = testing::smooth(64, 2, 0.0, 4);
+  const TrainingSet set(d);
+  const double three_rows_mb = 3.0 * 64 * 4 / (1 << 20);
+  KernelCache cache(set, Kernel::rbf_sigma(1.0), three_rows_mb);
+  EXPECT_EQ(cache.capacity_rows(), 3u);
+  cache.row(0);
+  cache.row(1);
+  cache.row(2);
+  cache.row(0);  // 1 is now the oldest
+  cache.row(3);  // evicts 1
+  EXPECT_EQ(cache.rows_computed(), 4);
+  cache.row(0);
+  cache.row(2);
+  EXPECT_EQ(cache.rows_computed(), 4);
+  const float* r1 = cache.row(1);
+  EXPECT_EQ(cache.rows_computed(), 5);
+  std::vector<float> expect(64);
+  set.kernel_row(Kernel::rbf_sigma(1.0), 1, expect.data());
+  EXPECT_EQ(0, std::memcmp(r1, expect.data(), 64 * sizeof(float)));
+}
+
+TEST(Selections, VectorisedAndPortableAgreeIncludingTies) {
+  Rng rng(5);
+  for (int trial = 0; trial < 300; ++trial) {
+    const std::size_t len = 1 + static_cast<std::size_t>(rng.uniform(0, 90));
+    std::vector<double> g(len), qd(len);
+    std::vector<std::int8_t> y(len);
+    std::vector<std::uint8_t> status(len);
+    std::vector<float> k(len);
+    for (std::size_t t = 0; t < len; ++t) {
+      // Few distinct values, so that ties are common.
+      g[t] = std::round(rng.uniform(-3, 3));
+      y[t] = rng.uniform() < 0.5 ? 1 : -1;
+      status[t] = static_cast<std::uint8_t>(rng.uniform(0, 3));
+      k[t] = static_cast<float>(std::round(rng.uniform(0, 4)) / 4);
+      qd[t] = 1.0;
+    }
+    const auto a = detail::select_i(g.data(), y.data(), status.data(), len);
+    const auto b = detail::select_i_reference(g.data(), y.data(), status.data(), len);
+    ASSERT_EQ(a.index, b.index);
+    if (a.index < 0) continue;
+    ASSERT_EQ(a.value, b.value);
+    const auto c = detail::select_j(g.data(), y.data(), status.data(), k.data(), qd.data(), 1.0,
+                                    a.value, 1e-12, len);
+    const auto e = detail::select_j_reference(g.data(), y.data(), status.data(), k.data(),
+                                              qd.data(), 1.0, a.value, 1e-12, len);
+    ASSERT_EQ(c.index, e.index);
+    ASSERT_EQ(c.g_max2, e.g_max2);
+  }
+}
+
+}  // namespace
+}  // namespace fogdrift::svr
