@@ -10,5 +10,6 @@ void add_simulate(CLI::App& app);
 void add_inspect(CLI::App& app);
 void add_import(CLI::App& app);
 void add_demo(CLI::App& app);
+void add_svr(CLI::App& app);
 
 }  // namespace fogdrift::app

@@ -117,5 +117,43 @@ else
   passed=$((passed + 1))
 fi
 
+# --- svr train / predict, side by side with LIBSVM's svm-train / svm-predict ----------------
+dia="$data/svr/diabetes.libsvm"
+check "svr train" run 0 "$fd" svr train -c 100 -g 2 -p 5 "$dia" "$work/dia.model"
+grep -E '^(obj|nSV)' "$work/out" >"$work/ours.txt"
+if command -v svm-train >/dev/null; then
+  svm-train -s 3 -t 2 -c 100 -g 2 -p 5 "$dia" "$work/dia_libsvm.model" | grep -E '^(obj|nSV)' >"$work/theirs.txt"
+  check "svr train prints svm-train's obj, rho, nSV, nBSV" diff "$work/ours.txt" "$work/theirs.txt"
+  svm-predict "$dia" "$work/dia.model" "$work/libsvm_pred.txt" >/dev/null
+  check "svm-predict reads fogdrift's model" test -s "$work/libsvm_pred.txt"
+fi
+check "svr predict" run 0 "$fd" svr predict "$dia" "$work/dia.model" "$work/pred.txt"
+check "svr predict prints the regression summary" out_has "Squared correlation coefficient = "
+check "one prediction a line" test "$(wc -l <"$work/pred.txt")" -eq 442
+if [ -f "$work/libsvm_pred.txt" ]; then
+  check "same predictions as svm-predict" awk 'NR==FNR{a[FNR]=$1;next}{d=a[FNR]-$1; if(d<0)d=-d; if(d>1e-9*(1+($1<0?-$1:$1))) bad=1} END{exit bad}' "$work/pred.txt" "$work/libsvm_pred.txt"
+fi
+check "svr train --json" run 0 "$fd" svr train --json --sigma 0.5 -c 10 -p 5 "$dia" "$work/dia.json"
+check "json summary" out_has '"status": "optimal"'
+check "json model predicts" run 0 "$fd" svr predict -q "$dia" "$work/dia.json" "$work/pred_json.txt"
+check "C <= 0 rejected" run 1 "$fd" svr train -c 0 "$dia" "$work/x.model"
+check "C message names -c" err_has "option -c: must be a finite number > 0 (got 0)"
+check "negative epsilon rejected" run 1 "$fd" svr train -p -1 "$dia" "$work/x.model"
+check "epsilon message names -p" err_has "option -p:"
+check "sigma <= 0 rejected" run 1 "$fd" svr train --sigma -2 "$dia" "$work/x.model"
+check "sigma message" err_has "option --sigma: must be a finite number > 0"
+check "other svm types rejected" run 1 "$fd" svr train -s 0 "$dia" "$work/x.model"
+check "svm type message" err_has "option -s: svm_type 0 is not supported"
+check "no model written on error" test ! -e "$work/x.model"
+printf '1 2:1 1:3\n' >"$work/unsorted.txt"
+check "unsorted indices rejected" run 1 "$fd" svr train "$work/unsorted.txt" "$work/x.model"
+check "unsorted message names line and column" err_has "unsorted.txt:1:7: feature index 1 is not above the previous index 2"
+printf '1 1:nan\n' >"$work/nan.txt"
+check "NaN rejected" run 1 "$fd" svr train "$work/nan.txt" "$work/x.model"
+check "NaN message" err_has "nan.txt:1:3: feature value 'nan' is not finite"
+printf '{"format": "fogdrift-svr", "version": 9}' >"$work/future.json"
+check "newer model version rejected" run 1 "$fd" svr predict "$dia" "$work/future.json" "$work/p.txt"
+check "version message" err_has "model format version 9 is not supported"
+
 echo "cli: $passed passed, $failed failed"
 [ "$failed" -eq 0 ]
