@@ -128,8 +128,8 @@ KernelCache::KernelCache(const TrainingSet& set, const Kernel& kernel, double ca
     : set_(set), kernel_(kernel), n_(set.size()) {
   const double row_bytes = static_cast<double>(n_) * sizeof(float);
   const double rows = std::floor(std::max(0.0, cache_mb) * (1 << 20) / row_bytes);
-  capacity_ = static_cast<std::size_t>(std::clamp(rows, 2.0, static_cast<double>(n_)));
-  capacity_ = std::max<std::size_t>(capacity_, std::min<std::size_t>(2, n_));
+  // At least two rows (the solver holds two at once), at most every row.
+  capacity_ = static_cast<std::size_t>(std::max(2.0, std::min(rows, static_cast<double>(n_))));
   diagonal_.resize(n_);
   for (std::size_t i = 0; i < n_; ++i) diagonal_[i] = set.kernel_diagonal(kernel, i);
   slot_of_row_.assign(n_, -1);
