@@ -52,8 +52,8 @@ class Smo {
     slot_of_row_.assign(n_, -1);
     const double slot_bytes = static_cast<double>(len_) * sizeof(float);
     slot_capacity_ = static_cast<std::size_t>(
-        std::clamp(std::floor(options.solver_order_cache_mb * (1 << 20) / slot_bytes), 2.0,
-                   static_cast<double>(n_)));
+        std::max(2.0, std::min(std::floor(options.solver_order_cache_mb * (1 << 20) / slot_bytes),
+                               static_cast<double>(n_))));
     active_ = len_;
     const std::int64_t len = static_cast<std::int64_t>(len_);
     max_iterations_ =
