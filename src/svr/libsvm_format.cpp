@@ -14,6 +14,8 @@
 namespace fogdrift::svr {
 namespace {
 
+using SparseRow = std::vector<std::pair<std::size_t, double>>;
+
 bool is_blank(char c) {
   return c == ' ' || c == '\t' || c == '\r';
 }
@@ -63,6 +65,17 @@ class LineReader {
                       index, previous));
     return {index, number(tok.substr(colon + 1), "feature value")};
   }
+  // The rest of the line as INDEX:VALUE pairs; raises `dims` to the largest index.
+  SparseRow features(std::size_t& dims) {
+    SparseRow row;
+    std::size_t previous = 0;
+    while (!at_end()) {
+      row.push_back(feature(token(), previous));
+      previous = row.back().first;
+    }
+    dims = std::max(dims, previous);
+    return row;
+  }
 
  private:
   std::string_view line_;
@@ -84,8 +97,6 @@ void for_each_line(const std::string& text, F&& f) {
     ++line_no;
   }
 }
-
-using SparseRow = std::vector<std::pair<std::size_t, double>>;
 
 // Densifies rows of (index, value) into a row-major matrix of `dims` columns.
 std::vector<double> densify(const std::vector<SparseRow>& rows, std::size_t dims) {
@@ -118,15 +129,7 @@ Data parse_libsvm_data(const std::string& text, const std::string& source, std::
                        "empty line (each line is TARGET INDEX:VALUE …; remove blank lines)");
     }
     data.y.push_back(r.number(r.token(), "target"));
-    SparseRow row;
-    std::size_t previous = 0;
-    while (!r.at_end()) {
-      const auto f = r.feature(r.token(), previous);
-      previous = f.first;
-      row.push_back(f);
-    }
-    dims = std::max(dims, previous);
-    rows.push_back(std::move(row));
+    rows.push_back(r.features(dims));
   });
   if (rows.empty()) throw InputError(source, 0, 0, "no samples (the file is empty)");
   data.rows = rows.size();
@@ -163,15 +166,7 @@ Model parse_libsvm_model(const std::string& text, const std::string& source) {
     if (r.at_end()) return;
     if (in_sv) {
       m.coef.push_back(r.number(r.token(), "coefficient"));
-      SparseRow row;
-      std::size_t previous = 0;
-      while (!r.at_end()) {
-        const auto f = r.feature(r.token(), previous);
-        previous = f.first;
-        row.push_back(f);
-      }
-      dims = std::max(dims, previous);
-      rows.push_back(std::move(row));
+      rows.push_back(r.features(dims));
       return;
     }
     const std::string key(r.token());

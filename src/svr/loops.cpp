@@ -60,6 +60,18 @@ inline double exp_core(double x) {
 
 constexpr std::size_t kBlock = 256;  // columns per block: the accumulators stay in L1
 
+// acc[j] = x_i·x_{j0+j} for j < m, summed over features in order (LIBSVM's order), from the
+// feature-major copy `xt` (d × n). Inlined into each caller's AVX2 and portable builds.
+inline void dot_block(const double* xi, const double* xt, std::size_t n, std::size_t d,
+                      std::size_t j0, std::size_t m, double* acc) {
+  for (std::size_t j = 0; j < m; ++j) acc[j] = 0.0;
+  for (std::size_t f = 0; f < d; ++f) {
+    const double xf = xi[f];
+    const double* col = xt + f * n + j0;
+    for (std::size_t j = 0; j < m; ++j) acc[j] += xf * col[j];
+  }
+}
+
 }  // namespace
 
 float exp_to_float(double x) {
@@ -72,12 +84,7 @@ void rbf_row(const double* xi, double sq_i, const double* xt, const double* sq, 
   double acc[kBlock];
   for (std::size_t j0 = 0; j0 < n; j0 += kBlock) {
     const std::size_t m = std::min(kBlock, n - j0);
-    for (std::size_t j = 0; j < m; ++j) acc[j] = 0.0;
-    for (std::size_t f = 0; f < d; ++f) {
-      const double xf = xi[f];
-      const double* col = xt + f * n + j0;
-      for (std::size_t j = 0; j < m; ++j) acc[j] += xf * col[j];
-    }
+    dot_block(xi, xt, n, d, j0, m, acc);
     for (std::size_t j = 0; j < m; ++j) {
       const double dist = (sq_i + sq[j0 + j]) - 2.0 * acc[j];
       out[j0 + j] = static_cast<float>(exp_core(-gamma * dist));
@@ -90,12 +97,7 @@ void linear_row(const double* xi, const double* xt, std::size_t n, std::size_t d
   double acc[kBlock];
   for (std::size_t j0 = 0; j0 < n; j0 += kBlock) {
     const std::size_t m = std::min(kBlock, n - j0);
-    for (std::size_t j = 0; j < m; ++j) acc[j] = 0.0;
-    for (std::size_t f = 0; f < d; ++f) {
-      const double xf = xi[f];
-      const double* col = xt + f * n + j0;
-      for (std::size_t j = 0; j < m; ++j) acc[j] += xf * col[j];
-    }
+    dot_block(xi, xt, n, d, j0, m, acc);
     for (std::size_t j = 0; j < m; ++j) out[j0 + j] = static_cast<float>(acc[j]);
   }
 }
@@ -106,12 +108,7 @@ void distance_row(const double* xi, double sq_i, const double* xt, const double*
   double acc[kBlock];
   for (std::size_t j0 = 0; j0 < n; j0 += kBlock) {
     const std::size_t m = std::min(kBlock, n - j0);
-    for (std::size_t j = 0; j < m; ++j) acc[j] = 0.0;
-    for (std::size_t f = 0; f < d; ++f) {
-      const double xf = xi[f];
-      const double* col = xt + f * n + j0;
-      for (std::size_t j = 0; j < m; ++j) acc[j] += xf * col[j];
-    }
+    dot_block(xi, xt, n, d, j0, m, acc);
     for (std::size_t j = 0; j < m; ++j)
       out[j0 + j] = static_cast<float>((sq_i + sq[j0 + j]) - 2.0 * acc[j]);
   }
