@@ -8,6 +8,7 @@ packages=(
   libeigen3-dev libcli11-dev nlohmann-json3-dev libfmt-dev   # library dependencies
   libgtest-dev libgmock-dev            # tests
   libsvm-dev libsvm-tools              # LIBSVM: the reference the SVR engine is tested and benchmarked against
+  python3 python3-numpy python3-pywt python3-scipy   # PyWavelets and SciPy: references for the signal tests
 )
 
 missing=()
