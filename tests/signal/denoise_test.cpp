@@ -6,19 +6,19 @@
 #include <random>
 
 #include "fogdrift/error.hpp"
-#include "signal/pywt_reference.hpp"
+#include "signal/signal_reference.hpp"
 
 namespace fogdrift::signal {
 namespace {
 
 using test::agreeing_digits;
-using test::pywt_reference;
 using test::relative_error;
+using test::signal_reference;
 
 // The whole denoiser against an independent numpy + PyWavelets implementation: five wavelet and
 // mode settings, four rules, soft and hard, odd and even lengths.
 TEST(Denoise, MatchesNumpyAndPyWavelets) {
-  const auto& cases = pywt_reference().at("denoise");
+  const auto& cases = signal_reference().at("denoise");
   ASSERT_EQ(cases.size(), 2u * 5u * 4u * 2u);
   double worst = 0.0;
   for (const auto& c : cases) {

@@ -7,19 +7,19 @@
 #include <random>
 
 #include "fogdrift/error.hpp"
-#include "signal/pywt_reference.hpp"
+#include "signal/signal_reference.hpp"
 
 namespace fogdrift::signal {
 namespace {
 
 using test::agreeing_digits;
-using test::pywt_reference;
 using test::relative_error;
+using test::signal_reference;
 
 // Every wavelet, every mode, odd and even lengths, one level and the maximum level: wavedec's
 // bands and waverec's output agree with PyWavelets to 1e-10 of the band's scale.
 TEST(Dwt, MatchesPyWaveletsForEveryWaveletModeAndLength) {
-  const auto& cases = pywt_reference().at("dwt");
+  const auto& cases = signal_reference().at("dwt");
   ASSERT_GT(cases.size(), 1000u);
   double worst = 0.0;
   std::map<std::string, double> worst_by_mode;
@@ -51,7 +51,7 @@ TEST(Dwt, MatchesPyWaveletsForEveryWaveletModeAndLength) {
     worst = std::max(worst, err);
   }
   std::cout << "[ digits ] wavedec/waverec vs PyWavelets "
-            << pywt_reference().at("pywt_version").get<std::string>() << ": " << cases.size()
+            << signal_reference().at("pywt_version").get<std::string>() << ": " << cases.size()
             << " cases, worst " << agreeing_digits(worst) << " digits\n";
   for (const auto& [mode, err] : worst_by_mode) {
     std::cout << "[ digits ]   " << mode << ": " << agreeing_digits(err) << "\n";

@@ -6,7 +6,7 @@
 #include <numeric>
 
 #include "fogdrift/error.hpp"
-#include "signal/pywt_reference.hpp"
+#include "signal/signal_reference.hpp"
 
 namespace fogdrift::signal {
 namespace {

@@ -1,14 +1,16 @@
 #!/usr/bin/env python3
-"""Writes the PyWavelets reference the signal tests compare fogdrift against.
+"""Writes the PyWavelets and SciPy reference the signal tests compare fogdrift against.
 
 Run by the build (tests/CMakeLists.txt) with Debian's python3-pywt; the output goes to the build
 folder, not the repository. For every wavelet fogdrift offers, every extension mode and odd and
 even signal lengths it records pywt.wavedec's coefficients and pywt.waverec's reconstruction, and
 for a set of drift-plus-noise signals the result of wavelet-threshold denoising written here
 directly with numpy and pywt (universal, level-dependent, SURE and BayesShrink thresholds, soft
-and hard), so the C++ denoiser is checked against an independent implementation.
+and hard), so the C++ denoiser is checked against an independent implementation. For the
+temperature differentiator it records scipy.signal.savgol_filter's first derivative (mode='interp')
+of quantised, noisy temperature ramps (Debian's python3-scipy).
 
-Usage: make_pywt_reference.py OUTPUT.json
+Usage: make_signal_reference.py OUTPUT.json
 """
 import json
 import os
@@ -17,6 +19,7 @@ import sys
 
 import numpy as np
 import pywt
+from scipy.signal import savgol_filter
 
 NAMES = ([f"db{i}" for i in range(1, 21)] + [f"sym{i}" for i in range(2, 21)] +
          [f"coif{i}" for i in range(1, 6)])
@@ -91,10 +94,24 @@ def denoise_cases(rng):
     return cases
 
 
+def savgol_cases(rng):
+    cases = []
+    for n, dt in [(300, 1.0), (1001, 1.0), (240, 0.5)]:
+        t = np.arange(n) * dt
+        temp = 20.0 + 15.0 * (1.0 - np.exp(-t / 300.0)) + rng.normal(scale=0.02, size=n)
+        temp = np.round(temp / 0.01) * 0.01  # a 0.01 degC thermometer
+        for window, order in [(5, 1), (21, 2), (61, 2), (121, 3), (31, 4)]:
+            cases.append({"dt_s": dt, "window": window, "poly_order": order, "x": temp.tolist(),
+                          "derivative": savgol_filter(temp, window, order, deriv=1, delta=dt,
+                                                      mode="interp").tolist()})
+    return cases
+
+
 def main():
     warnings.simplefilter("ignore")  # levels above the maximum are part of the reference
     rng = np.random.default_rng(20240601)
-    out = {"pywt_version": pywt.__version__, "dwt": dwt_cases(rng), "denoise": denoise_cases(rng)}
+    out = {"pywt_version": pywt.__version__, "dwt": dwt_cases(rng), "denoise": denoise_cases(rng),
+           "savgol": savgol_cases(rng)}
     with open(sys.argv[1] + ".tmp", "w", encoding="utf-8") as f:
         json.dump(out, f)
     os.replace(sys.argv[1] + ".tmp", sys.argv[1])

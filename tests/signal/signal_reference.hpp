@@ -1,4 +1,4 @@
-// The PyWavelets reference written at build time by tests/data/signal/make_pywt_reference.py,
+// The PyWavelets reference written at build time by tests/data/signal/make_signal_reference.py,
 // and a digit score: how many significant digits two vectors share.
 #pragma once
 
@@ -12,10 +12,10 @@
 
 namespace fogdrift::test {
 
-inline const nlohmann::json& pywt_reference() {
+inline const nlohmann::json& signal_reference() {
   static const nlohmann::json reference = [] {
-    std::ifstream in(FOGDRIFT_PYWT_REFERENCE);
-    if (!in) throw std::runtime_error("missing " FOGDRIFT_PYWT_REFERENCE " (python3-pywt)");
+    std::ifstream in(FOGDRIFT_SIGNAL_REFERENCE);
+    if (!in) throw std::runtime_error("missing " FOGDRIFT_SIGNAL_REFERENCE " (python3-pywt)");
     return nlohmann::json::parse(in);
   }();
   return reference;
