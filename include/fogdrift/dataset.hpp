@@ -1,0 +1,101 @@
+// Modelling data assembled from recordings: inputs X (features.hpp), the drift target y, and the
+// group of every row, so that cross-validation can hold out whole recordings (METHOD.md §2).
+//
+// Target (per recording, at the recording's rate, then block-averaged like the features):
+//   y = denoised gyro_dph - input rate
+// The input rate is, in order of preference: the manifest's input_rate_dph; the Earth-rate
+// projection on the FOG axis, Omega_e cos(latitude) cos(true_azimuth + table_deg) (the table
+// angle from the recording, 0 if it has none; a tilt adds Omega_e sin(latitude) sin(tilt), a
+// constant the model's bias absorbs); otherwise the mean of the denoised gyro, with a warning,
+// because then the turn-on bias cannot be told from the input.
+//
+// Standardisation statistics come from training rows only and travel with the model
+// (Standardizer); a feature that is constant over the training data is an error.
+#pragma once
+
+#include <optional>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "fogdrift/campaign.hpp"
+#include "fogdrift/features.hpp"
+#include "fogdrift/recording.hpp"
+#include "fogdrift/signal/denoise.hpp"
+
+namespace fogdrift {
+
+struct DatasetOptions {
+  FeatureSpec features = default_feature_spec();
+  FeatureOptions preprocessing;    ///< differentiator and block averaging
+  bool denoise_target = true;      ///< wavelet-denoise the gyro before forming the target
+  signal::DenoiseOptions denoise;  ///< used when denoise_target
+};
+
+/// Where a group of rows came from.
+struct GroupInfo {
+  std::string file;  ///< recording path as given (manifest-relative for campaigns)
+  Scenario scenario = Scenario::calibration;
+  Role role = Role::train;
+  int repetition = 1;
+  double initial_temp_degc = 0;
+  std::string target;         ///< how y was formed: "input_rate", "earth_rate" or "mean"
+  double input_rate_dph = 0;  ///< the rate subtracted (its mean over the recording), °/h
+};
+
+/// One recording with what is known about its input.
+struct RecordingInput {
+  Recording recording;
+  GroupInfo info;                        ///< file, scenario, role, repetition, temperature
+  std::optional<double> input_rate_dph;  ///< explicit input rate, °/h
+  std::optional<double> latitude_deg;    ///< with true_azimuth_deg: the Earth-rate projection
+  std::optional<double> true_azimuth_deg;
+};
+
+struct Dataset {
+  std::vector<std::string> feature_names;
+  std::string feature_spec;  ///< FeatureSpec::to_string() of the spec used
+  std::size_t rows = 0;
+  std::vector<double> x;              ///< rows x feature_names.size(), row-major
+  std::vector<double> y;              ///< drift target, °/h
+  std::vector<double> time_s;         ///< block-centre time since power-on, s
+  std::vector<std::size_t> group;     ///< per row, an index into groups
+  std::vector<GroupInfo> groups;      ///< one per recording, in input order
+  std::vector<std::string> warnings;  ///< e.g. a target formed by subtracting the mean
+
+  std::size_t cols() const { return feature_names.size(); }
+  std::span<const double> row(std::size_t i) const { return {x.data() + i * cols(), cols()}; }
+  /// The rows of the given groups, in their original order.
+  Dataset select_groups(std::span<const std::size_t> group_indices) const;
+};
+
+/// The target of one recording at its own rate, and how it was formed (GroupInfo::target,
+/// input_rate_dph filled in). Validates the denoise options against the recording length.
+std::vector<double> drift_target(const RecordingInput& input, const DatasetOptions& options,
+                                 GroupInfo& info, std::vector<std::string>& warnings);
+
+/// Builds a dataset from recordings (features and target of each, concatenated).
+Dataset build_dataset(const std::vector<RecordingInput>& inputs,
+                      const DatasetOptions& options = {});
+
+/// Reads the campaign's recordings of `scenario` (and of `role`, if given) and builds a dataset;
+/// read errors name the recording file.
+Dataset build_dataset(const Campaign& campaign, std::optional<Role> role,
+                      Scenario scenario = Scenario::calibration,
+                      const DatasetOptions& options = {});
+
+/// Per-column standardisation z = (v - mean) / scale, scale the sample standard deviation.
+struct Standardizer {
+  std::vector<std::string> names;
+  std::vector<double> mean;
+  std::vector<double> scale;
+
+  /// Statistics of the columns of a row-major matrix. Throws OptionError("features", ...) naming
+  /// a column that is constant (scale 0 or below 1e-12 of its mean's magnitude) or non-finite.
+  static Standardizer fit(std::span<const double> x, std::size_t cols,
+                          std::vector<std::string> names);
+  void apply(std::span<double> x) const;   ///< in place, row-major rows of names.size()
+  void invert(std::span<double> x) const;  ///< back to original units
+};
+
+}  // namespace fogdrift

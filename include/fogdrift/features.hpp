@@ -1,0 +1,86 @@
+// The model input x built from the instrument's three thermometers (METHOD.md §2 step 2, the
+// paper's eq. 3: temperature, temperature rate and gradient terms), and the preprocessing that
+// turns a 1 Hz recording into modelling rows.
+//
+// A FeatureSpec is written as a short text, stored in every model:
+//   "T,dT,grad"                  the paper's 9 inputs: T_k, dT_k/dt and T_i - T_j of all three
+//   "T(fog),dT(fog,acc1),grad"   a term may name its thermometers: fog, acc1, acc2
+// Terms: T (temperature, °C), dT (rate, °C/s), grad (T_i - T_j for every pair i < j of the
+// term's thermometers, °C), dgrad (rate of that gradient, °C/s; the eq. 3 term d(grad T)/dt),
+// t (time since power-on, s), TdT (T_k times dT_k/dt, °C²/s). Default thermometers: all three.
+//
+// Preprocessing of one recording (compute_features):
+//   1. rates dT_k/dt at the recording's rate with the differentiator (signal/differentiate.hpp);
+//   2. every feature column at the recording's rate;
+//   3. block means over block_s (signal/resample.hpp); the trailing partial block is dropped.
+// The recording must be uniformly sampled (every interval within 1 % of the median interval).
+#pragma once
+
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "fogdrift/recording.hpp"
+#include "fogdrift/signal/differentiate.hpp"
+#include "fogdrift/signal/resample.hpp"
+
+namespace fogdrift {
+
+enum class Thermometer { fog, acc1, acc2 };
+enum class FeatureTerm { temp, rate, gradient, gradient_rate, time, temp_rate_product };
+
+std::string_view to_string(Thermometer thermometer);  ///< "fog", "acc1", "acc2"
+std::string_view to_string(FeatureTerm term);         ///< "T", "dT", "grad", "dgrad", "t", "TdT"
+
+/// The recording column a thermometer is read from ("temp_fog_degc", ...).
+std::string_view column_name(Thermometer thermometer);
+
+struct FeatureTermSpec {
+  FeatureTerm term = FeatureTerm::temp;
+  std::vector<Thermometer> thermometers;  ///< in fog, acc1, acc2 order; unused for t
+};
+
+struct FeatureSpec {
+  std::vector<FeatureTermSpec> terms;
+
+  /// Parses the text form; throws OptionError("features", ...) naming the bad term or
+  /// thermometer, a repeated term, a gradient term with fewer than two thermometers, or an
+  /// empty spec.
+  static FeatureSpec parse(std::string_view text);
+  /// The canonical text form: parse(to_string()) gives the same spec; thermometer lists are
+  /// written only when they are not all three.
+  std::string to_string() const;
+  /// One name per model input, with its unit: T_fog_degc, dT_acc1_degc_per_s,
+  /// grad_fog_acc1_degc, dgrad_fog_acc2_degc_per_s, t_s, TdT_fog_degc2_per_s.
+  std::vector<std::string> names() const;
+  std::size_t size() const { return names().size(); }
+};
+
+/// The paper's inputs, "T,dT,grad" (9 features).
+FeatureSpec default_feature_spec();
+
+/// How a recording becomes modelling rows.
+struct FeatureOptions {
+  signal::DifferentiatorOptions rates;  ///< temperature differentiator (default centred, 121 s)
+  signal::BlockAverageOptions block;    ///< block averaging (default 10 s)
+};
+
+/// Feature rows of one recording, at the block rate.
+struct FeatureTable {
+  std::vector<std::string> names;
+  std::size_t rows = 0;
+  std::vector<double> x;       ///< rows x names.size(), row-major
+  std::vector<double> time_s;  ///< block-centre time since power-on, s
+  std::size_t block = 1;       ///< samples per block
+};
+
+/// The median sample interval of `recording`, after checking that every interval is within 1 %
+/// of it; throws InputError naming the recording and the line of the first irregular sample.
+double sample_interval_s(const Recording& recording);
+
+/// Features of `recording` (see the file comment). Throws InputError naming the recording when it
+/// is too short for the differentiator window or for one block, or not uniformly sampled.
+FeatureTable compute_features(const Recording& recording, const FeatureSpec& spec,
+                              const FeatureOptions& options = {});
+
+}  // namespace fogdrift

@@ -1,0 +1,171 @@
+#include "fogdrift/dataset.hpp"
+
+#include <fmt/format.h>
+#include <cmath>
+#include <numeric>
+
+#include "fogdrift/earth.hpp"
+#include "fogdrift/error.hpp"
+
+namespace fogdrift {
+namespace {
+
+constexpr double kDegToRad = 3.14159265358979323846 / 180.0;
+
+}  // namespace
+
+Dataset Dataset::select_groups(std::span<const std::size_t> group_indices) const {
+  Dataset out;
+  out.feature_names = feature_names;
+  out.feature_spec = feature_spec;
+  out.groups = groups;
+  out.warnings = warnings;
+  std::vector<bool> keep(groups.size(), false);
+  for (std::size_t g : group_indices) {
+    if (g >= groups.size()) throw std::out_of_range("Dataset::select_groups: no such group");
+    keep[g] = true;
+  }
+  const std::size_t c = cols();
+  for (std::size_t i = 0; i < rows; ++i) {
+    if (!keep[group[i]]) continue;
+    out.x.insert(out.x.end(), x.begin() + static_cast<std::ptrdiff_t>(i * c),
+                 x.begin() + static_cast<std::ptrdiff_t>((i + 1) * c));
+    out.y.push_back(y[i]);
+    out.time_s.push_back(time_s[i]);
+    out.group.push_back(group[i]);
+  }
+  out.rows = out.y.size();
+  return out;
+}
+
+std::vector<double> drift_target(const RecordingInput& input, const DatasetOptions& options,
+                                 GroupInfo& info, std::vector<std::string>& warnings) {
+  const Recording& rec = input.recording;
+  std::vector<double> gyro = rec.gyro_dph;
+  if (options.denoise_target) {
+    try {
+      gyro = signal::denoise(gyro, options.denoise).signal;
+    } catch (const OptionError& e) {
+      throw InputError(rec.source, 0, 0, e.what());
+    }
+  }
+  const std::size_t n = gyro.size();
+  std::vector<double> input_rate(n, 0.0);
+  if (input.input_rate_dph) {
+    info.target = "input_rate";
+    std::fill(input_rate.begin(), input_rate.end(), *input.input_rate_dph);
+  } else if (input.latitude_deg && input.true_azimuth_deg) {
+    info.target = "earth_rate";
+    const double horizontal = kEarthRateDph * std::cos(*input.latitude_deg * kDegToRad);
+    for (std::size_t i = 0; i < n; ++i) {
+      const double table = rec.table_deg ? (*rec.table_deg)[i] : 0.0;
+      input_rate[i] = horizontal * std::cos((*input.true_azimuth_deg + table) * kDegToRad);
+    }
+  } else {
+    info.target = "mean";
+    const double mean = std::accumulate(gyro.begin(), gyro.end(), 0.0) / static_cast<double>(n);
+    std::fill(input_rate.begin(), input_rate.end(), mean);
+    warnings.push_back(fmt::format(
+        "{}: no input rate and no true azimuth are known, so the target is the gyro minus its "
+        "mean ({:.6g} °/h); the turn-on bias is lost",
+        info.file, mean));
+  }
+  info.input_rate_dph =
+      std::accumulate(input_rate.begin(), input_rate.end(), 0.0) / static_cast<double>(n);
+  for (std::size_t i = 0; i < n; ++i) gyro[i] -= input_rate[i];
+  return gyro;
+}
+
+Dataset build_dataset(const std::vector<RecordingInput>& inputs, const DatasetOptions& options) {
+  Dataset out;
+  out.feature_names = options.features.names();
+  out.feature_spec = options.features.to_string();
+  for (const auto& input : inputs) {
+    GroupInfo info = input.info;
+    const FeatureTable table =
+        compute_features(input.recording, options.features, options.preprocessing);
+    const auto y = drift_target(input, options, info, out.warnings);
+    const auto y_blocks = signal::block_average(y, table.block);
+    const std::size_t g = out.groups.size();
+    out.groups.push_back(std::move(info));
+    out.x.insert(out.x.end(), table.x.begin(), table.x.end());
+    out.y.insert(out.y.end(), y_blocks.begin(), y_blocks.end());
+    out.time_s.insert(out.time_s.end(), table.time_s.begin(), table.time_s.end());
+    out.group.insert(out.group.end(), table.rows, g);
+    out.rows += table.rows;
+  }
+  return out;
+}
+
+Dataset build_dataset(const Campaign& campaign, std::optional<Role> role, Scenario scenario,
+                      const DatasetOptions& options) {
+  std::vector<RecordingInput> inputs;
+  for (const auto& entry : campaign.recordings) {
+    if (entry.scenario != scenario || (role && entry.role != *role)) continue;
+    RecordingInput input;
+    input.recording = read_recording(campaign.path_of(entry));
+    input.info.file = entry.file;
+    input.info.scenario = entry.scenario;
+    input.info.role = entry.role;
+    input.info.repetition = entry.repetition;
+    input.info.initial_temp_degc = entry.initial_temp_degc;
+    input.input_rate_dph = entry.input_rate_dph;
+    input.latitude_deg = campaign.latitude_deg;
+    input.true_azimuth_deg = entry.true_azimuth_deg;
+    inputs.push_back(std::move(input));
+  }
+  if (inputs.empty()) {
+    throw InputError((campaign.dir / "campaign.json").string(), 0, 0,
+                     fmt::format("no {} recordings{} in the campaign", to_string(scenario),
+                                 role ? fmt::format(" with role {}", to_string(*role)) : ""));
+  }
+  return build_dataset(inputs, options);
+}
+
+Standardizer Standardizer::fit(std::span<const double> x, std::size_t cols,
+                               std::vector<std::string> names) {
+  if (cols == 0 || x.size() % cols != 0 || names.size() != cols) {
+    throw std::invalid_argument("Standardizer::fit: shape does not match the names");
+  }
+  const std::size_t rows = x.size() / cols;
+  if (rows < 2) throw OptionError("features", "standardisation needs at least 2 training rows");
+  Standardizer s;
+  s.names = std::move(names);
+  s.mean.assign(cols, 0.0);
+  s.scale.assign(cols, 0.0);
+  for (std::size_t c = 0; c < cols; ++c) {
+    double sum = 0.0;
+    for (std::size_t r = 0; r < rows; ++r) sum += x[r * cols + c];
+    const double mean = sum / static_cast<double>(rows);
+    double ss = 0.0;
+    for (std::size_t r = 0; r < rows; ++r) {
+      const double d = x[r * cols + c] - mean;
+      ss += d * d;
+    }
+    const double sd = std::sqrt(ss / static_cast<double>(rows - 1));
+    if (!std::isfinite(mean) || !std::isfinite(sd)) {
+      throw OptionError("features", fmt::format("column {} has a non-finite value", s.names[c]));
+    }
+    if (!(sd > 1e-12 * std::max(1.0, std::fabs(mean)))) {
+      throw OptionError("features",
+                        fmt::format("{} is constant ({:.6g}) over the {} training rows; it carries "
+                                    "no information, drop it from the feature spec",
+                                    s.names[c], mean, rows));
+    }
+    s.mean[c] = mean;
+    s.scale[c] = sd;
+  }
+  return s;
+}
+
+void Standardizer::apply(std::span<double> x) const {
+  const std::size_t cols = mean.size();
+  for (std::size_t i = 0; i < x.size(); ++i) x[i] = (x[i] - mean[i % cols]) / scale[i % cols];
+}
+
+void Standardizer::invert(std::span<double> x) const {
+  const std::size_t cols = mean.size();
+  for (std::size_t i = 0; i < x.size(); ++i) x[i] = x[i] * scale[i % cols] + mean[i % cols];
+}
+
+}  // namespace fogdrift

@@ -1,0 +1,305 @@
+#include "fogdrift/features.hpp"
+
+#include <fmt/format.h>
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+#include "fogdrift/error.hpp"
+
+namespace fogdrift {
+namespace {
+
+constexpr std::array kThermometers = {Thermometer::fog, Thermometer::acc1, Thermometer::acc2};
+constexpr std::array kTerms = {FeatureTerm::temp,     FeatureTerm::rate,
+                               FeatureTerm::gradient, FeatureTerm::gradient_rate,
+                               FeatureTerm::time,     FeatureTerm::temp_rate_product};
+
+bool is_gradient(FeatureTerm term) {
+  return term == FeatureTerm::gradient || term == FeatureTerm::gradient_rate;
+}
+
+std::string_view trim(std::string_view s) {
+  while (!s.empty() && (s.front() == ' ' || s.front() == '\t')) s.remove_prefix(1);
+  while (!s.empty() && (s.back() == ' ' || s.back() == '\t')) s.remove_suffix(1);
+  return s;
+}
+
+// Splits at commas that are not inside parentheses.
+std::vector<std::string_view> split_terms(std::string_view text) {
+  std::vector<std::string_view> out;
+  int depth = 0;
+  std::size_t start = 0;
+  for (std::size_t i = 0; i <= text.size(); ++i) {
+    if (i == text.size() || (text[i] == ',' && depth == 0)) {
+      out.push_back(trim(text.substr(start, i - start)));
+      start = i + 1;
+    } else if (text[i] == '(') {
+      ++depth;
+    } else if (text[i] == ')') {
+      --depth;
+    }
+  }
+  return out;
+}
+
+}  // namespace
+
+std::string_view to_string(Thermometer thermometer) {
+  switch (thermometer) {
+    case Thermometer::fog:
+      return "fog";
+    case Thermometer::acc1:
+      return "acc1";
+    case Thermometer::acc2:
+      return "acc2";
+  }
+  return "?";
+}
+
+std::string_view to_string(FeatureTerm term) {
+  switch (term) {
+    case FeatureTerm::temp:
+      return "T";
+    case FeatureTerm::rate:
+      return "dT";
+    case FeatureTerm::gradient:
+      return "grad";
+    case FeatureTerm::gradient_rate:
+      return "dgrad";
+    case FeatureTerm::time:
+      return "t";
+    case FeatureTerm::temp_rate_product:
+      return "TdT";
+  }
+  return "?";
+}
+
+std::string_view column_name(Thermometer thermometer) {
+  switch (thermometer) {
+    case Thermometer::fog:
+      return "temp_fog_degc";
+    case Thermometer::acc1:
+      return "temp_acc1_degc";
+    case Thermometer::acc2:
+      return "temp_acc2_degc";
+  }
+  return "?";
+}
+
+FeatureSpec FeatureSpec::parse(std::string_view text) {
+  const auto fail = [&](const std::string& why) {
+    throw OptionError("features", fmt::format("'{}': {}; write terms such as T,dT,grad or "
+                                              "T(fog,acc1) from T, dT, grad, dgrad, t, TdT",
+                                              text, why));
+  };
+  FeatureSpec spec;
+  if (trim(text).empty()) fail("the spec is empty");
+  for (std::string_view item : split_terms(text)) {
+    if (item.empty()) fail("an empty term");
+    std::string_view name = item;
+    std::string_view list;
+    bool has_list = false;
+    if (const auto open = item.find('('); open != std::string_view::npos) {
+      if (item.back() != ')') fail(fmt::format("'{}' has no closing parenthesis", item));
+      name = trim(item.substr(0, open));
+      list = item.substr(open + 1, item.size() - open - 2);
+      has_list = true;
+    }
+    const auto term_it = std::find_if(kTerms.begin(), kTerms.end(), [&](FeatureTerm t) {
+      return fogdrift::to_string(t) == name;
+    });
+    if (term_it == kTerms.end()) fail(fmt::format("'{}' is not a term", name));
+    FeatureTermSpec term{*term_it, {}};
+    for (const auto& existing : spec.terms) {
+      if (existing.term == term.term) fail(fmt::format("'{}' appears twice", name));
+    }
+    if (term.term == FeatureTerm::time) {
+      if (has_list) fail("'t' takes no thermometers");
+    } else if (!has_list) {
+      term.thermometers.assign(kThermometers.begin(), kThermometers.end());
+    } else {
+      std::array<bool, 3> chosen{};
+      for (std::string_view s : split_terms(list)) {
+        const auto th = std::find_if(kThermometers.begin(), kThermometers.end(),
+                                     [&](Thermometer k) { return fogdrift::to_string(k) == s; });
+        if (th == kThermometers.end()) {
+          fail(fmt::format("'{}' is not a thermometer (fog, acc1, acc2)", s));
+        }
+        const auto index = static_cast<std::size_t>(th - kThermometers.begin());
+        if (chosen[index]) fail(fmt::format("thermometer '{}' appears twice in {}", s, name));
+        chosen[index] = true;
+      }
+      for (std::size_t k = 0; k < 3; ++k) {
+        if (chosen[k]) term.thermometers.push_back(kThermometers[k]);
+      }
+    }
+    if (is_gradient(term.term) && term.thermometers.size() < 2) {
+      fail(fmt::format("'{}' needs at least two thermometers", name));
+    }
+    spec.terms.push_back(std::move(term));
+  }
+  return spec;
+}
+
+std::string FeatureSpec::to_string() const {
+  std::string out;
+  for (const auto& term : terms) {
+    if (!out.empty()) out += ',';
+    out += fogdrift::to_string(term.term);
+    if (term.term != FeatureTerm::time && term.thermometers.size() != 3) {
+      out += '(';
+      for (std::size_t k = 0; k < term.thermometers.size(); ++k) {
+        if (k > 0) out += ',';
+        out += fogdrift::to_string(term.thermometers[k]);
+      }
+      out += ')';
+    }
+  }
+  return out;
+}
+
+std::vector<std::string> FeatureSpec::names() const {
+  std::vector<std::string> out;
+  for (const auto& term : terms) {
+    const auto& th = term.thermometers;
+    switch (term.term) {
+      case FeatureTerm::temp:
+        for (auto k : th) out.push_back(fmt::format("T_{}_degc", fogdrift::to_string(k)));
+        break;
+      case FeatureTerm::rate:
+        for (auto k : th) out.push_back(fmt::format("dT_{}_degc_per_s", fogdrift::to_string(k)));
+        break;
+      case FeatureTerm::gradient:
+      case FeatureTerm::gradient_rate:
+        for (std::size_t i = 0; i < th.size(); ++i) {
+          for (std::size_t j = i + 1; j < th.size(); ++j) {
+            const bool of_rate = term.term == FeatureTerm::gradient_rate;
+            out.push_back(fmt::format("{}grad_{}_{}_degc{}", of_rate ? "d" : "",
+                                      fogdrift::to_string(th[i]), fogdrift::to_string(th[j]),
+                                      of_rate ? "_per_s" : ""));
+          }
+        }
+        break;
+      case FeatureTerm::time:
+        out.emplace_back("t_s");
+        break;
+      case FeatureTerm::temp_rate_product:
+        for (auto k : th) out.push_back(fmt::format("TdT_{}_degc2_per_s", fogdrift::to_string(k)));
+        break;
+    }
+  }
+  return out;
+}
+
+FeatureSpec default_feature_spec() {
+  return FeatureSpec::parse("T,dT,grad");
+}
+
+double sample_interval_s(const Recording& recording) {
+  const auto& t = recording.time_s;
+  if (t.size() < 2) {
+    throw InputError(recording.source, 0, 0, "a recording needs at least 2 samples");
+  }
+  std::vector<double> dt(t.size() - 1);
+  for (std::size_t i = 0; i + 1 < t.size(); ++i) dt[i] = t[i + 1] - t[i];
+  std::vector<double> sorted = dt;
+  std::nth_element(sorted.begin(), sorted.begin() + static_cast<std::ptrdiff_t>(sorted.size() / 2),
+                   sorted.end());
+  const double median = sorted[sorted.size() / 2];
+  for (std::size_t i = 0; i < dt.size(); ++i) {
+    if (std::fabs(dt[i] - median) > 0.01 * median) {
+      // Line numbers count the header as line 1; sample i + 1 is on line i + 3.
+      throw InputError(recording.source, i + 3, 0,
+                       fmt::format("time_s steps by {} s here but by {} s elsewhere; features need "
+                                   "uniform sampling (within 1 %)",
+                                   dt[i], median));
+    }
+  }
+  return median;
+}
+
+FeatureTable compute_features(const Recording& recording, const FeatureSpec& spec,
+                              const FeatureOptions& options) {
+  const double dt = sample_interval_s(recording);
+  const std::size_t n = recording.size();
+  std::size_t block = 0;
+  try {
+    block = signal::block_samples(options.block, dt);
+    signal::validate(options.rates, dt, n);
+  } catch (const OptionError& e) {
+    throw InputError(recording.source, 0, 0, e.what());
+  }
+  if (n < block) {
+    throw InputError(
+        recording.source, 0, 0,
+        fmt::format("{} samples are fewer than one averaging block of {} s ({} samples)", n,
+                    options.block.block_s, block));
+  }
+
+  std::array<const std::vector<double>*, 3> temps = {
+      &recording.temp_fog_degc, &recording.temp_acc1_degc, &recording.temp_acc2_degc};
+  std::array<std::vector<double>, 3> rates;
+  const auto rate_of = [&](Thermometer k) -> const std::vector<double>& {
+    auto& r = rates[static_cast<std::size_t>(k)];
+    if (r.empty())
+      r = signal::differentiate(*temps[static_cast<std::size_t>(k)], dt, options.rates);
+    return r;
+  };
+  const auto temp_of = [&](Thermometer k) -> const std::vector<double>& {
+    return *temps[static_cast<std::size_t>(k)];
+  };
+
+  std::vector<std::vector<double>> columns;  // at the recording's rate
+  for (const auto& term : spec.terms) {
+    const auto& th = term.thermometers;
+    switch (term.term) {
+      case FeatureTerm::temp:
+        for (auto k : th) columns.push_back(temp_of(k));
+        break;
+      case FeatureTerm::rate:
+        for (auto k : th) columns.push_back(rate_of(k));
+        break;
+      case FeatureTerm::gradient:
+      case FeatureTerm::gradient_rate:
+        for (std::size_t i = 0; i < th.size(); ++i) {
+          for (std::size_t j = i + 1; j < th.size(); ++j) {
+            const bool of_rate = term.term == FeatureTerm::gradient_rate;
+            const auto& a = of_rate ? rate_of(th[i]) : temp_of(th[i]);
+            const auto& b = of_rate ? rate_of(th[j]) : temp_of(th[j]);
+            std::vector<double> d(n);
+            for (std::size_t s = 0; s < n; ++s) d[s] = a[s] - b[s];
+            columns.push_back(std::move(d));
+          }
+        }
+        break;
+      case FeatureTerm::time:
+        columns.push_back(recording.time_s);
+        break;
+      case FeatureTerm::temp_rate_product:
+        for (auto k : th) {
+          const auto& tk = temp_of(k);
+          const auto& rk = rate_of(k);
+          std::vector<double> p(n);
+          for (std::size_t s = 0; s < n; ++s) p[s] = tk[s] * rk[s];
+          columns.push_back(std::move(p));
+        }
+        break;
+    }
+  }
+
+  FeatureTable table;
+  table.names = spec.names();
+  table.block = block;
+  table.time_s = signal::block_average(recording.time_s, block);
+  table.rows = table.time_s.size();
+  const std::size_t cols = columns.size();
+  table.x.resize(table.rows * cols);
+  for (std::size_t c = 0; c < cols; ++c) {
+    const auto means = signal::block_average(columns[c], block);
+    for (std::size_t r = 0; r < table.rows; ++r) table.x[r * cols + c] = means[r];
+  }
+  return table;
+}
+
+}  // namespace fogdrift

@@ -1,0 +1,144 @@
+#include "fogdrift/features.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "fogdrift/error.hpp"
+
+namespace fogdrift {
+namespace {
+
+TEST(FeatureSpec, ParsesTheTextFormAndRoundTrips) {
+  const FeatureSpec paper = default_feature_spec();
+  EXPECT_EQ(paper.to_string(), "T,dT,grad");
+  EXPECT_EQ(paper.names(), (std::vector<std::string>{"T_fog_degc", "T_acc1_degc", "T_acc2_degc",
+                                                     "dT_fog_degc_per_s", "dT_acc1_degc_per_s",
+                                                     "dT_acc2_degc_per_s", "grad_fog_acc1_degc",
+                                                     "grad_fog_acc2_degc", "grad_acc1_acc2_degc"}));
+  const FeatureSpec custom = FeatureSpec::parse(" T(fog), dT(acc2,fog) ,dgrad(fog,acc2),t,TdT ");
+  EXPECT_EQ(custom.to_string(), "T(fog),dT(fog,acc2),dgrad(fog,acc2),t,TdT");
+  EXPECT_EQ(FeatureSpec::parse(custom.to_string()).to_string(), custom.to_string());
+  EXPECT_EQ(custom.names(),
+            (std::vector<std::string>{"T_fog_degc", "dT_fog_degc_per_s", "dT_acc2_degc_per_s",
+                                      "dgrad_fog_acc2_degc_per_s", "t_s", "TdT_fog_degc2_per_s",
+                                      "TdT_acc1_degc2_per_s", "TdT_acc2_degc2_per_s"}));
+  EXPECT_EQ(FeatureSpec::parse("T(fog,acc1,acc2)").to_string(), "T");
+}
+
+TEST(FeatureSpec, BadSpecsNameTheProblem) {
+  auto message = [](const char* text) {
+    try {
+      FeatureSpec::parse(text);
+    } catch (const OptionError& e) {
+      EXPECT_EQ(e.option(), "features");
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  EXPECT_NE(message("T,dT,gradient").find("'gradient' is not a term"), std::string::npos);
+  EXPECT_NE(message("T(fog,gyro)").find("'gyro' is not a thermometer"), std::string::npos);
+  EXPECT_NE(message("T,T").find("'T' appears twice"), std::string::npos);
+  EXPECT_NE(message("grad(fog)").find("'grad' needs at least two thermometers"), std::string::npos);
+  EXPECT_NE(message("").find("empty"), std::string::npos);
+  EXPECT_NE(message("T,,dT").find("an empty term"), std::string::npos);
+  EXPECT_NE(message("T(fog").find("no closing parenthesis"), std::string::npos);
+  EXPECT_NE(message("t(fog)").find("'t' takes no thermometers"), std::string::npos);
+  EXPECT_NE(message("T(fog,fog)").find("appears twice"), std::string::npos);
+}
+
+// Temperatures that are quadratic in time: the centred degree-2 differentiator is exact, so every
+// feature's block mean can be computed independently in closed form.
+Recording quadratic_recording(std::size_t n, double dt) {
+  Recording r;
+  r.source = "quadratic.csv";
+  for (std::size_t i = 0; i < n; ++i) {
+    const double t = dt * static_cast<double>(i + 1);
+    r.time_s.push_back(t);
+    r.gyro_dph.push_back(0.0);
+    r.temp_fog_degc.push_back(-10.0 + 0.02 * t - 1e-6 * t * t);
+    r.temp_acc1_degc.push_back(-12.0 + 0.01 * t);
+    r.temp_acc2_degc.push_back(-11.0 + 0.015 * t - 2e-6 * t * t);
+  }
+  return r;
+}
+
+TEST(Features, BlockMeansOfExactFeatures) {
+  const double dt = 1.0;
+  const Recording r = quadratic_recording(605, dt);
+  const FeatureSpec spec = FeatureSpec::parse("T,dT,grad,dgrad(fog,acc2),t,TdT(acc1)");
+  const FeatureTable table = compute_features(r, spec);
+  ASSERT_EQ(table.block, 10u);
+  ASSERT_EQ(table.rows, 60u);  // 605 samples: the last 5 are a partial block
+  ASSERT_EQ(table.names.size(), 12u);
+  auto temp = [](int k, double t) {
+    return k == 0 ? -10.0 + 0.02 * t - 1e-6 * t * t
+                  : (k == 1 ? -12.0 + 0.01 * t : -11.0 + 0.015 * t - 2e-6 * t * t);
+  };
+  auto rate = [](int k, double t) {
+    return k == 0 ? 0.02 - 2e-6 * t : (k == 1 ? 0.01 : 0.015 - 4e-6 * t);
+  };
+  for (std::size_t b = 0; b < table.rows; ++b) {
+    std::vector<double> expect(12, 0.0);
+    for (std::size_t j = 0; j < 10; ++j) {
+      const double t = dt * static_cast<double>(b * 10 + j + 1);
+      const double v[] = {temp(0, t),
+                          temp(1, t),
+                          temp(2, t),
+                          rate(0, t),
+                          rate(1, t),
+                          rate(2, t),
+                          temp(0, t) - temp(1, t),
+                          temp(0, t) - temp(2, t),
+                          temp(1, t) - temp(2, t),
+                          rate(0, t) - rate(2, t),
+                          t,
+                          temp(1, t) * rate(1, t)};
+      for (std::size_t c = 0; c < 12; ++c) expect[c] += v[c] / 10.0;
+    }
+    EXPECT_NEAR(table.time_s[b], expect[10], 1e-9);
+    for (std::size_t c = 0; c < 12; ++c) {
+      ASSERT_NEAR(table.x[b * 12 + c], expect[c], 1e-9) << table.names[c] << " block " << b;
+    }
+  }
+}
+
+TEST(Features, IrregularSamplingIsAnInputErrorWithTheLine) {
+  Recording r = quadratic_recording(300, 1.0);
+  r.time_s[100] += 0.5;  // sample 100 is on line 102; its step is the first irregular one
+  try {
+    compute_features(r, default_feature_spec());
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.file(), "quadratic.csv");
+    EXPECT_EQ(e.line(), 102u);
+    EXPECT_NE(e.message().find("uniform sampling"), std::string::npos);
+  }
+}
+
+TEST(Features, TooShortForTheWindowOrABlock) {
+  const Recording r = quadratic_recording(100, 1.0);
+  try {
+    compute_features(r, default_feature_spec());  // 121 s centred window
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.file(), "quadratic.csv");
+    EXPECT_NE(e.message().find("window of 121 samples is longer than the signal (100"),
+              std::string::npos)
+        << e.what();
+  }
+  FeatureOptions options;
+  options.rates.window_s = 5.0;
+  options.block.block_s = 200.0;
+  try {
+    compute_features(r, default_feature_spec(), options);
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_NE(e.message().find("fewer than one averaging block"), std::string::npos);
+  }
+  options.block.block_s = 2.5;
+  EXPECT_THROW(compute_features(r, default_feature_spec(), options), InputError);
+}
+
+}  // namespace
+}  // namespace fogdrift
