@@ -106,6 +106,77 @@ check "bad unit leaves no file" test ! -e "$work/bad_unit.csv"
 check "import of a missing column" run 1 "$fd" import "$work/logger.csv" --delimiter ';' -o "$work/x.csv"
 check "missing column message" err_has "say which column holds it"
 
+# --- denoise: one column replaced, the rest byte for byte; checked against PyWavelets ------------
+rec="$work/cal/cal_r1_m10C.csv"
+check "denoise help explains the rules" run 0 "$fd" denoise --help
+check "denoise help lists bayes" out_has "sigma^2 / sigma_signal (BayesShrink)"
+check "denoise with defaults" run 0 "$fd" denoise "$rec" -o "$work/den.csv"
+check "denoise summary" out_has "denoised gyro_dph (1800 samples) with sym4"
+cut -d, -f1,3- "$rec" >"$work/rest_in.txt"
+cut -d, -f1,3- "$work/den.csv" >"$work/rest_out.txt"
+check "every other column unchanged" diff "$work/rest_in.txt" "$work/rest_out.txt"
+check "gyro column changed" bash -c "! cmp -s '$rec' '$work/den.csv'"
+python=/usr/bin/python3
+if "$python" -c 'import pywt, numpy' 2>/dev/null; then
+  for setting in "db4 6 universal hard periodization" "coif2 max level soft zero" \
+                 "sym6 5 sure soft periodic" "haar 3 bayes hard symmetric"; do
+    set -- $setting
+    check "denoise $setting" run 0 "$fd" denoise "$rec" -o "$work/den_$1.csv" --wavelet "$1" \
+      --level "$2" --threshold "$3" --mode "$4" --extension "$5" -q
+    check "denoise $setting matches PyWavelets" "$python" - "$rec" "$work/den_$1.csv" "$@" <<'PY'
+import sys
+import numpy as np
+import pywt
+src, out, name, level, rule, shrink, mode = sys.argv[1:]
+x = np.genfromtxt(src, delimiter=",", names=True)["gyro_dph"]
+y = np.genfromtxt(out, delimiter=",", names=True)["gyro_dph"]
+c = pywt.wavedec(x, "db1" if name == "haar" else name, mode=mode,
+                 level=None if level == "max" else int(level))
+mad = lambda d: np.median(np.abs(d)) / 0.6745
+s = mad(c[-1])
+res = [c[0]]
+for d in c[1:]:
+    if rule == "universal":
+        lam = s * np.sqrt(2 * np.log(len(x)))
+    elif rule == "level":
+        lam = mad(d) * np.sqrt(2 * np.log(len(x)))
+    elif rule == "sure":
+        w2 = np.sort((d / s) ** 2); n = len(w2); k = np.arange(1, n + 1)
+        r = n - 2 * k + np.cumsum(w2) + (n - k) * w2
+        lam = s * np.sqrt(w2[np.argmin(r)]) if r.min() < n else 0.0
+    else:
+        v = np.mean(d ** 2) - s * s
+        lam = s * s / np.sqrt(v) if v > 0 else np.nextafter(np.abs(d).max(), np.inf)
+    res.append(pywt.threshold(d, lam, mode=shrink))
+ref = pywt.waverec(res, "db1" if name == "haar" else name, mode=mode)[: len(x)]
+err = np.abs(ref - y).max() / np.abs(ref).max()
+sys.exit(0 if err < 1e-10 else f"relative error {err}")
+PY
+  done
+fi
+check "denoise json" run 0 "$fd" denoise "$rec" -o "$work/den.csv" --json --threshold universal
+check "denoise json bands" out_has '"threshold": "universal"'
+check "denoise missing column" run 1 "$fd" denoise "$rec" -o "$work/x.csv" --column gyro
+check "missing column message" err_has "cal_r1_m10C.csv:1: no column 'gyro' to denoise; the columns are time_s, gyro_dph"
+check "no output on error" test ! -e "$work/x.csv"
+check "denoise level too high" run 1 "$fd" denoise "$rec" -o "$work/x.csv" --level 12
+check "level message" err_has "option --level: 12 is too high for 1800 samples with sym4: the maximum is 8"
+check "denoise bad level text" run 1 "$fd" denoise "$rec" -o "$work/x.csv" --level deep
+check "bad level message" err_has "option --level: 'deep' is not a whole number or 'max'"
+check "denoise bad wavelet" run 1 "$fd" denoise "$rec" -o "$work/x.csv" --wavelet db42
+check "bad wavelet message" err_has "option --wavelet: 'db42' is not a known wavelet"
+check "denoise bad mode" run 1 "$fd" denoise "$rec" -o "$work/x.csv" --mode medium
+check "bad mode message" err_has "option --mode: 'medium' is not a shrinkage mode; use soft or hard"
+check "denoise bad extension" run 1 "$fd" denoise "$rec" -o "$work/x.csv" --extension reflect
+check "bad extension message" err_has "option --extension: 'reflect' is not an extension mode"
+sed '5s/^\([^,]*\),[^,]*,/\1,NaN,/' "$rec" >"$work/nan.csv"
+check "denoise NaN cell" run 1 "$fd" denoise "$work/nan.csv" -o "$work/x.csv"
+check "NaN message names line and column" err_has "nan.csv:5:2: 'NaN' in column gyro_dph is not a finite number"
+head -5 "$rec" >"$work/short.csv"
+check "denoise too short" run 1 "$fd" denoise "$work/short.csv" -o "$work/x.csv"
+check "too short message" err_has "too short to denoise with sym4"
+check "no output after any error" test ! -e "$work/x.csv"
+
 # --- change indicator: the demo's report, committed; a diff shows every behaviour change ------
 check "demo" run 0 "$fd" demo --seed 1
 grep -v '^finished in' "$work/out" >"$work/demo.txt"
