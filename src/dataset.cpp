@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 #include <cmath>
+#include <numbers>
 #include <numeric>
 
 #include "fogdrift/earth.hpp"
@@ -10,7 +11,7 @@
 namespace fogdrift {
 namespace {
 
-constexpr double kDegToRad = 3.14159265358979323846 / 180.0;
+constexpr double kDegToRad = std::numbers::pi / 180.0;
 
 }  // namespace
 

@@ -201,19 +201,15 @@ double sample_interval_s(const Recording& recording) {
   if (t.size() < 2) {
     throw InputError(recording.source, 0, 0, "a recording needs at least 2 samples");
   }
-  std::vector<double> dt(t.size() - 1);
-  for (std::size_t i = 0; i + 1 < t.size(); ++i) dt[i] = t[i + 1] - t[i];
-  std::vector<double> sorted = dt;
-  std::nth_element(sorted.begin(), sorted.begin() + static_cast<std::ptrdiff_t>(sorted.size() / 2),
-                   sorted.end());
-  const double median = sorted[sorted.size() / 2];
-  for (std::size_t i = 0; i < dt.size(); ++i) {
-    if (std::fabs(dt[i] - median) > 0.01 * median) {
+  const double median = median_time_step_s(t);
+  for (std::size_t i = 0; i + 1 < t.size(); ++i) {
+    const double step = t[i + 1] - t[i];
+    if (std::fabs(step - median) > 0.01 * median) {
       // Line numbers count the header as line 1; sample i + 1 is on line i + 3.
       throw InputError(recording.source, i + 3, 0,
                        fmt::format("time_s steps by {} s here but by {} s elsewhere; features need "
                                    "uniform sampling (within 1 %)",
-                                   dt[i], median));
+                                   step, median));
     }
   }
   return median;

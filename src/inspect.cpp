@@ -34,9 +34,7 @@ RecordingSummary summarize(const Recording& rec) {
   steps.reserve(rec.size());
   for (std::size_t i = 1; i < rec.size(); ++i) steps.push_back(rec.time_s[i] - rec.time_s[i - 1]);
   if (!steps.empty()) {
-    std::vector<double> sorted = steps;
-    std::nth_element(sorted.begin(), sorted.begin() + sorted.size() / 2, sorted.end());
-    s.sample_interval_s = sorted[sorted.size() / 2];
+    s.sample_interval_s = median_time_step_s(rec.time_s);
     s.sample_rate_hz = s.sample_interval_s > 0 ? 1.0 / s.sample_interval_s : 0.0;
     for (double d : steps) {
       if (d > 1.5 * s.sample_interval_s) ++s.gaps;

@@ -1,6 +1,7 @@
 #include "fogdrift/recording.hpp"
 
 #include <fmt/format.h>
+#include <algorithm>
 
 #include <cctype>
 #include <cmath>
@@ -224,6 +225,15 @@ std::string to_csv(const Recording& r) {
 void write_recording(const std::filesystem::path& path, const Recording& recording) {
   const std::string text = to_csv(recording);
   write_text_atomically(path, text);
+}
+
+double median_time_step_s(const std::vector<double>& time_s) {
+  if (time_s.size() < 2) return 0.0;
+  std::vector<double> steps(time_s.size() - 1);
+  for (std::size_t i = 0; i + 1 < time_s.size(); ++i) steps[i] = time_s[i + 1] - time_s[i];
+  const auto mid = steps.begin() + static_cast<std::ptrdiff_t>(steps.size() / 2);
+  std::nth_element(steps.begin(), mid, steps.end());
+  return *mid;
 }
 
 }  // namespace fogdrift

@@ -53,6 +53,9 @@ struct Recording {
 const std::vector<std::string>& required_columns();
 const std::vector<std::string>& optional_columns();
 
+/// The median of the steps between consecutive times, s (0 for fewer than 2 samples).
+double median_time_step_s(const std::vector<double>& time_s);
+
 /// Reads a recording, strictly: throws InputError naming file, line and column for a missing
 /// required column, a non-number, NaN or Inf in a known column, a time that does not strictly
 /// increase, a negative time, fewer than 2 samples, and every CSV-level fault of csv::read.
