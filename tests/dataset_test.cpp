@@ -167,6 +167,15 @@ TEST(Dataset, StandardizerFromTrainingRowsAndConstantColumns) {
               std::string::npos)
         << e.what();
   }
+  const std::vector<double> with_nan{1, 10, NAN, 11, 3, 13};
+  try {
+    Standardizer::fit(with_nan, 2, {"a_degc", "b_degc"});
+    FAIL();
+  } catch (const OptionError& e) {
+    EXPECT_NE(std::string(e.what()).find("column a_degc has a non-finite value"),
+              std::string::npos)
+        << e.what();
+  }
   const std::vector<double> y{1, 10, 2, 11, 3, 13};
   const Standardizer s = Standardizer::fit(y, 2, {"a", "b"});
   EXPECT_DOUBLE_EQ(s.mean[0], 2.0);
