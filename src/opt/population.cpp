@@ -1,0 +1,154 @@
+#include "opt/population.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+
+#include "fogdrift/error.hpp"
+#include "fogdrift/thread_pool.hpp"
+
+namespace fogdrift::opt {
+
+std::string to_string(Algorithm algorithm) {
+  switch (algorithm) {
+    case Algorithm::ssa:
+      return "ssa";
+    case Algorithm::pso:
+      return "pso";
+    case Algorithm::gwo:
+      return "gwo";
+  }
+  return "?";
+}
+
+Algorithm parse_algorithm(const std::string& text, const std::string& option) {
+  for (Algorithm a : {Algorithm::ssa, Algorithm::pso, Algorithm::gwo})
+    if (text == to_string(a)) return a;
+  throw OptionError(option, fmt::format("'{}' is not an optimizer (ssa, pso, gwo)", text));
+}
+
+std::string Summary::brief_report() const {
+  return fmt::format("{}: best {:.6g} after {} iterations, {} evaluations, {:.1f} s{}",
+                     to_string(algorithm), best_fitness, iterations, evaluations, seconds,
+                     status == Status::stopped ? " (stopped)" : "");
+}
+
+void validate(const RunOptions& options, std::size_t min_population) {
+  if (options.population < min_population)
+    throw OptionError("population", fmt::format("{} is too small: at least {}", options.population,
+                                                min_population));
+  if (options.population > 100000)
+    throw OptionError("population", fmt::format("{} is above 100000", options.population));
+  if (options.iterations < 1) throw OptionError("iterations", "must be at least 1");
+  if (options.iterations > 10000000)
+    throw OptionError("iterations", fmt::format("{} is above 10000000", options.iterations));
+}
+
+void validate(const Problem& problem) {
+  if (problem.lower.empty()) throw OptionError("bounds", "the problem has no coordinates");
+  if (problem.lower.size() != problem.upper.size())
+    throw OptionError("bounds", fmt::format("{} lower bounds but {} upper bounds",
+                                            problem.lower.size(), problem.upper.size()));
+  for (std::size_t j = 0; j < problem.lower.size(); ++j) {
+    const double lo = problem.lower[j], hi = problem.upper[j];
+    if (!std::isfinite(lo) || !std::isfinite(hi))
+      throw OptionError("bounds", fmt::format("coordinate {}: bounds must be finite", j + 1));
+    if (!(lo < hi))
+      throw OptionError(
+          "bounds", fmt::format("coordinate {}: lower {} is not below upper {}", j + 1, lo, hi));
+  }
+  if (!problem.evaluate) throw OptionError("fitness", "the problem has no fitness function");
+}
+
+Problem Problem::from_function(std::vector<double> lower, std::vector<double> upper,
+                               std::function<double(std::span<const double>)> f, ThreadPool* pool) {
+  Problem p;
+  p.lower = std::move(lower);
+  p.upper = std::move(upper);
+  const std::size_t d = p.lower.size();
+  p.evaluate = [f = std::move(f), d, pool](std::span<const double> points,
+                                           std::span<double> fitness) {
+    auto one = [&](std::size_t i) { fitness[i] = f(points.subspan(i * d, d)); };
+    if (pool)
+      pool->parallel_for(fitness.size(), one);
+    else
+      for (std::size_t i = 0; i < fitness.size(); ++i) one(i);
+  };
+  return p;
+}
+
+namespace detail {
+
+std::vector<double> uniform_points(const Problem& problem, std::size_t count, Rng& rng) {
+  const std::size_t d = problem.dimension();
+  std::vector<double> x(count * d);
+  for (std::size_t i = 0; i < count; ++i)
+    for (std::size_t j = 0; j < d; ++j)
+      x[i * d + j] = rng.uniform(problem.lower[j], problem.upper[j]);
+  return x;
+}
+
+Run::Run(Algorithm algorithm, const Problem& problem, const RunOptions& options)
+    : problem_(problem), options_(options), start_(std::chrono::steady_clock::now()) {
+  summary_.algorithm = algorithm;
+  summary_.best_fitness = std::numeric_limits<double>::infinity();
+  summary_.best_point.assign(problem.dimension(), 0.0);
+  // Until anything is evaluated, the best point is the box centre.
+  for (std::size_t j = 0; j < problem.dimension(); ++j)
+    summary_.best_point[j] = 0.5 * (problem.lower[j] + problem.upper[j]);
+}
+
+void Run::evaluate(std::span<const double> points, std::span<double> fitness) {
+  if (fitness.empty()) return;
+  problem_.evaluate(points, fitness);
+  summary_.evaluations += fitness.size();
+  const std::size_t d = problem_.dimension();
+  for (std::size_t i = 0; i < fitness.size(); ++i) {
+    fitness[i] = sanitized(fitness[i]);
+    if (fitness[i] < summary_.best_fitness) {
+      summary_.best_fitness = fitness[i];
+      std::copy_n(points.begin() + static_cast<std::ptrdiff_t>(i * d), d,
+                  summary_.best_point.begin());
+    }
+  }
+}
+
+bool Run::end_iteration(std::size_t iteration, std::span<const double> population_fitness) {
+  IterationRecord record;
+  record.iteration = iteration;
+  record.evaluations = summary_.evaluations;
+  record.best_fitness = summary_.best_fitness;
+  record.best_point = summary_.best_point;
+  double sum = 0;
+  std::size_t finite = 0;
+  for (double f : population_fitness)
+    if (std::isfinite(f)) sum += f, ++finite;
+  record.mean_fitness =
+      finite ? sum / static_cast<double>(finite) : std::numeric_limits<double>::infinity();
+  if (iteration == 0) summary_.initial_best_fitness = summary_.best_fitness;
+  summary_.iterations = iteration;
+  summary_.log.push_back(record);
+  if (options_.progress && !options_.progress(summary_.log.back())) {
+    summary_.status = Status::stopped;
+    return false;
+  }
+  return true;
+}
+
+void Run::count(const char* name, std::int64_t n) {
+  for (auto& [key, value] : summary_.counters)
+    if (key == name) {
+      value += n;
+      return;
+    }
+  summary_.counters.emplace_back(name, n);
+}
+
+Summary Run::finish() {
+  summary_.seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+  return std::move(summary_);
+}
+
+}  // namespace detail
+}  // namespace fogdrift::opt
