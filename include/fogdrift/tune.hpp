@@ -1,0 +1,124 @@
+// Hyperparameter tuning of the ε-SVR (METHOD.md §2 step 4) and the grouped cross-validation it
+// and the baselines share.
+//
+// The problem handed to an optimizer (opt/problem.hpp) has the coordinates log10 C, log10 σ and,
+// optionally, log10 ε, inside SearchSpace's bounds. Its fitness is the RMSE of the drift on the
+// standardised target, either
+//   - cv (default): pooled over the held-out rows of grouped folds. A fold never splits a
+//     recording: leave one repetition out, or k folds of whole recordings. Features and target
+//     are standardised with the statistics of each fold's training rows only; or
+//   - train (the paper's choice): on the training rows themselves, which rewards over-fitting.
+//
+// Speed: each fold's data is prepared once (svr::TrainingSet) and reused by every candidate; a
+// population is fitted in parallel, one (candidate, fold) fit per task; a candidate already
+// evaluated is never refitted (the optimizers often revisit a bound); and each new fit is
+// warm-started from the nearest candidate (in log coordinates) already solved on that fold, whose
+// dual solution is rescaled to the new C (smo_solver.hpp). Warm starts come only from earlier
+// batches, so results do not depend on the thread count.
+#pragma once
+
+#include <cstdint>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "fogdrift/dataset.hpp"
+#include "fogdrift/opt/optimizer.hpp"
+#include "fogdrift/svr/svr.hpp"
+
+namespace fogdrift {
+class ThreadPool;
+}
+
+namespace fogdrift::tune {
+
+enum class Fitness {
+  cv,     ///< grouped cross-validation RMSE (default)
+  train,  ///< training RMSE, the paper's fitness
+};
+std::string to_string(Fitness fitness);
+Fitness parse_fitness(const std::string& text, const std::string& option = "fitness");
+
+enum class CvScheme {
+  automatic,   ///< `repetition` when the data holds two or more repetitions, else `recording`
+  repetition,  ///< leave one repetition out: as many folds as repetitions
+  recording,   ///< k folds of whole recordings, spread over the initial temperatures
+};
+std::string to_string(CvScheme scheme);
+CvScheme parse_cv_scheme(const std::string& text, const std::string& option = "cv");
+
+struct CvOptions {
+  CvScheme scheme = CvScheme::automatic;
+  std::size_t folds = 3;  ///< k of `recording` folds, 2 ≤ k ≤ number of recordings
+};
+
+struct Fold {
+  std::string name;  ///< "repetition 2", "recordings 1/3"
+  std::vector<std::size_t> train_rows;
+  std::vector<std::size_t> test_rows;
+};
+
+/// The folds of `data` (rows grouped by Dataset::group). `recording` folds sort the recordings
+/// by (initial temperature, repetition, file) and deal them out in turn, so every fold covers
+/// the temperature range. Throws OptionError("cv", …) when fewer than two folds are possible.
+std::vector<Fold> grouped_folds(const Dataset& data, const CvOptions& options = {});
+
+/// Features and target of a train/test split, standardised with the training rows' statistics
+/// (the target as the one column "drift_dph").
+struct ScaledSplit {
+  Standardizer x_scaler;
+  Standardizer y_scaler;
+  svr::Data train;
+  svr::Data test;  ///< empty when no test rows are given
+};
+ScaledSplit scale_split(const Dataset& data, std::span<const std::size_t> train_rows,
+                        std::span<const std::size_t> test_rows);
+
+/// The search box, in natural units; the optimizer sees log10 of each. σ is in standardised
+/// feature units, ε in standardised target units.
+struct SearchSpace {
+  double c_min = 1e-2, c_max = 1e3;
+  double sigma_min = 0.05, sigma_max = 20;
+  bool search_epsilon = false;  ///< also tune ε (a third coordinate)
+  double epsilon = 0.1;         ///< ε when not searched (LIBSVM's default -p 0.1)
+  double epsilon_min = 1e-3, epsilon_max = 1;
+};
+
+struct TuneOptions {
+  Fitness fitness = Fitness::cv;
+  CvOptions cv;
+  SearchSpace space;
+  opt::OptimizerOptions optimizer;  ///< algorithm, population, iterations, seed, progress
+  double tolerance = 1e-3;          ///< SMO stopping tolerance of every fit (LIBSVM -e)
+  double cache_mb = 64;             ///< kernel-row cache of each concurrent fit, MB
+  bool warm_start = true;           ///< warm-start fits from the nearest solved candidate
+  ThreadPool* pool = nullptr;       ///< fits a population in parallel when given
+};
+
+/// Throws OptionError naming the field: bounds not positive or not increasing, ε outside its
+/// bounds, a bad tolerance or cache size, or bad optimizer settings.
+void validate(const TuneOptions& options);
+
+/// The SVR of a point in the search coordinates (RBF kernel, the options' tolerance).
+svr::Params params_at(std::span<const double> point, const TuneOptions& options);
+
+struct TuneSummary {
+  svr::Params best;                ///< C, σ (kernel) and ε of the best candidate
+  double best_fitness = 0;         ///< RMSE on the standardised target
+  opt::Summary optimizer;          ///< best point in log10 coordinates, per-iteration log
+  std::vector<std::string> folds;  ///< fold names (empty for the training loss)
+  std::size_t candidates = 0;      ///< distinct candidates evaluated
+  std::size_t repeats = 0;         ///< evaluations answered from the memo
+  std::size_t fits = 0;            ///< SVR fits made
+  std::size_t warm_fits = 0;       ///< of which warm-started
+  double fit_seconds = 0;          ///< sum of the fits' own times (over all threads)
+  double seconds = 0;              ///< wall time of the search
+};
+
+/// Searches C, σ (and ε) for `data` (training recordings only) with the chosen optimizer.
+TuneSummary tune_svr(const Dataset& data, const TuneOptions& options);
+
+/// The fitness of one parameter set, as the search computes it (for baselines and reports).
+double svr_loss(const Dataset& data, const svr::Params& params, const TuneOptions& options);
+
+}  // namespace fogdrift::tune

@@ -1,0 +1,395 @@
+#include "fogdrift/tune.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <functional>
+#include <map>
+#include <memory>
+#include <mutex>
+#include <numeric>
+#include <set>
+
+#include "fogdrift/error.hpp"
+#include "fogdrift/thread_pool.hpp"
+
+namespace fogdrift::tune {
+
+std::string to_string(Fitness fitness) {
+  return fitness == Fitness::cv ? "cv" : "train";
+}
+
+Fitness parse_fitness(const std::string& text, const std::string& option) {
+  if (text == "cv") return Fitness::cv;
+  if (text == "train") return Fitness::train;
+  throw OptionError(option, fmt::format("'{}' is not a fitness (cv, train)", text));
+}
+
+std::string to_string(CvScheme scheme) {
+  switch (scheme) {
+    case CvScheme::automatic:
+      return "auto";
+    case CvScheme::repetition:
+      return "repetition";
+    case CvScheme::recording:
+      return "recording";
+  }
+  return "?";
+}
+
+CvScheme parse_cv_scheme(const std::string& text, const std::string& option) {
+  for (CvScheme s : {CvScheme::automatic, CvScheme::repetition, CvScheme::recording})
+    if (text == to_string(s)) return s;
+  throw OptionError(option, fmt::format("'{}' is not a cross-validation scheme (auto, repetition, "
+                                        "recording)",
+                                        text));
+}
+
+std::vector<Fold> grouped_folds(const Dataset& data, const CvOptions& options) {
+  // Only groups that have rows take part.
+  std::vector<std::size_t> rows_of(data.groups.size(), 0);
+  for (std::size_t g : data.group) ++rows_of[g];
+  std::vector<std::size_t> groups;
+  for (std::size_t g = 0; g < data.groups.size(); ++g)
+    if (rows_of[g] > 0) groups.push_back(g);
+  std::set<int> repetitions;
+  for (std::size_t g : groups) repetitions.insert(data.groups[g].repetition);
+
+  CvScheme scheme = options.scheme;
+  if (scheme == CvScheme::automatic)
+    scheme = repetitions.size() >= 2 ? CvScheme::repetition : CvScheme::recording;
+
+  std::vector<std::size_t> fold_of_group(data.groups.size(), 0);
+  std::vector<std::string> names;
+  if (scheme == CvScheme::repetition) {
+    if (repetitions.size() < 2)
+      throw OptionError("cv", fmt::format("leave-one-repetition-out needs recordings of two or "
+                                          "more repetitions; the training data has {}",
+                                          repetitions.size()));
+    const std::vector<int> reps(repetitions.begin(), repetitions.end());
+    for (std::size_t g : groups)
+      fold_of_group[g] = static_cast<std::size_t>(
+          std::find(reps.begin(), reps.end(), data.groups[g].repetition) - reps.begin());
+    for (int r : reps) names.push_back(fmt::format("repetition {}", r));
+  } else {
+    const std::size_t k = options.folds;
+    if (k < 2 || k > groups.size())
+      throw OptionError("cv", fmt::format("{} folds of whole recordings need 2 to {} (the number "
+                                          "of training recordings)",
+                                          k, groups.size()));
+    std::vector<std::size_t> sorted = groups;
+    std::stable_sort(sorted.begin(), sorted.end(), [&](std::size_t a, std::size_t b) {
+      const GroupInfo &ga = data.groups[a], &gb = data.groups[b];
+      if (ga.initial_temp_degc != gb.initial_temp_degc)
+        return ga.initial_temp_degc < gb.initial_temp_degc;
+      if (ga.repetition != gb.repetition) return ga.repetition < gb.repetition;
+      return ga.file < gb.file;
+    });
+    for (std::size_t i = 0; i < sorted.size(); ++i) fold_of_group[sorted[i]] = i % k;
+    for (std::size_t f = 0; f < k; ++f) names.push_back(fmt::format("recordings {}/{}", f + 1, k));
+  }
+
+  std::vector<Fold> folds(names.size());
+  for (std::size_t f = 0; f < folds.size(); ++f) folds[f].name = names[f];
+  for (std::size_t i = 0; i < data.rows; ++i) {
+    const std::size_t f = fold_of_group[data.group[i]];
+    for (std::size_t m = 0; m < folds.size(); ++m)
+      (m == f ? folds[m].test_rows : folds[m].train_rows).push_back(i);
+  }
+  return folds;
+}
+
+ScaledSplit scale_split(const Dataset& data, std::span<const std::size_t> train_rows,
+                        std::span<const std::size_t> test_rows) {
+  const std::size_t d = data.cols();
+  auto gather = [&](std::span<const std::size_t> rows) {
+    svr::Data out;
+    out.rows = rows.size();
+    out.cols = d;
+    out.x.reserve(rows.size() * d);
+    out.y.reserve(rows.size());
+    for (std::size_t i : rows) {
+      const auto r = data.row(i);
+      out.x.insert(out.x.end(), r.begin(), r.end());
+      out.y.push_back(data.y[i]);
+    }
+    return out;
+  };
+  ScaledSplit s;
+  s.train = gather(train_rows);
+  s.test = gather(test_rows);
+  s.x_scaler = Standardizer::fit(s.train.x, d, data.feature_names);
+  s.y_scaler = Standardizer::fit(s.train.y, 1, {"drift_dph"});
+  s.x_scaler.apply(s.train.x);
+  s.x_scaler.apply(s.test.x);
+  s.y_scaler.apply(s.train.y);
+  s.y_scaler.apply(s.test.y);
+  return s;
+}
+
+void validate(const TuneOptions& options) {
+  const SearchSpace& s = options.space;
+  auto range = [](double lo, double hi, const char* lo_name, const char* hi_name) {
+    if (!(lo > 0 && std::isfinite(lo)))
+      throw OptionError(lo_name, fmt::format("{} must be finite and > 0", lo));
+    if (!(hi > lo && std::isfinite(hi)))
+      throw OptionError(hi_name,
+                        fmt::format("{} must be finite and above {} = {}", hi, lo_name, lo));
+  };
+  range(s.c_min, s.c_max, "c_min", "c_max");
+  range(s.sigma_min, s.sigma_max, "sigma_min", "sigma_max");
+  if (s.search_epsilon)
+    range(s.epsilon_min, s.epsilon_max, "epsilon_min", "epsilon_max");
+  else if (!(s.epsilon >= 0 && std::isfinite(s.epsilon)))
+    throw OptionError("epsilon", fmt::format("{} must be finite and ≥ 0", s.epsilon));
+  if (!(options.tolerance > 0 && std::isfinite(options.tolerance)))
+    throw OptionError("tolerance", fmt::format("{} must be finite and > 0", options.tolerance));
+  if (!(options.cache_mb >= 0 && std::isfinite(options.cache_mb)))
+    throw OptionError("cache_mb", fmt::format("{} must be finite and ≥ 0", options.cache_mb));
+  if (options.cv.scheme == CvScheme::recording && options.cv.folds < 2)
+    throw OptionError("folds", fmt::format("{} is below 2", options.cv.folds));
+  switch (options.optimizer.algorithm) {
+    case opt::Algorithm::ssa:
+      opt::validate(options.optimizer.run, 5);
+      opt::validate(options.optimizer.ssa);
+      break;
+    case opt::Algorithm::pso:
+      opt::validate(options.optimizer.run, 2);
+      opt::validate(options.optimizer.pso);
+      break;
+    case opt::Algorithm::gwo:
+      opt::validate(options.optimizer.run, 3);
+      opt::validate(options.optimizer.gwo);
+      break;
+  }
+}
+
+svr::Params params_at(std::span<const double> point, const TuneOptions& options) {
+  svr::Params p;
+  p.c = std::pow(10.0, point[0]);
+  p.kernel = svr::Kernel::rbf_sigma(std::pow(10.0, point[1]));
+  p.epsilon = options.space.search_epsilon ? std::pow(10.0, point[2]) : options.space.epsilon;
+  p.tolerance = options.tolerance;
+  p.cache_mb = options.cache_mb;
+  return p;
+}
+
+namespace {
+
+// The loss of SVR candidates over the folds (or the training data), with the memo and the warm
+// starts described in the header.
+class SvrObjective {
+ public:
+  using ToParams = std::function<svr::Params(std::span<const double>)>;
+
+  SvrObjective(const Dataset& data, const TuneOptions& options, ToParams to_params)
+      : options_(options), to_params_(std::move(to_params)) {
+    if (options.fitness == Fitness::cv) {
+      for (const Fold& f : grouped_folds(data, options.cv)) {
+        ScaledSplit s = scale_split(data, f.train_rows, f.test_rows);
+        folds_.push_back(
+            {std::make_unique<svr::TrainingSet>(std::move(s.train)), std::move(s.test), {}});
+        fold_names_.push_back(f.name);
+      }
+    } else {
+      std::vector<std::size_t> all(data.rows);
+      std::iota(all.begin(), all.end(), 0);
+      ScaledSplit s = scale_split(data, all, all);
+      folds_.push_back(
+          {std::make_unique<svr::TrainingSet>(std::move(s.train)), std::move(s.test), {}});
+    }
+  }
+
+  const std::vector<std::string>& fold_names() const { return fold_names_; }
+
+  void evaluate(std::span<const double> points, std::span<double> fitness, std::size_t dims) {
+    const std::size_t n = fitness.size(), folds = folds_.size();
+    // New distinct candidates of this batch, in order of first appearance.
+    std::vector<std::vector<double>> fresh;
+    std::vector<std::size_t> slot(n);
+    std::map<std::vector<double>, std::size_t> in_batch;
+    for (std::size_t i = 0; i < n; ++i) {
+      std::vector<double> key(points.begin() + static_cast<std::ptrdiff_t>(i * dims),
+                              points.begin() + static_cast<std::ptrdiff_t>((i + 1) * dims));
+      if (memo_.contains(key)) {
+        ++repeats_;
+        slot[i] = SIZE_MAX;
+        continue;
+      }
+      auto [it, inserted] = in_batch.try_emplace(key, fresh.size());
+      if (inserted)
+        fresh.push_back(key);
+      else
+        ++repeats_;
+      slot[i] = it->second;
+    }
+
+    // One task per (candidate, fold); warm starts only from earlier batches. Tasks are handed
+    // out longest first (LPT), the length guessed from the nearest solved candidate's fit time,
+    // so that both threads finish a batch together; the order never changes a result.
+    const std::size_t tasks = fresh.size() * folds;
+    std::vector<double> sse(tasks, 0.0), seconds(tasks, 0.0), guess(tasks, 0.0);
+    std::vector<std::shared_ptr<const svr::DualSolution>> duals(tasks);
+    std::vector<char> warm(tasks, 0);
+    for (std::size_t t = 0; t < tasks; ++t)
+      guess[t] = guessed_seconds(folds_[t % folds], fresh[t / folds]);
+    std::vector<std::size_t> schedule(tasks);
+    std::iota(schedule.begin(), schedule.end(), 0);
+    std::stable_sort(schedule.begin(), schedule.end(),
+                     [&](std::size_t a, std::size_t b) { return guess[a] > guess[b]; });
+    auto task = [&](std::size_t k) {
+      const std::size_t t = schedule[k];
+      const std::size_t c = t / folds, f = t % folds;
+      FoldState& fold = folds_[f];
+      const svr::Params params = to_params_(fresh[c]);
+      const svr::DualSolution* start = nullptr;
+      if (options_.warm_start) start = same_kernel_nearest(fold, fresh[c]);
+      svr::FitResult fit = svr::fit(*fold.set, params, start);
+      warm[t] = start != nullptr;
+      const svr::Data& test = fold.test;
+      double s = 0;
+      for (std::size_t r = 0; r < test.rows; ++r) {
+        const double e = fit.model.predict(test.row(r)) - test.y[r];
+        s += e * e;
+      }
+      sse[t] = s;
+      seconds[t] = fit.summary.seconds;
+      duals[t] = std::make_shared<const svr::DualSolution>(std::move(fit.dual));
+    };
+    if (options_.pool)
+      options_.pool->parallel_for(tasks, task);
+    else
+      for (std::size_t t = 0; t < tasks; ++t) task(t);
+
+    std::vector<double> loss(fresh.size());
+    for (std::size_t c = 0; c < fresh.size(); ++c) {
+      double s = 0;
+      std::size_t count = 0;
+      for (std::size_t f = 0; f < folds; ++f) {
+        s += sse[c * folds + f];
+        count += folds_[f].test.rows;
+        fit_seconds_ += seconds[c * folds + f];
+        warm_fits_ += warm[c * folds + f] ? 1 : 0;
+      }
+      loss[c] = std::sqrt(s / static_cast<double>(count));
+      memo_.emplace(fresh[c], loss[c]);
+    }
+    fits_ += tasks;
+    // Keep the most recent solutions of each fold as warm starts for later batches.
+    for (std::size_t f = 0; f < folds; ++f) {
+      auto& kept = folds_[f].solved;
+      for (std::size_t c = 0; c < fresh.size(); ++c)
+        kept.push_back({fresh[c], duals[c * folds + f], seconds[c * folds + f]});
+      const std::size_t keep = std::max<std::size_t>(2 * fresh.size(), 8);
+      if (kept.size() > keep)
+        kept.erase(kept.begin(), kept.end() - static_cast<std::ptrdiff_t>(keep));
+    }
+    for (std::size_t i = 0; i < n; ++i) {
+      if (slot[i] == SIZE_MAX) {
+        std::vector<double> key(points.begin() + static_cast<std::ptrdiff_t>(i * dims),
+                                points.begin() + static_cast<std::ptrdiff_t>((i + 1) * dims));
+        fitness[i] = memo_.at(key);
+      } else {
+        fitness[i] = loss[slot[i]];
+      }
+    }
+    candidates_ += fresh.size();
+  }
+
+  std::size_t candidates_ = 0, repeats_ = 0, fits_ = 0, warm_fits_ = 0;
+  double fit_seconds_ = 0;
+
+ private:
+  struct Solved {
+    std::vector<double> point;
+    std::shared_ptr<const svr::DualSolution> dual;
+    double seconds;
+  };
+  struct FoldState {
+    std::unique_ptr<svr::TrainingSet> set;
+    svr::Data test;
+    std::vector<Solved> solved;  // read concurrently during a batch, changed only between
+  };
+
+  // The solved candidate nearest to `point` in log coordinates (ties: the latest), optionally
+  // only among those with the same kernel (σ).
+  static const Solved* nearest(const FoldState& fold, const std::vector<double>& point,
+                               bool same_kernel) {
+    const Solved* best = nullptr;
+    double best_d = INFINITY;
+    for (const Solved& s : fold.solved) {
+      if (same_kernel && s.point[1] != point[1]) continue;
+      double d = 0;
+      for (std::size_t j = 0; j < point.size(); ++j)
+        d += (s.point[j] - point[j]) * (s.point[j] - point[j]);
+      if (d <= best_d) best_d = d, best = &s;
+    }
+    return best;
+  }
+
+  // A warm start pays only with the same kernel: the gradient is then rescaled, not rebuilt
+  // (with another σ, rebuilding it costs more than the iterations it saves).
+  static const svr::DualSolution* same_kernel_nearest(const FoldState& fold,
+                                                      const std::vector<double>& point) {
+    const Solved* s = nearest(fold, point, true);
+    return s ? s->dual.get() : nullptr;
+  }
+
+  static double guessed_seconds(const FoldState& fold, const std::vector<double>& point) {
+    const Solved* s = nearest(fold, point, false);
+    return s ? s->seconds : INFINITY;
+  }
+
+  const TuneOptions& options_;
+  ToParams to_params_;
+  std::vector<FoldState> folds_;
+  std::vector<std::string> fold_names_;
+  std::map<std::vector<double>, double> memo_;
+};
+
+}  // namespace
+
+TuneSummary tune_svr(const Dataset& data, const TuneOptions& options) {
+  validate(options);
+  const auto start = std::chrono::steady_clock::now();
+  SvrObjective objective(data, options,
+                         [&options](std::span<const double> x) { return params_at(x, options); });
+  const SearchSpace& s = options.space;
+  opt::Problem problem;
+  problem.lower = {std::log10(s.c_min), std::log10(s.sigma_min)};
+  problem.upper = {std::log10(s.c_max), std::log10(s.sigma_max)};
+  if (s.search_epsilon) {
+    problem.lower.push_back(std::log10(s.epsilon_min));
+    problem.upper.push_back(std::log10(s.epsilon_max));
+  }
+  const std::size_t dims = problem.lower.size();
+  problem.evaluate = [&objective, dims](std::span<const double> x, std::span<double> f) {
+    objective.evaluate(x, f, dims);
+  };
+
+  TuneSummary out;
+  out.optimizer = opt::minimize(problem, options.optimizer);
+  out.best = params_at(out.optimizer.best_point, options);
+  out.best_fitness = out.optimizer.best_fitness;
+  out.folds = objective.fold_names();
+  out.candidates = objective.candidates_;
+  out.repeats = objective.repeats_;
+  out.fits = objective.fits_;
+  out.warm_fits = objective.warm_fits_;
+  out.fit_seconds = objective.fit_seconds_;
+  out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return out;
+}
+
+double svr_loss(const Dataset& data, const svr::Params& params, const TuneOptions& options) {
+  svr::validate(params);
+  SvrObjective objective(data, options, [&params](std::span<const double>) { return params; });
+  const double point = 0;
+  double loss = 0;
+  objective.evaluate(std::span<const double>(&point, 1), std::span<double>(&loss, 1), 1);
+  return loss;
+}
+
+}  // namespace fogdrift::tune

@@ -1,0 +1,245 @@
+// Grouped folds, the SVR loss against LIBSVM, and the tuner: determinism across thread counts,
+// the memo, and a search that does at least as well as a fine grid.
+#include "fogdrift/tune.hpp"
+
+#include <fmt/format.h>
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <set>
+
+#include "fogdrift/error.hpp"
+#include "fogdrift/random.hpp"
+#include "fogdrift/thread_pool.hpp"
+#include "svr/libsvm_oracle.hpp"
+
+namespace fogdrift::tune {
+namespace {
+
+// 3 repetitions × 4 initial temperatures, 40 rows each, 3 features; y smooth in x plus noise.
+Dataset synthetic(std::uint64_t seed = 1) {
+  Dataset d;
+  d.feature_names = {"a", "b", "c"};
+  d.feature_spec = "synthetic";
+  Rng rng(seed);
+  for (int rep = 1; rep <= 3; ++rep) {
+    for (double temp : {-20.0, 0.0, 20.0, 40.0}) {
+      GroupInfo g;
+      g.file = fmt::format("rep{}_{}.csv", rep, temp);
+      g.repetition = rep;
+      g.initial_temp_degc = temp;
+      const std::size_t gi = d.groups.size();
+      d.groups.push_back(g);
+      for (int k = 0; k < 40; ++k) {
+        const double a = temp / 20 + rng.normal(0, 0.3), b = rng.uniform(-2, 2),
+                     c = rng.normal(0, 1);
+        d.x.insert(d.x.end(), {a, b, c});
+        d.y.push_back(0.02 * std::sin(a) + 0.01 * b * b - 0.005 * c + rng.normal(0, 0.002));
+        d.time_s.push_back(k * 10.0);
+        d.group.push_back(gi);
+        ++d.rows;
+      }
+    }
+  }
+  return d;
+}
+
+TEST(GroupedFolds, LeaveOneRepetitionOutNeverSplitsARecording) {
+  const Dataset d = synthetic();
+  const auto folds = grouped_folds(d);
+  ASSERT_EQ(folds.size(), 3u);
+  std::set<std::size_t> tested;
+  for (std::size_t f = 0; f < 3; ++f) {
+    EXPECT_EQ(folds[f].name, fmt::format("repetition {}", f + 1));
+    EXPECT_EQ(folds[f].train_rows.size() + folds[f].test_rows.size(), d.rows);
+    std::set<std::size_t> train_groups, test_groups;
+    for (auto i : folds[f].train_rows) train_groups.insert(d.group[i]);
+    for (auto i : folds[f].test_rows) {
+      test_groups.insert(d.group[i]);
+      EXPECT_EQ(d.groups[d.group[i]].repetition, static_cast<int>(f + 1));
+      EXPECT_TRUE(tested.insert(i).second) << "row tested twice";
+    }
+    for (auto g : test_groups) EXPECT_FALSE(train_groups.contains(g));
+  }
+  EXPECT_EQ(tested.size(), d.rows);
+}
+
+TEST(GroupedFolds, RecordingFoldsSpanTheTemperatures) {
+  const Dataset d = synthetic();
+  CvOptions o;
+  o.scheme = CvScheme::recording;
+  o.folds = 3;
+  const auto folds = grouped_folds(d, o);
+  ASSERT_EQ(folds.size(), 3u);
+  for (const Fold& f : folds) {
+    std::set<double> temps;
+    std::set<std::size_t> test_groups, train_groups;
+    for (auto i : f.test_rows)
+      temps.insert(d.groups[d.group[i]].initial_temp_degc), test_groups.insert(d.group[i]);
+    for (auto i : f.train_rows) train_groups.insert(d.group[i]);
+    EXPECT_EQ(temps.size(), 4u) << f.name;
+    EXPECT_EQ(test_groups.size(), 4u) << f.name;
+    for (auto g : test_groups) EXPECT_FALSE(train_groups.contains(g));
+  }
+  // One repetition only: automatic falls back to recording folds; repetition is an error.
+  Dataset one = synthetic();
+  for (auto& g : one.groups) g.repetition = 1;
+  EXPECT_EQ(grouped_folds(one).size(), 3u);
+  CvOptions rep;
+  rep.scheme = CvScheme::repetition;
+  EXPECT_THROW(grouped_folds(one, rep), OptionError);
+  o.folds = 13;
+  EXPECT_THROW(grouped_folds(d, o), OptionError);
+}
+
+TEST(ScaleSplit, StandardisesWithTrainingRowsOnly) {
+  const Dataset d = synthetic();
+  const auto folds = grouped_folds(d);
+  const ScaledSplit s = scale_split(d, folds[0].train_rows, folds[0].test_rows);
+  for (std::size_t c = 0; c < 3; ++c) {
+    double sum = 0, ss = 0;
+    for (std::size_t r = 0; r < s.train.rows; ++r) sum += s.train.row(r)[c];
+    const double mean = sum / s.train.rows;
+    for (std::size_t r = 0; r < s.train.rows; ++r) ss += std::pow(s.train.row(r)[c] - mean, 2);
+    EXPECT_NEAR(mean, 0, 1e-12);
+    EXPECT_NEAR(std::sqrt(ss / (s.train.rows - 1)), 1, 1e-12);
+  }
+  EXPECT_EQ(s.test.rows, folds[0].test_rows.size());
+  // The test rows use the training statistics, not their own.
+  const double raw = d.row(folds[0].test_rows[0])[1];
+  EXPECT_DOUBLE_EQ(s.test.row(0)[1], (raw - s.x_scaler.mean[1]) / s.x_scaler.scale[1]);
+}
+
+// The cross-validation loss, recomputed fold by fold with LIBSVM as the regressor.
+TEST(SvrLoss, AgreesWithLibsvmFoldByFold) {
+  const Dataset d = synthetic();
+  TuneOptions o;
+  for (double c : {0.1, 10.0}) {
+    for (double sigma : {0.5, 2.0}) {
+      svr::Params p;
+      p.c = c;
+      p.kernel = svr::Kernel::rbf_sigma(sigma);
+      p.epsilon = 0.1;
+      double sse = 0;
+      std::size_t n = 0;
+      for (const Fold& f : grouped_folds(d)) {
+        const ScaledSplit s = scale_split(d, f.train_rows, f.test_rows);
+        svr::testing::OracleFit ref;
+        svr::testing::libsvm_train(s.train, p, ref);
+        for (std::size_t r = 0; r < s.test.rows; ++r)
+          sse += std::pow(ref.predict(s.test.row(r), 3) - s.test.y[r], 2);
+        n += s.test.rows;
+      }
+      const double expected = std::sqrt(sse / n);
+      EXPECT_NEAR(svr_loss(d, p, o), expected, 1e-3 * expected) << "C=" << c << " σ=" << sigma;
+    }
+  }
+  // The training loss of a flexible model is below its cross-validation loss.
+  svr::Params p;
+  p.c = 100;
+  p.kernel = svr::Kernel::rbf_sigma(0.3);
+  TuneOptions train = o;
+  train.fitness = Fitness::train;
+  EXPECT_LT(svr_loss(d, p, train), svr_loss(d, p, o));
+}
+
+TuneOptions small_search(opt::Algorithm algorithm, ThreadPool* pool) {
+  TuneOptions o;
+  o.optimizer.algorithm = algorithm;
+  o.optimizer.run.population = 10;
+  o.optimizer.run.iterations = 12;
+  o.optimizer.run.seed = 5;
+  o.space.c_max = 10;  // large C costs many SMO iterations and adds nothing to these checks
+  o.pool = pool;
+  return o;
+}
+
+TEST(TuneSvr, SameSeedSameResultWhateverTheThreadCount) {
+  const Dataset d = synthetic();
+  ThreadPool one(1), two(2);
+  for (auto a : {opt::Algorithm::ssa, opt::Algorithm::pso, opt::Algorithm::gwo}) {
+    const TuneSummary s1 = tune_svr(d, small_search(a, &one));
+    const TuneSummary s2 = tune_svr(d, small_search(a, &two));
+    EXPECT_EQ(s1.best_fitness, s2.best_fitness) << opt::to_string(a);
+    EXPECT_EQ(s1.best.c, s2.best.c);
+    EXPECT_EQ(s1.best.kernel, s2.best.kernel);
+    EXPECT_EQ(s1.optimizer.log.size(), s2.optimizer.log.size());
+    for (std::size_t t = 0; t < s1.optimizer.log.size(); ++t)
+      ASSERT_EQ(s1.optimizer.log[t].mean_fitness, s2.optimizer.log[t].mean_fitness);
+    // Bookkeeping: every distinct candidate is fitted once per fold.
+    EXPECT_EQ(s1.fits, s1.candidates * 3);
+    EXPECT_EQ(s1.candidates + s1.repeats, s1.optimizer.evaluations);
+    EXPECT_EQ(s1.folds.size(), 3u);
+    // The reported fitness is the loss of the reported parameters.
+    EXPECT_NEAR(svr_loss(d, s1.best, small_search(a, nullptr)), s1.best_fitness,
+                1e-3 * s1.best_fitness);
+  }
+}
+
+// The search ends at least as low as the best point of an 11 × 11 grid over the same box (up to
+// the solver tolerance), and well below LIBSVM's default parameters.
+TEST(TuneSvr, MatchesAFineGrid) {
+  const Dataset d = synthetic();
+  ThreadPool pool(2);
+  TuneOptions o = small_search(opt::Algorithm::ssa, &pool);
+  o.optimizer.run.population = 20;
+  o.optimizer.run.iterations = 30;
+  const TuneSummary s = tune_svr(d, o);
+  double grid_best = INFINITY;
+  for (int i = 0; i <= 10; ++i)
+    for (int j = 0; j <= 10; ++j) {
+      svr::Params p;
+      p.c = std::pow(10.0, -2 + 3.0 * i / 10);
+      p.kernel =
+          svr::Kernel::rbf_sigma(std::pow(10.0, std::log10(0.05) + std::log10(400) * j / 10));
+      grid_best = std::min(grid_best, svr_loss(d, p, o));
+    }
+  EXPECT_LE(s.best_fitness, grid_best * 1.002);
+  svr::Params untuned;
+  untuned.kernel = svr::Kernel::rbf_gamma(1.0 / 3);
+  EXPECT_LT(s.best_fitness, 0.9 * svr_loss(d, untuned, o));
+  EXPECT_GE(s.best.c, o.space.c_min);
+  EXPECT_LE(s.best.kernel.sigma(), o.space.sigma_max * (1 + 1e-12));
+}
+
+TEST(TuneSvr, SearchesEpsilonWhenAsked) {
+  const Dataset d = synthetic();
+  TuneOptions o = small_search(opt::Algorithm::pso, nullptr);
+  o.space.search_epsilon = true;
+  const TuneSummary s = tune_svr(d, o);
+  EXPECT_EQ(s.optimizer.best_point.size(), 3u);
+  EXPECT_GE(s.best.epsilon, o.space.epsilon_min);
+  EXPECT_LE(s.best.epsilon, o.space.epsilon_max * (1 + 1e-12));
+}
+
+TEST(TuneSvr, RejectsImpossibleOptions) {
+  const Dataset d = synthetic();
+  auto expect_option = [&](TuneOptions o, const std::string& option) {
+    try {
+      tune_svr(d, o);
+      ADD_FAILURE() << "no error for " << option;
+    } catch (const OptionError& e) {
+      EXPECT_EQ(e.option(), option) << e.what();
+    }
+  };
+  TuneOptions o;
+  o.space.c_min = 0;
+  expect_option(o, "c_min");
+  o = {};
+  o.space.sigma_max = o.space.sigma_min;
+  expect_option(o, "sigma_max");
+  o = {};
+  o.space.epsilon = -1;
+  expect_option(o, "epsilon");
+  o = {};
+  o.tolerance = 0;
+  expect_option(o, "tolerance");
+  o = {};
+  o.optimizer.run.population = 3;
+  expect_option(o, "population");
+  EXPECT_THROW(parse_fitness("loo"), OptionError);
+  EXPECT_EQ(parse_cv_scheme("recording"), CvScheme::recording);
+}
+
+}  // namespace
+}  // namespace fogdrift::tune
