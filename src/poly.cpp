@@ -1,0 +1,76 @@
+#include "fogdrift/poly.hpp"
+
+#include <fmt/format.h>
+
+#include <Eigen/Dense>
+
+#include "fogdrift/error.hpp"
+
+namespace fogdrift {
+
+std::vector<std::uint8_t> monomials(std::size_t inputs, std::size_t degree) {
+  std::vector<std::uint8_t> out(inputs, 0);  // the constant
+  std::vector<std::uint8_t> e(inputs, 0);
+  // For each total degree, enumerate exponent vectors in lexicographic order (first variable
+  // highest first).
+  for (std::size_t total = 1; total <= degree; ++total) {
+    auto emit = [&](auto&& self, std::size_t k, std::size_t left) -> void {
+      if (k + 1 == inputs) {
+        e[k] = static_cast<std::uint8_t>(left);
+        out.insert(out.end(), e.begin(), e.end());
+        return;
+      }
+      for (std::size_t p = left + 1; p-- > 0;) {
+        e[k] = static_cast<std::uint8_t>(p);
+        self(self, k + 1, left - p);
+      }
+    };
+    if (inputs > 0) emit(emit, 0, total);
+  }
+  return out;
+}
+
+double Poly::predict(const double* x) const noexcept {
+  double y = 0;
+  for (std::size_t m = 0; m < coef.size(); ++m) {
+    double term = coef[m];
+    for (std::size_t k = 0; k < inputs; ++k)
+      for (std::uint8_t p = exponents[m * inputs + k]; p > 0; --p) term *= x[k];
+    y += term;
+  }
+  return y;
+}
+
+Poly fit_poly(const svr::Data& train, std::size_t degree, double ridge) {
+  if (degree < 1 || degree > 6)
+    throw OptionError("degree", fmt::format("{} is outside 1 … 6", degree));
+  svr::validate(train, "polynomial training data");
+  Poly p;
+  p.inputs = train.cols;
+  p.degree = degree;
+  p.exponents = monomials(train.cols, degree);
+  const std::size_t terms = p.exponents.size() / std::max<std::size_t>(1, train.cols);
+  if (train.rows < terms)
+    throw OptionError("degree", fmt::format("degree {} in {} features has {} terms but there are "
+                                            "only {} training rows",
+                                            degree, train.cols, terms, train.rows));
+  Eigen::MatrixXd a(static_cast<Eigen::Index>(train.rows), static_cast<Eigen::Index>(terms));
+  for (std::size_t i = 0; i < train.rows; ++i) {
+    const double* x = train.row(i);
+    for (std::size_t m = 0; m < terms; ++m) {
+      double v = 1;
+      for (std::size_t k = 0; k < train.cols; ++k)
+        for (std::uint8_t e = p.exponents[m * train.cols + k]; e > 0; --e) v *= x[k];
+      a(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(m)) = v;
+    }
+  }
+  const Eigen::Map<const Eigen::VectorXd> y(train.y.data(), static_cast<Eigen::Index>(train.rows));
+  Eigen::MatrixXd normal = a.transpose() * a;
+  const double lambda = ridge * normal.diagonal().mean();
+  for (Eigen::Index m = 1; m < normal.rows(); ++m) normal(m, m) += lambda;
+  const Eigen::VectorXd c = normal.ldlt().solve(a.transpose() * y);
+  p.coef.assign(c.data(), c.data() + c.size());
+  return p;
+}
+
+}  // namespace fogdrift
