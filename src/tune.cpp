@@ -76,9 +76,10 @@ std::vector<Fold> grouped_folds(const Dataset& data, const CvOptions& options) {
   } else {
     const std::size_t k = options.folds;
     if (k < 2 || k > groups.size())
-      throw OptionError("cv", fmt::format("{} folds of whole recordings need 2 to {} (the number "
-                                          "of training recordings)",
-                                          k, groups.size()));
+      throw OptionError("folds",
+                        fmt::format("{} folds of whole recordings need 2 to {} (the number "
+                                    "of training recordings)",
+                                    k, groups.size()));
     std::vector<std::size_t> sorted = groups;
     std::stable_sort(sorted.begin(), sorted.end(), [&](std::size_t a, std::size_t b) {
       const GroupInfo &ga = data.groups[a], &gb = data.groups[b];
@@ -275,6 +276,7 @@ class SvrObjective {
       }
       loss[c] = std::sqrt(s / static_cast<double>(count));
       memo_.emplace(fresh[c], loss[c]);
+      history_.push_back({to_params_(fresh[c]), loss[c]});
     }
     fits_ += tasks;
     // Keep the most recent solutions of each fold as warm starts for later batches.
@@ -299,6 +301,7 @@ class SvrObjective {
   }
 
   std::size_t candidates_ = 0, repeats_ = 0, fits_ = 0, warm_fits_ = 0;
+  std::vector<Candidate> history_;
   double fit_seconds_ = 0;
 
  private:
@@ -379,6 +382,7 @@ TuneSummary tune_svr(const Dataset& data, const TuneOptions& options) {
   out.fits = objective.fits_;
   out.warm_fits = objective.warm_fits_;
   out.fit_seconds = objective.fit_seconds_;
+  out.history = std::move(objective.history_);
   out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return out;
 }

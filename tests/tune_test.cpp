@@ -12,37 +12,12 @@
 #include "fogdrift/random.hpp"
 #include "fogdrift/thread_pool.hpp"
 #include "svr/libsvm_oracle.hpp"
+#include "synthetic_dataset.hpp"
 
 namespace fogdrift::tune {
 namespace {
 
-// 3 repetitions × 4 initial temperatures, 40 rows each, 3 features; y smooth in x plus noise.
-Dataset synthetic(std::uint64_t seed = 1) {
-  Dataset d;
-  d.feature_names = {"a", "b", "c"};
-  d.feature_spec = "synthetic";
-  Rng rng(seed);
-  for (int rep = 1; rep <= 3; ++rep) {
-    for (double temp : {-20.0, 0.0, 20.0, 40.0}) {
-      GroupInfo g;
-      g.file = fmt::format("rep{}_{}.csv", rep, temp);
-      g.repetition = rep;
-      g.initial_temp_degc = temp;
-      const std::size_t gi = d.groups.size();
-      d.groups.push_back(g);
-      for (int k = 0; k < 40; ++k) {
-        const double a = temp / 20 + rng.normal(0, 0.3), b = rng.uniform(-2, 2),
-                     c = rng.normal(0, 1);
-        d.x.insert(d.x.end(), {a, b, c});
-        d.y.push_back(0.02 * std::sin(a) + 0.01 * b * b - 0.005 * c + rng.normal(0, 0.002));
-        d.time_s.push_back(k * 10.0);
-        d.group.push_back(gi);
-        ++d.rows;
-      }
-    }
-  }
-  return d;
-}
+using test::synthetic;
 
 TEST(GroupedFolds, LeaveOneRepetitionOutNeverSplitsARecording) {
   const Dataset d = synthetic();
@@ -170,6 +145,10 @@ TEST(TuneSvr, SameSeedSameResultWhateverTheThreadCount) {
     EXPECT_EQ(s1.fits, s1.candidates * 3);
     EXPECT_EQ(s1.candidates + s1.repeats, s1.optimizer.evaluations);
     EXPECT_EQ(s1.folds.size(), 3u);
+    ASSERT_EQ(s1.history.size(), s1.candidates);
+    double lowest = INFINITY;
+    for (const Candidate& c : s1.history) lowest = std::min(lowest, c.loss);
+    EXPECT_EQ(lowest, s1.best_fitness);
     // The reported fitness is the loss of the reported parameters.
     EXPECT_NEAR(svr_loss(d, s1.best, small_search(a, nullptr)), s1.best_fitness,
                 1e-3 * s1.best_fitness);

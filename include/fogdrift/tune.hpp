@@ -60,7 +60,8 @@ struct Fold {
 
 /// The folds of `data` (rows grouped by Dataset::group). `recording` folds sort the recordings
 /// by (initial temperature, repetition, file) and deal them out in turn, so every fold covers
-/// the temperature range. Throws OptionError("cv", …) when fewer than two folds are possible.
+/// the temperature range. Throws OptionError("cv", …) for leave-one-repetition-out with one
+/// repetition, OptionError("folds", …) for k outside 2 … recordings.
 std::vector<Fold> grouped_folds(const Dataset& data, const CvOptions& options = {});
 
 /// Features and target of a train/test split, standardised with the training rows' statistics
@@ -102,6 +103,12 @@ void validate(const TuneOptions& options);
 /// The SVR of a point in the search coordinates (RBF kernel, the options' tolerance).
 svr::Params params_at(std::span<const double> point, const TuneOptions& options);
 
+/// One distinct candidate of a search, in the order it was first evaluated.
+struct Candidate {
+  svr::Params params;
+  double loss = 0;  ///< the fitness: RMSE on the standardised target
+};
+
 struct TuneSummary {
   svr::Params best;                ///< C, σ (kernel) and ε of the best candidate
   double best_fitness = 0;         ///< RMSE on the standardised target
@@ -112,6 +119,7 @@ struct TuneSummary {
   std::size_t fits = 0;            ///< SVR fits made
   std::size_t warm_fits = 0;       ///< of which warm-started
   double fit_seconds = 0;          ///< sum of the fits' own times (over all threads)
+  std::vector<Candidate> history;  ///< every distinct candidate and its loss
   double seconds = 0;              ///< wall time of the search
 };
 

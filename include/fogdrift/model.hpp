@@ -1,0 +1,77 @@
+// A compensation model: everything needed to turn a recording into predicted drift, in one
+// versioned JSON file (STYLE.md §12):
+//   features  the FeatureSpec text and names, the differentiator and block settings
+//   target    how the training target was formed (wavelet denoising settings)
+//   scalers   feature and target standardisation fitted on the training rows
+//   regressor ε-SVR (support vectors, coefficients, γ, ρ), BP network weights, or polynomial
+//   provenance method, fitness, hyperparameters, seed, optimizer budget, training files with
+//              their SHA-256, fogdrift version. Nothing depends on the clock, so one seed gives
+//              one file, byte for byte.
+// Numbers are written with the shortest text that reads back to the same double.
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <span>
+#include <string>
+#include <utility>
+#include <variant>
+#include <vector>
+
+#include "fogdrift/dataset.hpp"
+#include "fogdrift/mlp.hpp"
+#include "fogdrift/poly.hpp"
+#include "fogdrift/svr/svr.hpp"
+
+namespace fogdrift {
+
+/// The paper's methods (Table 2) and the classical baseline.
+enum class Method { ssa_svr, pso_svr, gwo_svr, svr, bp, poly };
+/// "ssa-svr", "pso-svr", "gwo-svr", "svr", "bp", "poly".
+std::string to_string(Method method);
+Method parse_method(const std::string& text, const std::string& option = "method");
+
+struct SourceFile {
+  std::string path;    ///< as the campaign manifest names it
+  std::string sha256;  ///< lowercase hex
+};
+
+struct Provenance {
+  Method method = Method::ssa_svr;
+  std::string fitness;       ///< "cv", "train", "validation" (BP's early-stopping set)
+  double fitness_value = 0;  ///< RMSE on the standardised target
+  std::string cv;            ///< fold description, e.g. "repetition (3 folds)"
+  /// Named hyperparameters: C, sigma, gamma, epsilon; hidden, epochs; degree.
+  std::vector<std::pair<std::string, double>> hyperparameters;
+  std::uint64_t seed = 0;
+  std::size_t population = 0, iterations = 0;  ///< optimizer budget (0 when none)
+  std::size_t training_rows = 0;
+  std::vector<SourceFile> files;
+  std::string fogdrift_version;
+};
+
+struct CompensationModel {
+  DatasetOptions dataset;  ///< features, preprocessing and target settings
+  std::vector<std::string> feature_names;
+  Standardizer x_scaler;
+  Standardizer y_scaler;  ///< one column, "drift_dph"
+  std::variant<svr::Model, Mlp, Poly> regressor;
+  Provenance provenance;
+
+  std::size_t inputs() const { return feature_names.size(); }
+  /// Drift in °/h for one row of features in their own units; `work` holds inputs() doubles.
+  double predict_dph(std::span<const double> features, std::span<double> work) const;
+  /// Drift for every row of a dataset built with this model's DatasetOptions.
+  std::vector<double> predict_dph(const Dataset& data) const;
+};
+
+inline constexpr int kCompensationModelVersion = 1;
+
+std::string to_json(const CompensationModel& model);
+/// Parses to_json's text; `source` names it in errors. A newer version, another format, a
+/// missing or mistyped field, or sizes that do not agree is an InputError naming the field.
+CompensationModel compensation_model_from_json(const std::string& text, const std::string& source);
+void save(const CompensationModel& model, const std::filesystem::path& path);  ///< atomic
+CompensationModel load_compensation_model(const std::filesystem::path& path);
+
+}  // namespace fogdrift

@@ -1,0 +1,46 @@
+// Training a compensation model by any of the paper's methods (METHOD.md §2, §3):
+//   ssa-svr, pso-svr, gwo-svr  ε-SVR with C and σ tuned by that optimizer (tune.hpp), then
+//                              refitted on all training rows;
+//   svr                        LIBSVM's defaults on standardised data: C = 1, γ = 1/features,
+//                              ε = 0.1;
+//   bp                         one-hidden-layer tanh network (mlp.hpp), early-stopped on the
+//                              held-out recordings of the last grouped fold;
+//   poly                       polynomial in the features, degree 1 … max chosen by grouped CV.
+// Every method reports a fitness on the standardised target: the tuner's (cv or train) for the
+// SVRs, the validation RMSE for BP, the CV RMSE of the chosen degree for the polynomial.
+#pragma once
+
+#include "fogdrift/mlp.hpp"
+#include "fogdrift/model.hpp"
+#include "fogdrift/tune.hpp"
+
+namespace fogdrift {
+
+struct TrainOptions {
+  Method method = Method::ssa_svr;
+  tune::TuneOptions tune;           ///< fitness, folds, search box, optimizer budget, seed, pool
+  MlpOptions mlp;                   ///< BP settings; its seed is set from tune.optimizer.run.seed
+  std::size_t poly_max_degree = 3;  ///< highest polynomial degree tried, 1 … 6
+};
+
+struct TrainSummary {
+  Method method = Method::ssa_svr;
+  std::string fitness;       ///< "cv", "train" or "validation"
+  double fitness_value = 0;  ///< RMSE on the standardised target
+  std::vector<std::pair<std::string, double>> hyperparameters;
+  tune::TuneSummary tuning;          ///< SVR methods with a search
+  MlpSummary mlp;                    ///< bp
+  std::vector<double> poly_cv_rmse;  ///< poly: CV RMSE of degree 1, 2, …
+  std::size_t rows = 0;
+  double seconds = 0;
+};
+
+struct TrainResult {
+  CompensationModel model;
+  TrainSummary summary;
+};
+
+/// Trains on every row of `data`, built with `dataset` (recorded in the model).
+TrainResult train(const Dataset& data, const DatasetOptions& dataset, const TrainOptions& options);
+
+}  // namespace fogdrift

@@ -1,0 +1,278 @@
+#include "fogdrift/model.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <nlohmann/json.hpp>
+#include <set>
+
+#include "fogdrift/atomic_file.hpp"
+#include "fogdrift/error.hpp"
+#include "fogdrift/text_file.hpp"
+
+namespace fogdrift {
+
+using ojson = nlohmann::ordered_json;
+
+std::string to_string(Method method) {
+  switch (method) {
+    case Method::ssa_svr:
+      return "ssa-svr";
+    case Method::pso_svr:
+      return "pso-svr";
+    case Method::gwo_svr:
+      return "gwo-svr";
+    case Method::svr:
+      return "svr";
+    case Method::bp:
+      return "bp";
+    case Method::poly:
+      return "poly";
+  }
+  return "?";
+}
+
+Method parse_method(const std::string& text, const std::string& option) {
+  for (Method m :
+       {Method::ssa_svr, Method::pso_svr, Method::gwo_svr, Method::svr, Method::bp, Method::poly})
+    if (text == to_string(m)) return m;
+  throw OptionError(option, fmt::format("'{}' is not a method (ssa-svr, pso-svr, gwo-svr, svr, "
+                                        "bp, poly)",
+                                        text));
+}
+
+double CompensationModel::predict_dph(std::span<const double> features,
+                                      std::span<double> work) const {
+  const std::size_t d = inputs();
+  for (std::size_t k = 0; k < d; ++k)
+    work[k] = (features[k] - x_scaler.mean[k]) / x_scaler.scale[k];
+  const double z = std::visit([&](const auto& r) { return r.predict(work.data()); }, regressor);
+  return z * y_scaler.scale[0] + y_scaler.mean[0];
+}
+
+std::vector<double> CompensationModel::predict_dph(const Dataset& data) const {
+  if (data.feature_names != feature_names)
+    throw OptionError(
+        "features", fmt::format("the data has features {} but the model expects {}",
+                                fmt::join(data.feature_names, ","), fmt::join(feature_names, ",")));
+  std::vector<double> out(data.rows), work(inputs());
+  for (std::size_t i = 0; i < data.rows; ++i) out[i] = predict_dph(data.row(i), work);
+  return out;
+}
+
+namespace {
+
+ojson regressor_json(const std::variant<svr::Model, Mlp, Poly>& regressor) {
+  if (const auto* m = std::get_if<svr::Model>(&regressor)) {
+    ojson j = ojson::parse(svr::to_json(*m));
+    ojson out;
+    out["type"] = "svr";
+    for (auto& [k, v] : j.items()) out[k] = v;
+    return out;
+  }
+  if (const auto* m = std::get_if<Mlp>(&regressor)) {
+    return ojson{{"type", "mlp"},       {"activation", "tanh"}, {"inputs", m->inputs},
+                 {"hidden", m->hidden}, {"w1", m->w1},          {"b1", m->b1},
+                 {"w2", m->w2},         {"b2", m->b2}};
+  }
+  const Poly& p = std::get<Poly>(regressor);
+  ojson exps = ojson::array();
+  for (std::size_t t = 0; t < p.terms(); ++t)
+    exps.push_back(
+        std::vector<int>(p.exponents.begin() + static_cast<std::ptrdiff_t>(t * p.inputs),
+                         p.exponents.begin() + static_cast<std::ptrdiff_t>((t + 1) * p.inputs)));
+  return ojson{{"type", "poly"},
+               {"inputs", p.inputs},
+               {"degree", p.degree},
+               {"exponents", exps},
+               {"coef", p.coef}};
+}
+
+}  // namespace
+
+std::string to_json(const CompensationModel& m) {
+  ojson j;
+  j["format"] = "fogdrift-compensation-model";
+  j["version"] = kCompensationModelVersion;
+  const DatasetOptions& d = m.dataset;
+  j["features"] = {
+      {"spec", d.features.to_string()},
+      {"names", m.feature_names},
+      {"differentiator",
+       {{"window_s", d.preprocessing.rates.window_s},
+        {"poly_order", d.preprocessing.rates.poly_order},
+        {"causality", std::string(signal::to_string(d.preprocessing.rates.causality))}}},
+      {"block_s", d.preprocessing.block.block_s}};
+  j["target"] = {{"denoise", d.denoise_target},
+                 {"wavelet", d.denoise.wavelet},
+                 {"level", d.denoise.level ? ojson(*d.denoise.level) : ojson("max")},
+                 {"threshold", std::string(signal::to_string(d.denoise.threshold))},
+                 {"mode", std::string(signal::to_string(d.denoise.shrinkage))},
+                 {"extension", std::string(signal::to_string(d.denoise.extension))}};
+  j["scalers"] = {{"features", {{"mean", m.x_scaler.mean}, {"scale", m.x_scaler.scale}}},
+                  {"drift_dph", {{"mean", m.y_scaler.mean[0]}, {"scale", m.y_scaler.scale[0]}}}};
+  j["regressor"] = regressor_json(m.regressor);
+  const Provenance& p = m.provenance;
+  ojson hyper = ojson::object();
+  for (const auto& [k, v] : p.hyperparameters) hyper[k] = v;
+  ojson files = ojson::array();
+  for (const auto& f : p.files) files.push_back({{"path", f.path}, {"sha256", f.sha256}});
+  j["provenance"] = {{"method", to_string(p.method)},
+                     {"fitness", p.fitness},
+                     {"fitness_rmse", p.fitness_value},
+                     {"cv", p.cv},
+                     {"hyperparameters", hyper},
+                     {"seed", p.seed},
+                     {"population", p.population},
+                     {"iterations", p.iterations},
+                     {"training_rows", p.training_rows},
+                     {"files", files},
+                     {"fogdrift_version", p.fogdrift_version}};
+  return j.dump(1) + "\n";
+}
+
+CompensationModel compensation_model_from_json(const std::string& text, const std::string& source) {
+  ojson doc;
+  try {
+    doc = ojson::parse(text);
+  } catch (const ojson::parse_error& e) {
+    throw_json_syntax_error(source, text, e.byte, e.what());
+  }
+  auto fail = [&](const std::string& where, const std::string& rule) {
+    throw InputError(source, 0, 0, fmt::format("{}: {}", where, rule));
+  };
+  if (!doc.is_object()) fail("(top level)", "must be a JSON object");
+  if (!doc.contains("format") || doc["format"] != "fogdrift-compensation-model")
+    fail("format",
+         "must be \"fogdrift-compensation-model\" (is this a model written by "
+         "`fogdrift train`?)");
+  if (!doc.contains("version") || !doc["version"].is_number_integer())
+    fail("version", "required integer field is missing");
+  const int version = doc["version"].get<int>();
+  if (version != kCompensationModelVersion)
+    fail("version", fmt::format("model format version {} is not supported (this fogdrift reads "
+                                "version {}{})",
+                                version, kCompensationModelVersion,
+                                version > kCompensationModelVersion
+                                    ? "; written by a newer fogdrift, upgrade to read it"
+                                    : ""));
+  CompensationModel m;
+  std::string where = "features";
+  try {
+    const ojson& f = doc.at("features");
+    m.dataset.features = FeatureSpec::parse(f.at("spec").get<std::string>());
+    m.feature_names = f.at("names").get<std::vector<std::string>>();
+    const ojson& dif = f.at("differentiator");
+    m.dataset.preprocessing.rates.window_s = dif.at("window_s").get<double>();
+    m.dataset.preprocessing.rates.poly_order = dif.at("poly_order").get<int>();
+    m.dataset.preprocessing.rates.causality =
+        signal::parse_causality(dif.at("causality").get<std::string>(), "causality");
+    m.dataset.preprocessing.block.block_s = f.at("block_s").get<double>();
+    where = "target";
+    const ojson& t = doc.at("target");
+    m.dataset.denoise_target = t.at("denoise").get<bool>();
+    m.dataset.denoise.wavelet = t.at("wavelet").get<std::string>();
+    if (t.at("level").is_number_integer()) m.dataset.denoise.level = t.at("level").get<int>();
+    m.dataset.denoise.threshold =
+        signal::parse_threshold_rule(t.at("threshold").get<std::string>());
+    m.dataset.denoise.shrinkage = signal::parse_shrinkage(t.at("mode").get<std::string>());
+    m.dataset.denoise.extension = signal::parse_extension(t.at("extension").get<std::string>());
+    where = "scalers";
+    const ojson& s = doc.at("scalers");
+    m.x_scaler.names = m.feature_names;
+    m.x_scaler.mean = s.at("features").at("mean").get<std::vector<double>>();
+    m.x_scaler.scale = s.at("features").at("scale").get<std::vector<double>>();
+    m.y_scaler.names = {"drift_dph"};
+    m.y_scaler.mean = {s.at("drift_dph").at("mean").get<double>()};
+    m.y_scaler.scale = {s.at("drift_dph").at("scale").get<double>()};
+    where = "regressor";
+    const ojson& r = doc.at("regressor");
+    const std::string type = r.at("type").get<std::string>();
+    if (type == "svr") {
+      ojson svr_doc = r;
+      svr_doc.erase("type");
+      m.regressor = svr::model_from_json(svr_doc.dump(), source + " (regressor)");
+    } else if (type == "mlp") {
+      Mlp n;
+      n.inputs = r.at("inputs").get<std::size_t>();
+      n.hidden = r.at("hidden").get<std::size_t>();
+      n.w1 = r.at("w1").get<std::vector<double>>();
+      n.b1 = r.at("b1").get<std::vector<double>>();
+      n.w2 = r.at("w2").get<std::vector<double>>();
+      n.b2 = r.at("b2").get<double>();
+      if (n.w1.size() != n.hidden * n.inputs || n.b1.size() != n.hidden || n.w2.size() != n.hidden)
+        fail("regressor",
+             fmt::format("weights do not match {} inputs and {} hidden units", n.inputs, n.hidden));
+      m.regressor = std::move(n);
+    } else if (type == "poly") {
+      Poly p;
+      p.inputs = r.at("inputs").get<std::size_t>();
+      p.degree = r.at("degree").get<std::size_t>();
+      p.coef = r.at("coef").get<std::vector<double>>();
+      const auto exps = r.at("exponents").get<std::vector<std::vector<int>>>();
+      if (exps.size() != p.coef.size())
+        fail("regressor.exponents", "must hold one row per coefficient");
+      for (const auto& e : exps) {
+        if (e.size() != p.inputs)
+          fail("regressor.exponents", "each row needs one exponent per input");
+        for (int v : e) {
+          if (v < 0 || v > static_cast<int>(p.degree))
+            fail("regressor.exponents", fmt::format("exponent {} is outside 0 … degree", v));
+          p.exponents.push_back(static_cast<std::uint8_t>(v));
+        }
+      }
+      m.regressor = std::move(p);
+    } else {
+      fail("regressor.type", fmt::format("'{}' is not svr, mlp or poly", type));
+    }
+    where = "provenance";
+    const ojson& p = doc.at("provenance");
+    m.provenance.method = parse_method(p.at("method").get<std::string>());
+    m.provenance.fitness = p.at("fitness").get<std::string>();
+    m.provenance.fitness_value = p.at("fitness_rmse").get<double>();
+    m.provenance.cv = p.at("cv").get<std::string>();
+    for (const auto& [k, v] : p.at("hyperparameters").items())
+      m.provenance.hyperparameters.emplace_back(k, v.get<double>());
+    m.provenance.seed = p.at("seed").get<std::uint64_t>();
+    m.provenance.population = p.at("population").get<std::size_t>();
+    m.provenance.iterations = p.at("iterations").get<std::size_t>();
+    m.provenance.training_rows = p.at("training_rows").get<std::size_t>();
+    for (const auto& f : p.at("files"))
+      m.provenance.files.push_back(
+          {f.at("path").get<std::string>(), f.at("sha256").get<std::string>()});
+    m.provenance.fogdrift_version = p.at("fogdrift_version").get<std::string>();
+  } catch (const ojson::exception& e) {
+    fail(where, fmt::format("missing or mistyped field ({})", e.what()));
+  } catch (const OptionError& e) {
+    fail(where, e.what());
+  }
+  const std::size_t d = m.feature_names.size();
+  if (m.x_scaler.mean.size() != d || m.x_scaler.scale.size() != d)
+    fail("scalers.features", fmt::format("needs {} means and scales, one per feature", d));
+  for (double s : m.x_scaler.scale)
+    if (!(s > 0) || !std::isfinite(s)) fail("scalers.features.scale", "must be finite and > 0");
+  if (!(m.y_scaler.scale[0] > 0) || !std::isfinite(m.y_scaler.scale[0]))
+    fail("scalers.drift_dph.scale", "must be finite and > 0");
+  const std::size_t regressor_inputs = std::visit(
+      [](const auto& r) -> std::size_t {
+        if constexpr (std::is_same_v<std::decay_t<decltype(r)>, svr::Model>)
+          return r.dims;
+        else
+          return r.inputs;
+      },
+      m.regressor);
+  if (regressor_inputs != d)
+    fail("regressor",
+         fmt::format("takes {} inputs but the model has {} features", regressor_inputs, d));
+  return m;
+}
+
+void save(const CompensationModel& model, const std::filesystem::path& path) {
+  write_text_atomically(path, to_json(model));
+}
+
+CompensationModel load_compensation_model(const std::filesystem::path& path) {
+  return compensation_model_from_json(read_text_file(path), path.string());
+}
+
+}  // namespace fogdrift

@@ -1,0 +1,143 @@
+#include "fogdrift/train.hpp"
+
+#include <fmt/format.h>
+
+#include <chrono>
+#include <cmath>
+#include <numeric>
+
+#include "fogdrift/error.hpp"
+#include "fogdrift/version.hpp"
+
+namespace fogdrift {
+namespace {
+
+std::vector<std::size_t> all_rows(const Dataset& data) {
+  std::vector<std::size_t> rows(data.rows);
+  std::iota(rows.begin(), rows.end(), 0);
+  return rows;
+}
+
+std::string describe_folds(const Dataset& data, const tune::CvOptions& cv) {
+  const auto folds = tune::grouped_folds(data, cv);
+  const bool repetition = folds.front().name.starts_with("repetition");
+  return fmt::format("{} ({} folds)", repetition ? "leave one repetition out" : "whole recordings",
+                     folds.size());
+}
+
+opt::Algorithm algorithm_of(Method m) {
+  return m == Method::pso_svr ? opt::Algorithm::pso
+                              : (m == Method::gwo_svr ? opt::Algorithm::gwo : opt::Algorithm::ssa);
+}
+
+}  // namespace
+
+TrainResult train(const Dataset& data, const DatasetOptions& dataset, const TrainOptions& options) {
+  const auto start = std::chrono::steady_clock::now();
+  if (data.rows == 0) throw OptionError("data", "there are no training rows");
+  TrainResult out;
+  TrainSummary& s = out.summary;
+  s.method = options.method;
+  s.rows = data.rows;
+  CompensationModel& m = out.model;
+  m.dataset = dataset;
+  m.feature_names = data.feature_names;
+  Provenance& p = m.provenance;
+  p.method = options.method;
+  p.seed = options.tune.optimizer.run.seed;
+  p.training_rows = data.rows;
+  p.fogdrift_version = kVersion;
+
+  // Scalers of all training rows, for the final fit of every method.
+  const std::vector<std::size_t> rows = all_rows(data);
+  const tune::ScaledSplit full = tune::scale_split(data, rows, {});
+  m.x_scaler = full.x_scaler;
+  m.y_scaler = full.y_scaler;
+
+  switch (options.method) {
+    case Method::ssa_svr:
+    case Method::pso_svr:
+    case Method::gwo_svr:
+    case Method::svr: {
+      svr::Params params;
+      tune::TuneOptions t = options.tune;
+      if (options.method == Method::svr) {
+        params.kernel = svr::Kernel::rbf_gamma(1.0 / static_cast<double>(data.cols()));
+        params.tolerance = t.tolerance;
+        s.fitness_value = tune::svr_loss(data, params, t);
+      } else {
+        t.optimizer.algorithm = algorithm_of(options.method);  // tune_svr validates with it
+        s.tuning = tune::tune_svr(data, t);
+        params = s.tuning.best;
+        s.fitness_value = s.tuning.best_fitness;
+        p.population = t.optimizer.run.population;
+        p.iterations = t.optimizer.run.iterations;
+      }
+      s.fitness = tune::to_string(t.fitness);
+      if (t.fitness == tune::Fitness::cv) p.cv = describe_folds(data, t.cv);
+      svr::TrainingSet set(full.train);
+      m.regressor = svr::fit(set, params).model;
+      s.hyperparameters = {{"C", params.c},
+                           {"sigma", params.kernel.sigma()},
+                           {"gamma", params.kernel.gamma},
+                           {"epsilon", params.epsilon}};
+      break;
+    }
+    case Method::bp: {
+      // Early stopping on the held-out recordings of the last grouped fold.
+      const auto folds = tune::grouped_folds(data, options.tune.cv);
+      const tune::Fold& f = folds.back();
+      const tune::ScaledSplit split = tune::scale_split(data, f.train_rows, f.test_rows);
+      MlpOptions mo = options.mlp;
+      mo.seed = options.tune.optimizer.run.seed;
+      const MlpFit fit = fit_mlp(split.train, split.test, mo);
+      m.x_scaler = split.x_scaler;
+      m.y_scaler = split.y_scaler;
+      m.regressor = fit.model;
+      s.mlp = fit.summary;
+      s.fitness = "validation";
+      s.fitness_value = fit.summary.validation_rmse;
+      p.cv = fmt::format("early stopping on {}", f.name);
+      s.hyperparameters = {{"hidden", static_cast<double>(mo.hidden)},
+                           {"learning_rate", mo.learning_rate},
+                           {"epochs", static_cast<double>(fit.summary.best_epoch)}};
+      break;
+    }
+    case Method::poly: {
+      if (options.poly_max_degree < 1 || options.poly_max_degree > 6)
+        throw OptionError("degree", fmt::format("{} is outside 1 … 6", options.poly_max_degree));
+      const auto folds = tune::grouped_folds(data, options.tune.cv);
+      std::vector<tune::ScaledSplit> splits;
+      for (const auto& f : folds)
+        splits.push_back(tune::scale_split(data, f.train_rows, f.test_rows));
+      std::size_t best = 1;
+      for (std::size_t degree = 1; degree <= options.poly_max_degree; ++degree) {
+        double sse = 0;
+        std::size_t n = 0;
+        for (const auto& sp : splits) {
+          const Poly poly = fit_poly(sp.train, degree);
+          for (std::size_t r = 0; r < sp.test.rows; ++r) {
+            const double e = poly.predict(sp.test.row(r)) - sp.test.y[r];
+            sse += e * e;
+          }
+          n += sp.test.rows;
+        }
+        s.poly_cv_rmse.push_back(std::sqrt(sse / static_cast<double>(n)));
+        if (s.poly_cv_rmse.back() < s.poly_cv_rmse[best - 1]) best = degree;
+      }
+      m.regressor = fit_poly(full.train, best);
+      s.fitness = "cv";
+      s.fitness_value = s.poly_cv_rmse[best - 1];
+      p.cv = describe_folds(data, options.tune.cv);
+      s.hyperparameters = {{"degree", static_cast<double>(best)}};
+      break;
+    }
+  }
+  p.fitness = s.fitness;
+  p.fitness_value = s.fitness_value;
+  p.hyperparameters = s.hyperparameters;
+  s.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return out;
+}
+
+}  // namespace fogdrift

@@ -1,0 +1,41 @@
+// A small grouped dataset for the training tests: 3 repetitions × 4 initial temperatures,
+// 40 rows each, 3 features; y smooth in x plus noise.
+#pragma once
+
+#include <fmt/format.h>
+
+#include <cmath>
+
+#include "fogdrift/dataset.hpp"
+#include "fogdrift/random.hpp"
+
+namespace fogdrift::test {
+
+inline Dataset synthetic(std::uint64_t seed = 1) {
+  Dataset d;
+  d.feature_names = {"a", "b", "c"};
+  d.feature_spec = "synthetic";
+  Rng rng(seed);
+  for (int rep = 1; rep <= 3; ++rep) {
+    for (double temp : {-20.0, 0.0, 20.0, 40.0}) {
+      GroupInfo g;
+      g.file = fmt::format("rep{}_{}.csv", rep, temp);
+      g.repetition = rep;
+      g.initial_temp_degc = temp;
+      const std::size_t gi = d.groups.size();
+      d.groups.push_back(g);
+      for (int k = 0; k < 40; ++k) {
+        const double a = temp / 20 + rng.normal(0, 0.3), b = rng.uniform(-2, 2),
+                     c = rng.normal(0, 1);
+        d.x.insert(d.x.end(), {a, b, c});
+        d.y.push_back(0.02 * std::sin(a) + 0.01 * b * b - 0.005 * c + rng.normal(0, 0.002));
+        d.time_s.push_back(k * 10.0);
+        d.group.push_back(gi);
+        ++d.rows;
+      }
+    }
+  }
+  return d;
+}
+
+}  // namespace fogdrift::test

@@ -1,0 +1,137 @@
+// Every training method on a small grouped dataset, and the model file: exact round trips,
+// one seed one file, and clear errors for files fogdrift cannot read.
+#include "fogdrift/train.hpp"
+
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+
+#include "fogdrift/error.hpp"
+#include "fogdrift/thread_pool.hpp"
+#include "synthetic_dataset.hpp"
+#include "test_util.hpp"
+
+namespace fogdrift {
+namespace {
+
+TrainOptions quick(Method method, ThreadPool* pool = nullptr) {
+  TrainOptions o;
+  o.method = method;
+  o.tune.optimizer.run.population = 8;
+  o.tune.optimizer.run.iterations = 5;
+  o.tune.space.c_max = 10;
+  o.tune.pool = pool;
+  o.mlp.max_epochs = 500;
+  return o;
+}
+
+double rmse_dph(const CompensationModel& m, const Dataset& d) {
+  const auto p = m.predict_dph(d);
+  double s = 0;
+  for (std::size_t i = 0; i < d.rows; ++i) s += std::pow(p[i] - d.y[i], 2);
+  return std::sqrt(s / d.rows);
+}
+
+double sd(const std::vector<double>& y) {
+  double m = 0, s = 0;
+  for (double v : y) m += v;
+  m /= y.size();
+  for (double v : y) s += (v - m) * (v - m);
+  return std::sqrt(s / (y.size() - 1));
+}
+
+TEST(Train, EveryMethodExplainsTheDrift) {
+  const Dataset d = test::synthetic();
+  for (Method m :
+       {Method::ssa_svr, Method::pso_svr, Method::gwo_svr, Method::svr, Method::bp, Method::poly}) {
+    const TrainResult r = train(d, {}, quick(m));
+    EXPECT_LT(rmse_dph(r.model, d), 0.5 * sd(d.y)) << to_string(m);
+    EXPECT_GT(r.summary.fitness_value, 0) << to_string(m);
+    EXPECT_LT(r.summary.fitness_value, 0.5) << to_string(m);
+    EXPECT_EQ(r.model.provenance.method, m);
+    EXPECT_FALSE(r.summary.hyperparameters.empty());
+  }
+  // The untuned SVR is LIBSVM's default: C = 1, γ = 1/3.
+  const TrainResult svr = train(d, {}, quick(Method::svr));
+  const auto& model = std::get<svr::Model>(svr.model.regressor);
+  EXPECT_DOUBLE_EQ(model.kernel.gamma, 1.0 / 3);
+  EXPECT_EQ(svr.model.provenance.hyperparameters[0], (std::pair<std::string, double>{"C", 1.0}));
+}
+
+TEST(Train, OneSeedOneFileWhateverTheThreadCount) {
+  const Dataset d = test::synthetic();
+  ThreadPool one(1), two(2);
+  for (Method m : {Method::ssa_svr, Method::bp}) {
+    const std::string a = to_json(train(d, {}, quick(m, &one)).model);
+    const std::string b = to_json(train(d, {}, quick(m, &two)).model);
+    EXPECT_EQ(a, b) << to_string(m);
+    TrainOptions other = quick(m, &two);
+    other.tune.optimizer.run.seed = 9;
+    EXPECT_NE(to_json(train(d, {}, other).model), a) << to_string(m);
+  }
+}
+
+TEST(ModelFile, RoundTripsExactly) {
+  const Dataset d = test::synthetic();
+  test::TempDir dir;
+  for (Method m : {Method::ssa_svr, Method::bp, Method::poly}) {
+    CompensationModel model = train(d, {}, quick(m)).model;
+    model.provenance.files = {{"a.csv", std::string(64, 'f')}};
+    save(model, dir / "m.json");
+    const CompensationModel back = load_compensation_model(dir / "m.json");
+    EXPECT_EQ(to_json(back), to_json(model)) << to_string(m);
+    const auto p1 = model.predict_dph(d), p2 = back.predict_dph(d);
+    for (std::size_t i = 0; i < d.rows; ++i) ASSERT_EQ(p1[i], p2[i]) << to_string(m);
+  }
+}
+
+std::string error_of(const std::string& text) {
+  try {
+    compensation_model_from_json(text, "m.json");
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "(no error)";
+}
+
+TEST(ModelFile, RejectsWhatItCannotRead) {
+  const Dataset d = test::synthetic();
+  const std::string good = to_json(train(d, {}, quick(Method::poly)).model);
+  auto edit = [&](auto&& change) {
+    auto j = nlohmann::ordered_json::parse(good);
+    change(j);
+    return j.dump();
+  };
+  EXPECT_NE(error_of(edit([](auto& j) { j["version"] = 2; })).find("written by a newer fogdrift"),
+            std::string::npos);
+  EXPECT_NE(error_of(edit([](auto& j) { j["format"] = "fogdrift-svr"; })).find("m.json: format"),
+            std::string::npos);
+  EXPECT_NE(error_of(edit([](auto& j) {
+              j["scalers"]["features"]["scale"][0] = 0;
+            })).find("scalers.features.scale"),
+            std::string::npos);
+  EXPECT_NE(error_of(edit([](auto& j) {
+              j["features"]["names"].push_back("extra");
+            })).find("scalers.features"),
+            std::string::npos);
+  EXPECT_NE(error_of(edit([](auto& j) { j["regressor"]["type"] = "forest"; })).find("forest"),
+            std::string::npos);
+  EXPECT_NE(error_of(edit([](auto& j) { j["provenance"].erase("seed"); })).find("provenance"),
+            std::string::npos);
+  EXPECT_NE(error_of(edit([](auto& j) { j["features"]["spec"] = "T,bogus"; })).find("features"),
+            std::string::npos);
+  EXPECT_NE(error_of("{\"format\": ").find("m.json:1:"), std::string::npos);
+}
+
+TEST(Train, RejectsImpossibleOptions) {
+  const Dataset d = test::synthetic();
+  TrainOptions o = quick(Method::poly);
+  o.poly_max_degree = 9;
+  EXPECT_THROW(train(d, {}, o), OptionError);
+  EXPECT_THROW(parse_method("rf"), OptionError);
+  EXPECT_EQ(parse_method("gwo-svr"), Method::gwo_svr);
+  EXPECT_THROW(train(Dataset{}, {}, quick(Method::svr)), OptionError);
+}
+
+}  // namespace
+}  // namespace fogdrift
