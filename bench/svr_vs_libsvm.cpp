@@ -19,6 +19,7 @@
 
 #include "fogdrift/svr/svr.hpp"
 #include "fogdrift/thread_pool.hpp"
+#include "libsvm_data.hpp"
 #include "svr/datasets.hpp"
 
 namespace {
@@ -43,23 +44,7 @@ void capture_libsvm(const char* s) {
   if (p) g_libsvm_obj = std::strtod(p + 6, nullptr);
 }
 
-struct LibsvmData {
-  std::vector<svm_node> nodes;
-  std::vector<svm_node*> rows;
-  std::vector<double> y;
-  svm_problem prob{};
-  explicit LibsvmData(const Data& d) : nodes(d.rows * (d.cols + 1)), rows(d.rows), y(d.y) {
-    for (std::size_t i = 0; i < d.rows; ++i) {
-      svm_node* r = nodes.data() + i * (d.cols + 1);
-      for (std::size_t k = 0; k < d.cols; ++k) r[k] = {static_cast<int>(k + 1), d.row(i)[k]};
-      r[d.cols] = {-1, 0};
-      rows[i] = r;
-    }
-    prob.l = static_cast<int>(d.rows);
-    prob.y = y.data();
-    prob.x = rows.data();
-  }
-};
+using fogdrift::bench::LibsvmData;
 
 struct LibsvmFit {
   double seconds, obj;

@@ -12,5 +12,6 @@ void add_import(CLI::App& app);
 void add_denoise(CLI::App& app);
 void add_demo(CLI::App& app);
 void add_svr(CLI::App& app);
+void add_train(CLI::App& app);
 
 }  // namespace fogdrift::app

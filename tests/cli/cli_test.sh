@@ -226,5 +226,48 @@ printf '{"format": "fogdrift-svr", "version": 9}' >"$work/future.json"
 check "newer model version rejected" run 1 "$fd" svr predict "$dia" "$work/future.json" "$work/p.txt"
 check "version message" err_has "model format version 9 is not supported"
 
+# --- train ------------------------------------------------------------------------------------
+# A small search (5 sparrows, 2 iterations) on the calibration campaign simulated above.
+check "train help teaches" run 0 "$fd" train --help
+check "train help lists methods" out_has "ssa-svr  ε-SVR, C and σ tuned by sparrow search"
+check "train ssa-svr" run 0 "$fd" train "$work/cal" --population 5 --iterations 2 --c-max 10 \
+  --threads 1 -o "$work/m1.json"
+check "train prints the fitness" out_has "cv RMSE"
+check "train names the folds" out_has "leave one repetition out (3 folds)"
+check "train again on two threads" run 0 "$fd" train "$work/cal" --population 5 --iterations 2 \
+  --c-max 10 --threads 2 -q -o "$work/m2.json"
+check "one seed, one model file" cmp "$work/m1.json" "$work/m2.json"
+check "another seed" run 0 "$fd" train "$work/cal" --population 5 --iterations 2 --c-max 10 \
+  --seed 2 -q -o "$work/m3.json"
+check "another seed, another search" bash -c "! cmp -s '$work/m1.json' '$work/m3.json'"
+check "model format" grep -q '"format": "fogdrift-compensation-model"' "$work/m1.json"
+sum=$(sha256sum "$work/cal/cal_r1_20C.csv" | cut -d' ' -f1)
+check "provenance checksum matches sha256sum" grep -q "$sum" "$work/m1.json"
+check "train --json" run 0 "$fd" train "$work/cal" --method svr --json -o "$work/svr.json"
+check "json summary method" out_has '"method": "svr"'
+check "json default gamma" out_has '"gamma": 0.1111111111111111'
+check "train bp" run 0 "$fd" train "$work/cal" --method bp --hidden 4 -q -o "$work/bp.json"
+check "bp weights in the model" grep -q '"type": "mlp"' "$work/bp.json"
+check "train poly" run 0 "$fd" train "$work/cal" --method poly --max-degree 2 --json -o "$work/poly.json"
+check "poly degree chosen by cv" out_has '"poly_cv_rmse_by_degree"'
+check "train fitness" run 0 "$fd" train "$work/cal" --method gwo-svr --fitness train --population 3 \
+  --iterations 1 --c-max 10 -o "$work/gwo.json"
+check "training fitness named" out_has "train RMSE"
+check "unknown method" run 1 "$fd" train "$work/cal" --method rf -o "$work/x.json"
+check "method message" err_has "option --method: 'rf' is not a method"
+check "population too small" run 1 "$fd" train "$work/cal" --population 3 -o "$work/x.json"
+check "population message" err_has "option --population: 3 is too small: at least 5"
+check "bad C range" run 1 "$fd" train "$work/cal" --c-min 0 -o "$work/x.json"
+check "C range message" err_has "option --c-min: 0 must be finite and > 0"
+check "bad feature spec" run 1 "$fd" train "$work/cal" --features "T,bogus" -o "$work/x.json"
+check "feature spec message" err_has "--features"
+check "bad fitness" run 1 "$fd" train "$work/cal" --fitness loo -o "$work/x.json"
+check "fitness message" err_has "option --fitness: 'loo' is not a fitness (cv, train)"
+check "one fold is impossible" run 1 "$fd" train "$work/cal" --cv recording --folds 1 \
+  --method svr -o "$work/x.json"
+check "folds message" err_has "option --folds"
+check "missing campaign" run 1 "$fd" train "$work/nowhere" -o "$work/x.json"
+check "no model written on error" test ! -e "$work/x.json"
+
 echo "cli: $passed passed, $failed failed"
 [ "$failed" -eq 0 ]

@@ -1,0 +1,235 @@
+// fogdrift train: fit a compensation model on a campaign's training recordings (METHOD.md §2).
+#include <fmt/format.h>
+
+#include <chrono>
+#include <iostream>
+#include <map>
+#include <memory>
+#include <nlohmann/json.hpp>
+
+#include "cli_util.hpp"
+#include "commands.hpp"
+#include "fogdrift/campaign.hpp"
+#include "fogdrift/error.hpp"
+#include "fogdrift/sha256.hpp"
+#include "fogdrift/thread_pool.hpp"
+#include "fogdrift/train.hpp"
+
+namespace fogdrift::app {
+namespace {
+
+struct TrainArgs {
+  std::string campaign;
+  std::string output;
+  std::string method = "ssa-svr";
+  std::string fitness = "cv";
+  std::string features = default_feature_spec().to_string();
+  std::string cv = "auto";
+  std::size_t folds = 3;
+  std::size_t population = 20;
+  std::size_t iterations = 50;
+  std::uint64_t seed = 1;
+  unsigned threads = 0;
+  double c_min = 1e-2, c_max = 1e3, sigma_min = 0.05, sigma_max = 20, epsilon = 0.1;
+  bool search_epsilon = false;
+  std::size_t hidden = 10;
+  std::size_t max_degree = 3;
+  bool json = false;
+  bool quiet = false;
+};
+
+// Library option names as the user typed them.
+OptionError as_flag(const OptionError& e) {
+  static const std::map<std::string, std::string> flags = {
+      {"population", "--population"}, {"iterations", "--iterations"},
+      {"c_min", "--c-min"},           {"c_max", "--c-max"},
+      {"sigma_min", "--sigma-min"},   {"sigma_max", "--sigma-max"},
+      {"epsilon", "--epsilon"},       {"epsilon_min", "--epsilon"},
+      {"epsilon_max", "--epsilon"},   {"cv", "--cv"},
+      {"folds", "--folds"},           {"hidden", "--hidden"},
+      {"degree", "--max-degree"},     {"features", "--features"}};
+  const auto it = flags.find(e.option());
+  if (it == flags.end()) return e;
+  std::string message = e.what();
+  const std::string prefix = "option " + e.option() + ": ";
+  if (message.rfind(prefix, 0) == 0) message.erase(0, prefix.size());
+  return OptionError(it->second, message);
+}
+
+void run(const TrainArgs& a) {
+  TrainOptions options;
+  DatasetOptions dataset;
+  try {
+    options.method = parse_method(a.method, "--method");
+    options.tune.fitness = tune::parse_fitness(a.fitness, "--fitness");
+    options.tune.cv.scheme = tune::parse_cv_scheme(a.cv, "--cv");
+    dataset.features = FeatureSpec::parse(a.features);
+  } catch (const OptionError& e) {
+    throw as_flag(e);
+  }
+  options.tune.cv.folds = a.folds;
+  options.tune.optimizer.run.population = a.population;
+  options.tune.optimizer.run.iterations = a.iterations;
+  options.tune.optimizer.run.seed = a.seed;
+  options.tune.space.c_min = a.c_min;
+  options.tune.space.c_max = a.c_max;
+  options.tune.space.sigma_min = a.sigma_min;
+  options.tune.space.sigma_max = a.sigma_max;
+  options.tune.space.epsilon = a.epsilon;
+  options.tune.space.search_epsilon = a.search_epsilon;
+  options.mlp.hidden = a.hidden;
+  options.poly_max_degree = a.max_degree;
+  ThreadPool pool(a.threads);
+  options.tune.pool = &pool;
+
+  const bool show_progress = !a.quiet && !a.json && stderr_is_terminal();
+  const auto start = std::chrono::steady_clock::now();
+  if (show_progress) {
+    options.tune.optimizer.run.progress = [&](const opt::IterationRecord& r) {
+      const double s =
+          std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      std::cerr << fmt::format(
+                       "\r{}: iteration {}/{}, best {} RMSE {:.5f}, {} evaluations, {:.0f} s ",
+                       a.method, r.iteration, a.iterations, a.fitness, r.best_fitness,
+                       r.evaluations, s)
+                << std::flush;
+      return true;
+    };
+  }
+
+  const Campaign campaign = read_campaign(a.campaign);
+  TrainResult result;
+  Dataset data;
+  try {
+    data = build_dataset(campaign, Role::train, Scenario::calibration, dataset);
+    if (data.rows == 0)
+      throw InputError((campaign.dir / "campaign.json").string(), 0, 0,
+                       "no calibration recording has role \"train\"; nothing to train on");
+    result = train(data, dataset, options);
+  } catch (const OptionError& e) {
+    if (show_progress) std::cerr << "\n";
+    throw as_flag(e);
+  }
+  if (show_progress) std::cerr << "\n";
+
+  Provenance& p = result.model.provenance;
+  p.files.push_back({"campaign.json", sha256_file_hex(campaign.dir / "campaign.json")});
+  for (const GroupInfo& g : data.groups)
+    p.files.push_back({g.file, sha256_file_hex(campaign.dir / g.file)});
+  save(result.model, a.output);
+
+  const TrainSummary& s = result.summary;
+  if (a.json) {
+    nlohmann::ordered_json j;
+    j["model"] = a.output;
+    j["method"] = to_string(s.method);
+    j["fitness"] = s.fitness;
+    j["fitness_rmse"] = s.fitness_value;
+    j["cv"] = p.cv;
+    for (const auto& [k, v] : s.hyperparameters) j["hyperparameters"][k] = v;
+    j["training_rows"] = s.rows;
+    j["recordings"] = data.groups.size();
+    j["features"] = data.feature_names;
+    if (s.method == Method::ssa_svr || s.method == Method::pso_svr || s.method == Method::gwo_svr) {
+      const auto& t = s.tuning;
+      j["search"] = {{"optimizer", opt::to_string(t.optimizer.algorithm)},
+                     {"population", a.population},
+                     {"iterations", t.optimizer.iterations},
+                     {"evaluations", t.optimizer.evaluations},
+                     {"candidates", t.candidates},
+                     {"repeats", t.repeats},
+                     {"fits", t.fits},
+                     {"initial_best_rmse", t.optimizer.initial_best_fitness},
+                     {"seconds", t.seconds}};
+      nlohmann::ordered_json log = nlohmann::ordered_json::array();
+      for (const auto& r : t.optimizer.log) log.push_back(r.best_fitness);
+      j["search"]["best_rmse_per_iteration"] = log;
+    }
+    if (s.method == Method::bp)
+      j["bp"] = {{"epochs", s.mlp.epochs},
+                 {"best_epoch", s.mlp.best_epoch},
+                 {"early_stopped", s.mlp.status == MlpStatus::early_stopped},
+                 {"train_rmse", s.mlp.train_rmse}};
+    if (s.method == Method::poly) j["poly_cv_rmse_by_degree"] = s.poly_cv_rmse;
+    j["warnings"] = data.warnings;
+    j["seconds"] = s.seconds;
+    std::cout << j.dump(2) << "\n";
+  } else if (!a.quiet) {
+    std::string hyper;
+    for (const auto& [k, v] : s.hyperparameters)
+      hyper += fmt::format("{}{} = {:.6g}", hyper.empty() ? "" : ", ", k, v);
+    std::cout << fmt::format("{}: {} on {} rows of {} training recordings ({} features)\n",
+                             a.campaign, to_string(s.method), s.rows, data.groups.size(),
+                             data.cols());
+    std::cout << fmt::format("  {}\n", hyper);
+    std::cout << fmt::format("  {} RMSE {:.5f} (standardised drift){}\n", s.fitness,
+                             s.fitness_value, p.cv.empty() ? "" : ", " + p.cv);
+    if (!s.tuning.optimizer.log.empty())
+      std::cout << fmt::format("  search: {}; {} distinct candidates, {} SVR fits\n",
+                               s.tuning.optimizer.brief_report(), s.tuning.candidates,
+                               s.tuning.fits);
+    for (const auto& w : data.warnings) std::cout << "  warning: " << w << "\n";
+    std::cout << fmt::format("  wrote {} in {:.1f} s\n", a.output, s.seconds);
+  }
+}
+
+}  // namespace
+
+void add_train(CLI::App& app) {
+  auto args = std::make_shared<TrainArgs>();
+  auto* cmd = app.add_subcommand(
+      "train",
+      "Train a compensation model on the calibration recordings whose role is \"train\" and write\n"
+      "it as JSON (features, scalers, regressor, provenance with SHA-256 of every data file).\n\n"
+      "Methods (paper Table 2):\n"
+      "  ssa-svr  ε-SVR, C and σ tuned by sparrow search (Xue & Shen 2020)   [default]\n"
+      "  pso-svr  the same tuned by particle swarm;  gwo-svr  by grey wolf\n"
+      "  svr      untuned: LIBSVM's defaults C = 1, γ = 1/features, ε = 0.1\n"
+      "  bp       one-hidden-layer tanh network, Adam, early stopping on held-out recordings\n"
+      "  poly     polynomial in the features, degree chosen by cross-validation\n"
+      "Fitness of a candidate (C, σ): 'cv' (default) is the RMSE over grouped folds that never\n"
+      "split a recording (leave one repetition out when there are several); 'train' is the\n"
+      "paper's training RMSE, which favours over-fitting. C and σ are searched in log10 space.\n"
+      "Examples:\n"
+      "  fogdrift simulate calibration --out cal && fogdrift train cal -o model.json\n"
+      "  fogdrift train cal --method pso-svr --population 30 --iterations 40 --seed 2 -o pso.json\n"
+      "  fogdrift train cal --method bp --hidden 12 -o bp.json --json");
+  cmd->add_option("campaign", args->campaign, "Campaign folder (or its campaign.json)")->required();
+  cmd->add_option("-o,--output", args->output, "Model file to write (JSON, atomically)")
+      ->required();
+  cmd->add_option("--method", args->method, "ssa-svr, pso-svr, gwo-svr, svr, bp or poly")
+      ->capture_default_str();
+  cmd->add_option("--fitness", args->fitness, "cv (grouped cross-validation) or train")
+      ->capture_default_str();
+  cmd->add_option("--features", args->features,
+                  "Feature spec: terms T, dT, grad, dgrad, t, TdT, each optionally with its "
+                  "thermometers, e.g. 'T,dT(fog),grad'")
+      ->capture_default_str();
+  cmd->add_option("--cv", args->cv, "Folds: auto, repetition (leave one out) or recording")
+      ->capture_default_str();
+  cmd->add_option("--folds", args->folds, "Folds of whole recordings for --cv recording")
+      ->capture_default_str();
+  cmd->add_option("--population", args->population, "Optimizer population")->capture_default_str();
+  cmd->add_option("--iterations", args->iterations, "Optimizer iterations")->capture_default_str();
+  cmd->add_option("--seed", args->seed, "Seed of the search (and of BP's weights)")
+      ->capture_default_str();
+  cmd->add_option("--threads", args->threads,
+                  "Threads (0: one per core); results do not depend on it")
+      ->capture_default_str();
+  cmd->add_option("--c-min", args->c_min, "Smallest C searched")->capture_default_str();
+  cmd->add_option("--c-max", args->c_max, "Largest C searched")->capture_default_str();
+  cmd->add_option("--sigma-min", args->sigma_min, "Smallest σ searched (standardised features)")
+      ->capture_default_str();
+  cmd->add_option("--sigma-max", args->sigma_max, "Largest σ searched")->capture_default_str();
+  cmd->add_option("--epsilon", args->epsilon, "ε of the tube (standardised target)")
+      ->capture_default_str();
+  cmd->add_flag("--search-epsilon", args->search_epsilon, "Also search ε in [0.001, 1]");
+  cmd->add_option("--hidden", args->hidden, "bp: hidden tanh units")->capture_default_str();
+  cmd->add_option("--max-degree", args->max_degree, "poly: highest degree tried")
+      ->capture_default_str();
+  cmd->add_flag("--json", args->json, "Print the training summary as JSON");
+  cmd->add_flag("-q,--quiet", args->quiet, "Print nothing on success");
+  cmd->callback([args] { run(*args); });
+}
+
+}  // namespace fogdrift::app

@@ -1,0 +1,35 @@
+// Dense fogdrift data as LIBSVM's svm_problem, for the benchmarks that run LIBSVM beside
+// fogdrift in one process.
+#pragma once
+
+#include <svm.h>
+
+#include <vector>
+
+#include "fogdrift/svr/kernel.hpp"
+
+namespace fogdrift::bench {
+
+struct LibsvmData {
+  std::vector<svm_node> nodes;
+  std::vector<svm_node*> rows;
+  std::vector<double> y;
+  svm_problem prob{};
+  explicit LibsvmData(const svr::Data& d) : nodes(d.rows * (d.cols + 1)), rows(d.rows), y(d.y) {
+    for (std::size_t i = 0; i < d.rows; ++i) {
+      svm_node* r = nodes.data() + i * (d.cols + 1);
+      for (std::size_t k = 0; k < d.cols; ++k) r[k] = {static_cast<int>(k + 1), d.row(i)[k]};
+      r[d.cols] = {-1, 0};
+      rows[i] = r;
+    }
+    prob.l = static_cast<int>(d.rows);
+    prob.y = y.data();
+    prob.x = rows.data();
+  }
+  // prob points into the vectors' heap buffers: a move keeps them, a copy would not.
+  LibsvmData(LibsvmData&&) = default;
+  LibsvmData(const LibsvmData&) = delete;
+  LibsvmData& operator=(const LibsvmData&) = delete;
+};
+
+}  // namespace fogdrift::bench
