@@ -13,5 +13,6 @@ void add_denoise(CLI::App& app);
 void add_demo(CLI::App& app);
 void add_svr(CLI::App& app);
 void add_train(CLI::App& app);
+void add_evaluate(CLI::App& app);
 
 }  // namespace fogdrift::app

@@ -269,5 +269,22 @@ check "folds message" err_has "option --folds"
 check "missing campaign" run 1 "$fd" train "$work/nowhere" -o "$work/x.json"
 check "no model written on error" test ! -e "$work/x.json"
 
+# --- evaluate ---------------------------------------------------------------------------------
+check "evaluate on the test repetition" run 0 "$fd" evaluate "$work/svr.json" "$work/cal"
+check "evaluate prints the Table 2 view" out_has "Table 2 view: denoised STD"
+check "evaluate has a row per test recording" test "$(grep -c '^| cal_r4_' "$work/out")" -eq 11
+check "evaluate --json" run 0 "$fd" evaluate --json "$work/svr.json" "$work/cal"
+check "evaluate json overall" out_has '"std_compensated_dph"'
+check "evaluate files" run 0 "$fd" evaluate "$work/poly.json" "$work/cal/cal_r4_20C.csv"
+check "files without a manifest warn about the target" out_has "warning:"
+printf '{"format": "fogdrift-compensation-model", "version": 7}' >"$work/future_model.json"
+check "newer model version rejected" run 1 "$fd" evaluate "$work/future_model.json" "$work/cal"
+check "model version message" err_has "future_model.json: version: model format version 7 is not supported"
+check "model version says upgrade" err_has "written by a newer fogdrift"
+check "svr model is not a compensation model" run 1 "$fd" evaluate "$work/dia.json" "$work/cal"
+check "format message" err_has 'format: must be "fogdrift-compensation-model"'
+check "campaign and files mixed" run 1 "$fd" evaluate "$work/svr.json" "$work/cal" "$work/cal/cal_r4_20C.csv"
+check "mixed message" err_has "is a campaign"
+
 echo "cli: $passed passed, $failed failed"
 [ "$failed" -eq 0 ]
