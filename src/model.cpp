@@ -60,6 +60,21 @@ std::vector<double> CompensationModel::predict_dph(const Dataset& data) const {
   return out;
 }
 
+std::vector<double> CompensationModel::predict_dph(const Recording& recording) const {
+  FeatureOptions options = dataset.preprocessing;
+  options.block.block_s = sample_interval_s(recording);
+  const FeatureTable table = compute_features(recording, dataset.features, options);
+  if (table.names != feature_names)
+    throw InputError(recording.source, 0, 0,
+                     fmt::format("gives features {} but the model expects {}",
+                                 fmt::join(table.names, ","), fmt::join(feature_names, ",")));
+  std::vector<double> out(table.rows), work(inputs());
+  const std::size_t d = inputs();
+  for (std::size_t i = 0; i < table.rows; ++i)
+    out[i] = predict_dph(std::span<const double>(table.x.data() + i * d, d), work);
+  return out;
+}
+
 namespace {
 
 ojson regressor_json(const std::variant<svr::Model, Mlp, Poly>& regressor) {

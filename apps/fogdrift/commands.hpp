@@ -14,5 +14,6 @@ void add_demo(CLI::App& app);
 void add_svr(CLI::App& app);
 void add_train(CLI::App& app);
 void add_evaluate(CLI::App& app);
+void add_compensate(CLI::App& app);
 
 }  // namespace fogdrift::app

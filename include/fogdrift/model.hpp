@@ -63,6 +63,11 @@ struct CompensationModel {
   double predict_dph(std::span<const double> features, std::span<double> work) const;
   /// Drift for every row of a dataset built with this model's DatasetOptions.
   std::vector<double> predict_dph(const Dataset& data) const;
+  /// Drift at every sample of a recording, °/h: the features are computed at the recording's own
+  /// rate (blocks of one sample) with the model's differentiator, so the compensated output
+  /// keeps the recording's rate. Throws InputError naming the recording when it is too short
+  /// for the differentiator or not uniformly sampled.
+  std::vector<double> predict_dph(const Recording& recording) const;
 };
 
 inline constexpr int kCompensationModelVersion = 1;

@@ -227,64 +227,79 @@ check "newer model version rejected" run 1 "$fd" svr predict "$dia" "$work/futur
 check "version message" err_has "model format version 9 is not supported"
 
 # --- train ------------------------------------------------------------------------------------
-# A small search (5 sparrows, 2 iterations) on the calibration campaign simulated above.
+# A small campaign (3 temperatures × 4 repetitions) keeps these runs short under the sanitizers.
+check "small campaign" run 0 "$fd" simulate calibration --out "$work/small" --temps -20,20,60 --seed 3
 check "train help teaches" run 0 "$fd" train --help
 check "train help lists methods" out_has "ssa-svr  ε-SVR, C and σ tuned by sparrow search"
-check "train ssa-svr" run 0 "$fd" train "$work/cal" --population 5 --iterations 2 --c-max 10 \
+check "train ssa-svr" run 0 "$fd" train "$work/small" --population 5 --iterations 2 --c-max 10 \
   --threads 1 -o "$work/m1.json"
 check "train prints the fitness" out_has "cv RMSE"
 check "train names the folds" out_has "leave one repetition out (3 folds)"
-check "train again on two threads" run 0 "$fd" train "$work/cal" --population 5 --iterations 2 \
+check "train again on two threads" run 0 "$fd" train "$work/small" --population 5 --iterations 2 \
   --c-max 10 --threads 2 -q -o "$work/m2.json"
 check "one seed, one model file" cmp "$work/m1.json" "$work/m2.json"
-check "another seed" run 0 "$fd" train "$work/cal" --population 5 --iterations 2 --c-max 10 \
+check "another seed" run 0 "$fd" train "$work/small" --population 5 --iterations 2 --c-max 10 \
   --seed 2 -q -o "$work/m3.json"
 check "another seed, another search" bash -c "! cmp -s '$work/m1.json' '$work/m3.json'"
 check "model format" grep -q '"format": "fogdrift-compensation-model"' "$work/m1.json"
-sum=$(sha256sum "$work/cal/cal_r1_20C.csv" | cut -d' ' -f1)
+sum=$(sha256sum "$work/small/cal_r1_20C.csv" | cut -d' ' -f1)
 check "provenance checksum matches sha256sum" grep -q "$sum" "$work/m1.json"
-check "train --json" run 0 "$fd" train "$work/cal" --method svr --json -o "$work/svr.json"
+check "train --json" run 0 "$fd" train "$work/small" --method svr --json -o "$work/svr.json"
 check "json summary method" out_has '"method": "svr"'
 check "json default gamma" out_has '"gamma": 0.1111111111111111'
-check "train bp" run 0 "$fd" train "$work/cal" --method bp --hidden 4 -q -o "$work/bp.json"
+check "train bp" run 0 "$fd" train "$work/small" --method bp --hidden 4 -q -o "$work/bp.json"
 check "bp weights in the model" grep -q '"type": "mlp"' "$work/bp.json"
-check "train poly" run 0 "$fd" train "$work/cal" --method poly --max-degree 2 --json -o "$work/poly.json"
+check "train poly" run 0 "$fd" train "$work/small" --method poly --max-degree 2 --json -o "$work/poly.json"
 check "poly degree chosen by cv" out_has '"poly_cv_rmse_by_degree"'
-check "train fitness" run 0 "$fd" train "$work/cal" --method gwo-svr --fitness train --population 3 \
+check "train fitness" run 0 "$fd" train "$work/small" --method gwo-svr --fitness train --population 3 \
   --iterations 1 --c-max 10 -o "$work/gwo.json"
 check "training fitness named" out_has "train RMSE"
-check "unknown method" run 1 "$fd" train "$work/cal" --method rf -o "$work/x.json"
+check "unknown method" run 1 "$fd" train "$work/small" --method rf -o "$work/x.json"
 check "method message" err_has "option --method: 'rf' is not a method"
-check "population too small" run 1 "$fd" train "$work/cal" --population 3 -o "$work/x.json"
+check "population too small" run 1 "$fd" train "$work/small" --population 3 -o "$work/x.json"
 check "population message" err_has "option --population: 3 is too small: at least 5"
-check "bad C range" run 1 "$fd" train "$work/cal" --c-min 0 -o "$work/x.json"
+check "bad C range" run 1 "$fd" train "$work/small" --c-min 0 -o "$work/x.json"
 check "C range message" err_has "option --c-min: 0 must be finite and > 0"
-check "bad feature spec" run 1 "$fd" train "$work/cal" --features "T,bogus" -o "$work/x.json"
+check "bad feature spec" run 1 "$fd" train "$work/small" --features "T,bogus" -o "$work/x.json"
 check "feature spec message" err_has "--features"
-check "bad fitness" run 1 "$fd" train "$work/cal" --fitness loo -o "$work/x.json"
+check "bad fitness" run 1 "$fd" train "$work/small" --fitness loo -o "$work/x.json"
 check "fitness message" err_has "option --fitness: 'loo' is not a fitness (cv, train)"
-check "one fold is impossible" run 1 "$fd" train "$work/cal" --cv recording --folds 1 \
+check "one fold is impossible" run 1 "$fd" train "$work/small" --cv recording --folds 1 \
   --method svr -o "$work/x.json"
 check "folds message" err_has "option --folds"
 check "missing campaign" run 1 "$fd" train "$work/nowhere" -o "$work/x.json"
 check "no model written on error" test ! -e "$work/x.json"
 
 # --- evaluate ---------------------------------------------------------------------------------
-check "evaluate on the test repetition" run 0 "$fd" evaluate "$work/svr.json" "$work/cal"
+check "evaluate on the test repetition" run 0 "$fd" evaluate "$work/svr.json" "$work/small"
 check "evaluate prints the Table 2 view" out_has "Table 2 view: denoised STD"
-check "evaluate has a row per test recording" test "$(grep -c '^| cal_r4_' "$work/out")" -eq 11
-check "evaluate --json" run 0 "$fd" evaluate --json "$work/svr.json" "$work/cal"
+check "evaluate has a row per test recording" test "$(grep -c '^| cal_r4_' "$work/out")" -eq 3
+check "evaluate --json" run 0 "$fd" evaluate --json "$work/svr.json" "$work/small"
 check "evaluate json overall" out_has '"std_compensated_dph"'
-check "evaluate files" run 0 "$fd" evaluate "$work/poly.json" "$work/cal/cal_r4_20C.csv"
+check "evaluate files" run 0 "$fd" evaluate "$work/poly.json" "$work/small/cal_r4_20C.csv"
 check "files without a manifest warn about the target" out_has "warning:"
 printf '{"format": "fogdrift-compensation-model", "version": 7}' >"$work/future_model.json"
-check "newer model version rejected" run 1 "$fd" evaluate "$work/future_model.json" "$work/cal"
+check "newer model version rejected" run 1 "$fd" evaluate "$work/future_model.json" "$work/small"
 check "model version message" err_has "future_model.json: version: model format version 7 is not supported"
 check "model version says upgrade" err_has "written by a newer fogdrift"
-check "svr model is not a compensation model" run 1 "$fd" evaluate "$work/dia.json" "$work/cal"
+check "svr model is not a compensation model" run 1 "$fd" evaluate "$work/dia.json" "$work/small"
 check "format message" err_has 'format: must be "fogdrift-compensation-model"'
-check "campaign and files mixed" run 1 "$fd" evaluate "$work/svr.json" "$work/cal" "$work/cal/cal_r4_20C.csv"
+check "campaign and files mixed" run 1 "$fd" evaluate "$work/svr.json" "$work/small" "$work/small/cal_r4_20C.csv"
 check "mixed message" err_has "is a campaign"
+
+# --- compensate -------------------------------------------------------------------------------
+check "compensate" run 0 "$fd" compensate "$work/svr.json" "$work/small/cal_r4_20C.csv" -o "$work/comp.csv"
+check "compensate summary" out_has "samples compensated with"
+check "one output row per input row" test "$(wc -l <"$work/comp.csv")" -eq "$(wc -l <"$work/small/cal_r4_20C.csv")"
+check "drift columns appended" bash -c "head -1 '$work/comp.csv' | grep -q ',drift_dph,gyro_comp_dph\$'"
+check "gyro_comp = gyro - drift" awk -F, 'NR>1{d=$2-$(NF-1)-$NF; if(d<0)d=-d; if(d>1e-9) bad=1} END{exit bad}' "$work/comp.csv"
+check "input columns kept as read" bash -c "cut -d, -f1-10 '$work/comp.csv' | diff -q - '$work/small/cal_r4_20C.csv'"
+check "compensating a compensated file" run 1 "$fd" compensate "$work/svr.json" "$work/comp.csv" -o "$work/comp2.csv"
+check "already-compensated message" err_has "comp.csv:1:11: already has a drift_dph column"
+check "no output on error" test ! -e "$work/comp2.csv"
+head -100 "$work/small/cal_r4_20C.csv" >"$work/short.csv"
+check "recording shorter than the differentiator" run 1 "$fd" compensate "$work/svr.json" "$work/short.csv" -o "$work/comp3.csv"
+check "short message names the file" err_has "short.csv"
 
 echo "cli: $passed passed, $failed failed"
 [ "$failed" -eq 0 ]
