@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <nlohmann/json.hpp>
 #include <set>
@@ -284,6 +286,147 @@ CompensationModel compensation_model_from_json(const std::string& text, const st
 
 void save(const CompensationModel& model, const std::filesystem::path& path) {
   write_text_atomically(path, to_json(model));
+}
+
+namespace {
+
+std::string c_number(double v) {
+  return fmt::format("{:.17g}", v);
+}
+
+std::string c_array(std::span<const double> values, std::size_t per_line = 4) {
+  std::string out;
+  for (std::size_t i = 0; i < values.size(); ++i) {
+    if (i % per_line == 0) out += "\n    ";
+    out += c_number(values[i]);
+    if (i + 1 < values.size()) out += ", ";
+  }
+  return out;
+}
+
+}  // namespace
+
+std::string to_c_header(const CompensationModel& model, const std::string& prefix) {
+  const bool identifier = !prefix.empty() && !std::isdigit(static_cast<unsigned char>(prefix[0])) &&
+                          std::all_of(prefix.begin(), prefix.end(), [](char c) {
+                            return std::isalnum(static_cast<unsigned char>(c)) || c == '_';
+                          });
+  if (!identifier) throw OptionError("prefix", fmt::format("'{}' is not a C identifier", prefix));
+  std::string upper = prefix;
+  for (char& c : upper) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+  const std::size_t d = model.inputs();
+  const Provenance& p = model.provenance;
+  std::string h;
+  h += fmt::format(
+      "/* {prefix}.h: a fogdrift compensation model ({method}) for C99 firmware.\n"
+      " * Written by fogdrift {version}; features '{spec}', trained on {rows} rows.\n"
+      " * drift_dph = {prefix}_predict_dph(features); gyro_compensated_dph = gyro_dph - "
+      "drift_dph.\n"
+      " * Features, in order (units in the names):\n",
+      fmt::arg("prefix", prefix), fmt::arg("method", to_string(p.method)),
+      fmt::arg("version", p.fogdrift_version), fmt::arg("spec", model.dataset.features.to_string()),
+      fmt::arg("rows", p.training_rows));
+  for (std::size_t k = 0; k < d; ++k) h += fmt::format(" *   [{}] {}\n", k, model.feature_names[k]);
+  h += fmt::format(
+      " * Temperature rates: {} Savitzky-Golay derivative over {} s (degree {}).\n"
+      " * No heap, no state: the function may be called from any context. */\n",
+      signal::to_string(model.dataset.preprocessing.rates.causality),
+      c_number(model.dataset.preprocessing.rates.window_s),
+      model.dataset.preprocessing.rates.poly_order);
+  h += fmt::format("#ifndef {0}_H\n#define {0}_H\n\n#include <math.h>\n\n", upper);
+  h += fmt::format("#define {}_N_FEATURES {}\n\n", upper, d);
+  h += fmt::format("static const char* const {}_feature_names[{}] = {{", prefix, d);
+  for (std::size_t k = 0; k < d; ++k)
+    h += fmt::format("{}\"{}\"", k ? ", " : "", model.feature_names[k]);
+  h += "};\n";
+  h += fmt::format("static const double {}_feature_mean[{}] = {{{}}};\n", prefix, d,
+                   c_array(model.x_scaler.mean));
+  h += fmt::format("static const double {}_feature_scale[{}] = {{{}}};\n", prefix, d,
+                   c_array(model.x_scaler.scale));
+  h += fmt::format("static const double {}_drift_mean_dph = {};\n", prefix,
+                   c_number(model.y_scaler.mean[0]));
+  h += fmt::format("static const double {}_drift_scale_dph = {};\n\n", prefix,
+                   c_number(model.y_scaler.scale[0]));
+
+  std::string body;  // computes `z` (standardised prediction) from `x` (standardised features)
+  if (const auto* m = std::get_if<svr::Model>(&model.regressor)) {
+    const std::size_t n = m->size();
+    h += fmt::format("#define {}_N_SV {}\n", upper, n);
+    h += fmt::format("static const double {}_sv[{}] = {{{}}};\n", prefix,
+                     std::max<std::size_t>(1, n * d), n ? c_array(m->support_vectors) : "0");
+    h += fmt::format("static const double {}_coef[{}] = {{{}}};\n", prefix,
+                     std::max<std::size_t>(1, n), n ? c_array(m->coef) : "0");
+    h += fmt::format("static const double {}_gamma = {};\nstatic const double {}_rho = {};\n\n",
+                     prefix, c_number(m->kernel.gamma), prefix, c_number(m->rho));
+    const bool rbf = m->kernel.type == svr::KernelType::rbf;
+    body = fmt::format(
+        "  double z = -{0}_rho;\n"
+        "  int i, k;\n"
+        "  for (i = 0; i < {1}_N_SV; ++i) {{\n"
+        "    const double* s = {0}_sv + i * {1}_N_FEATURES;\n"
+        "    double acc = 0.0;\n"
+        "    for (k = 0; k < {1}_N_FEATURES; ++k) {{\n"
+        "{2}"
+        "    }}\n"
+        "    z += {0}_coef[i] * {3};\n"
+        "  }}\n",
+        prefix, upper,
+        rbf ? "      const double e = x[k] - s[k];\n      acc += e * e;\n"
+            : "      acc += x[k] * s[k];\n",
+        rbf ? fmt::format("exp(-{}_gamma * acc)", prefix) : "acc");
+  } else if (const auto* m = std::get_if<Mlp>(&model.regressor)) {
+    h += fmt::format("#define {}_N_HIDDEN {}\n", upper, m->hidden);
+    h += fmt::format("static const double {}_w1[{}] = {{{}}};\n", prefix, m->w1.size(),
+                     c_array(m->w1));
+    h += fmt::format("static const double {}_b1[{}] = {{{}}};\n", prefix, m->b1.size(),
+                     c_array(m->b1));
+    h += fmt::format("static const double {}_w2[{}] = {{{}}};\n", prefix, m->w2.size(),
+                     c_array(m->w2));
+    h += fmt::format("static const double {}_b2 = {};\n\n", prefix, c_number(m->b2));
+    body = fmt::format(
+        "  double z = {0}_b2;\n"
+        "  int h, k;\n"
+        "  for (h = 0; h < {1}_N_HIDDEN; ++h) {{\n"
+        "    double a = {0}_b1[h];\n"
+        "    for (k = 0; k < {1}_N_FEATURES; ++k) a += {0}_w1[h * {1}_N_FEATURES + k] * x[k];\n"
+        "    z += {0}_w2[h] * tanh(a);\n"
+        "  }}\n",
+        prefix, upper);
+  } else {
+    const Poly& poly = std::get<Poly>(model.regressor);
+    h += fmt::format("#define {}_N_TERMS {}\n", upper, poly.terms());
+    h += fmt::format("static const unsigned char {}_exponents[{}] = {{", prefix,
+                     poly.exponents.size());
+    for (std::size_t i = 0; i < poly.exponents.size(); ++i)
+      h += fmt::format("{}{}{}", i % 20 == 0 ? "\n    " : "", poly.exponents[i],
+                       i + 1 < poly.exponents.size() ? ", " : "");
+    h += "};\n";
+    h += fmt::format("static const double {}_poly_coef[{}] = {{{}}};\n\n", prefix, poly.terms(),
+                     c_array(poly.coef));
+    body = fmt::format(
+        "  double z = 0.0;\n"
+        "  int t, k, e;\n"
+        "  for (t = 0; t < {1}_N_TERMS; ++t) {{\n"
+        "    double term = {0}_poly_coef[t];\n"
+        "    for (k = 0; k < {1}_N_FEATURES; ++k)\n"
+        "      for (e = {0}_exponents[t * {1}_N_FEATURES + k]; e > 0; --e) term *= x[k];\n"
+        "    z += term;\n"
+        "  }}\n",
+        prefix, upper);
+  }
+  h += fmt::format(
+      "/* Predicted drift, deg/h, for one row of features in their own units. */\n"
+      "static inline double {0}_predict_dph(const double features[{1}_N_FEATURES]) {{\n"
+      "  double x[{1}_N_FEATURES];\n"
+      "  int j;\n"
+      "  for (j = 0; j < {1}_N_FEATURES; ++j)\n"
+      "    x[j] = (features[j] - {0}_feature_mean[j]) / {0}_feature_scale[j];\n"
+      "  {{\n{2}"
+      "  return z * {0}_drift_scale_dph + {0}_drift_mean_dph;\n"
+      "  }}\n"
+      "}}\n\n#endif /* {1}_H */\n",
+      prefix, upper, body);
+  return h;
 }
 
 CompensationModel load_compensation_model(const std::filesystem::path& path) {

@@ -77,6 +77,16 @@ std::string to_json(const CompensationModel& model);
 /// missing or mistyped field, or sizes that do not agree is an InputError naming the field.
 CompensationModel compensation_model_from_json(const std::string& text, const std::string& source);
 void save(const CompensationModel& model, const std::filesystem::path& path);  ///< atomic
+
+/// A self-contained C99 header for an instrument's processor: the scalers and regressor as
+/// `static const` tables (numbers printed to 17 significant digits, so the doubles are the
+/// model's) and
+///   static inline double PREFIX_predict_dph(const double features[PREFIX_N_FEATURES]);
+/// which needs only <math.h> (exp or tanh), no heap and no other state. The features are those of
+/// the model's spec, in the order listed in the header's comment and PREFIX_feature_names.
+/// `prefix` must be a C identifier (OptionError("prefix", …) otherwise).
+std::string to_c_header(const CompensationModel& model,
+                        const std::string& prefix = "fogdrift_model");
 CompensationModel load_compensation_model(const std::filesystem::path& path);
 
 }  // namespace fogdrift

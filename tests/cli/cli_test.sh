@@ -301,5 +301,13 @@ head -100 "$work/small/cal_r4_20C.csv" >"$work/short.csv"
 check "recording shorter than the differentiator" run 1 "$fd" compensate "$work/svr.json" "$work/short.csv" -o "$work/comp3.csv"
 check "short message names the file" err_has "short.csv"
 
+# --- export-c ---------------------------------------------------------------------------------
+check "export-c" run 0 "$fd" export-c "$work/bp.json" -o "$work/unit.h" --prefix unit42
+check "export-c summary" out_has "unit42_predict_dph(features[9])"
+check "header has the function" grep -q "static inline double unit42_predict_dph" "$work/unit.h"
+check "bad prefix" run 1 "$fd" export-c "$work/bp.json" -o "$work/bad.h" --prefix 4unit
+check "prefix message" err_has "option --prefix: '4unit' is not a C identifier"
+check "no header on error" test ! -e "$work/bad.h"
+
 echo "cli: $passed passed, $failed failed"
 [ "$failed" -eq 0 ]
