@@ -110,8 +110,13 @@ TrainResult train(const Dataset& data, const DatasetOptions& dataset, const Trai
       std::vector<tune::ScaledSplit> splits;
       for (const auto& f : folds)
         splits.push_back(tune::scale_split(data, f.train_rows, f.test_rows));
+      // Degrees with more terms than a fold has training rows cannot be fitted: the search
+      // stops below them.
+      std::size_t min_rows = data.rows;
+      for (const auto& sp : splits) min_rows = std::min(min_rows, sp.train.rows);
       std::size_t best = 1;
       for (std::size_t degree = 1; degree <= options.poly_max_degree; ++degree) {
+        if (degree > 1 && monomials(data.cols(), degree).size() / data.cols() > min_rows) break;
         double sse = 0;
         std::size_t n = 0;
         for (const auto& sp : splits) {

@@ -25,6 +25,7 @@ struct TrainArgs {
   std::string fitness = "cv";
   std::string features = default_feature_spec().to_string();
   std::string cv = "auto";
+  std::string differentiator = "centred";
   std::size_t folds = 3;
   std::size_t population = 20;
   std::size_t iterations = 50;
@@ -64,6 +65,8 @@ void run(const TrainArgs& a) {
     options.tune.fitness = tune::parse_fitness(a.fitness, "--fitness");
     options.tune.cv.scheme = tune::parse_cv_scheme(a.cv, "--cv");
     dataset.features = FeatureSpec::parse(a.features);
+    dataset.preprocessing.rates.causality =
+        signal::parse_causality(a.differentiator, "--differentiator");
   } catch (const OptionError& e) {
     throw as_flag(e);
   }
@@ -204,6 +207,10 @@ void add_train(CLI::App& app) {
   cmd->add_option("--features", args->features,
                   "Feature spec: terms T, dT, grad, dgrad, t, TdT, each optionally with its "
                   "thermometers, e.g. 'T,dT(fog),grad'")
+      ->capture_default_str();
+  cmd->add_option("--differentiator", args->differentiator,
+                  "Temperature rates: centred (offline, no delay) or causal (what the instrument "
+                  "can run sample by sample; train with it for a streaming compensator)")
       ->capture_default_str();
   cmd->add_option("--cv", args->cv, "Folds: auto, repetition (leave one out) or recording")
       ->capture_default_str();

@@ -138,4 +138,28 @@ std::vector<double> differentiate(std::span<const double> x, double dt_s,
   return out;
 }
 
+CausalDifferentiator::CausalDifferentiator(const DifferentiatorOptions& options, double dt_s)
+    : dt_s_(dt_s) {
+  DifferentiatorOptions causal = options;
+  causal.causality = Causality::causal;
+  validate(causal, dt_s);
+  w_ = window_samples(causal, dt_s);
+  taps_.reserve(w_);
+  for (std::size_t k = 1; k <= w_; ++k)
+    taps_.push_back(derivative_taps(-static_cast<std::ptrdiff_t>(k - 1), k, causal.poly_order));
+  buffer_.assign(2 * w_, 0.0);
+}
+
+double CausalDifferentiator::push(double x) noexcept {
+  if (size_ == buffer_.size()) {  // keep the newest W − 1 samples at the front
+    std::copy(buffer_.end() - static_cast<std::ptrdiff_t>(w_ - 1), buffer_.end(), buffer_.begin());
+    size_ = w_ - 1;
+  }
+  buffer_[size_++] = x;
+  ++count_;
+  const std::size_t used = std::min(count_, w_);
+  const std::span<const double> window(buffer_.data() + size_ - used, used);
+  return apply(taps_[used - 1], window, 0) / dt_s_;
+}
+
 }  // namespace fogdrift::signal

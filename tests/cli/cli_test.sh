@@ -262,6 +262,11 @@ check "bad C range" run 1 "$fd" train "$work/small" --c-min 0 -o "$work/x.json"
 check "C range message" err_has "option --c-min: 0 must be finite and > 0"
 check "bad feature spec" run 1 "$fd" train "$work/small" --features "T,bogus" -o "$work/x.json"
 check "feature spec message" err_has "--features"
+check "train with causal rates" run 0 "$fd" train "$work/small" --method poly --differentiator causal \
+  -q -o "$work/causal.json"
+check "causal rates in the model" grep -q '"causality": "causal"' "$work/causal.json"
+check "bad differentiator" run 1 "$fd" train "$work/small" --differentiator future -o "$work/x.json"
+check "differentiator message" err_has "option --differentiator: 'future' is not a differentiator"
 check "bad fitness" run 1 "$fd" train "$work/small" --fitness loo -o "$work/x.json"
 check "fitness message" err_has "option --fitness: 'loo' is not a fitness (cv, train)"
 check "one fold is impossible" run 1 "$fd" train "$work/small" --cv recording --folds 1 \

@@ -66,4 +66,25 @@ DifferentiatorProperties differentiator_properties(const DifferentiatorOptions& 
 std::vector<double> differentiate(std::span<const double> x, double dt_s,
                                   const DifferentiatorOptions& options = {});
 
+/// The causal differentiator one sample at a time, for an instrument's processor: push(x) returns
+/// what differentiate() with Causality::causal gives for that sample, bit for bit. All memory is
+/// taken at construction (the taps of every start-up window length and a 2W-sample buffer);
+/// push() allocates nothing.
+class CausalDifferentiator {
+ public:
+  /// `options.causality` is ignored (the filter is causal). Validates like differentiate().
+  CausalDifferentiator(const DifferentiatorOptions& options, double dt_s);
+  double push(double x) noexcept;
+  std::size_t window() const { return w_; }
+  void reset() noexcept { size_ = 0, count_ = 0; }
+
+ private:
+  std::size_t w_;
+  double dt_s_;
+  std::vector<std::vector<double>> taps_;  // taps_[k]: window of k + 1 samples
+  std::vector<double> buffer_;             // 2W; the last min(count, W) samples end at size_
+  std::size_t size_ = 0;
+  std::size_t count_ = 0;
+};
+
 }  // namespace fogdrift::signal

@@ -1,0 +1,108 @@
+// The streaming compensator: the causal differentiator bit for bit, the batch path sample for
+// sample, and no allocation per sample.
+#include "fogdrift/compensator.hpp"
+
+#include <gtest/gtest.h>
+
+#include <atomic>
+#include <cmath>
+#include <cstdlib>
+#include <new>
+
+#include "fogdrift/random.hpp"
+#include "fogdrift/sim/scenarios.hpp"
+#include "fogdrift/train.hpp"
+
+// Counts allocations while g_counting is set (the rest of the suite is unaffected). The
+// replacements pair malloc with free, which GCC cannot see through.
+#pragma GCC diagnostic ignored "-Wmismatched-new-delete"
+namespace {
+std::atomic<bool> g_counting{false};
+std::atomic<long> g_allocations{0};
+}  // namespace
+
+void* operator new(std::size_t size) {
+  if (g_counting) ++g_allocations;
+  if (void* p = std::malloc(size ? size : 1)) return p;
+  throw std::bad_alloc();
+}
+void operator delete(void* p) noexcept {
+  std::free(p);
+}
+void operator delete(void* p, std::size_t) noexcept {
+  std::free(p);
+}
+
+namespace fogdrift {
+namespace {
+
+TEST(CausalDifferentiator, MatchesTheBatchFilterBitForBit) {
+  Rng rng(4);
+  std::vector<double> x(1000);
+  double level = 20;
+  for (double& v : x) v = std::round(100 * (level += 0.01 + rng.normal(0, 0.02))) / 100;
+  for (int order : {1, 2, 3}) {
+    signal::DifferentiatorOptions o;
+    o.window_s = 61;
+    o.poly_order = order;
+    o.causality = signal::Causality::causal;
+    const std::vector<double> batch = signal::differentiate(x, 0.5, o);
+    signal::CausalDifferentiator stream(o, 0.5);
+    for (std::size_t i = 0; i < x.size(); ++i)
+      ASSERT_EQ(stream.push(x[i]), batch[i]) << "order " << order << " sample " << i;
+  }
+}
+
+// A model trained on causal features, streamed over a test recording, gives the batch path's
+// drift exactly; nothing is allocated per sample.
+TEST(StreamingCompensator, EqualsTheBatchPathWithoutAllocating) {
+  sim::CalibrationOptions co;
+  co.temps_degc = {-20, 30};
+  co.repetitions = 3;
+  co.powered_s = 900;
+  const sim::SimulatedCampaign sc = sim::simulate_calibration(sim::Instrument{}, co);
+  std::vector<RecordingInput> train_inputs;
+  for (std::size_t i = 0; i < sc.recordings.size(); ++i) {
+    const CampaignEntry& e = sc.campaign.recordings[i];
+    if (e.role != Role::train) continue;
+    RecordingInput in;
+    in.recording = sc.recordings[i];
+    in.info.file = e.file;
+    in.info.repetition = e.repetition;
+    in.info.initial_temp_degc = e.initial_temp_degc;
+    in.latitude_deg = sc.campaign.latitude_deg;
+    in.true_azimuth_deg = e.true_azimuth_deg;
+    train_inputs.push_back(std::move(in));
+  }
+  DatasetOptions dataset;
+  dataset.features = FeatureSpec::parse("T,dT,grad,TdT(fog)");
+  dataset.preprocessing.rates.causality = signal::Causality::causal;
+  const Dataset data = build_dataset(train_inputs, dataset);
+  for (Method method : {Method::svr, Method::bp, Method::poly}) {
+    TrainOptions o;
+    o.method = method;
+    o.mlp.max_epochs = 100;
+    const CompensationModel model = train(data, dataset, o).model;
+    const Recording& test = sc.recordings.back();
+    const std::vector<double> batch = model.predict_dph(test);
+    StreamingCompensator stream(model, 1.0);
+    std::vector<double> streamed(test.size());
+    g_allocations = 0;
+    g_counting = true;
+    for (std::size_t i = 0; i < test.size(); ++i)
+      streamed[i] = stream.update({test.time_s[i], test.gyro_dph[i], test.temp_fog_degc[i],
+                                   test.temp_acc1_degc[i], test.temp_acc2_degc[i]});
+    g_counting = false;
+    EXPECT_EQ(g_allocations, 0) << to_string(method);
+    ASSERT_EQ(batch.size(), streamed.size());
+    for (std::size_t i = 0; i < batch.size(); ++i)
+      ASSERT_EQ(streamed[i], batch[i]) << to_string(method) << " sample " << i;
+    stream.reset();
+    EXPECT_EQ(stream.update({test.time_s[0], test.gyro_dph[0], test.temp_fog_degc[0],
+                             test.temp_acc1_degc[0], test.temp_acc2_degc[0]}),
+              batch[0]);
+  }
+}
+
+}  // namespace
+}  // namespace fogdrift
