@@ -16,5 +16,6 @@ void add_train(CLI::App& app);
 void add_evaluate(CLI::App& app);
 void add_compensate(CLI::App& app);
 void add_export_c(CLI::App& app);
+void add_northfind(CLI::App& app);
 
 }  // namespace fogdrift::app

@@ -314,5 +314,16 @@ check "bad prefix" run 1 "$fd" export-c "$work/bp.json" -o "$work/bad.h" --prefi
 check "prefix message" err_has "option --prefix: '4unit' is not a C identifier"
 check "no header on error" test ! -e "$work/bad.h"
 
+# --- northfind --------------------------------------------------------------------------------
+check "simulate northfind" run 0 "$fd" simulate northfind --out "$work/nf2" --temps -16,28 --seed 2
+check "northfind raw" run 0 "$fd" northfind "$work/nf2"
+check "northfind Table 3 view" out_has "Table 3 view, RMSE per initial temperature"
+check "northfind with a model" run 0 "$fd" northfind "$work/nf2" --model "$work/bp.json"
+check "northfind compensated column" out_has "comp. err °"
+check "northfind --json" run 0 "$fd" northfind --json "$work/nf2" --model "$work/svr.json"
+check "northfind json table" out_has '"compensated_rmse_deg"'
+check "northfind on a calibration campaign" run 1 "$fd" northfind "$work/small"
+check "northfind calibration message" err_has "no northfind or stable recordings"
+
 echo "cli: $passed passed, $failed failed"
 [ "$failed" -eq 0 ]
