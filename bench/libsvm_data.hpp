@@ -1,14 +1,28 @@
-// Dense fogdrift data as LIBSVM's svm_problem, for the benchmarks that run LIBSVM beside
-// fogdrift in one process.
+// Shared by the benchmarks that run LIBSVM beside fogdrift in one process: dense fogdrift data
+// as LIBSVM's svm_problem, and wall-clock helpers.
 #pragma once
 
 #include <svm.h>
 
+#include <algorithm>
+#include <chrono>
 #include <vector>
 
 #include "fogdrift/svr/kernel.hpp"
 
 namespace fogdrift::bench {
+
+using Clock = std::chrono::steady_clock;
+
+inline double seconds_since(Clock::time_point t) {
+  return std::chrono::duration<double>(Clock::now() - t).count();
+}
+
+inline double median(std::vector<double> v) {
+  std::sort(v.begin(), v.end());
+  const std::size_t n = v.size();
+  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
 
 struct LibsvmData {
   std::vector<svm_node> nodes;

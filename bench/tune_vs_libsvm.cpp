@@ -29,18 +29,10 @@
 
 namespace {
 
-using Clock = std::chrono::steady_clock;
 using namespace fogdrift;
-
-double seconds_since(Clock::time_point t) {
-  return std::chrono::duration<double>(Clock::now() - t).count();
-}
-
-double median(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  const std::size_t n = v.size();
-  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
+using fogdrift::bench::Clock;
+using fogdrift::bench::median;
+using fogdrift::bench::seconds_since;
 
 void quiet(const char*) {}
 

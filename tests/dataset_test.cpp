@@ -172,8 +172,7 @@ TEST(Dataset, StandardizerFromTrainingRowsAndConstantColumns) {
     Standardizer::fit(with_nan, 2, {"a_degc", "b_degc"});
     FAIL();
   } catch (const OptionError& e) {
-    EXPECT_NE(std::string(e.what()).find("column a_degc has a non-finite value"),
-              std::string::npos)
+    EXPECT_NE(std::string(e.what()).find("column a_degc has a non-finite value"), std::string::npos)
         << e.what();
   }
   const std::vector<double> y{1, 10, 2, 11, 3, 13};

@@ -9,6 +9,7 @@
 #include "fogdrift/atomic_file.hpp"
 #include "fogdrift/csv.hpp"
 #include "fogdrift/error.hpp"
+#include "fogdrift/eval/metrics.hpp"
 #include "fogdrift/model.hpp"
 
 namespace fogdrift::app {
@@ -21,15 +22,6 @@ struct CompensateArgs {
   bool json = false;
   bool quiet = false;
 };
-
-double sample_std(const std::vector<double>& x) {
-  if (x.size() < 2) return 0;
-  double m = 0, s = 0;
-  for (double v : x) m += v;
-  m /= static_cast<double>(x.size());
-  for (double v : x) s += (v - m) * (v - m);
-  return std::sqrt(s / static_cast<double>(x.size() - 1));
-}
 
 void run(const CompensateArgs& a) {
   const CompensationModel model = load_compensation_model(a.model);
@@ -61,6 +53,8 @@ void run(const CompensateArgs& a) {
     text += '\n';
   }
   write_text_atomically(a.output, text);
+  // STD of the gyro before and after (gyro − drift), as evaluate computes them.
+  const eval::CompensationMetrics m = eval::compensation_metrics(recording.gyro_dph, drift);
 
   if (a.json) {
     nlohmann::ordered_json j;
@@ -69,8 +63,8 @@ void run(const CompensateArgs& a) {
     j["input"] = a.input;
     j["output"] = a.output;
     j["samples"] = drift.size();
-    j["gyro_std_dph"] = sample_std(recording.gyro_dph);
-    j["gyro_comp_std_dph"] = sample_std(compensated);
+    j["gyro_std_dph"] = m.std_before_dph;
+    j["gyro_comp_std_dph"] = m.std_after_dph;
     j["drift_first_dph"] = drift.front();
     j["drift_last_dph"] = drift.back();
     std::cout << j.dump(2) << "\n";
@@ -81,7 +75,7 @@ void run(const CompensateArgs& a) {
         "  gyro STD {:.4f} °/h, compensated {:.4f} °/h (sample rate, noise included)\n"
         "  wrote {}\n",
         a.input, drift.size(), a.model, to_string(model.provenance.method), drift.front(),
-        drift.back(), sample_std(recording.gyro_dph), sample_std(compensated), a.output);
+        drift.back(), m.std_before_dph, m.std_after_dph, a.output);
   }
 }
 
