@@ -27,6 +27,9 @@ struct SimulateArgs {
   int findings = 0;
   double position_s = 90.0;
   double warmup_s = 7200.0;
+  std::string approach = "calibration";
+  double soak_s = 1200.0;
+  double ramp_degc_per_min = 1.0;
 };
 
 sim::Instrument load_instrument(const std::string& file) {
@@ -112,12 +115,24 @@ void add_simulate(CLI::App& app) {
   auto* nf = cmd->add_subcommand(
       "northfind",
       "Paper §4.2: at each initial temperature, power on and make four-position north-findings "
-      "back to back during the start-up; the true azimuth is in the manifest.");
+      "back to back during the start-up; the true azimuth is in the manifest.\n"
+      "How the instrument reaches each initial temperature (--approach):\n"
+      "  calibration  as in the calibration campaign: two cycles from 20 °C below, ramp, soak;\n"
+      "               it powers on not yet at the chamber's temperature   [default]\n"
+      "  sweep        the temperatures in the given order as one chamber sweep (ramp, soak)\n"
+      "  soaked       soaked to equilibrium at each temperature");
   add_common(nf, *args);
   nf->add_option("--temps", args->temps, "Initial temperatures, °C, comma-separated")
       ->default_str("-32,-16,-5,17,28,43,54");
   nf->add_option("--findings", args->findings, "Findings per recording")->default_str("5");
   nf->add_option("--position-s", args->position_s, "Seconds per position, rotation included")
+      ->capture_default_str();
+  nf->add_option("--approach", args->approach, "calibration, sweep or soaked")
+      ->capture_default_str();
+  nf->add_option("--soak-s", args->soak_s, "Unpowered soak before power-on, s")
+      ->capture_default_str();
+  nf->add_option("--ramp-degc-per-min", args->ramp_degc_per_min,
+                 "Chamber ramp between temperatures for --approach sweep, °C/min")
       ->capture_default_str();
   nf->callback([args] {
     const auto start = std::chrono::steady_clock::now();
@@ -125,6 +140,9 @@ void add_simulate(CLI::App& app) {
     if (!args->temps.empty()) o.temps_degc = parse_number_list(args->temps, "--temps");
     if (args->findings != 0) o.findings = args->findings;
     o.position_s = args->position_s;
+    o.approach = sim::approach_from_string(args->approach, "--approach");
+    o.soak_s = args->soak_s;
+    o.ramp_degc_per_min = args->ramp_degc_per_min;
     o.seed = args->seed;
     o.output_rate_hz = args->rate_hz;
     o.latitude_deg = args->latitude_deg;

@@ -61,11 +61,31 @@ std::string temperature_tag(double t) {
   return (t < 0 ? "m" : "") + body + "C";
 }
 
+std::string_view to_string(Approach approach) {
+  switch (approach) {
+    case Approach::soaked:
+      return "soaked";
+    case Approach::sweep:
+      return "sweep";
+    case Approach::calibration:
+      return "calibration";
+  }
+  return "?";
+}
+
+Approach approach_from_string(std::string_view name, const std::string& option) {
+  for (Approach a : {Approach::soaked, Approach::sweep, Approach::calibration}) {
+    if (name == to_string(a)) return a;
+  }
+  throw OptionError(option, fmt::format("'{}' is not one of soaked, sweep, calibration", name));
+}
+
 NorthfindOptions stable_defaults() {
   NorthfindOptions o;
   o.temps_degc = {25.0};
   o.findings = 20;
   o.warmup_s = 7200.0;
+  o.approach = Approach::soaked;
   return o;
 }
 
@@ -97,6 +117,13 @@ void validate(const NorthfindOptions& o) {
     throw OptionError("--position-s", fmt::format("{} s is outside [20, 36000]", o.position_s));
   }
   if (!(o.warmup_s >= 0.0)) throw OptionError("--warmup-s", "must be >= 0 s");
+  if (!(o.soak_s >= 0.0) || o.soak_s > 1e6) {
+    throw OptionError("--soak-s", fmt::format("{} s is outside [0, 1e6]", o.soak_s));
+  }
+  if (!(o.ramp_degc_per_min > 0.0) || o.ramp_degc_per_min > 100.0) {
+    throw OptionError("--ramp-degc-per-min",
+                      fmt::format("{} is outside (0, 100] °C/min", o.ramp_degc_per_min));
+  }
   check_rate(o.output_rate_hz);
   check_latitude(o.latitude_deg);
 }
@@ -179,6 +206,7 @@ SimulatedCampaign simulate_findings(const Instrument& instrument, const Northfin
                       fmt::format("{} s leaves less than 10 s of dwell after a {} s rotation",
                                   o.position_s, rotation_s));
   }
+  NodeTemps after_previous{};  // node temperatures when the previous recording ends
   for (std::size_t i = 0; i < o.temps_degc.size(); ++i) {
     const std::uint64_t seed = derive_seed(o.seed, stream + i);
     Rng setup_rng(derive_seed(seed, 100));
@@ -207,9 +235,40 @@ SimulatedCampaign simulate_findings(const Instrument& instrument, const Northfin
 
     NodeTemps start;
     start.fill(t0);  // soaked to equilibrium before power-on
+    if (o.approach == Approach::sweep && i > 0) {
+      // Off since the previous recording ended: the chamber ramps to t0, then soaks.
+      const double from = o.temps_degc[i - 1];
+      const double ramp_s = std::abs(t0 - from) / o.ramp_degc_per_min * 60.0;
+      const AirProfile between = [from, t0, ramp_s](double t) {
+        return ramp_s <= 0.0 ? t0 : from + std::min(1.0, t / ramp_s) * (t0 - from);
+      };
+      NfsSimulator chamber(instrument, after_previous, 0.0);
+      chamber.advance(ramp_s + o.soak_s, between, false);
+      start = chamber.temps_degc();
+    } else if (o.approach == Approach::calibration) {
+      // Two calibration cycles at t0 − 20 and t0 − 10 °C, then the ramp to t0 and the soak.
+      constexpr double kStepDegc = 10.0, kPoweredS = 1800.0, kRampS = 600.0;
+      start.fill(t0 - 2 * kStepDegc);
+      NfsSimulator chamber(instrument, start, 0.0);
+      for (int c = 2; c >= 1; --c) {
+        const double here = t0 - c * kStepDegc;
+        if (c == 1)
+          chamber.advance(
+              o.soak_s, [here](double) { return here; }, false);
+        const double power_on = chamber.time_s();
+        const AirProfile cycle = [here, power_on](double t) {
+          return here + std::clamp((t - power_on - kPoweredS) / kRampS, 0.0, 1.0) * kStepDegc;
+        };
+        chamber.advance(kPoweredS, cycle, true);
+        chamber.advance(kRampS, cycle, false);
+      }
+      chamber.advance(o.soak_s, air, false);
+      start = chamber.temps_degc();
+    }
     NfsSimulator nfs(instrument, start, 0.0);
     nfs.advance(o.warmup_s, air, true);
     Recording rec = nfs.record(setup, air, 0.0);
+    after_previous = nfs.temps_degc();
 
     CampaignEntry e;
     e.file = fmt::format("{}_{}.csv", scenario == Scenario::stable ? "stable" : "nf",

@@ -165,6 +165,35 @@ TEST(Northfind, StartUpIsWorseThanTheStableStageLikeThePaper) {
   EXPECT_GT(mean(startup), 1.6 * mean(stable));
 }
 
+// The calibration approach makes a north-finding start-up look like a calibration start-up: at a
+// calibration temperature, the thermometers at power-on match the calibration campaign's.
+TEST(Northfind, CalibrationApproachPowersOnLikeTheCalibrationCampaign) {
+  CalibrationOptions c;
+  c.chamber_setpoint_sd_degc = 0.0;
+  c.repetitions = 1;
+  c.test_repetitions = 0;
+  const auto cal = simulate_calibration(Instrument{}, c);
+  NorthfindOptions soaked, approach;
+  soaked.temps_degc = approach.temps_degc = {20.0};
+  soaked.findings = approach.findings = 1;
+  soaked.approach = Approach::soaked;
+  const auto nf_soaked = simulate_northfind(Instrument{}, soaked);
+  const auto nf = simulate_northfind(Instrument{}, approach);
+  const double cal_fog = cal.recordings[6].numeric_column("temp_fog_degc")[0];
+  ASSERT_EQ(cal.campaign.recordings[6].initial_temp_degc, 20.0);
+  EXPECT_LT(cal_fog, 17.0);  // calibration powers on well below the chamber's 20 °C
+  EXPECT_NEAR(nf.recordings[0].numeric_column("temp_fog_degc")[0], cal_fog, 0.5);  // of a 5 K lag
+  EXPECT_NEAR(nf_soaked.recordings[0].numeric_column("temp_fog_degc")[0], 20.0, 0.05);
+  // A sweep from 20 to 40 °C powers on at 40 °C below the chamber too.
+  NorthfindOptions sweep;
+  sweep.temps_degc = {20.0, 40.0};
+  sweep.findings = 1;
+  sweep.approach = Approach::sweep;
+  const auto nf_sweep = simulate_northfind(Instrument{}, sweep);
+  EXPECT_NEAR(nf_sweep.recordings[0].numeric_column("temp_fog_degc")[0], 20.0, 0.05);
+  EXPECT_LT(nf_sweep.recordings[1].numeric_column("temp_fog_degc")[0], 38.0);
+}
+
 TEST(Scenarios, ImpossibleOptionsNameTheOption) {
   CalibrationOptions c;
   c.repetitions = 0;
@@ -186,6 +215,18 @@ TEST(Scenarios, ImpossibleOptionsNameTheOption) {
   n = NorthfindOptions{};
   n.position_s = 15;
   EXPECT_THROW(simulate_northfind(Instrument{}, n), OptionError);
+  n = NorthfindOptions{};
+  n.ramp_degc_per_min = 0.0;
+  EXPECT_THROW(simulate_northfind(Instrument{}, n), OptionError);
+  n = NorthfindOptions{};
+  n.soak_s = -1.0;
+  EXPECT_THROW(simulate_northfind(Instrument{}, n), OptionError);
+  try {
+    approach_from_string("warm", "--approach");
+    FAIL();
+  } catch (const OptionError& e) {
+    EXPECT_NE(std::string(e.what()).find("--approach"), std::string::npos);
+  }
 }
 
 TEST(Scenarios, WrittenCampaignIsReadBackAndValid) {
