@@ -9,6 +9,7 @@ packages=(
   libgtest-dev libgmock-dev            # tests
   libsvm-dev libsvm-tools              # LIBSVM: the reference the SVR engine is tested and benchmarked against
   python3 python3-numpy python3-pywt python3-scipy   # PyWavelets and SciPy: references for the signal tests
+  gnuplot-nox                          # fogdrift paper's figures (PNG)
 )
 
 missing=()

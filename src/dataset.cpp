@@ -98,22 +98,27 @@ Dataset build_dataset(const std::vector<RecordingInput>& inputs, const DatasetOp
   return out;
 }
 
+RecordingInput recording_input(const Campaign& campaign, const CampaignEntry& entry,
+                               Recording recording) {
+  RecordingInput input;
+  input.recording = std::move(recording);
+  input.info.file = entry.file;
+  input.info.scenario = entry.scenario;
+  input.info.role = entry.role;
+  input.info.repetition = entry.repetition;
+  input.info.initial_temp_degc = entry.initial_temp_degc;
+  input.input_rate_dph = entry.input_rate_dph;
+  input.latitude_deg = campaign.latitude_deg;
+  input.true_azimuth_deg = entry.true_azimuth_deg;
+  return input;
+}
+
 Dataset build_dataset(const Campaign& campaign, std::optional<Role> role, Scenario scenario,
                       const DatasetOptions& options) {
   std::vector<RecordingInput> inputs;
   for (const auto& entry : campaign.recordings) {
     if (entry.scenario != scenario || (role && entry.role != *role)) continue;
-    RecordingInput input;
-    input.recording = read_recording(campaign.path_of(entry));
-    input.info.file = entry.file;
-    input.info.scenario = entry.scenario;
-    input.info.role = entry.role;
-    input.info.repetition = entry.repetition;
-    input.info.initial_temp_degc = entry.initial_temp_degc;
-    input.input_rate_dph = entry.input_rate_dph;
-    input.latitude_deg = campaign.latitude_deg;
-    input.true_azimuth_deg = entry.true_azimuth_deg;
-    inputs.push_back(std::move(input));
+    inputs.push_back(recording_input(campaign, entry, read_recording(campaign.path_of(entry))));
   }
   if (inputs.empty()) {
     throw InputError((campaign.dir / "campaign.json").string(), 0, 0,

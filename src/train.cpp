@@ -62,7 +62,10 @@ TrainResult train(const Dataset& data, const DatasetOptions& dataset, const Trai
       svr::Params params;
       tune::TuneOptions t = options.tune;
       if (options.method == Method::svr) {
-        params.kernel = svr::Kernel::rbf_gamma(1.0 / static_cast<double>(data.cols()));
+        if (options.svr_params)
+          params = *options.svr_params;
+        else
+          params.kernel = svr::Kernel::rbf_gamma(1.0 / static_cast<double>(data.cols()));
         params.tolerance = t.tolerance;
         s.fitness_value = tune::svr_loss(data, params, t);
       } else {

@@ -3,6 +3,8 @@
 #pragma once
 
 #include <CLI/CLI.hpp>
+#include <cstdint>
+#include <string>
 
 namespace fogdrift::app {
 
@@ -17,5 +19,28 @@ void add_evaluate(CLI::App& app);
 void add_compensate(CLI::App& app);
 void add_export_c(CLI::App& app);
 void add_northfind(CLI::App& app);
+void add_paper(CLI::App& app);
+
+/// fogdrift paper's options; fogdrift demo runs the same command with a smaller budget.
+struct PaperArgs {
+  std::string out;
+  bool force = false;
+  std::size_t seeds = 5;
+  std::uint64_t first_seed = 1;
+  std::size_t population = 10;
+  std::size_t iterations = 20;
+  std::string fitness = "cv";
+  std::string approach = "calibration";
+  std::string cal_temps;  ///< empty: the paper's −40 … 60 °C
+  std::string nf_temps;   ///< empty: the paper's seven
+  int findings = 5;
+  bool no_studies = false;
+  std::string instrument_file;
+  unsigned threads = 0;
+  bool json = false;
+  bool quiet = false;
+};
+void add_paper_options(CLI::App* cmd, PaperArgs& args);
+void run_paper_command(const PaperArgs& args);
 
 }  // namespace fogdrift::app

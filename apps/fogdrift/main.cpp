@@ -29,6 +29,7 @@ int main(int argc, char** argv) {
   fogdrift::app::add_compensate(app);
   fogdrift::app::add_export_c(app);
   fogdrift::app::add_northfind(app);
+  fogdrift::app::add_paper(app);
   fogdrift::app::add_demo(app);
   try {
     app.parse(argc, argv);

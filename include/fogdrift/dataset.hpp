@@ -78,6 +78,10 @@ std::vector<double> drift_target(const RecordingInput& input, const DatasetOptio
 Dataset build_dataset(const std::vector<RecordingInput>& inputs,
                       const DatasetOptions& options = {});
 
+/// One recording of a campaign with what the manifest knows about it.
+RecordingInput recording_input(const Campaign& campaign, const CampaignEntry& entry,
+                               Recording recording);
+
 /// Reads the campaign's recordings of `scenario` (and of `role`, if given) and builds a dataset;
 /// read errors name the recording file.
 Dataset build_dataset(const Campaign& campaign, std::optional<Role> role,

@@ -10,6 +10,8 @@
 // SVRs, the validation RMSE for BP, the CV RMSE of the chosen degree for the polynomial.
 #pragma once
 
+#include <optional>
+
 #include "fogdrift/mlp.hpp"
 #include "fogdrift/model.hpp"
 #include "fogdrift/tune.hpp"
@@ -21,6 +23,9 @@ struct TrainOptions {
   tune::TuneOptions tune;           ///< fitness, folds, search box, optimizer budget, seed, pool
   MlpOptions mlp;                   ///< BP settings; its seed is set from tune.optimizer.run.seed
   std::size_t poly_max_degree = 3;  ///< highest polynomial degree tried, 1 … 6
+  /// svr: fit with these instead of LIBSVM's defaults (a study refitting a tuned SVR on other
+  /// rows); the tolerance is tune.tolerance.
+  std::optional<svr::Params> svr_params;
 };
 
 struct TrainSummary {

@@ -1,0 +1,48 @@
+// A figure as data: panels of named (x, y) series. The same Figure is written as JSON for
+// machines and rendered to PNG by gnuplot for people, so the picture and the numbers cannot
+// disagree.
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace fogdrift::report {
+
+struct Series {
+  std::string name;
+  std::vector<double> x, y;
+  bool points = false;  ///< draw markers (and lines) instead of a plain line
+  bool dashed = false;  ///< a reference line
+};
+
+struct Panel {
+  std::string title;
+  std::string x_label, y_label;
+  std::vector<Series> series;
+};
+
+struct Figure {
+  std::string name;   ///< file stem: NAME.json, NAME.png
+  std::string title;  ///< printed above the panels
+  std::vector<Panel> panels;
+};
+
+/// {"name", "title", "panels": [{"title", "x_label", "y_label", "series": [{"name", "x": [...],
+/// "y": [...]}]}]}; non-finite values are written as null.
+std::string to_json(const Figure& figure);
+
+/// A self-contained gnuplot script (data inline) that draws `figure` into `png_path` with the
+/// pngcairo terminal, panels stacked vertically.
+std::string to_gnuplot(const Figure& figure, const std::filesystem::path& png_path);
+
+/// The gnuplot program to use: $FOGDRIFT_GNUPLOT if set, else "gnuplot" when it is on PATH;
+/// empty when there is none.
+std::string find_gnuplot();
+
+/// Runs `gnuplot` on the figure's script, writing `png_path`. Returns an empty string on success,
+/// else what went wrong (gnuplot's exit status, or a missing PNG).
+std::string render_png(const Figure& figure, const std::filesystem::path& png_path,
+                       const std::string& gnuplot);
+
+}  // namespace fogdrift::report

@@ -1,0 +1,39 @@
+// The paper experiment's results as people and machines read them: report.md and JSON, with the
+// paper's own numbers (METHOD.md §3) beside fogdrift's means over seeds.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "fogdrift/report/paper.hpp"
+
+namespace fogdrift::report {
+
+/// Mean and sample standard deviation (SD 0 for one value).
+struct MeanSd {
+  double mean = 0, sd = 0;
+};
+MeanSd mean_sd(const std::vector<double>& values);
+
+/// The paper's goals, judged on the means over seeds.
+struct PaperVerdict {
+  double std_ratio = 0;             ///< SSA-SVR compensated STD / denoised STD (goal ≤ 1/4)
+  bool svr_better_than_bp = false;  ///< every SVR method's STD below BP's
+  double northfind_ratio = 0;       ///< SSA-SVR mean RMSE / raw mean RMSE (goal ≤ 1/2)
+  double stable_ratio = 0;          ///< SSA-SVR mean RMSE / stable RMSE (goal ≤ 1.2)
+};
+PaperVerdict verdict(const PaperResult& result);
+
+/// The machine-readable summary: {"table1": {"C", "C_sd", "sigma", "sigma_sd"},
+/// "table2": {METHOD: {"mae_dph", "mae_dph_sd", "std_dph", "std_dph_sd"}}, "table3":
+/// {"temps_degc", METHOD: {"rmse_deg", "rmse_deg_sd", "mean_deg", "mean_deg_sd"}},
+/// "stable_rmse_deg", "stable_rmse_deg_sd", "seeds", "elapsed_s", plus "seed_values", "goals",
+/// "studies", "settings" and "per_seed"}, METHOD among "denoised" (Table 2) or "raw" (Table 3)
+/// and kPaperMethods; every value is the mean over seeds, with its SD in the "_sd" companion.
+std::string paper_json(const PaperResult& result);
+
+/// report.md: settings, Tables 1–3 as mean ± SD beside the paper's values, the paper's goals,
+/// the two studies, per-seed figures and the plots (linked as NAME.png).
+std::string paper_markdown(const PaperResult& result);
+
+}  // namespace fogdrift::report

@@ -1,0 +1,164 @@
+#include "fogdrift/report/figure.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <system_error>
+
+#include "fogdrift/csv.hpp"
+
+namespace fogdrift::report {
+namespace {
+
+nlohmann::ordered_json numbers(const std::vector<double>& v) {
+  nlohmann::ordered_json a = nlohmann::ordered_json::array();
+  for (double x : v) {
+    if (std::isfinite(x))
+      a.push_back(x);
+    else
+      a.push_back(nullptr);
+  }
+  return a;
+}
+
+// gnuplot strings in double quotes: escape backslashes and quotes.
+std::string quoted(const std::string& s) {
+  std::string out = "\"";
+  for (char c : s) {
+    if (c == '"' || c == '\\') out += '\\';
+    out += c;
+  }
+  return out + "\"";
+}
+
+// A shell word in single quotes.
+std::string shell_quoted(const std::string& s) {
+  std::string out = "'";
+  for (char c : s) {
+    if (c == '\'')
+      out += "'\\''";
+    else
+      out += c;
+  }
+  return out + "'";
+}
+
+}  // namespace
+
+std::string to_json(const Figure& figure) {
+  nlohmann::ordered_json j;
+  j["name"] = figure.name;
+  j["title"] = figure.title;
+  j["panels"] = nlohmann::ordered_json::array();
+  for (const Panel& p : figure.panels) {
+    nlohmann::ordered_json pj;
+    pj["title"] = p.title;
+    pj["x_label"] = p.x_label;
+    pj["y_label"] = p.y_label;
+    pj["series"] = nlohmann::ordered_json::array();
+    for (const Series& s : p.series) {
+      pj["series"].push_back({{"name", s.name}, {"x", numbers(s.x)}, {"y", numbers(s.y)}});
+    }
+    j["panels"].push_back(std::move(pj));
+  }
+  return j.dump(1) + "\n";
+}
+
+std::string to_gnuplot(const Figure& figure, const std::filesystem::path& png_path) {
+  std::ostringstream g;
+  const std::size_t n = figure.panels.size();
+  const int height = static_cast<int>(120 + 330 * std::max<std::size_t>(n, 1));
+  g << "set terminal pngcairo size 1000," << height << " noenhanced font 'DejaVu Sans,10'\n";
+  g << "set output " << quoted(png_path.string()) << "\n";
+  g << "set encoding utf8\nset grid lc rgb '#dddddd'\nset key outside right top\n";
+  g << "set datafile missing 'NaN'\n";
+  // Data blocks first, one per series.
+  for (std::size_t p = 0; p < n; ++p) {
+    const Panel& panel = figure.panels[p];
+    for (std::size_t s = 0; s < panel.series.size(); ++s) {
+      const Series& series = panel.series[s];
+      g << "$d" << p << "_" << s << " << EOD\n";
+      for (std::size_t i = 0; i < series.x.size() && i < series.y.size(); ++i) {
+        const bool ok = std::isfinite(series.x[i]) && std::isfinite(series.y[i]);
+        g << (ok ? csv::format_number(series.x[i]) : "NaN") << ' '
+          << (ok ? csv::format_number(series.y[i]) : "NaN") << "\n";
+      }
+      g << "EOD\n";
+    }
+  }
+  g << "set multiplot layout " << std::max<std::size_t>(n, 1) << ",1 title " << quoted(figure.title)
+    << " font ',12'\n";
+  for (std::size_t p = 0; p < n; ++p) {
+    const Panel& panel = figure.panels[p];
+    g << "set title " << quoted(panel.title) << "\n";
+    g << "set xlabel " << quoted(panel.x_label) << "\n";
+    g << "set ylabel " << quoted(panel.y_label) << "\n";
+    if (panel.series.empty()) {
+      g << "plot NaN notitle\n";
+      continue;
+    }
+    g << "plot ";
+    for (std::size_t s = 0; s < panel.series.size(); ++s) {
+      const Series& series = panel.series[s];
+      if (s) g << ", \\\n     ";
+      g << "$d" << p << "_" << s << " using 1:2 with "
+        << (series.points ? "linespoints pt 7 ps 0.8" : "lines") << " lw 1.5"
+        << (series.dashed ? " dt 2 lc rgb 'black'" : "") << " title " << quoted(series.name);
+    }
+    g << "\n";
+  }
+  g << "unset multiplot\nunset output\n";
+  return g.str();
+}
+
+std::string find_gnuplot() {
+  if (const char* env = std::getenv("FOGDRIFT_GNUPLOT"); env && *env) return env;
+  const char* path = std::getenv("PATH");
+  if (!path) return {};
+  std::stringstream dirs(path);
+  std::string dir;
+  while (std::getline(dirs, dir, ':')) {
+    if (dir.empty()) continue;
+    const std::filesystem::path candidate = std::filesystem::path(dir) / "gnuplot";
+    std::error_code ec;
+    if (std::filesystem::is_regular_file(candidate, ec)) return candidate.string();
+  }
+  return {};
+}
+
+std::string render_png(const Figure& figure, const std::filesystem::path& png_path,
+                       const std::string& gnuplot) {
+  if (gnuplot.empty()) return "no gnuplot found (install gnuplot-nox or set FOGDRIFT_GNUPLOT)";
+  const std::string script = to_gnuplot(figure, png_path);
+  // gnuplot's messages go to a log beside the PNG, read back only when it fails.
+  std::filesystem::path log = png_path;
+  log += ".log";
+  const std::string command = shell_quoted(gnuplot) + " 2> " + shell_quoted(log.string());
+  FILE* pipe = ::popen(command.c_str(), "w");
+  if (!pipe) return fmt::format("could not start {}", gnuplot);
+  const bool written = std::fwrite(script.data(), 1, script.size(), pipe) == script.size();
+  const int status = ::pclose(pipe);
+  std::string messages;
+  {
+    std::ifstream in(log);
+    std::getline(in, messages, '\0');
+  }
+  std::error_code ec;
+  std::filesystem::remove(log, ec);
+  if (!written || status != 0) {
+    return fmt::format("{} failed on {} (exit status {}): {}", gnuplot,
+                       png_path.filename().string(), status, messages);
+  }
+  if (!std::filesystem::is_regular_file(png_path, ec) ||
+      std::filesystem::file_size(png_path, ec) == 0) {
+    return fmt::format("{} wrote no {}", gnuplot, png_path.filename().string());
+  }
+  return {};
+}
+
+}  // namespace fogdrift::report

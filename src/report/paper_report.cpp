@@ -1,0 +1,376 @@
+#include "fogdrift/report/paper_report.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <map>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "fogdrift/version.hpp"
+
+namespace fogdrift::report {
+namespace {
+
+// The paper's values (METHOD.md §3).
+constexpr double kPaperC = 1.0520, kPaperSigma = 0.9506;
+constexpr double kPaperDenoisedStd = 0.0134, kPaperStableRmse = 0.012;
+const std::map<std::string, std::pair<double, double>> kPaperTable2 = {
+    {"bp", {0.0056, 0.0073}}, {"svr", {0.0030, 0.0035}}, {"ssa-svr", {0.0025, 0.0031}}};
+const std::vector<double> kPaperTemps = {-32, -16, -5, 17, 28, 43, 54};
+const std::map<std::string, std::vector<double>> kPaperTable3 = {
+    {"raw", {0.0284, 0.0181, 0.0216, 0.0205, 0.0303, 0.0171, 0.0106, 0.0209}},
+    {"bp", {0.0284, 0.0113, 0.0143, 0.0137, 0.0209, 0.0106, 0.0100, 0.0156}},
+    {"pso-svr", {0.0146, 0.0088, 0.0120, 0.0144, 0.0186, 0.0054, 0.0060, 0.0114}},
+    {"gwo-svr", {0.0110, 0.0051, 0.0132, 0.0093, 0.0194, 0.0077, 0.0096, 0.0108}},
+    {"ssa-svr", {0.0113, 0.0087, 0.0117, 0.0131, 0.0170, 0.0046, 0.0045, 0.0101}}};
+
+template <class Get>
+MeanSd over_seeds(const PaperResult& r, Get get) {
+  std::vector<double> v;
+  for (const SeedRun& s : r.seeds) v.push_back(get(s));
+  return mean_sd(v);
+}
+
+double hyper(const MethodRun& m, const std::string& name) {
+  for (const auto& [n, v] : m.hyperparameters)
+    if (n == name) return v;
+  return std::nan("");
+}
+
+std::string pm(const MeanSd& m, int digits = 4) {
+  return fmt::format("{:.{}f} ± {:.{}f}", m.mean, digits, m.sd, digits);
+}
+
+std::string paper_or_dash(const std::map<std::string, std::pair<double, double>>& table,
+                          const std::string& method, bool second) {
+  const auto it = table.find(method);
+  if (it == table.end()) return "–";
+  return fmt::format("{:.4f}", second ? it->second.second : it->second.first);
+}
+
+bool same_temps(const std::vector<double>& a) {
+  return a == kPaperTemps;
+}
+
+std::string yes_no(bool ok) {
+  return ok ? "**holds**" : "**does not hold**";
+}
+
+}  // namespace
+
+MeanSd mean_sd(const std::vector<double>& values) {
+  MeanSd r;
+  if (values.empty()) return r;
+  double s = 0;
+  for (double v : values) s += v;
+  r.mean = s / static_cast<double>(values.size());
+  if (values.size() < 2) return r;
+  double ss = 0;
+  for (double v : values) ss += (v - r.mean) * (v - r.mean);
+  r.sd = std::sqrt(ss / static_cast<double>(values.size() - 1));
+  return r;
+}
+
+PaperVerdict verdict(const PaperResult& r) {
+  PaperVerdict v;
+  const double ssa_std =
+      over_seeds(r, [](const SeedRun& s) { return s.method("ssa-svr").table2.std_after_dph; }).mean;
+  const double denoised = over_seeds(r, [](const SeedRun& s) { return s.denoised_std_dph; }).mean;
+  const double bp_std =
+      over_seeds(r, [](const SeedRun& s) { return s.method("bp").table2.std_after_dph; }).mean;
+  v.std_ratio = ssa_std / denoised;
+  v.svr_better_than_bp = true;
+  for (const char* m : {"svr", "pso-svr", "gwo-svr", "ssa-svr"}) {
+    const double std =
+        over_seeds(r, [m](const SeedRun& s) { return s.method(m).table2.std_after_dph; }).mean;
+    if (!(std < bp_std)) v.svr_better_than_bp = false;
+  }
+  const double ssa_nf =
+      over_seeds(r, [](const SeedRun& s) { return s.method("ssa-svr").mean_rmse_deg; }).mean;
+  v.northfind_ratio =
+      ssa_nf / over_seeds(r, [](const SeedRun& s) { return s.raw_mean_rmse_deg; }).mean;
+  v.stable_ratio = ssa_nf / over_seeds(r, [](const SeedRun& s) { return s.stable_rmse_deg; }).mean;
+  return v;
+}
+
+std::string paper_json(const PaperResult& r) {
+  using json = nlohmann::ordered_json;
+  json j;
+  const MeanSd c = over_seeds(r, [](const SeedRun& s) { return hyper(s.method("ssa-svr"), "C"); });
+  const MeanSd sg =
+      over_seeds(r, [](const SeedRun& s) { return hyper(s.method("ssa-svr"), "sigma"); });
+  j["table1"] = {{"C", c.mean}, {"C_sd", c.sd}, {"sigma", sg.mean}, {"sigma_sd", sg.sd}};
+
+  json t2;
+  const MeanSd den = over_seeds(r, [](const SeedRun& s) { return s.denoised_std_dph; });
+  t2["denoised"] = {{"std_dph", den.mean}, {"std_dph_sd", den.sd}};
+  for (std::string_view name : kPaperMethods) {
+    const std::string m(name);
+    const MeanSd mae = over_seeds(r, [&](const SeedRun& s) { return s.method(m).table2.mae_dph; });
+    const MeanSd sd =
+        over_seeds(r, [&](const SeedRun& s) { return s.method(m).table2.std_after_dph; });
+    t2[m] = {
+        {"mae_dph", mae.mean}, {"mae_dph_sd", mae.sd}, {"std_dph", sd.mean}, {"std_dph_sd", sd.sd}};
+  }
+  j["table2"] = t2;
+
+  json t3;
+  t3["temps_degc"] = r.northfind_temps_degc;
+  auto row = [&](auto per, auto mean) {
+    json x;
+    std::vector<double> m, sd;
+    for (std::size_t k = 0; k < r.northfind_temps_degc.size(); ++k) {
+      const MeanSd v = over_seeds(r, [&](const SeedRun& s) { return per(s)[k]; });
+      m.push_back(v.mean);
+      sd.push_back(v.sd);
+    }
+    const MeanSd mm = over_seeds(r, mean);
+    x["rmse_deg"] = m;
+    x["rmse_deg_sd"] = sd;
+    x["mean_deg"] = mm.mean;
+    x["mean_deg_sd"] = mm.sd;
+    return x;
+  };
+  t3["raw"] = row([](const SeedRun& s) -> const std::vector<double>& { return s.raw_rmse_deg; },
+                  [](const SeedRun& s) { return s.raw_mean_rmse_deg; });
+  for (std::string_view name : kPaperMethods) {
+    const std::string m(name);
+    t3[m] =
+        row([&](const SeedRun& s) -> const std::vector<double>& { return s.method(m).rmse_deg; },
+            [&](const SeedRun& s) { return s.method(m).mean_rmse_deg; });
+  }
+  j["table3"] = t3;
+  const MeanSd st = over_seeds(r, [](const SeedRun& s) { return s.stable_rmse_deg; });
+  j["stable_rmse_deg"] = st.mean;
+  j["stable_rmse_deg_sd"] = st.sd;
+  j["seeds"] = r.seeds.size();
+  j["elapsed_s"] = r.seconds;
+  std::vector<std::uint64_t> seeds;
+  for (const SeedRun& s : r.seeds) seeds.push_back(s.seed);
+  j["seed_values"] = seeds;
+
+  const PaperVerdict v = verdict(r);
+  j["goals"] = {{"ssa_std_over_denoised", v.std_ratio},
+                {"ssa_std_at_most_quarter", v.std_ratio <= 0.25},
+                {"svr_methods_better_than_bp", v.svr_better_than_bp},
+                {"ssa_northfind_over_raw", v.northfind_ratio},
+                {"ssa_northfind_halved", v.northfind_ratio <= 0.5},
+                {"ssa_northfind_over_stable", v.stable_ratio},
+                {"ssa_northfind_within_20pct_of_stable", v.stable_ratio <= 1.2}};
+
+  json studies;
+  studies["loto"] = json::array();
+  for (const LotoRow& l : r.loto) {
+    studies["loto"].push_back({{"temp_degc", l.temp_degc},
+                               {"method", l.method},
+                               {"denoised_std_dph", l.denoised_std_dph},
+                               {"std_all_dph", l.std_all_dph},
+                               {"std_left_out_dph", l.std_loto_dph},
+                               {"mae_all_dph", l.mae_all_dph},
+                               {"mae_left_out_dph", l.mae_loto_dph}});
+  }
+  studies["fitness"] = json::array();
+  for (const FitnessRow& f : r.fitness) {
+    studies["fitness"].push_back({{"fitness", f.fitness},
+                                  {"C", f.c},
+                                  {"sigma", f.sigma},
+                                  {"fitness_value", f.fitness_value},
+                                  {"std_dph", f.std_dph},
+                                  {"mae_dph", f.mae_dph},
+                                  {"northfind_mean_deg", f.mean_rmse_deg}});
+  }
+  j["studies"] = studies;
+
+  const PaperOptions& o = r.options;
+  j["settings"] = {{"first_seed", o.first_seed},
+                   {"population", o.population},
+                   {"iterations", o.iterations},
+                   {"fitness", std::string(tune::to_string(o.fitness))},
+                   {"northfind_approach", std::string(sim::to_string(o.northfind.approach))},
+                   {"studies", o.studies},
+                   {"fogdrift_version", kVersion}};
+  json per = json::array();
+  for (const SeedRun& s : r.seeds) {
+    json x;
+    x["seed"] = s.seed;
+    x["denoised_std_dph"] = s.denoised_std_dph;
+    x["raw_mean_rmse_deg"] = s.raw_mean_rmse_deg;
+    x["stable_rmse_deg"] = s.stable_rmse_deg;
+    for (const MethodRun& m : s.methods) {
+      json h;
+      for (const auto& [n, val] : m.hyperparameters) h[n] = val;
+      x["methods"][m.method] = {{"std_dph", m.table2.std_after_dph},
+                                {"mae_dph", m.table2.mae_dph},
+                                {"mean_rmse_deg", m.mean_rmse_deg},
+                                {"fitness_value", m.fitness_value},
+                                {"hyperparameters", h},
+                                {"train_s", m.train_seconds}};
+    }
+    x["elapsed_s"] = s.seconds;
+    per.push_back(x);
+  }
+  j["per_seed"] = per;
+  return j.dump(2) + "\n";
+}
+
+std::string paper_markdown(const PaperResult& r) {
+  std::ostringstream md;
+  const PaperOptions& o = r.options;
+  const std::size_t n = r.seeds.size();
+  md << "# The paper's experiment on the simulated instrument\n\n";
+  md << fmt::format(
+      "fogdrift {}; {} seed{} ({} … {}); tuned SVRs: population {} × {} iterations, fitness "
+      "`{}`; north-finding start-ups approached as `{}`; {:.0f} s.\n"
+      "Values are mean ± SD over the seeds; every seed simulates new campaigns and runs new "
+      "searches.\n\n",
+      kVersion, n, n == 1 ? "" : "s", r.seeds.front().seed, r.seeds.back().seed, o.population,
+      o.iterations, tune::to_string(o.fitness), sim::to_string(o.northfind.approach), r.seconds);
+
+  md << "## Table 1 — SSA-SVR's tuned parameters\n\n| | fogdrift | paper |\n|---|---|---|\n";
+  md << fmt::format(
+      "| C | {} | {:.4f} |\n",
+      pm(over_seeds(r, [](const SeedRun& s) { return hyper(s.method("ssa-svr"), "C"); }), 2),
+      kPaperC);
+  md << fmt::format(
+      "| σ | {} | {:.4f} |\n\n",
+      pm(over_seeds(r, [](const SeedRun& s) { return hyper(s.method("ssa-svr"), "sigma"); }), 3),
+      kPaperSigma);
+  md << "fogdrift's C is for the standardised target and σ for standardised features; the "
+        "paper does not say how its data were scaled, so only their order is comparable.\n\n";
+
+  md << "## Table 2 — compensation on the test repetition (°/h)\n\n"
+        "| method | MAE | paper | STD | paper |\n|---|---|---|---|---|\n";
+  md << fmt::format("| denoised data | – | – | {} | {:.4f} |\n",
+                    pm(over_seeds(r, [](const SeedRun& s) { return s.denoised_std_dph; })),
+                    kPaperDenoisedStd);
+  for (std::string_view name : kPaperMethods) {
+    const std::string m(name);
+    md << fmt::format(
+        "| {} | {} | {} | {} | {} |\n", m,
+        pm(over_seeds(r, [&](const SeedRun& s) { return s.method(m).table2.mae_dph; })),
+        paper_or_dash(kPaperTable2, m, false),
+        pm(over_seeds(r, [&](const SeedRun& s) { return s.method(m).table2.std_after_dph; })),
+        paper_or_dash(kPaperTable2, m, true));
+  }
+  md << "\n";
+
+  md << "## Table 3 — north-finding RMSE during the start-up (°)\n\n| method |";
+  for (double t : r.northfind_temps_degc) md << fmt::format(" {} °C |", t);
+  md << " mean | paper mean |\n|---|";
+  for (std::size_t k = 0; k < r.northfind_temps_degc.size(); ++k) md << "---|";
+  md << "---|---|\n";
+  auto table3_row = [&](const std::string& label, auto per, auto mean) {
+    md << "| " << label << " |";
+    for (std::size_t k = 0; k < r.northfind_temps_degc.size(); ++k)
+      md << fmt::format(" {:.4f} |",
+                        over_seeds(r, [&](const SeedRun& s) { return per(s)[k]; }).mean);
+    const auto it = kPaperTable3.find(label);
+    md << fmt::format(" {} | {} |\n", pm(over_seeds(r, mean)),
+                      it == kPaperTable3.end() ? "–" : fmt::format("{:.4f}", it->second.back()));
+  };
+  table3_row(
+      "raw", [](const SeedRun& s) -> const std::vector<double>& { return s.raw_rmse_deg; },
+      [](const SeedRun& s) { return s.raw_mean_rmse_deg; });
+  for (std::string_view name : kPaperMethods) {
+    const std::string m(name);
+    table3_row(
+        m, [&](const SeedRun& s) -> const std::vector<double>& { return s.method(m).rmse_deg; },
+        [&](const SeedRun& s) { return s.method(m).mean_rmse_deg; });
+  }
+  md << fmt::format(
+      "\nStable stage (20 findings at 25 °C after a 2-hour warm-up): {} ° "
+      "(paper: {:.3f}°).\n",
+      pm(over_seeds(r, [](const SeedRun& s) { return s.stable_rmse_deg; })), kPaperStableRmse);
+  if (same_temps(r.northfind_temps_degc)) {
+    md << "\nThe paper's Table 3 at the same temperatures:\n\n| method |";
+    for (double t : kPaperTemps) md << fmt::format(" {} °C |", t);
+    md << " mean |\n|---|";
+    for (std::size_t k = 0; k <= kPaperTemps.size(); ++k) md << "---|";
+    md << "\n";
+    for (const char* m : {"raw", "bp", "pso-svr", "gwo-svr", "ssa-svr"}) {
+      md << "| " << m << " |";
+      for (double v : kPaperTable3.at(m)) md << fmt::format(" {:.4f} |", v);
+      md << "\n";
+    }
+  }
+  md << "\nEach RMSE is over five findings, so one temperature's value scatters by about ±30 % "
+        "from seed to seed; the means over temperatures and seeds are what to compare.\n\n";
+
+  const PaperVerdict v = verdict(r);
+  md << "## The paper's claims, on these runs\n\n";
+  md << fmt::format(
+      "- SSA-SVR's compensated STD is {:.2f} of the denoised STD (paper {:.2f}; goal at most "
+      "0.25): {}.\n",
+      v.std_ratio, 0.0031 / 0.0134, yes_no(v.std_ratio <= 0.25));
+  md << fmt::format("- Every SVR method's compensated STD below BP's: {}.\n",
+                    yes_no(v.svr_better_than_bp));
+  md << fmt::format(
+      "- SSA-SVR's mean start-up north-finding RMSE is {:.2f} of the raw one (paper {:.2f}; goal "
+      "at most 0.5): {}.\n",
+      v.northfind_ratio, 0.0101 / 0.0209, yes_no(v.northfind_ratio <= 0.5));
+  md << fmt::format(
+      "- SSA-SVR's mean start-up RMSE is {:.2f} times the stable stage's (paper {:.2f}; goal at "
+      "most 1.2): {}.\n\n",
+      v.stable_ratio, 0.0101 / 0.012, yes_no(v.stable_ratio <= 1.2));
+
+  if (!r.loto.empty()) {
+    md << fmt::format(
+        "## Leave one temperature out (seed {})\n\n"
+        "Each model is trained without any recording of one calibration temperature and tested "
+        "on that temperature's test recording; SSA-SVR keeps the C and σ it was tuned to. "
+        "Compensated STD, °/h:\n\n"
+        "| T0 °C | denoised | SSA-SVR, all | SSA-SVR, left out | BP, all | BP, left out |\n"
+        "|---|---|---|---|---|---|\n",
+        r.seeds.front().seed);
+    std::vector<double> ssa_all, ssa_out, bp_all, bp_out;
+    for (std::size_t k = 0; k + 1 < r.loto.size(); k += 2) {
+      const LotoRow& a = r.loto[k];
+      const LotoRow& b = r.loto[k + 1];
+      md << fmt::format("| {} | {:.4f} | {:.4f} | {:.4f} | {:.4f} | {:.4f} |\n", a.temp_degc,
+                        a.denoised_std_dph, a.std_all_dph, a.std_loto_dph, b.std_all_dph,
+                        b.std_loto_dph);
+      ssa_all.push_back(a.std_all_dph);
+      ssa_out.push_back(a.std_loto_dph);
+      bp_all.push_back(b.std_all_dph);
+      bp_out.push_back(b.std_loto_dph);
+    }
+    md << fmt::format("| mean | | {:.4f} | {:.4f} | {:.4f} | {:.4f} |\n\n", mean_sd(ssa_all).mean,
+                      mean_sd(ssa_out).mean, mean_sd(bp_all).mean, mean_sd(bp_out).mean);
+    md << "The ends of the range (−40 and 60 °C) left out ask the models to extrapolate; inside "
+          "it, the neighbours 10 °C either side carry the model.\n\n";
+  }
+  if (!r.fitness.empty()) {
+    md << fmt::format(
+        "## Training-loss against cross-validation fitness (SSA-SVR, seed {})\n\n"
+        "| fitness | C | σ | own fitness | STD °/h | MAE °/h | north-finding mean ° |\n"
+        "|---|---|---|---|---|---|---|\n",
+        r.seeds.front().seed);
+    for (const FitnessRow& f : r.fitness) {
+      md << fmt::format("| {} | {:.3g} | {:.3g} | {:.4f} | {:.4f} | {:.4f} | {:.4f} |\n", f.fitness,
+                        f.c, f.sigma, f.fitness_value, f.std_dph, f.mae_dph, f.mean_rmse_deg);
+    }
+    md << "\n`train` is the paper's fitness, the RMSE on the training rows themselves; `cv` "
+          "holds out whole repetitions. The own-fitness column is each one's RMSE on the "
+          "standardised target.\n\n";
+  }
+  md << "## Per seed\n\n| seed | denoised STD | SSA-SVR STD | BP STD | raw NF ° | SSA-SVR NF ° "
+        "| stable ° | SSA-SVR C | σ | s |\n|---|---|---|---|---|---|---|---|---|---|\n";
+  for (const SeedRun& s : r.seeds) {
+    const MethodRun& ssa = s.method("ssa-svr");
+    md << fmt::format(
+        "| {} | {:.4f} | {:.4f} | {:.4f} | {:.4f} | {:.4f} | {:.4f} | {:.3g} | {:.3g} | {:.0f} "
+        "|\n",
+        s.seed, s.denoised_std_dph, ssa.table2.std_after_dph, s.method("bp").table2.std_after_dph,
+        s.raw_mean_rmse_deg, ssa.mean_rmse_deg, s.stable_rmse_deg, hyper(ssa, "C"),
+        hyper(ssa, "sigma"), s.seconds);
+  }
+  md << "\n## Figures\n\n";
+  for (const Figure& f : r.figures) {
+    md << fmt::format("![{}]({}.png)\n\n*{}* — data: `{}.json`\n\n", f.title, f.name, f.title,
+                      f.name);
+  }
+  return md.str();
+}
+
+}  // namespace fogdrift::report

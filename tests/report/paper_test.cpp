@@ -1,0 +1,167 @@
+#include "fogdrift/report/paper.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <nlohmann/json.hpp>
+
+#include "fogdrift/error.hpp"
+#include "fogdrift/report/paper_report.hpp"
+
+namespace fogdrift::report {
+namespace {
+
+// A small experiment: three calibration temperatures, two north-finding temperatures, a tiny
+// search. It keeps every structure of the full one.
+PaperOptions small_options() {
+  PaperOptions o;
+  o.seeds = 2;
+  o.population = 5;
+  o.iterations = 2;
+  o.calibration.temps_degc = {0, 20, 40};
+  o.northfind.temps_degc = {10, 30};
+  o.northfind.findings = 2;
+  o.stable.findings = 4;
+  o.stable.warmup_s = 1800;
+  return o;
+}
+
+const PaperResult& small_run() {
+  static const PaperResult result = [] {
+    ThreadPool pool(2);
+    PaperOptions o = small_options();
+    o.pool = &pool;
+    return run_paper(o);
+  }();
+  return result;
+}
+
+TEST(Paper, RunsEveryMethodOnEverySeed) {
+  const PaperResult& r = small_run();
+  ASSERT_EQ(r.seeds.size(), 2u);
+  EXPECT_EQ(r.seeds[0].seed, 1u);
+  EXPECT_EQ(r.seeds[1].seed, 2u);
+  for (const SeedRun& s : r.seeds) {
+    ASSERT_EQ(s.methods.size(), std::size(kPaperMethods));
+    EXPECT_GT(s.denoised_std_dph, 0.001);
+    EXPECT_EQ(s.raw_rmse_deg.size(), 2u);
+    EXPECT_GT(s.stable_rmse_deg, 0.0);
+    for (const MethodRun& m : s.methods) {
+      EXPECT_EQ(m.rmse_deg.size(), 2u) << m.method;
+      // Every model compensates part of the drift on the test repetition.
+      EXPECT_LT(m.table2.std_after_dph, s.denoised_std_dph) << m.method;
+      EXPECT_EQ(m.table2.std_before_dph, s.denoised_std_dph) << m.method;
+      EXPECT_TRUE(std::isfinite(m.mean_rmse_deg)) << m.method;
+    }
+  }
+  // The two seeds simulate different campaigns.
+  EXPECT_NE(r.seeds[0].denoised_std_dph, r.seeds[1].denoised_std_dph);
+  // Studies on the first seed: every calibration temperature, SSA-SVR and BP.
+  ASSERT_EQ(r.loto.size(), 6u);
+  EXPECT_EQ(r.loto[0].temp_degc, 0.0);
+  EXPECT_EQ(r.loto[0].method, "ssa-svr");
+  EXPECT_EQ(r.loto[1].method, "bp");
+  for (const LotoRow& l : r.loto) {
+    EXPECT_GT(l.denoised_std_dph, 0.0);
+    EXPECT_GT(l.std_loto_dph, 0.0);
+  }
+  ASSERT_EQ(r.fitness.size(), 2u);
+  EXPECT_EQ(r.fitness[0].fitness, "cv");
+  EXPECT_EQ(r.fitness[1].fitness, "train");
+  EXPECT_EQ(r.fitness[0].c, [&] {
+    for (const auto& [n, v] : r.seeds[0].method("ssa-svr").hyperparameters)
+      if (n == "C") return v;
+    return 0.0;
+  }());
+  EXPECT_EQ(r.figures.size(), 5u);
+}
+
+TEST(Paper, JsonFollowsTheIssuesSchemaAndMarkdownShowsThePapersNumbers) {
+  const auto j = nlohmann::json::parse(paper_json(small_run()));
+  EXPECT_GT(j["table1"]["C"].get<double>(), 0.0);
+  EXPECT_TRUE(j["table1"].contains("sigma_sd"));
+  EXPECT_TRUE(j["table2"]["denoised"].contains("std_dph"));
+  for (std::string_view m : kPaperMethods) {
+    const std::string name(m);
+    EXPECT_TRUE(j["table2"][name].contains("mae_dph")) << name;
+    EXPECT_TRUE(j["table2"][name].contains("std_dph_sd")) << name;
+    EXPECT_EQ(j["table3"][name]["rmse_deg"].size(), 2u) << name;
+    EXPECT_TRUE(j["table3"][name].contains("mean_deg_sd")) << name;
+  }
+  EXPECT_EQ(j["table3"]["temps_degc"], nlohmann::json::array({10.0, 30.0}));
+  EXPECT_EQ(j["table3"]["raw"]["rmse_deg"].size(), 2u);
+  EXPECT_GT(j["stable_rmse_deg"].get<double>(), 0.0);
+  EXPECT_EQ(j["seeds"], 2);
+  EXPECT_GT(j["elapsed_s"].get<double>(), 0.0);
+  EXPECT_TRUE(j["goals"].contains("ssa_northfind_halved"));
+  // A mean is the mean of the per-seed values.
+  const double s1 = j["per_seed"][0]["methods"]["bp"]["std_dph"];
+  const double s2 = j["per_seed"][1]["methods"]["bp"]["std_dph"];
+  EXPECT_NEAR(j["table2"]["bp"]["std_dph"].get<double>(), (s1 + s2) / 2, 1e-15);
+  EXPECT_NEAR(j["table2"]["bp"]["std_dph_sd"].get<double>(), std::abs(s1 - s2) / std::sqrt(2.0),
+              1e-15);
+
+  // report.md puts the paper's numbers beside fogdrift's.
+  const std::string md = paper_markdown(small_run());
+  for (const char* s :
+       {"## Table 1", "1.0520", "## Table 2", "0.0134", "0.0031", "## Table 3", "0.012",
+        "Leave one temperature out", "Training-loss against", "![Fig. 1", "fig_northfind.png"}) {
+    EXPECT_NE(md.find(s), std::string::npos) << s;
+  }
+  // The paper's own Table 3 is shown only for its own temperatures.
+  EXPECT_EQ(md.find("The paper's Table 3 at the same temperatures"), std::string::npos);
+}
+
+TEST(Paper, SameSeedSameResultWhateverTheThreads) {
+  PaperOptions o = small_options();
+  o.seeds = 1;
+  o.studies = false;
+  ThreadPool one(1);
+  o.pool = &one;
+  const PaperResult a = run_paper(o);
+  const PaperResult& b = small_run();  // 2 threads, first seed identical
+  const SeedRun& sa = a.seeds[0];
+  const SeedRun& sb = b.seeds[0];
+  EXPECT_EQ(sa.denoised_std_dph, sb.denoised_std_dph);
+  EXPECT_EQ(sa.raw_rmse_deg, sb.raw_rmse_deg);
+  for (std::size_t k = 0; k < sa.methods.size(); ++k) {
+    EXPECT_EQ(sa.methods[k].hyperparameters, sb.methods[k].hyperparameters);
+    EXPECT_EQ(sa.methods[k].rmse_deg, sb.methods[k].rmse_deg);
+    EXPECT_EQ(sa.methods[k].table2.std_after_dph, sb.methods[k].table2.std_after_dph);
+  }
+}
+
+TEST(Paper, ImpossibleOptionsNameTheOption) {
+  auto expect_option = [](PaperOptions o, const std::string& option) {
+    try {
+      validate(o);
+      ADD_FAILURE() << "accepted, expected an error for " << option;
+    } catch (const OptionError& e) {
+      EXPECT_EQ(e.option(), option) << e.what();
+    }
+  };
+  PaperOptions o;
+  o.seeds = 0;
+  expect_option(o, "--seeds");
+  o = PaperOptions{};
+  o.population = 3;
+  expect_option(o, "--population");
+  o = PaperOptions{};
+  o.iterations = 0;
+  expect_option(o, "--iterations");
+  o = PaperOptions{};
+  o.calibration.temps_degc = {};
+  expect_option(o, "--cal-temps");
+  o = PaperOptions{};
+  o.northfind.temps_degc = {500};
+  expect_option(o, "--nf-temps");
+  o = PaperOptions{};
+  o.northfind.findings = 0;
+  expect_option(o, "--findings");
+  o = PaperOptions{};
+  o.calibration.repetitions = 1;
+  expect_option(o, "--repetitions");
+}
+
+}  // namespace
+}  // namespace fogdrift::report
