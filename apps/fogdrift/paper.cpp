@@ -108,7 +108,7 @@ void run_paper_command(const PaperArgs& a) {
       write_text_atomically(dir / "paper.json", json);
       for (const report::Figure& f : result.figures) {
         write_text_atomically(dir / (f.name + ".json"), report::to_json(f));
-        const std::string problem = report::render_png(f, dir / (f.name + ".png"), gnuplot);
+        const std::string problem = report::render_png(f, dir, gnuplot);
         if (!problem.empty()) figure_problems.push_back(problem);
       }
     });

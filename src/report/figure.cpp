@@ -3,13 +3,13 @@
 #include <fmt/format.h>
 
 #include <cmath>
-#include <cstdio>
 #include <cstdlib>
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <sstream>
 #include <system_error>
 
+#include "fogdrift/atomic_file.hpp"
 #include "fogdrift/csv.hpp"
 
 namespace fogdrift::report {
@@ -69,12 +69,12 @@ std::string to_json(const Figure& figure) {
   return j.dump(1) + "\n";
 }
 
-std::string to_gnuplot(const Figure& figure, const std::filesystem::path& png_path) {
+std::string to_gnuplot(const Figure& figure, const std::string& png_name) {
   std::ostringstream g;
   const std::size_t n = figure.panels.size();
   const int height = static_cast<int>(120 + 330 * std::max<std::size_t>(n, 1));
   g << "set terminal pngcairo size 1000," << height << " noenhanced font 'DejaVu Sans,10'\n";
-  g << "set output " << quoted(png_path.string()) << "\n";
+  g << "set output " << quoted(png_name) << "\n";
   g << "set encoding utf8\nset grid lc rgb '#dddddd'\nset key outside right top\n";
   g << "set datafile missing 'NaN'\n";
   // Data blocks first, one per series.
@@ -131,32 +131,29 @@ std::string find_gnuplot() {
   return {};
 }
 
-std::string render_png(const Figure& figure, const std::filesystem::path& png_path,
+std::string render_png(const Figure& figure, const std::filesystem::path& dir,
                        const std::string& gnuplot) {
   if (gnuplot.empty()) return "no gnuplot found (install gnuplot-nox or set FOGDRIFT_GNUPLOT)";
-  const std::string script = to_gnuplot(figure, png_path);
-  // gnuplot's messages go to a log beside the PNG, read back only when it fails.
-  std::filesystem::path log = png_path;
-  log += ".log";
-  const std::string command = shell_quoted(gnuplot) + " 2> " + shell_quoted(log.string());
-  FILE* pipe = ::popen(command.c_str(), "w");
-  if (!pipe) return fmt::format("could not start {}", gnuplot);
-  const bool written = std::fwrite(script.data(), 1, script.size(), pipe) == script.size();
-  const int status = ::pclose(pipe);
+  // The script stays beside the PNG, with relative names, so a user can restyle and re-run it.
+  const std::string png = figure.name + ".png", script = figure.name + ".gp";
+  const std::string log = figure.name + ".gp.log";
+  write_text_atomically(dir / script, to_gnuplot(figure, png));
+  const std::string command = "cd " + shell_quoted(dir.string()) + " && " + shell_quoted(gnuplot) +
+                              " " + shell_quoted(script) + " 2> " + shell_quoted(log) + " >&2";
+  const int status = std::system(command.c_str());
   std::string messages;
   {
-    std::ifstream in(log);
+    std::ifstream in(dir / log);
     std::getline(in, messages, '\0');
   }
   std::error_code ec;
-  std::filesystem::remove(log, ec);
-  if (!written || status != 0) {
-    return fmt::format("{} failed on {} (exit status {}): {}", gnuplot,
-                       png_path.filename().string(), status, messages);
+  std::filesystem::remove(dir / log, ec);
+  if (status != 0) {
+    return fmt::format("{} failed on {} (exit status {}): {}", gnuplot, script, status, messages);
   }
-  if (!std::filesystem::is_regular_file(png_path, ec) ||
-      std::filesystem::file_size(png_path, ec) == 0) {
-    return fmt::format("{} wrote no {}", gnuplot, png_path.filename().string());
+  if (!std::filesystem::is_regular_file(dir / png, ec) ||
+      std::filesystem::file_size(dir / png, ec) == 0) {
+    return fmt::format("{} wrote no {}", gnuplot, png);
   }
   return {};
 }

@@ -155,6 +155,7 @@ SeedRun run_seed(const PaperOptions& o, std::uint64_t seed, Stages& stages, Firs
     to.tune.optimizer.run.iterations = o.iterations;
     to.tune.optimizer.run.seed = seed;
     to.tune.pool = o.pool;
+    to.mlp = o.mlp;
     TrainResult trained = fogdrift::train(train, dataset, to);
     MethodRun m;
     m.method = std::string(name);
@@ -200,6 +201,7 @@ std::vector<LotoRow> loto_study(const PaperOptions& o, const SeedRun& run, const
     to.tune.pool = o.pool;  // nested inside the study's loop: runs serially
     if (name == "bp") {
       to.method = Method::bp;
+      to.mlp = o.mlp;
     } else {
       to.method = Method::svr;
       to.svr_params = svr_params_of(run.method(name));

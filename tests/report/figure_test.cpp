@@ -34,8 +34,8 @@ TEST(Figure, JsonHoldsEverySeriesAndWritesGapsAsNull) {
 }
 
 TEST(Figure, GnuplotScriptCarriesTheDataAndEscapesQuotes) {
-  const std::string g = to_gnuplot(two_panels(), "/tmp/out dir/f.png");
-  EXPECT_NE(g.find("set output \"/tmp/out dir/f.png\""), std::string::npos);
+  const std::string g = to_gnuplot(two_panels(), "f \"1\".png");
+  EXPECT_NE(g.find("set output \"f \\\"1\\\".png\""), std::string::npos);
   EXPECT_NE(g.find("A \\\"quoted\\\" title"), std::string::npos);
   EXPECT_NE(g.find("$d0_0 << EOD\n0 1\n1 4\n2 9\nEOD"), std::string::npos);
   EXPECT_NE(g.find("NaN NaN"), std::string::npos);  // a gap is a NaN row
@@ -48,7 +48,7 @@ TEST(Figure, RendersAPngWithGnuplotOrSaysWhyNot) {
   test::TempDir dir;
   const std::string gnuplot = find_gnuplot();
   const auto png = dir / "f.png";
-  const std::string problem = render_png(two_panels(), png, gnuplot);
+  const std::string problem = render_png(two_panels(), dir.path(), gnuplot);
   if (gnuplot.empty()) {
     EXPECT_NE(problem.find("no gnuplot"), std::string::npos);
     GTEST_SKIP() << "gnuplot is not installed (scripts/setup.sh installs gnuplot-nox)";
@@ -58,10 +58,14 @@ TEST(Figure, RendersAPngWithGnuplotOrSaysWhyNot) {
   char magic[8] = {};
   in.read(magic, 8);
   EXPECT_EQ(std::string(magic + 1, 3), "PNG");
-  EXPECT_FALSE(std::filesystem::exists(dir / "f.png.log"));
-  // A failing gnuplot is reported with its exit status, not silently.
-  const std::string bad = render_png(two_panels(), dir / "g.png", "/bin/false");
+  EXPECT_TRUE(std::filesystem::exists(dir / "f.gp"));  // kept for the user to restyle
+  EXPECT_FALSE(std::filesystem::exists(dir / "f.gp.log"));
+  // A failing gnuplot is reported with its exit status and messages, not silently.
+  test::TempDir other;
+  const std::string bad = render_png(two_panels(), other.path(), "/bin/false");
   EXPECT_NE(bad.find("failed"), std::string::npos);
+  const std::string missing = render_png(two_panels(), other.path(), "/nonexistent/gnuplot");
+  EXPECT_NE(missing.find("failed"), std::string::npos);
 }
 
 }  // namespace

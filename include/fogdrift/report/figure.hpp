@@ -32,17 +32,18 @@ struct Figure {
 /// "y": [...]}]}]}; non-finite values are written as null.
 std::string to_json(const Figure& figure);
 
-/// A self-contained gnuplot script (data inline) that draws `figure` into `png_path` with the
+/// A self-contained gnuplot script (data inline) that draws `figure` into `png_name` with the
 /// pngcairo terminal, panels stacked vertically.
-std::string to_gnuplot(const Figure& figure, const std::filesystem::path& png_path);
+std::string to_gnuplot(const Figure& figure, const std::string& png_name);
 
 /// The gnuplot program to use: $FOGDRIFT_GNUPLOT if set, else "gnuplot" when it is on PATH;
 /// empty when there is none.
 std::string find_gnuplot();
 
-/// Runs `gnuplot` on the figure's script, writing `png_path`. Returns an empty string on success,
-/// else what went wrong (gnuplot's exit status, or a missing PNG).
-std::string render_png(const Figure& figure, const std::filesystem::path& png_path,
+/// Writes the figure's script as DIR/NAME.gp and runs `gnuplot` on it in `dir`, drawing
+/// DIR/NAME.png. Returns an empty string on success, else what went wrong (no gnuplot, its exit
+/// status and messages, or a missing PNG).
+std::string render_png(const Figure& figure, const std::filesystem::path& dir,
                        const std::string& gnuplot);
 
 }  // namespace fogdrift::report

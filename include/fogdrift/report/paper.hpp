@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "fogdrift/eval/metrics.hpp"
+#include "fogdrift/mlp.hpp"
 #include "fogdrift/report/figure.hpp"
 #include "fogdrift/sim/instrument.hpp"
 #include "fogdrift/sim/scenarios.hpp"
@@ -39,6 +40,7 @@ struct PaperOptions {
   std::size_t population = 10;
   std::size_t iterations = 20;
   tune::Fitness fitness = tune::Fitness::cv;  ///< fitness of the tuned SVRs
+  MlpOptions mlp;                             ///< BP's settings; its seed is each run's seed
   bool studies = true;  ///< leave-one-temperature-out and fitness studies on the first seed
   sim::Instrument instrument;
   sim::CalibrationOptions calibration;  ///< its seed is replaced by each run's seed
