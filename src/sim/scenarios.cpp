@@ -22,13 +22,23 @@ constexpr std::uint64_t kNorthfindStream = 1'000'000;
 constexpr std::uint64_t kStableStream = 2'000'000;
 constexpr std::uint64_t kChamberStream = 3'000'000;
 
-std::string generator_json(std::string_view scenario, std::uint64_t seed, double rate_hz) {
+// What made the campaign, for its manifest; a north-finding campaign also records how its
+// start-ups began.
+std::string generator_json(std::string_view scenario, std::uint64_t seed, double rate_hz,
+                           const NorthfindOptions* findings = nullptr) {
   nlohmann::ordered_json g;
   g["tool"] = "fogdrift simulate";
   g["version"] = kVersion;
   g["scenario"] = scenario;
   g["seed"] = seed;
   g["output_rate_hz"] = rate_hz;
+  if (findings) {
+    g["approach"] = std::string(to_string(findings->approach));
+    if (findings->approach != Approach::soaked) g["soak_s"] = findings->soak_s;
+    if (findings->approach == Approach::sweep)
+      g["ramp_degc_per_min"] = findings->ramp_degc_per_min;
+    if (findings->warmup_s > 0) g["warmup_s"] = findings->warmup_s;
+  }
   return g.dump();
 }
 
@@ -199,7 +209,7 @@ SimulatedCampaign simulate_findings(const Instrument& instrument, const Northfin
   SimulatedCampaign out;
   out.campaign.latitude_deg = o.latitude_deg;
   out.campaign.generator_json =
-      generator_json(std::string(to_string(scenario)), o.seed, o.output_rate_hz);
+      generator_json(std::string(to_string(scenario)), o.seed, o.output_rate_hz, &o);
   const double rotation_s = 90.0 / instrument.turntable.rate_deg_per_s;
   if (rotation_s + 10.0 > o.position_s) {
     throw OptionError("--position-s",

@@ -184,6 +184,11 @@ TEST(Northfind, CalibrationApproachPowersOnLikeTheCalibrationCampaign) {
   EXPECT_LT(cal_fog, 17.0);  // calibration powers on well below the chamber's 20 °C
   EXPECT_NEAR(nf.recordings[0].numeric_column("temp_fog_degc")[0], cal_fog, 0.5);  // of a 5 K lag
   EXPECT_NEAR(nf_soaked.recordings[0].numeric_column("temp_fog_degc")[0], 20.0, 0.05);
+  // The manifest says how the start-ups began.
+  EXPECT_NE(nf.campaign.generator_json.find(R"("approach":"calibration","soak_s":1200)"),
+            std::string::npos)
+      << nf.campaign.generator_json;
+  EXPECT_NE(nf_soaked.campaign.generator_json.find(R"("approach":"soaked")"), std::string::npos);
   // A sweep from 20 to 40 °C powers on at 40 °C below the chamber too.
   NorthfindOptions sweep;
   sweep.temps_degc = {20.0, 40.0};
