@@ -35,8 +35,7 @@ std::string generator_json(std::string_view scenario, std::uint64_t seed, double
   if (findings) {
     g["approach"] = std::string(to_string(findings->approach));
     if (findings->approach != Approach::soaked) g["soak_s"] = findings->soak_s;
-    if (findings->approach == Approach::sweep)
-      g["ramp_degc_per_min"] = findings->ramp_degc_per_min;
+    if (findings->approach == Approach::sweep) g["ramp_degc_per_min"] = findings->ramp_degc_per_min;
     if (findings->warmup_s > 0) g["warmup_s"] = findings->warmup_s;
   }
   return g.dump();
