@@ -241,6 +241,11 @@ check "evaluate prints the Table 2 view" out_has "Table 2 view: denoised STD"
 check "evaluate has a row per test recording" test "$(grep -c '^| cal_r4_' "$work/out")" -eq 3
 check "evaluate --json" run 0 "$fd" evaluate --json "$work/svr.json" "$work/small"
 check "evaluate json overall" out_has '"std_compensated_dph"'
+check "evaluate --allan" run 0 "$fd" evaluate --allan "$work/svr.json" "$work/small"
+check "evaluate allan table" out_has "| recording | ARW (°/√h) | bias instability (°/h) | RRW (°/h/√h) |"
+check "evaluate allan row per recording" test "$(grep -c '^| cal_r4_.* → ' "$work/out")" -eq 3
+check "evaluate --allan --json" run 0 "$fd" evaluate --allan --json "$work/svr.json" "$work/small"
+check "evaluate allan json" python3 -c 'import json,sys; d=json.load(open(sys.argv[1])); r=d["recordings"][0]["allan"]; assert 0.0003 < r["raw"]["arw_deg_per_rt_h"] < 0.0008 and r["compensated"]["bias_instability_dph"] < r["raw"]["bias_instability_dph"]' "$work/out"
 check "evaluate files" run 0 "$fd" evaluate "$work/poly.json" "$work/small/cal_r4_20C.csv"
 check "files without a manifest warn about the target" out_has "warning:"
 printf '{"format": "fogdrift-compensation-model", "version": 7}' >"$work/future_model.json"
