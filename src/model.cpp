@@ -10,6 +10,7 @@
 
 #include "fogdrift/atomic_file.hpp"
 #include "fogdrift/error.hpp"
+#include "fogdrift/signal/differentiate.hpp"
 #include "fogdrift/text_file.hpp"
 
 namespace fogdrift {
@@ -306,7 +307,114 @@ std::string c_array(std::span<const double> values, std::size_t per_line = 4) {
 
 }  // namespace
 
-std::string to_c_header(const CompensationModel& model, const std::string& prefix) {
+namespace {
+
+// The header's streaming part: the causal differentiator (taps of every start-up window length,
+// a buffer of 2W samples per thermometer) and the features in compute_features()'s order, as
+// StreamingCompensator::update() computes them.
+std::string c_streaming_part(const CompensationModel& model, const std::string& prefix,
+                             const std::string& upper, double dt_s) {
+  if (!std::isfinite(dt_s)) throw OptionError("stream_dt_s", "must be a finite interval");
+  signal::CausalDifferentiator diff(model.dataset.preprocessing.rates, dt_s);
+  const std::size_t w = diff.window();
+  std::vector<double> taps;
+  for (std::size_t k = 1; k <= w; ++k) {
+    const auto& t = diff.taps(k);
+    taps.insert(taps.end(), t.begin(), t.end());
+  }
+  std::string h;
+  h += fmt::format(
+      "/* Streaming: the features computed causally, one sample every {2} s.\n"
+      " *   {0}_state s; {0}_reset(&s);   at power-on\n"
+      " *   drift_dph = {0}_update(&s, time_s, temp_fog_degc, temp_acc1_degc, temp_acc2_degc);\n"
+      " * Temperature rates: causal Savitzky-Golay derivative over the last {1} samples (fewer\n"
+      " * during the first {1}); the taps for k + 1 samples start at k(k + 1)/2 in the table.{3} "
+      "*/\n",
+      prefix, w, c_number(dt_s),
+      model.dataset.preprocessing.rates.causality == signal::Causality::causal
+          ? ""
+          : "\n * NOTE: this model was trained with centred rates; streaming applies causal ones, "
+            "which\n * lag. Train with --differentiator causal for firmware.");
+  h += fmt::format("#define {}_RATE_WINDOW {}\n", upper, w);
+  h += fmt::format("static const double {}_dt_s = {};\n", prefix, c_number(dt_s));
+  h += fmt::format("static const double {}_rate_taps[{}] = {{{}}};\n\n", prefix, taps.size(),
+                   c_array(taps));
+  h += fmt::format(
+      "typedef struct {{\n"
+      "  double buffer[3][2 * {1}_RATE_WINDOW]; /* fog, acc1, acc2; newest at size - 1 */\n"
+      "  long size;                             /* samples in the buffer */\n"
+      "  long count;                            /* samples since power-on */\n"
+      "}} {0}_state;\n\n"
+      "static inline void {0}_reset({0}_state* s) {{\n  s->size = 0;\n  s->count = 0;\n}}\n\n",
+      prefix, upper);
+  // Feature assignments in compute_features()'s order.
+  std::string f;
+  std::size_t c = 0;
+  const auto idx = [](Thermometer k) { return static_cast<std::size_t>(k); };
+  for (const auto& term : model.dataset.features.terms) {
+    const auto& th = term.thermometers;
+    switch (term.term) {
+      case FeatureTerm::temp:
+        for (auto k : th) f += fmt::format("  f[{}] = temp[{}];\n", c++, idx(k));
+        break;
+      case FeatureTerm::rate:
+        for (auto k : th) f += fmt::format("  f[{}] = rate[{}];\n", c++, idx(k));
+        break;
+      case FeatureTerm::gradient:
+      case FeatureTerm::gradient_rate: {
+        const char* v = term.term == FeatureTerm::gradient_rate ? "rate" : "temp";
+        for (std::size_t i = 0; i < th.size(); ++i)
+          for (std::size_t j = i + 1; j < th.size(); ++j)
+            f += fmt::format("  f[{}] = {}[{}] - {}[{}];\n", c++, v, idx(th[i]), v, idx(th[j]));
+        break;
+      }
+      case FeatureTerm::time:
+        f += fmt::format("  f[{}] = time_s;\n", c++);
+        break;
+      case FeatureTerm::temp_rate_product:
+        for (auto k : th) f += fmt::format("  f[{}] = temp[{}] * rate[{}];\n", c++, idx(k), idx(k));
+        break;
+    }
+  }
+  h += fmt::format(
+      "/* Predicted drift, deg/h, for the newest sample (every dt_s seconds since power-on). */\n"
+      "static inline double {0}_update({0}_state* s, double time_s, double temp_fog_degc,\n"
+      "                                 double temp_acc1_degc, double temp_acc2_degc) {{\n"
+      "  const double temp[3] = {{temp_fog_degc, temp_acc1_degc, temp_acc2_degc}};\n"
+      "  double rate[3], f[{1}_N_FEATURES];\n"
+      "  const double* taps;\n"
+      "  long used, j;\n"
+      "  int k;\n"
+      "  if (s->size == 2 * {1}_RATE_WINDOW) {{ /* keep the newest window - 1 at the front */\n"
+      "    for (k = 0; k < 3; ++k)\n"
+      "      for (j = 0; j < {1}_RATE_WINDOW - 1; ++j)\n"
+      "        s->buffer[k][j] = s->buffer[k][{1}_RATE_WINDOW + 1 + j];\n"
+      "    s->size = {1}_RATE_WINDOW - 1;\n"
+      "  }}\n"
+      "  for (k = 0; k < 3; ++k) s->buffer[k][s->size] = temp[k];\n"
+      "  ++s->size;\n"
+      "  ++s->count;\n"
+      "  used = s->count < {1}_RATE_WINDOW ? s->count : {1}_RATE_WINDOW;\n"
+      "  taps = {0}_rate_taps + (used - 1) * used / 2;\n"
+      "  for (k = 0; k < 3; ++k) {{\n"
+      "    const double* x = s->buffer[k] + (s->size - used);\n"
+      "    double sum = 0.0;\n"
+      "    for (j = 0; j < used; ++j) sum += taps[j] * x[j];\n"
+      "    rate[k] = sum / {0}_dt_s;\n"
+      "  }}\n"
+      "{2}"
+      "  (void)time_s;\n"
+      "  (void)rate;\n"
+      "  return {0}_predict_dph(f);\n"
+      "}}\n\n",
+      prefix, upper, f);
+  return h;
+}
+
+}  // namespace
+
+std::string to_c_header(const CompensationModel& model, const std::string& prefix,
+                        double stream_dt_s) {
   const bool identifier = !prefix.empty() && !std::isdigit(static_cast<unsigned char>(prefix[0])) &&
                           std::all_of(prefix.begin(), prefix.end(), [](char c) {
                             return std::isalnum(static_cast<unsigned char>(c)) || c == '_';
@@ -424,8 +532,10 @@ std::string to_c_header(const CompensationModel& model, const std::string& prefi
       "  {{\n{2}"
       "  return z * {0}_drift_scale_dph + {0}_drift_mean_dph;\n"
       "  }}\n"
-      "}}\n\n#endif /* {1}_H */\n",
+      "}}\n\n",
       prefix, upper, body);
+  if (stream_dt_s > 0) h += c_streaming_part(model, prefix, upper, stream_dt_s);
+  h += fmt::format("#endif /* {}_H */\n", upper);
   return h;
 }
 

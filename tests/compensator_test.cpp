@@ -6,10 +6,15 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
 
 #include "fogdrift/random.hpp"
 #include "fogdrift/sim/scenarios.hpp"
 #include "fogdrift/train.hpp"
+#include "test_util.hpp"
 
 namespace fogdrift {
 namespace {
@@ -31,8 +36,43 @@ TEST(CausalDifferentiator, MatchesTheBatchFilterBitForBit) {
   }
 }
 
+// The C header's streaming part (to_c_header with a sample interval), compiled by the C compiler
+// and fed the recording sample by sample; returns its drift for every sample.
+std::vector<double> c_header_stream(const CompensationModel& model, const Recording& rec) {
+  test::TempDir dir;
+  test::write_file(dir / "model.h", to_c_header(model, "fd", 1.0));
+  test::write_file(dir / "driver.c", R"(#include <stdio.h>
+#include "model.h"
+int main(void) {
+  fd_state s;
+  double t, fog, acc1, acc2;
+  fd_reset(&s);
+  while (scanf("%lf %lf %lf %lf", &t, &fog, &acc1, &acc2) == 4)
+    printf("%.17g\n", fd_update(&s, t, fog, acc1, acc2));
+  return 0;
+}
+)");
+  std::ostringstream samples;
+  samples.precision(17);
+  for (std::size_t i = 0; i < rec.size(); ++i)
+    samples << rec.time_s[i] << ' ' << rec.temp_fog_degc[i] << ' ' << rec.temp_acc1_degc[i] << ' '
+            << rec.temp_acc2_degc[i] << '\n';
+  test::write_file(dir / "samples.txt", samples.str());
+  const std::string build = std::string(FOGDRIFT_C_COMPILER) +
+                            " -std=c99 -Wall -Wextra -pedantic -Werror -O2 -o " +
+                            (dir / "driver").string() + " " + (dir / "driver.c").string() + " -lm";
+  if (std::system(build.c_str()) != 0) throw std::runtime_error("C compile failed: " + build);
+  const std::string run = (dir / "driver").string() + " < " + (dir / "samples.txt").string() +
+                          " > " + (dir / "out.txt").string();
+  if (std::system(run.c_str()) != 0) throw std::runtime_error("driver failed");
+  std::ifstream in(dir / "out.txt");
+  std::vector<double> out;
+  for (double v; in >> v;) out.push_back(v);
+  return out;
+}
+
 // A model trained on causal features, streamed over a test recording, gives the batch path's
-// drift exactly.
+// drift exactly; the C header's own streaming code gives it too.
 TEST(StreamingCompensator, EqualsTheBatchPath) {
   sim::CalibrationOptions co;
   co.temps_degc = {-20, 30};
@@ -75,6 +115,15 @@ TEST(StreamingCompensator, EqualsTheBatchPath) {
     EXPECT_EQ(stream.update({test.time_s[0], test.gyro_dph[0], test.temp_fog_degc[0],
                              test.temp_acc1_degc[0], test.temp_acc2_degc[0]}),
               batch[0]);
+
+    const std::vector<double> in_c = c_header_stream(model, test);
+    ASSERT_EQ(in_c.size(), streamed.size()) << to_string(method);
+    double worst = 0, scale = 0;
+    for (std::size_t i = 0; i < in_c.size(); ++i) {
+      worst = std::max(worst, std::abs(in_c[i] - streamed[i]));
+      scale = std::max(scale, std::abs(streamed[i]));
+    }
+    EXPECT_LE(worst, 1e-12 * scale) << to_string(method);
   }
 }
 

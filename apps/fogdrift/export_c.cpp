@@ -16,24 +16,42 @@ struct ExportArgs {
   std::string model;
   std::string output;
   std::string prefix = "fogdrift_model";
+  double stream_rate_hz = 0;
   bool quiet = false;
 };
 
 void run(const ExportArgs& a) {
   const CompensationModel model = load_compensation_model(a.model);
+  if (!(a.stream_rate_hz >= 0) || a.stream_rate_hz > 1000)
+    throw OptionError("--stream-rate-hz", fmt::format("{} is outside [0, 1000] Hz (0: no "
+                                                      "streaming part)",
+                                                      a.stream_rate_hz));
   std::string header;
   try {
-    header = to_c_header(model, a.prefix);
+    header = to_c_header(model, a.prefix, a.stream_rate_hz > 0 ? 1.0 / a.stream_rate_hz : 0.0);
   } catch (const OptionError& e) {
-    throw OptionError("--prefix", fmt::format("'{}' is not a C identifier (letters, digits and "
-                                              "'_', not starting with a digit)",
-                                              a.prefix));
+    if (e.option() == "prefix")
+      throw OptionError("--prefix", fmt::format("'{}' is not a C identifier (letters, digits and "
+                                                "'_', not starting with a digit)",
+                                                a.prefix));
+    const std::string what = e.what();
+    throw OptionError("--stream-rate-hz", what.substr(what.find(": ") + 2));
   }
   write_text_atomically(a.output, header);
-  if (!a.quiet)
+  if (!a.quiet) {
     std::cout << fmt::format("wrote {}: {}_predict_dph(features[{}]) for {} ({}), C99, no heap\n",
                              a.output, a.prefix, model.inputs(), a.model,
                              to_string(model.provenance.method));
+    if (a.stream_rate_hz > 0)
+      std::cout << fmt::format(
+          "  and {0}_update(&state, time_s, temp_fog, temp_acc1, temp_acc2) "
+          "at {1} Hz, causal{2}\n",
+          a.prefix, a.stream_rate_hz,
+          model.dataset.preprocessing.rates.causality == signal::Causality::causal
+              ? ""
+              : " (the model was trained with centred rates: train with "
+                "--differentiator causal for firmware)");
+  }
 }
 
 }  // namespace
@@ -47,11 +65,18 @@ void add_export_c(CLI::App& app) {
       "const tables with every double to 17 digits, and an inline PREFIX_predict_dph(features)\n"
       "that needs only <math.h>, no heap and no state. The header's comment lists the features\n"
       "in order with their units; compute them as fogdrift does (docs/signal.md).\n"
-      "Example:\n"
-      "  fogdrift export-c model.json -o unit42.h --prefix unit42   # unit42_predict_dph(...)");
+      "With --stream-rate-hz the header also computes the features itself, causally, from one\n"
+      "sample (time, three temperatures) at a time: PREFIX_update(&state, ...), the streaming\n"
+      "compensator in C; train the model with --differentiator causal for it.\n"
+      "Examples:\n"
+      "  fogdrift export-c model.json -o unit42.h --prefix unit42   # unit42_predict_dph(...)\n"
+      "  fogdrift export-c causal.json -o unit42.h --stream-rate-hz 1  # and unit42_update(...)");
   cmd->add_option("model", args->model, "Model file written by `fogdrift train`")->required();
   cmd->add_option("-o,--output", args->output, "Header to write (atomically)")->required();
   cmd->add_option("--prefix", args->prefix, "C name prefix of every symbol")->capture_default_str();
+  cmd->add_option("--stream-rate-hz", args->stream_rate_hz,
+                  "Also write PREFIX_update() for samples at this fixed rate, Hz (0: none)")
+      ->capture_default_str();
   cmd->add_flag("-q,--quiet", args->quiet, "Print nothing on success");
   cmd->callback([args] { run(*args); });
 }

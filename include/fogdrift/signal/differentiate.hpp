@@ -76,6 +76,10 @@ class CausalDifferentiator {
   CausalDifferentiator(const DifferentiatorOptions& options, double dt_s);
   double push(double x) noexcept;
   std::size_t window() const { return w_; }
+  double dt_s() const { return dt_s_; }
+  /// The taps applied when `samples` (1 … window()) samples are available, oldest first; the
+  /// derivative is their dot product with those samples, divided by dt_s().
+  const std::vector<double>& taps(std::size_t samples) const { return taps_.at(samples - 1); }
   void reset() noexcept { size_ = 0, count_ = 0; }
 
  private:
