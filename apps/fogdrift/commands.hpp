@@ -20,6 +20,7 @@ void add_compensate(CLI::App& app);
 void add_export_c(CLI::App& app);
 void add_northfind(CLI::App& app);
 void add_paper(CLI::App& app);
+void add_stream(CLI::App& app);
 
 /// fogdrift paper's options; fogdrift demo runs the same command with a smaller budget.
 struct PaperArgs {

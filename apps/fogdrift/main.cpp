@@ -27,6 +27,7 @@ int main(int argc, char** argv) {
   fogdrift::app::add_train(app);
   fogdrift::app::add_evaluate(app);
   fogdrift::app::add_compensate(app);
+  fogdrift::app::add_stream(app);
   fogdrift::app::add_export_c(app);
   fogdrift::app::add_northfind(app);
   fogdrift::app::add_paper(app);

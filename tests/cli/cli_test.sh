@@ -271,6 +271,27 @@ head -100 "$work/small/cal_r4_20C.csv" >"$work/short.csv"
 check "recording shorter than the differentiator" run 1 "$fd" compensate "$work/svr.json" "$work/short.csv" -o "$work/comp3.csv"
 check "short message names the file" err_has "short.csv"
 
+# --- stream: line in, line out; for a causal model, what compensate writes -------------------
+rec20="$work/small/cal_r4_20C.csv"
+check "compensate with the causal model" run 0 "$fd" compensate "$work/causal.json" "$rec20" -o "$work/comp_causal.csv" -q
+check "stream from stdin" bash -c "'$fd' stream '$work/causal.json' --rate-hz 1 <'$rec20' >'$work/streamed.csv'"
+check "stream equals compensate" cmp -s "$work/streamed.csv" "$work/comp_causal.csv"
+check "stream from a file" run 0 "$fd" stream "$work/causal.json" "$rec20" --rate-hz 1
+check "stream file output equals compensate" cmp -s "$work/out" "$work/comp_causal.csv"
+check "stream wrong rate" run 1 "$fd" stream "$work/causal.json" "$rec20" --rate-hz 2
+check "stream wrong rate message" err_has "cal_r4_20C.csv:3:1: time_s steps by 1 s, not the 0.5 s of --rate-hz 2"
+awk -F, 'BEGIN{OFS=","} NR==6{$3="warm"} {print}' "$rec20" >"$work/bad_temp.csv"
+check "stream bad temperature" run 1 "$fd" stream "$work/causal.json" "$work/bad_temp.csv" --rate-hz 1
+check "stream bad temperature message" err_has "bad_temp.csv:6:3: temp_fog_degc 'warm' is not a finite number"
+check "stream wrote the good lines before it" test "$(wc -l <"$work/out")" -eq 5
+cut -d, -f1,2,3,4 "$rec20" >"$work/no_acc2.csv"
+check "stream missing column" run 1 "$fd" stream "$work/causal.json" "$work/no_acc2.csv" --rate-hz 1
+check "stream missing column message" err_has "no_acc2.csv:1: has no temp_acc2_degc column"
+check "stream a compensated file" run 1 "$fd" stream "$work/causal.json" "$work/comp_causal.csv" --rate-hz 1
+check "stream compensated message" err_has "already has a drift_dph column"
+check "stream rate required" run 106 "$fd" stream "$work/causal.json" "$rec20"
+check "stream rate required message" err_has "--rate-hz is required"
+
 # --- export-c ---------------------------------------------------------------------------------
 check "export-c" run 0 "$fd" export-c "$work/bp.json" -o "$work/unit.h" --prefix unit42
 check "export-c summary" out_has "unit42_predict_dph(features[9])"
