@@ -31,6 +31,8 @@ struct PaperArgs {
   std::size_t population = 10;
   std::size_t iterations = 20;
   std::string fitness = "cv";
+  double epsilon = 0.1;
+  bool search_epsilon = false;
   std::string approach = "calibration";
   std::string cal_temps;  ///< empty: the paper's −40 … 60 °C
   std::string nf_temps;   ///< empty: the paper's seven

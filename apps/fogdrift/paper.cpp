@@ -31,6 +31,10 @@ void add_paper_options(CLI::App* cmd, PaperArgs& a) {
       ->capture_default_str();
   cmd->add_option("--fitness", a.fitness, "cv (grouped cross-validation) or train (the paper's)")
       ->capture_default_str();
+  cmd->add_option("--epsilon", a.epsilon, "ε of the tuned SVRs (standardised target)")
+      ->capture_default_str();
+  cmd->add_flag("--search-epsilon", a.search_epsilon,
+                "The tuned SVRs also search ε in [0.001, 1] (the paper tunes C and σ only)");
   cmd->add_option("--approach", a.approach,
                   "How the north-finding start-ups begin: calibration, sweep or soaked "
                   "(fogdrift simulate northfind --help)")
@@ -62,6 +66,8 @@ void run_paper_command(const PaperArgs& a) {
   o.fitness = tune::parse_fitness(a.fitness, "--fitness");
   o.northfind.approach = sim::approach_from_string(a.approach, "--approach");
   o.studies = !a.no_studies;
+  o.epsilon = a.epsilon;
+  o.search_epsilon = a.search_epsilon;
   if (!a.cal_temps.empty())
     o.calibration.temps_degc = parse_number_list(a.cal_temps, "--cal-temps");
   if (!a.nf_temps.empty()) o.northfind.temps_degc = parse_number_list(a.nf_temps, "--nf-temps");

@@ -155,6 +155,8 @@ SeedRun run_seed(const PaperOptions& o, std::uint64_t seed, Stages& stages, Firs
     to.tune.optimizer.run.iterations = o.iterations;
     to.tune.optimizer.run.seed = seed;
     to.tune.pool = o.pool;
+    to.tune.space.epsilon = o.epsilon;
+    to.tune.space.search_epsilon = o.search_epsilon;
     to.mlp = o.mlp;
     TrainResult trained = fogdrift::train(train, dataset, to);
     MethodRun m;
@@ -242,6 +244,8 @@ std::vector<FitnessRow> fitness_study(const PaperOptions& o, const SeedRun& run,
       to.tune.optimizer.run.iterations = o.iterations;
       to.tune.optimizer.run.seed = run.seed;
       to.tune.pool = o.pool;
+      to.tune.space.epsilon = o.epsilon;
+      to.tune.space.search_epsilon = o.search_epsilon;
       const TrainResult t = train(f.train, f.dataset, to);
       row.c = t.summary.tuning.best.c;
       row.sigma = t.summary.tuning.best.kernel.sigma();
@@ -420,6 +424,8 @@ void validate(const PaperOptions& o) {
   if (o.population < 5 || o.population > 10000)
     throw OptionError("--population",
                       fmt::format("{} is outside [5, 10000] (SSA needs 5 sparrows)", o.population));
+  if (!std::isfinite(o.epsilon) || o.epsilon < 0 || o.epsilon > 10)
+    throw OptionError("--epsilon", fmt::format("{} is outside [0, 10]", o.epsilon));
   if (o.iterations < 1 || o.iterations > 100000)
     throw OptionError("--iterations", fmt::format("{} is outside [1, 100000]", o.iterations));
   sim::validate(o.instrument);

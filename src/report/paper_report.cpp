@@ -187,6 +187,9 @@ std::string paper_json(const PaperResult& r) {
                    {"population", o.population},
                    {"iterations", o.iterations},
                    {"fitness", std::string(tune::to_string(o.fitness))},
+                   {"epsilon", o.search_epsilon ? nlohmann::ordered_json(nullptr)
+                                                : nlohmann::ordered_json(o.epsilon)},
+                   {"search_epsilon", o.search_epsilon},
                    {"northfind_approach", std::string(sim::to_string(o.northfind.approach))},
                    {"studies", o.studies},
                    {"fogdrift_version", kVersion}};
@@ -221,11 +224,13 @@ std::string paper_markdown(const PaperResult& r) {
   md << "# The paper's experiment on the simulated instrument\n\n";
   md << fmt::format(
       "fogdrift {}; {} seed{} ({} … {}); tuned SVRs: population {} × {} iterations, fitness "
-      "`{}`; north-finding start-ups approached as `{}`; {:.0f} s.\n"
+      "`{}`, {}; north-finding start-ups approached as `{}`; {:.0f} s.\n"
       "Values are mean ± SD over the seeds; every seed simulates new campaigns and runs new "
       "searches.\n\n",
       kVersion, n, n == 1 ? "" : "s", r.seeds.front().seed, r.seeds.back().seed, o.population,
-      o.iterations, tune::to_string(o.fitness), sim::to_string(o.northfind.approach), r.seconds);
+      o.iterations, tune::to_string(o.fitness),
+      o.search_epsilon ? std::string("ε searched") : fmt::format("ε = {}", o.epsilon),
+      sim::to_string(o.northfind.approach), r.seconds);
 
   md << "## Table 1 — SSA-SVR's tuned parameters\n\n| | fogdrift | paper |\n|---|---|---|\n";
   md << fmt::format(

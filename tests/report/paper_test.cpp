@@ -159,6 +159,9 @@ TEST(Paper, ImpossibleOptionsNameTheOption) {
   o = PaperOptions{};
   o.calibration.repetitions = 1;
   expect_option(o, "--repetitions");
+  o = PaperOptions{};
+  o.epsilon = -0.1;
+  expect_option(o, "--epsilon");
 }
 
 }  // namespace

@@ -40,8 +40,10 @@ struct PaperOptions {
   std::size_t population = 10;
   std::size_t iterations = 20;
   tune::Fitness fitness = tune::Fitness::cv;  ///< fitness of the tuned SVRs
-  MlpOptions mlp;                             ///< BP's settings; its seed is each run's seed
-  bool studies = true;  ///< leave-one-temperature-out and fitness studies on the first seed
+  double epsilon = 0.1;         ///< ε of the tuned SVRs' tube (standardised target), when fixed
+  bool search_epsilon = false;  ///< the tuned SVRs also search ε (beyond the paper's C and σ)
+  MlpOptions mlp;               ///< BP's settings; its seed is each run's seed
+  bool studies = true;          ///< leave-one-temperature-out and fitness studies on the first seed
   sim::Instrument instrument;
   sim::CalibrationOptions calibration;  ///< its seed is replaced by each run's seed
   sim::NorthfindOptions northfind;      ///< its seed likewise
