@@ -113,8 +113,8 @@ RecordingInput recording_input(const Campaign& campaign, const CampaignEntry& en
   return input;
 }
 
-Dataset build_dataset(const Campaign& campaign, std::optional<Role> role, Scenario scenario,
-                      const DatasetOptions& options) {
+std::vector<RecordingInput> read_inputs(const Campaign& campaign, std::optional<Role> role,
+                                        Scenario scenario) {
   std::vector<RecordingInput> inputs;
   for (const auto& entry : campaign.recordings) {
     if (entry.scenario != scenario || (role && entry.role != *role)) continue;
@@ -125,7 +125,12 @@ Dataset build_dataset(const Campaign& campaign, std::optional<Role> role, Scenar
                      fmt::format("no {} recordings{} in the campaign", to_string(scenario),
                                  role ? fmt::format(" with role {}", to_string(*role)) : ""));
   }
-  return build_dataset(inputs, options);
+  return inputs;
+}
+
+Dataset build_dataset(const Campaign& campaign, std::optional<Role> role, Scenario scenario,
+                      const DatasetOptions& options) {
+  return build_dataset(read_inputs(campaign, role, scenario), options);
 }
 
 Standardizer Standardizer::fit(std::span<const double> x, std::size_t cols,

@@ -159,36 +159,44 @@ std::string FeatureSpec::to_string() const {
   return out;
 }
 
-std::vector<std::string> FeatureSpec::names() const {
-  std::vector<std::string> out;
+std::vector<FeatureColumn> FeatureSpec::columns() const {
+  std::vector<FeatureColumn> out;
   for (const auto& term : terms) {
     const auto& th = term.thermometers;
-    switch (term.term) {
-      case FeatureTerm::temp:
-        for (auto k : th) out.push_back(fmt::format("T_{}_degc", fogdrift::to_string(k)));
-        break;
-      case FeatureTerm::rate:
-        for (auto k : th) out.push_back(fmt::format("dT_{}_degc_per_s", fogdrift::to_string(k)));
-        break;
-      case FeatureTerm::gradient:
-      case FeatureTerm::gradient_rate:
-        for (std::size_t i = 0; i < th.size(); ++i) {
-          for (std::size_t j = i + 1; j < th.size(); ++j) {
-            const bool of_rate = term.term == FeatureTerm::gradient_rate;
-            out.push_back(fmt::format("{}grad_{}_{}_degc{}", of_rate ? "d" : "",
-                                      fogdrift::to_string(th[i]), fogdrift::to_string(th[j]),
-                                      of_rate ? "_per_s" : ""));
-          }
-        }
-        break;
-      case FeatureTerm::time:
-        out.emplace_back("t_s");
-        break;
-      case FeatureTerm::temp_rate_product:
-        for (auto k : th) out.push_back(fmt::format("TdT_{}_degc2_per_s", fogdrift::to_string(k)));
-        break;
+    if (term.term == FeatureTerm::time) {
+      out.push_back({FeatureTerm::time});
+    } else if (term.term == FeatureTerm::gradient || term.term == FeatureTerm::gradient_rate) {
+      for (std::size_t i = 0; i < th.size(); ++i)
+        for (std::size_t j = i + 1; j < th.size(); ++j) out.push_back({term.term, th[i], th[j]});
+    } else {
+      for (auto k : th) out.push_back({term.term, k});
     }
   }
+  return out;
+}
+
+std::string FeatureColumn::name() const {
+  const auto ta = fogdrift::to_string(a), tb = fogdrift::to_string(b);
+  switch (term) {
+    case FeatureTerm::temp:
+      return fmt::format("T_{}_degc", ta);
+    case FeatureTerm::rate:
+      return fmt::format("dT_{}_degc_per_s", ta);
+    case FeatureTerm::gradient:
+      return fmt::format("grad_{}_{}_degc", ta, tb);
+    case FeatureTerm::gradient_rate:
+      return fmt::format("dgrad_{}_{}_degc_per_s", ta, tb);
+    case FeatureTerm::time:
+      return "t_s";
+    case FeatureTerm::temp_rate_product:
+      return fmt::format("TdT_{}_degc2_per_s", ta);
+  }
+  return "?";
+}
+
+std::vector<std::string> FeatureSpec::names() const {
+  std::vector<std::string> out;
+  for (const FeatureColumn& c : columns()) out.push_back(c.name());
   return out;
 }
 
@@ -233,55 +241,26 @@ FeatureTable compute_features(const Recording& recording, const FeatureSpec& spe
                     options.block.block_s, block));
   }
 
-  std::array<const std::vector<double>*, 3> temps = {
+  const std::array<const std::vector<double>*, 3> temps = {
       &recording.temp_fog_degc, &recording.temp_acc1_degc, &recording.temp_acc2_degc};
+  const std::vector<FeatureColumn> plan = spec.columns();
+  // Rates only of the thermometers some input reads.
   std::array<std::vector<double>, 3> rates;
-  const auto rate_of = [&](Thermometer k) -> const std::vector<double>& {
-    auto& r = rates[static_cast<std::size_t>(k)];
-    if (r.empty())
-      r = signal::differentiate(*temps[static_cast<std::size_t>(k)], dt, options.rates);
-    return r;
-  };
-  const auto temp_of = [&](Thermometer k) -> const std::vector<double>& {
-    return *temps[static_cast<std::size_t>(k)];
-  };
-
-  std::vector<std::vector<double>> columns;  // at the recording's rate
-  for (const auto& term : spec.terms) {
-    const auto& th = term.thermometers;
-    switch (term.term) {
-      case FeatureTerm::temp:
-        for (auto k : th) columns.push_back(temp_of(k));
-        break;
-      case FeatureTerm::rate:
-        for (auto k : th) columns.push_back(rate_of(k));
-        break;
-      case FeatureTerm::gradient:
-      case FeatureTerm::gradient_rate:
-        for (std::size_t i = 0; i < th.size(); ++i) {
-          for (std::size_t j = i + 1; j < th.size(); ++j) {
-            const bool of_rate = term.term == FeatureTerm::gradient_rate;
-            const auto& a = of_rate ? rate_of(th[i]) : temp_of(th[i]);
-            const auto& b = of_rate ? rate_of(th[j]) : temp_of(th[j]);
-            std::vector<double> d(n);
-            for (std::size_t s = 0; s < n; ++s) d[s] = a[s] - b[s];
-            columns.push_back(std::move(d));
-          }
-        }
-        break;
-      case FeatureTerm::time:
-        columns.push_back(recording.time_s);
-        break;
-      case FeatureTerm::temp_rate_product:
-        for (auto k : th) {
-          const auto& tk = temp_of(k);
-          const auto& rk = rate_of(k);
-          std::vector<double> p(n);
-          for (std::size_t s = 0; s < n; ++s) p[s] = tk[s] * rk[s];
-          columns.push_back(std::move(p));
-        }
-        break;
+  for (Thermometer k : {Thermometer::fog, Thermometer::acc1, Thermometer::acc2}) {
+    const auto i = static_cast<std::size_t>(k);
+    if (std::any_of(plan.begin(), plan.end(),
+                    [k](const FeatureColumn& c) { return c.reads_rate(k); }))
+      rates[i] = signal::differentiate(*temps[i], dt, options.rates);
+  }
+  std::vector<std::vector<double>> columns(plan.size(), std::vector<double>(n));  // sample rate
+  for (std::size_t s = 0; s < n; ++s) {
+    std::array<double, 3> temp{}, rate{};
+    for (std::size_t i = 0; i < 3; ++i) {
+      temp[i] = (*temps[i])[s];
+      rate[i] = rates[i].empty() ? 0.0 : rates[i][s];
     }
+    for (std::size_t c = 0; c < plan.size(); ++c)
+      columns[c][s] = plan[c].value(temp, rate, recording.time_s[s]);
   }
 
   FeatureTable table;

@@ -347,34 +347,34 @@ std::string c_streaming_part(const CompensationModel& model, const std::string& 
       "}} {0}_state;\n\n"
       "static inline void {0}_reset({0}_state* s) {{\n  s->size = 0;\n  s->count = 0;\n}}\n\n",
       prefix, upper);
-  // Feature assignments in compute_features()'s order.
+  // Feature assignments: FeatureColumn::value() written out in C.
   std::string f;
-  std::size_t c = 0;
-  const auto idx = [](Thermometer k) { return static_cast<std::size_t>(k); };
-  for (const auto& term : model.dataset.features.terms) {
-    const auto& th = term.thermometers;
-    switch (term.term) {
+  const std::vector<FeatureColumn> columns = model.dataset.features.columns();
+  for (std::size_t c = 0; c < columns.size(); ++c) {
+    const auto a = static_cast<std::size_t>(columns[c].a);
+    const auto b = static_cast<std::size_t>(columns[c].b);
+    std::string value;
+    switch (columns[c].term) {
       case FeatureTerm::temp:
-        for (auto k : th) f += fmt::format("  f[{}] = temp[{}];\n", c++, idx(k));
+        value = fmt::format("temp[{}]", a);
         break;
       case FeatureTerm::rate:
-        for (auto k : th) f += fmt::format("  f[{}] = rate[{}];\n", c++, idx(k));
+        value = fmt::format("rate[{}]", a);
         break;
       case FeatureTerm::gradient:
-      case FeatureTerm::gradient_rate: {
-        const char* v = term.term == FeatureTerm::gradient_rate ? "rate" : "temp";
-        for (std::size_t i = 0; i < th.size(); ++i)
-          for (std::size_t j = i + 1; j < th.size(); ++j)
-            f += fmt::format("  f[{}] = {}[{}] - {}[{}];\n", c++, v, idx(th[i]), v, idx(th[j]));
+        value = fmt::format("temp[{}] - temp[{}]", a, b);
         break;
-      }
+      case FeatureTerm::gradient_rate:
+        value = fmt::format("rate[{}] - rate[{}]", a, b);
+        break;
       case FeatureTerm::time:
-        f += fmt::format("  f[{}] = time_s;\n", c++);
+        value = "time_s";
         break;
       case FeatureTerm::temp_rate_product:
-        for (auto k : th) f += fmt::format("  f[{}] = temp[{}] * rate[{}];\n", c++, idx(k), idx(k));
+        value = fmt::format("temp[{}] * rate[{}]", a, a);
         break;
     }
+    f += fmt::format("  f[{}] = {};\n", c, value);
   }
   h += fmt::format(
       "/* Predicted drift, deg/h, for the newest sample (every dt_s seconds since power-on). */\n"

@@ -49,14 +49,7 @@ void run(const EvaluateArgs& a) {
   std::string source;
   std::vector<RecordingInput> inputs;
   if (a.inputs.size() == 1 && is_campaign(a.inputs[0])) {
-    const Campaign campaign = read_campaign(a.inputs[0]);
-    for (const auto& e : campaign.recordings) {
-      if (e.scenario != Scenario::calibration || e.role != Role::test) continue;
-      inputs.push_back(recording_input(campaign, e, read_recording(campaign.path_of(e))));
-    }
-    if (inputs.empty())
-      throw InputError((campaign.dir / "campaign.json").string(), 0, 0,
-                       "no calibration recordings with role test in the campaign");
+    inputs = read_inputs(read_campaign(a.inputs[0]), Role::test, Scenario::calibration);
     data = build_dataset(inputs, model.dataset);
     source = a.inputs[0] + " (recordings with role \"test\")";
   } else {
@@ -79,15 +72,8 @@ void run(const EvaluateArgs& a) {
         fmt::format("features: the model's features ({}) differ from those its "
                     "feature spec gives for this data ({})",
                     fmt::join(model.feature_names, ","), fmt::join(data.feature_names, ",")));
-  const std::vector<double> predicted = model.predict_dph(data);
-
-  std::vector<eval::CompensationMetrics> per;
-  for (std::size_t g = 0; g < data.groups.size(); ++g) {
-    std::vector<double> y, p;
-    for (std::size_t i = 0; i < data.rows; ++i)
-      if (data.group[i] == g) y.push_back(data.y[i]), p.push_back(predicted[i]);
-    per.push_back(eval::compensation_metrics(y, p));
-  }
+  const std::vector<eval::CompensationMetrics> per =
+      eval::metrics_per_recording(data, model.predict_dph(data));
   const eval::CompensationMetrics all = eval::pool(per);
   const std::string method = to_string(model.provenance.method);
   std::vector<AllanRow> allan;

@@ -42,6 +42,7 @@ class StreamingCompensator {
  private:
   const CompensationModel& model_;
   std::array<signal::CausalDifferentiator, 3> rates_;
+  std::vector<FeatureColumn> columns_;  // the model's inputs (FeatureSpec::columns())
   std::vector<double> features_, work_;
 };
 

@@ -82,6 +82,11 @@ Dataset build_dataset(const std::vector<RecordingInput>& inputs,
 RecordingInput recording_input(const Campaign& campaign, const CampaignEntry& entry,
                                Recording recording);
 
+/// Reads the campaign's recordings of `scenario` (and of `role`, if given); read errors name the
+/// recording file, and a campaign without such recordings is an InputError naming campaign.json.
+std::vector<RecordingInput> read_inputs(const Campaign& campaign, std::optional<Role> role,
+                                        Scenario scenario = Scenario::calibration);
+
 /// Reads the campaign's recordings of `scenario` (and of `role`, if given) and builds a dataset;
 /// read errors name the recording file.
 Dataset build_dataset(const Campaign& campaign, std::optional<Role> role,

@@ -16,6 +16,8 @@
 // The recording must be uniformly sampled (every interval within 1 % of the median interval).
 #pragma once
 
+#include <array>
+
 #include <string>
 #include <string_view>
 #include <vector>
@@ -40,6 +42,42 @@ struct FeatureTermSpec {
   std::vector<Thermometer> thermometers;  ///< in fog, acc1, acc2 order; unused for t
 };
 
+/// One model input as an operation on a sample's three temperatures, their rates and its time:
+/// the term and the thermometer it reads (`b` too for the two gradient terms, a − b).
+struct FeatureColumn {
+  FeatureTerm term = FeatureTerm::temp;
+  Thermometer a = Thermometer::fog, b = Thermometer::fog;
+
+  /// Its value for one sample; temperatures and rates are indexed by Thermometer.
+  double value(const std::array<double, 3>& temp_degc, const std::array<double, 3>& rate_degc_per_s,
+               double time_s) const noexcept {
+    const auto i = static_cast<std::size_t>(a), j = static_cast<std::size_t>(b);
+    switch (term) {
+      case FeatureTerm::temp:
+        return temp_degc[i];
+      case FeatureTerm::rate:
+        return rate_degc_per_s[i];
+      case FeatureTerm::gradient:
+        return temp_degc[i] - temp_degc[j];
+      case FeatureTerm::gradient_rate:
+        return rate_degc_per_s[i] - rate_degc_per_s[j];
+      case FeatureTerm::time:
+        return time_s;
+      case FeatureTerm::temp_rate_product:
+        return temp_degc[i] * rate_degc_per_s[i];
+    }
+    return 0.0;
+  }
+  /// Whether it reads the rate of thermometer `k`.
+  bool reads_rate(Thermometer k) const noexcept {
+    return (term == FeatureTerm::rate || term == FeatureTerm::temp_rate_product) ? a == k
+           : term == FeatureTerm::gradient_rate ? (a == k || b == k)
+                                                : false;
+  }
+  /// Its name with unit, e.g. T_fog_degc, dgrad_fog_acc2_degc_per_s (FeatureSpec::names()).
+  std::string name() const;
+};
+
 struct FeatureSpec {
   std::vector<FeatureTermSpec> terms;
 
@@ -54,6 +92,9 @@ struct FeatureSpec {
   /// grad_fog_acc1_degc, dgrad_fog_acc2_degc_per_s, t_s, TdT_fog_degc2_per_s.
   std::vector<std::string> names() const;
   std::size_t size() const { return names().size(); }
+  /// The model inputs in order, as operations on one sample: the one description of what each
+  /// input is, shared by compute_features(), the streaming compensator and the C header.
+  std::vector<FeatureColumn> columns() const;
 };
 
 /// The paper's inputs, "T,dT,grad" (9 features).

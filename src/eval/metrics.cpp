@@ -43,7 +43,10 @@ CompensationMetrics compensation_metrics(std::span<const double> target_dph,
 CompensationMetrics pool(std::span<const CompensationMetrics> recordings) {
   CompensationMetrics p;
   double abs_sum = 0, sq_sum = 0, before = 0, after = 0;
+  std::size_t k = 0;
   for (const auto& r : recordings) {
+    if (r.rows == 0) continue;
+    ++k;
     p.rows += r.rows;
     abs_sum += r.mae_dph * static_cast<double>(r.rows);
     sq_sum += r.rmse_dph * r.rmse_dph * static_cast<double>(r.rows);
@@ -51,12 +54,26 @@ CompensationMetrics pool(std::span<const CompensationMetrics> recordings) {
     after += r.std_after_dph * r.std_after_dph;
   }
   if (p.rows == 0) return p;
-  const double k = static_cast<double>(recordings.size());
   p.mae_dph = abs_sum / static_cast<double>(p.rows);
   p.rmse_dph = std::sqrt(sq_sum / static_cast<double>(p.rows));
-  p.std_before_dph = std::sqrt(before / k);
-  p.std_after_dph = std::sqrt(after / k);
+  p.std_before_dph = std::sqrt(before / static_cast<double>(k));
+  p.std_after_dph = std::sqrt(after / static_cast<double>(k));
   return p;
+}
+
+std::vector<CompensationMetrics> metrics_per_recording(const Dataset& data,
+                                                       std::span<const double> predicted_dph) {
+  if (predicted_dph.size() != data.rows)
+    throw std::invalid_argument("metrics_per_recording: one prediction per row is needed");
+  std::vector<std::vector<double>> y(data.groups.size()), p(data.groups.size());
+  for (std::size_t i = 0; i < data.rows; ++i) {
+    y[data.group[i]].push_back(data.y[i]);
+    p[data.group[i]].push_back(predicted_dph[i]);
+  }
+  std::vector<CompensationMetrics> out;
+  for (std::size_t g = 0; g < data.groups.size(); ++g)
+    out.push_back(compensation_metrics(y[g], p[g]));
+  return out;
 }
 
 }  // namespace fogdrift::eval

@@ -40,21 +40,9 @@ std::vector<RecordingInput> inputs_of(const sim::SimulatedCampaign& c, std::opti
   return inputs;
 }
 
-// Table 2 metrics of predictions on test rows: per recording, then pooled (eval/metrics.hpp).
-// Groups without rows (a Dataset::select_groups subset keeps every group) do not count.
-eval::CompensationMetrics table2_of(const Dataset& test, const std::vector<double>& predicted) {
-  std::vector<eval::CompensationMetrics> per;
-  for (std::size_t g = 0; g < test.groups.size(); ++g) {
-    std::vector<double> y, p;
-    for (std::size_t i = 0; i < test.rows; ++i)
-      if (test.group[i] == g) y.push_back(test.y[i]), p.push_back(predicted[i]);
-    if (!y.empty()) per.push_back(eval::compensation_metrics(y, p));
-  }
-  return eval::pool(per);
-}
-
+// Table 2 of a model on test rows: per recording, pooled (eval/metrics.hpp).
 eval::CompensationMetrics table2_of(const CompensationModel& model, const Dataset& test) {
-  return table2_of(test, model.predict_dph(test));
+  return eval::pool(eval::metrics_per_recording(test, model.predict_dph(test)));
 }
 
 // North-finding RMSE of every recording of a north-finding campaign, raw (no model) or
@@ -77,18 +65,26 @@ std::vector<double> northfind_rmse(const sim::SimulatedCampaign& nf,
 
 svr::Params svr_params_of(const MethodRun& run) {
   svr::Params p;
-  for (const auto& [name, value] : run.hyperparameters) {
-    if (name == "C") p.c = value;
-    if (name == "sigma") p.kernel = svr::Kernel::rbf_sigma(value);
-    if (name == "epsilon") p.epsilon = value;
-  }
+  p.c = run.hyperparameter("C");
+  p.kernel = svr::Kernel::rbf_sigma(run.hyperparameter("sigma"));
+  p.epsilon = run.hyperparameter("epsilon");
   return p;
 }
 
-double hyperparameter(const MethodRun& run, std::string_view name) {
-  for (const auto& [n, v] : run.hyperparameters)
-    if (n == name) return v;
-  return std::nan("");
+// How every model of the experiment is trained: the run's budget, fitness, ε and BP settings.
+TrainOptions train_options(const PaperOptions& o, Method method, std::uint64_t seed,
+                           tune::Fitness fitness) {
+  TrainOptions to;
+  to.method = method;
+  to.tune.fitness = fitness;
+  to.tune.optimizer.run.population = o.population;
+  to.tune.optimizer.run.iterations = o.iterations;
+  to.tune.optimizer.run.seed = seed;
+  to.tune.pool = o.pool;
+  to.tune.space.epsilon = o.epsilon;
+  to.tune.space.search_epsilon = o.search_epsilon;
+  to.mlp = o.mlp;
+  return to;
 }
 
 std::string temp_label(double t) {
@@ -141,24 +137,17 @@ SeedRun run_seed(const PaperOptions& o, std::uint64_t seed, Stages& stages, Firs
   run.raw_rmse_deg = northfind_rmse(nf, nullptr);
   run.raw_mean_rmse_deg = mean_of(run.raw_rmse_deg);
   run.stable_rmse_deg = mean_of(northfind_rmse(st, nullptr));
-  run.denoised_std_dph = table2_of(test, std::vector<double>(test.rows, 0.0)).std_before_dph;
+  run.denoised_std_dph =
+      eval::pool(eval::metrics_per_recording(test, std::vector<double>(test.rows, 0.0)))
+          .std_before_dph;
 
   for (std::string_view name : kPaperMethods) {
     const Method method = parse_method(std::string(name));
     const bool tuned = method != Method::svr && method != Method::bp;
     stages.step(fmt::format("seed {}: training {}", seed, name),
                 tuned ? kTunedWeight : kOtherWeight);
-    TrainOptions to;
-    to.method = method;
-    to.tune.fitness = o.fitness;
-    to.tune.optimizer.run.population = o.population;
-    to.tune.optimizer.run.iterations = o.iterations;
-    to.tune.optimizer.run.seed = seed;
-    to.tune.pool = o.pool;
-    to.tune.space.epsilon = o.epsilon;
-    to.tune.space.search_epsilon = o.search_epsilon;
-    to.mlp = o.mlp;
-    TrainResult trained = fogdrift::train(train, dataset, to);
+    TrainResult trained =
+        fogdrift::train(train, dataset, train_options(o, method, seed, o.fitness));
     MethodRun m;
     m.method = std::string(name);
     m.table2 = table2_of(trained.model, test);
@@ -198,16 +187,10 @@ std::vector<LotoRow> loto_study(const PaperOptions& o, const SeedRun& run, const
       if (f.test.groups[g].initial_temp_degc == t) test_groups.push_back(g);
     const Dataset train = f.train.select_groups(keep_groups);
     const Dataset test = f.test.select_groups(test_groups);
-    TrainOptions to;
-    to.tune.optimizer.run.seed = run.seed;
-    to.tune.pool = o.pool;  // nested inside the study's loop: runs serially
-    if (name == "bp") {
-      to.method = Method::bp;
-      to.mlp = o.mlp;
-    } else {
-      to.method = Method::svr;
-      to.svr_params = svr_params_of(run.method(name));
-    }
+    // The pool is nested inside the study's loop here: it runs serially.
+    TrainOptions to =
+        train_options(o, name == "bp" ? Method::bp : Method::svr, run.seed, o.fitness);
+    if (name != "bp") to.svr_params = svr_params_of(run.method(name));
     const TrainResult loto = fogdrift::train(train, f.dataset, to);
     const eval::CompensationMetrics all = table2_of(f.models.at(name), test);
     const eval::CompensationMetrics left = table2_of(loto.model, test);
@@ -230,23 +213,15 @@ std::vector<FitnessRow> fitness_study(const PaperOptions& o, const SeedRun& run,
     row.fitness = std::string(tune::to_string(fitness));
     if (fitness == o.fitness) {
       const MethodRun& m = run.method("ssa-svr");
-      row.c = hyperparameter(m, "C");
-      row.sigma = hyperparameter(m, "sigma");
+      row.c = m.hyperparameter("C");
+      row.sigma = m.hyperparameter("sigma");
       row.fitness_value = m.fitness_value;
       row.std_dph = m.table2.std_after_dph;
       row.mae_dph = m.table2.mae_dph;
       row.mean_rmse_deg = m.mean_rmse_deg;
     } else {
-      TrainOptions to;
-      to.method = Method::ssa_svr;
-      to.tune.fitness = fitness;
-      to.tune.optimizer.run.population = o.population;
-      to.tune.optimizer.run.iterations = o.iterations;
-      to.tune.optimizer.run.seed = run.seed;
-      to.tune.pool = o.pool;
-      to.tune.space.epsilon = o.epsilon;
-      to.tune.space.search_epsilon = o.search_epsilon;
-      const TrainResult t = train(f.train, f.dataset, to);
+      const TrainResult t =
+          train(f.train, f.dataset, train_options(o, Method::ssa_svr, run.seed, fitness));
       row.c = t.summary.tuning.best.c;
       row.sigma = t.summary.tuning.best.kernel.sigma();
       row.fitness_value = t.summary.fitness_value;
@@ -411,6 +386,12 @@ std::vector<Figure> figures_of(const PaperResult& r, const FirstSeed& f) {
 }
 
 }  // namespace
+
+double MethodRun::hyperparameter(std::string_view name) const {
+  for (const auto& [n, v] : hyperparameters)
+    if (n == name) return v;
+  return std::nan("");
+}
 
 const MethodRun& SeedRun::method(std::string_view name) const {
   for (const auto& m : methods)

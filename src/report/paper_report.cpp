@@ -32,12 +32,6 @@ MeanSd over_seeds(const PaperResult& r, Get get) {
   return mean_sd(v);
 }
 
-double hyper(const MethodRun& m, const std::string& name) {
-  for (const auto& [n, v] : m.hyperparameters)
-    if (n == name) return v;
-  return std::nan("");
-}
-
 std::string pm(const MeanSd& m, int digits = 4) {
   return fmt::format("{:.{}f} ± {:.{}f}", m.mean, digits, m.sd, digits);
 }
@@ -97,9 +91,10 @@ PaperVerdict verdict(const PaperResult& r) {
 std::string paper_json(const PaperResult& r) {
   using json = nlohmann::ordered_json;
   json j;
-  const MeanSd c = over_seeds(r, [](const SeedRun& s) { return hyper(s.method("ssa-svr"), "C"); });
+  const MeanSd c =
+      over_seeds(r, [](const SeedRun& s) { return s.method("ssa-svr").hyperparameter("C"); });
   const MeanSd sg =
-      over_seeds(r, [](const SeedRun& s) { return hyper(s.method("ssa-svr"), "sigma"); });
+      over_seeds(r, [](const SeedRun& s) { return s.method("ssa-svr").hyperparameter("sigma"); });
   j["table1"] = {{"C", c.mean}, {"C_sd", c.sd}, {"sigma", sg.mean}, {"sigma_sd", sg.sd}};
 
   json t2;
@@ -235,11 +230,14 @@ std::string paper_markdown(const PaperResult& r) {
   md << "## Table 1 — SSA-SVR's tuned parameters\n\n| | fogdrift | paper |\n|---|---|---|\n";
   md << fmt::format(
       "| C | {} | {:.4f} |\n",
-      pm(over_seeds(r, [](const SeedRun& s) { return hyper(s.method("ssa-svr"), "C"); }), 2),
+      pm(over_seeds(r, [](const SeedRun& s) { return s.method("ssa-svr").hyperparameter("C"); }),
+         2),
       kPaperC);
   md << fmt::format(
       "| σ | {} | {:.4f} |\n\n",
-      pm(over_seeds(r, [](const SeedRun& s) { return hyper(s.method("ssa-svr"), "sigma"); }), 3),
+      pm(over_seeds(r,
+                    [](const SeedRun& s) { return s.method("ssa-svr").hyperparameter("sigma"); }),
+         3),
       kPaperSigma);
   md << "fogdrift's C is for the standardised target and σ for standardised features; the "
         "paper does not say how its data were scaled, so only their order is comparable.\n\n";
@@ -367,8 +365,8 @@ std::string paper_markdown(const PaperResult& r) {
         "| {} | {:.4f} | {:.4f} | {:.4f} | {:.4f} | {:.4f} | {:.4f} | {:.3g} | {:.3g} | {:.0f} "
         "|\n",
         s.seed, s.denoised_std_dph, ssa.table2.std_after_dph, s.method("bp").table2.std_after_dph,
-        s.raw_mean_rmse_deg, ssa.mean_rmse_deg, s.stable_rmse_deg, hyper(ssa, "C"),
-        hyper(ssa, "sigma"), s.seconds);
+        s.raw_mean_rmse_deg, ssa.mean_rmse_deg, s.stable_rmse_deg, ssa.hyperparameter("C"),
+        ssa.hyperparameter("sigma"), s.seconds);
   }
   md << "\n## Figures\n\n";
   for (const Figure& f : r.figures) {

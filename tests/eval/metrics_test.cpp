@@ -38,8 +38,36 @@ TEST(CompensationMetrics, PoolsRecordings) {
   EXPECT_DOUBLE_EQ(p.rmse_dph, std::sqrt(28.0 / 4));
   EXPECT_DOUBLE_EQ(p.std_before_dph, std::sqrt(25.0 / 2));
   EXPECT_DOUBLE_EQ(p.std_after_dph, 5.0);
+  // A recording without rows (a subset of a dataset keeps every group) does not dilute the STDs.
+  const std::vector<CompensationMetrics> with_empty{a, CompensationMetrics{}, b};
+  const CompensationMetrics q = pool(with_empty);
+  EXPECT_EQ(q.rows, p.rows);
+  EXPECT_EQ(q.std_before_dph, p.std_before_dph);
+  EXPECT_EQ(q.std_after_dph, p.std_after_dph);
+  EXPECT_EQ(q.mae_dph, p.mae_dph);
   EXPECT_THROW(compensation_metrics(std::vector<double>{1}, std::vector<double>{1, 2}),
                std::invalid_argument);
+}
+
+// Rows are grouped by recording, in the dataset's group order, whatever order the rows are in.
+TEST(CompensationMetrics, PerRecordingFollowsTheGroups) {
+  Dataset d;
+  d.feature_names = {"x"};
+  d.groups.resize(3);
+  d.rows = 5;
+  d.x = {0, 0, 0, 0, 0};
+  d.y = {1, 10, 2, 20, 3};
+  d.group = {0, 2, 0, 2, 0};
+  const std::vector<double> predicted{1, 10, 1, 10, 1};
+  const auto per = metrics_per_recording(d, predicted);
+  ASSERT_EQ(per.size(), 3u);
+  EXPECT_EQ(per[0].rows, 3u);
+  EXPECT_EQ(per[1].rows, 0u);
+  EXPECT_EQ(per[2].rows, 2u);
+  EXPECT_DOUBLE_EQ(per[0].mae_dph, 1.0);         // residuals 0, 1, 2
+  EXPECT_DOUBLE_EQ(per[2].mae_dph, 5.0);         // residuals 0, 10
+  EXPECT_DOUBLE_EQ(per[0].std_before_dph, 1.0);  // 1, 2, 3
+  EXPECT_THROW(metrics_per_recording(d, std::vector<double>{1}), std::invalid_argument);
 }
 
 }  // namespace

@@ -66,11 +66,7 @@ TEST(Paper, RunsEveryMethodOnEverySeedAndReportsIt) {
   ASSERT_EQ(r.fitness.size(), 2u);
   EXPECT_EQ(r.fitness[0].fitness, "cv");
   EXPECT_EQ(r.fitness[1].fitness, "train");
-  EXPECT_EQ(r.fitness[0].c, [&] {
-    for (const auto& [n, v] : r.seeds[0].method("ssa-svr").hyperparameters)
-      if (n == "C") return v;
-    return 0.0;
-  }());
+  EXPECT_EQ(r.fitness[0].c, r.seeds[0].method("ssa-svr").hyperparameter("C"));
   EXPECT_EQ(r.figures.size(), 5u);
 
   // The JSON follows the schema.

@@ -14,6 +14,8 @@
 #include <span>
 #include <vector>
 
+#include "fogdrift/dataset.hpp"
+
 namespace fogdrift::eval {
 
 struct CompensationMetrics {
@@ -29,7 +31,13 @@ struct CompensationMetrics {
 CompensationMetrics compensation_metrics(std::span<const double> target_dph,
                                          std::span<const double> predicted_dph);
 
-/// Pools per-recording metrics as described above (rows weight MAE and RMSE).
+/// Pools per-recording metrics as described above (rows weight MAE and RMSE). Recordings without
+/// rows do not count.
 CompensationMetrics pool(std::span<const CompensationMetrics> recordings);
+
+/// Metrics of every recording (group) of `data`, in data.groups order, from predictions of its
+/// rows; a group without rows (Dataset::select_groups keeps every group) has rows = 0.
+std::vector<CompensationMetrics> metrics_per_recording(const Dataset& data,
+                                                       std::span<const double> predicted_dph);
 
 }  // namespace fogdrift::eval

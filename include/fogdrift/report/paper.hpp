@@ -65,6 +65,8 @@ struct MethodRun {
   std::vector<std::pair<std::string, double>> hyperparameters;
   double fitness_value = 0;  ///< the training summary's fitness (standardised RMSE)
   double train_seconds = 0;
+  /// The named hyperparameter ("C", "sigma", "epsilon", "hidden", …), NaN if the method has none.
+  double hyperparameter(std::string_view name) const;
 };
 
 struct SeedRun {
