@@ -289,6 +289,13 @@ check "stream missing column" run 1 "$fd" stream "$work/causal.json" "$work/no_a
 check "stream missing column message" err_has "no_acc2.csv:1: has no temp_acc2_degc column"
 check "stream a compensated file" run 1 "$fd" stream "$work/causal.json" "$work/comp_causal.csv" --rate-hz 1
 check "stream compensated message" err_has "already has a drift_dph column"
+awk 'NR==4{print $0 ",extra"; next} {print}' "$rec20" >"$work/ragged.csv"
+check "stream ragged line" run 1 "$fd" stream "$work/causal.json" "$work/ragged.csv" --rate-hz 1
+check "stream ragged message" err_has "ragged.csv:4: has 11 fields, the header 10"
+check "stream empty input" run 1 "$fd" stream "$work/causal.json" - --rate-hz 1 </dev/null
+check "stream empty message" err_has "<stdin>:1: is empty; a header line is needed"
+check "stream missing file" run 1 "$fd" stream "$work/causal.json" "$work/nonexistent.csv" --rate-hz 1
+check "stream missing file message" err_has "nonexistent.csv: cannot be opened for reading"
 check "stream rate required" run 106 "$fd" stream "$work/causal.json" "$rec20"
 check "stream rate required message" err_has "--rate-hz is required"
 
@@ -315,6 +322,8 @@ check "no header on error" test ! -e "$work/bad.h"
 check "simulate northfind" run 0 "$fd" simulate northfind --out "$work/nf2" --temps -16,28 --seed 2
 check "northfind raw" run 0 "$fd" northfind "$work/nf2"
 check "northfind Table 3 view" out_has "Table 3 view, RMSE per initial temperature"
+check "evaluate a north-finding campaign" run 1 "$fd" evaluate "$work/svr.json" "$work/nf2"
+check "no test recordings message" err_has "campaign.json: no calibration recordings with role test in the campaign"
 check "northfind with a model" run 0 "$fd" northfind "$work/nf2" --model "$work/bp.json"
 check "northfind compensated column" out_has "comp. err °"
 check "northfind --json" run 0 "$fd" northfind --json "$work/nf2" --model "$work/svr.json"
