@@ -1,6 +1,7 @@
 // fogdrift's ε-SVR engine against LIBSVM, in one process on the same data (issue: SVR engine).
 //
 //   svr_vs_libsvm [--sizes 2000,6000] [--repeats 3] [--sweep-n 6000] [--no-sweep] [--no-threads]
+//                 [--libsvm-path]
 //
 // Data: tests/svr/datasets.hpp startup_like(N), d = 9, standardised features and target.
 // Grid: C ∈ {1, 10, 100}, σ ∈ {0.5, 1, 2} (γ = 1/(2σ²)), ε = 0.1, tolerance 1e-3, shrinking on,
@@ -61,8 +62,11 @@ LibsvmFit libsvm_fit(LibsvmData& data, double c, double gamma) {
   return out;
 }
 
+bool g_libsvm_path = false;  // --libsvm-path: fogdrift's solver that follows LIBSVM's path
+
 fogdrift::svr::Params params_for(double c, double sigma) {
   fogdrift::svr::Params p;
+  p.libsvm_path = g_libsvm_path;
   p.kernel = fogdrift::svr::Kernel::rbf_sigma(sigma);
   p.c = c;
   p.epsilon = 0.1;
@@ -99,10 +103,12 @@ int main(int argc, char** argv) {
       sweep = false;
     else if (a == "--no-threads")
       threads = false;
+    else if (a == "--libsvm-path")
+      g_libsvm_path = true;
     else {
       std::fprintf(stderr,
                    "usage: %s [--sizes N,N] [--repeats R] [--sweep-n N] [--no-sweep] "
-                   "[--no-threads]\n",
+                   "[--no-threads] [--libsvm-path]\n",
                    argv[0]);
       return 2;
     }

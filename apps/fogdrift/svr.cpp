@@ -30,6 +30,7 @@ struct TrainArgs {
   double tolerance = 1e-3;
   double cache_mb = 100;
   int shrinking = 1;
+  std::string solver = "libsvm";
   bool quiet = false;
   bool json = false;
   std::string data, model;
@@ -56,6 +57,8 @@ void run_train(const TrainArgs& a) {
                                         "(linear)",
                                         a.kernel_type));
   if (a.shrinking != 0 && a.shrinking != 1) throw OptionError("-h", "must be 0 or 1");
+  if (a.solver != "libsvm" && a.solver != "pairs")
+    throw OptionError("--solver", fmt::format("must be libsvm or pairs (got '{}')", a.solver));
   if (a.gamma != 0 && a.sigma != 0) throw OptionError("--sigma", "give either -g or --sigma");
   svr::Data data = svr::read_libsvm_data(a.data);
   svr::Params p;
@@ -74,6 +77,7 @@ void run_train(const TrainArgs& a) {
   p.tolerance = a.tolerance;
   p.cache_mb = a.cache_mb;
   p.shrinking = a.shrinking == 1;
+  p.libsvm_path = a.solver == "libsvm";
   svr::validate(p, svr::ParamNames{"-c", a.sigma != 0 ? "--sigma" : "-g", "-p", "-e", "-m",
                                    "max_iterations"});
   const std::string model_path =
@@ -189,6 +193,13 @@ void add_svr(CLI::App& app) {
   train->add_option("-e", ta->tolerance, "stopping tolerance > 0")->capture_default_str();
   train->add_option("-m", ta->cache_mb, "kernel cache, MB")->capture_default_str();
   train->add_option("-h", ta->shrinking, "shrinking heuristics, 0 or 1")->capture_default_str();
+  train
+      ->add_option(
+          "--solver", ta->solver,
+          "libsvm: LIBSVM's working sets one for one, so the model, iterations and nSV are\n"
+          "svm-train's; pairs: the faster solver fogdrift's training uses, the same\n"
+          "optimum to the tolerance -e by another path")
+      ->capture_default_str();
   train->add_flag("-q", ta->quiet, "print nothing");
   train->add_flag("--json", ta->json, "print the fit summary as JSON");
   train->add_option("DATA", ta->data, "training data, LIBSVM format")->required();

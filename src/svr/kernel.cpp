@@ -9,6 +9,7 @@
 #include "fogdrift/error.hpp"
 #include "fogdrift/thread_pool.hpp"
 #include "svr/loops.hpp"
+#include "svr/row_arena.hpp"
 
 namespace fogdrift::svr {
 
@@ -139,7 +140,7 @@ KernelCache::KernelCache(const TrainingSet& set, const Kernel& kernel, double ca
   row_of_slot_.reserve(capacity_);
   prev_.reserve(capacity_);
   next_.reserve(capacity_);
-  slots_.reserve(capacity_);
+  slots_ = std::make_unique<detail::RowArena>(capacity_, n_);
 }
 
 KernelCache::~KernelCache() = default;
@@ -173,11 +174,10 @@ const float* KernelCache::row(std::size_t i) {
   std::int32_t s = slot_of_row_[i];
   if (s >= 0) {
     touch(s);
-    return slots_[s].get();
+    return slots_->row(static_cast<std::size_t>(s));
   }
-  if (slots_.size() < capacity_) {
-    s = static_cast<std::int32_t>(slots_.size());
-    slots_.push_back(std::make_unique_for_overwrite<float[]>(n_));
+  if (used_ < capacity_) {
+    s = static_cast<std::int32_t>(used_++);
     row_of_slot_.push_back(-1);
     prev_.push_back(-1);
     next_.push_back(-1);
@@ -189,9 +189,10 @@ const float* KernelCache::row(std::size_t i) {
   row_of_slot_[s] = static_cast<std::int32_t>(i);
   slot_of_row_[i] = s;
   push_front(s);
-  set_.kernel_row(kernel_, i, slots_[s].get());
+  float* out = slots_->row(static_cast<std::size_t>(s));
+  set_.kernel_row(kernel_, i, out);
   ++rows_computed_;
-  return slots_[s].get();
+  return out;
 }
 
 }  // namespace fogdrift::svr

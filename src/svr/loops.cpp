@@ -178,6 +178,12 @@ Selection select_i_portable(const double* g, const std::int8_t* y, const std::ui
 }  // namespace
 
 namespace {
+// The curvature of the two-variable subproblem, τ when not positive (LIBSVM's quad_coef).
+inline double curvature(double qd_i, double qd_j, float k_ij, double tau) {
+  const double quad = (qd_i + qd_j) - 2.0 * static_cast<double>(k_ij);
+  return quad > 0 ? quad : tau;
+}
+
 inline double objective_decrease(double grad_diff, double qd_i, double qd_j, float k_ij,
                                  double tau) {
   const double quad = (qd_i + qd_j) - 2.0 * static_cast<double>(k_ij);
@@ -215,6 +221,62 @@ SelectionJ select_j_portable(const double* g, const std::int8_t* y, const std::u
   return out;
 }
 
+// update_and_select_up over [begin, len), continuing from `out`; the portable version, and the
+// tail of the vectorised one.
+template <bool kUpdate>
+void update_and_select_up_scalar(double* f, const double* up, const float* k_i, const float* k_j,
+                                 double b_i, double b_j, std::size_t begin, std::size_t len,
+                                 Selection& out) {
+  for (std::size_t k = begin; k < len; ++k) {
+    if constexpr (kUpdate)
+      f[k] += static_cast<double>(k_i[k]) * b_i + static_cast<double>(k_j[k]) * b_j;
+    const double v = up[k] - f[k];
+    if (v >= out.value) out = {v, static_cast<std::int64_t>(k)};
+  }
+}
+
+// No sample offers a variable when the best value is a kNoVariable offset.
+Selection none_if_offsets_only(const Selection& s) {
+  return s.value < kNoVariable / 2 ? Selection{-DBL_MAX, -1} : s;
+}
+
+template <bool kUpdate>
+Selection update_and_select_up_portable(double* f, const double* up, const float* k_i,
+                                        const float* k_j, double b_i, double b_j, std::size_t len) {
+  Selection out{-DBL_MAX, -1};
+  update_and_select_up_scalar<kUpdate>(f, up, k_i, k_j, b_i, b_j, 0, len, out);
+  return none_if_offsets_only(out);
+}
+
+// select_low over [begin, len), continuing from `out` and the best gain so far num/den; the
+// portable version, and the tail of the vectorised one.
+void select_low_scalar(const double* f, const double* low, const float* k_i, const double* qd,
+                       double qd_i, double g_max, double tau, std::size_t begin, std::size_t len,
+                       SelectionJ& out, double& best_num, double& best_den) {
+  for (std::size_t k = begin; k < len; ++k) {
+    const double yg = f[k] + low[k];
+    out.g_max2 = yg > out.g_max2 ? yg : out.g_max2;
+    const double grad_diff = g_max + yg;
+    if (!(grad_diff > 0)) continue;
+    const double num = grad_diff * grad_diff, den = curvature(qd_i, qd[k], k_i[k], tau);
+    if (num * best_den >= best_num * den) {
+      best_num = num;
+      best_den = den;
+      out.index = static_cast<std::int64_t>(k);
+    }
+  }
+}
+
+SelectionJ select_low_portable(const double* f, const double* low, const float* k_i,
+                               const double* qd, double qd_i, double g_max, double tau,
+                               std::size_t len) {
+  SelectionJ out;
+  out.g_max2 = -DBL_MAX;
+  double best_num = 0, best_den = 1;  // the best gain so far, (G_max + y·G)² / curvature
+  select_low_scalar(f, low, k_i, qd, qd_i, g_max, tau, 0, len, out, best_num, best_den);
+  return out;
+}
+
 #if FOGDRIFT_HAVE_AVX2_GATHER
 // AVX2 versions of the selections: four variables at a time, each lane remembering its last
 // maximiser (minimiser), lanes merged so that the overall last one wins, as in LIBSVM.
@@ -246,6 +308,20 @@ __attribute__((target("avx2"))) inline void load_masks(const std::int8_t* y,
   low = _mm256_castsi256_pd(_mm256_cvtepi32_epi64(low32));
 }
 
+// The last maximiser over four lanes, each holding its own last maximiser (index −1: none).
+__attribute__((target("avx2"))) Selection merge_lanes_max(__m256d best, __m256d best_index) {
+  alignas(32) double bv[4], bi[4];
+  _mm256_store_pd(bv, best);
+  _mm256_store_pd(bi, best_index);
+  Selection out{-DBL_MAX, -1};
+  for (int k = 0; k < 4; ++k) {
+    if (bi[k] < 0) continue;
+    const auto idx = static_cast<std::int64_t>(bi[k]);
+    if (bv[k] > out.value || (bv[k] == out.value && idx > out.index)) out = {bv[k], idx};
+  }
+  return out;
+}
+
 __attribute__((target("avx2"))) Selection select_i_avx2(const double* g, const std::int8_t* y,
                                                         const std::uint8_t* status,
                                                         std::size_t len) {
@@ -266,15 +342,7 @@ __attribute__((target("avx2"))) Selection select_i_avx2(const double* g, const s
     best_index = _mm256_blendv_pd(best_index, index, take);
     index = _mm256_add_pd(index, four);
   }
-  alignas(32) double bv[4], bi[4];
-  _mm256_store_pd(bv, best);
-  _mm256_store_pd(bi, best_index);
-  Selection out{-DBL_MAX, -1};
-  for (int k = 0; k < 4; ++k) {
-    if (bi[k] < 0) continue;
-    const auto idx = static_cast<std::int64_t>(bi[k]);
-    if (bv[k] > out.value || (bv[k] == out.value && idx > out.index)) out = {bv[k], idx};
-  }
+  Selection out = merge_lanes_max(best, best_index);
   for (; t < len; ++t) {
     if (!in_up(y[t], status[t])) continue;
     const double v = -static_cast<double>(y[t]) * g[t];
@@ -347,6 +415,128 @@ __attribute__((target("avx2"))) SelectionJ select_j_avx2(const double* g, const 
   }
   return out;
 }
+
+// The pair solver's loops (see loops.hpp), four samples at a time in the same way.
+
+// One block of four for update_and_select_up_avx2: the update, then the running last maximum.
+template <bool kUpdate>
+__attribute__((target("avx2"))) inline void up_block(double* f, const double* up, const float* k_i,
+                                                     const float* k_j, __m256d bi, __m256d bj,
+                                                     std::size_t k, __m256d& best,
+                                                     __m256d& best_index) {
+  __m256d fk = _mm256_loadu_pd(f + k);
+  if constexpr (kUpdate) {
+    const __m256d ki = _mm256_cvtps_pd(_mm_loadu_ps(k_i + k));
+    const __m256d kj = _mm256_cvtps_pd(_mm_loadu_ps(k_j + k));
+    fk = _mm256_add_pd(fk, _mm256_add_pd(_mm256_mul_pd(ki, bi), _mm256_mul_pd(kj, bj)));
+    _mm256_storeu_pd(f + k, fk);
+  }
+  const __m256d v = _mm256_sub_pd(_mm256_loadu_pd(up + k), fk);
+  const __m256d take = _mm256_cmp_pd(v, best, _CMP_GE_OQ);
+  best = _mm256_blendv_pd(best, v, take);
+  const __m256d index =
+      _mm256_add_pd(_mm256_set1_pd(static_cast<double>(k)), _mm256_setr_pd(0, 1, 2, 3));
+  best_index = _mm256_blendv_pd(best_index, index, take);
+}
+
+// Two independent sets of lanes, so that one set's compare-and-blend chain does not stall the
+// next block.
+template <bool kUpdate>
+__attribute__((target("avx2"))) Selection update_and_select_up_avx2(double* f, const double* up,
+                                                                    const float* k_i,
+                                                                    const float* k_j, double b_i,
+                                                                    double b_j, std::size_t len) {
+  __m256d best[2] = {_mm256_set1_pd(-DBL_MAX), _mm256_set1_pd(-DBL_MAX)};
+  __m256d best_index[2] = {_mm256_set1_pd(-1.0), _mm256_set1_pd(-1.0)};
+  const __m256d bi = _mm256_set1_pd(b_i);
+  const __m256d bj = _mm256_set1_pd(b_j);
+  std::size_t k = 0;
+  for (; k + 8 <= len; k += 8) {
+    up_block<kUpdate>(f, up, k_i, k_j, bi, bj, k, best[0], best_index[0]);
+    up_block<kUpdate>(f, up, k_i, k_j, bi, bj, k + 4, best[1], best_index[1]);
+  }
+  Selection out = merge_lanes_max(best[0], best_index[0]);
+  const Selection other = merge_lanes_max(best[1], best_index[1]);
+  if (other.index >= 0 &&
+      (other.value > out.value || (other.value == out.value && other.index > out.index)))
+    out = other;
+  update_and_select_up_scalar<kUpdate>(f, up, k_i, k_j, b_i, b_j, k, len, out);
+  return none_if_offsets_only(out);
+}
+
+// Compares gains by cross-multiplication, num·best_den ≥ best_num·den, instead of dividing (the
+// division was the slowest instruction of the loop), in four independent sets of lanes so that
+// the compare-and-blend chain of one set does not stall the next block.
+struct GainLanes {
+  __m256d num, den, index;
+};
+
+__attribute__((target("avx2"))) inline void gain_block(const double* f, const double* low,
+                                                       const float* k_i, const double* qd,
+                                                       std::size_t k, __m256d gm, __m256d qdi,
+                                                       __m256d tau, __m256d& g_max2,
+                                                       GainLanes& best) {
+  const __m256d two = _mm256_set1_pd(2.0);
+  const __m256d zero = _mm256_setzero_pd();
+  const __m256d yg = _mm256_add_pd(_mm256_loadu_pd(f + k), _mm256_loadu_pd(low + k));
+  g_max2 = _mm256_max_pd(g_max2, yg);
+  const __m256d gd = _mm256_add_pd(gm, yg);
+  const __m256d kik = _mm256_cvtps_pd(_mm_loadu_ps(k_i + k));
+  const __m256d quad =
+      _mm256_sub_pd(_mm256_add_pd(qdi, _mm256_loadu_pd(qd + k)), _mm256_mul_pd(two, kik));
+  const __m256d den = _mm256_blendv_pd(tau, quad, _mm256_cmp_pd(quad, zero, _CMP_GT_OQ));
+  const __m256d num = _mm256_mul_pd(gd, gd);
+  const __m256d better =
+      _mm256_cmp_pd(_mm256_mul_pd(num, best.den), _mm256_mul_pd(best.num, den), _CMP_GE_OQ);
+  const __m256d take = _mm256_and_pd(better, _mm256_cmp_pd(gd, zero, _CMP_GT_OQ));
+  best.num = _mm256_blendv_pd(best.num, num, take);
+  best.den = _mm256_blendv_pd(best.den, den, take);
+  const __m256d index =
+      _mm256_add_pd(_mm256_set1_pd(static_cast<double>(k)), _mm256_setr_pd(0, 1, 2, 3));
+  best.index = _mm256_blendv_pd(best.index, index, take);
+}
+
+__attribute__((target("avx2"))) SelectionJ select_low_avx2(const double* f, const double* low,
+                                                           const float* k_i, const double* qd,
+                                                           double qd_i, double g_max, double tau,
+                                                           std::size_t len) {
+  const __m256d gm = _mm256_set1_pd(g_max);
+  const __m256d qdi = _mm256_set1_pd(qd_i);
+  __m256d g_max2[4];
+  GainLanes best[4];
+  for (int s = 0; s < 4; ++s) {
+    g_max2[s] = _mm256_set1_pd(-DBL_MAX);
+    best[s] = {_mm256_setzero_pd(), _mm256_set1_pd(1.0), _mm256_set1_pd(-1.0)};
+  }
+  const __m256d tau4 = _mm256_set1_pd(tau);
+  std::size_t k = 0;
+  for (; k + 16 <= len; k += 16)
+    for (int s = 0; s < 4; ++s)
+      gain_block(f, low, k_i, qd, k + 4 * s, gm, qdi, tau4, g_max2[s], best[s]);
+  SelectionJ out;
+  out.g_max2 = -DBL_MAX;
+  double num_max = 0, den_max = 1;
+  for (int s = 0; s < 4; ++s) {
+    alignas(32) double bn[4], bd[4], bi[4], m2[4];
+    _mm256_store_pd(bn, best[s].num);
+    _mm256_store_pd(bd, best[s].den);
+    _mm256_store_pd(bi, best[s].index);
+    _mm256_store_pd(m2, g_max2[s]);
+    for (int t = 0; t < 4; ++t) {
+      out.g_max2 = std::max(out.g_max2, m2[t]);
+      if (bi[t] < 0) continue;
+      const auto idx = static_cast<std::int64_t>(bi[t]);
+      const double lhs = bn[t] * den_max, rhs = num_max * bd[t];
+      if (lhs > rhs || (lhs == rhs && idx > out.index)) {
+        num_max = bn[t];
+        den_max = bd[t];
+        out.index = idx;
+      }
+    }
+  }
+  select_low_scalar(f, low, k_i, qd, qd_i, g_max, tau, k, len, out, num_max, den_max);
+  return out;
+}
 #endif
 }  // namespace
 
@@ -375,6 +565,48 @@ SelectionJ select_j_reference(const double* g, const std::int8_t* y, const std::
                               const float* k_i, const double* qd, double qd_i, double g_max,
                               double tau, std::size_t len) {
   return select_j_portable(g, y, status, k_i, qd, qd_i, g_max, tau, len);
+}
+
+Selection select_up(const double* f, const double* up, std::size_t len) {
+  // The fused loop without its update; f is only read.
+  double* g = const_cast<double*>(f);
+#if FOGDRIFT_HAVE_AVX2_GATHER
+  if (kHasAvx2) return update_and_select_up_avx2<false>(g, up, nullptr, nullptr, 0.0, 0.0, len);
+#endif
+  return update_and_select_up_portable<false>(g, up, nullptr, nullptr, 0.0, 0.0, len);
+}
+
+Selection update_and_select_up(double* f, const double* up, const float* k_i, const float* k_j,
+                               double b_i, double b_j, std::size_t len) {
+#if FOGDRIFT_HAVE_AVX2_GATHER
+  if (kHasAvx2) return update_and_select_up_avx2<true>(f, up, k_i, k_j, b_i, b_j, len);
+#endif
+  return update_and_select_up_portable<true>(f, up, k_i, k_j, b_i, b_j, len);
+}
+
+SelectionJ select_low(const double* f, const double* low, const float* k_i, const double* qd,
+                      double qd_i, double g_max, double tau, std::size_t len) {
+#if FOGDRIFT_HAVE_AVX2_GATHER
+  if (kHasAvx2) return select_low_avx2(f, low, k_i, qd, qd_i, g_max, tau, len);
+#endif
+  return select_low_portable(f, low, k_i, qd, qd_i, g_max, tau, len);
+}
+
+FOGDRIFT_CLONES
+void add_row(double* g, const float* k_row, double a, std::size_t begin, std::size_t end) {
+  for (std::size_t k = begin; k < end; ++k) g[k] += a * static_cast<double>(k_row[k]);
+}
+
+Selection update_and_select_up_reference(double* f, const double* up, const float* k_i,
+                                         const float* k_j, double b_i, double b_j,
+                                         std::size_t len) {
+  return update_and_select_up_portable<true>(f, up, k_i, k_j, b_i, b_j, len);
+}
+
+SelectionJ select_low_reference(const double* f, const double* low, const float* k_i,
+                                const double* qd, double qd_i, double g_max, double tau,
+                                std::size_t len) {
+  return select_low_portable(f, low, k_i, qd, qd_i, g_max, tau, len);
 }
 
 }  // namespace fogdrift::svr::detail

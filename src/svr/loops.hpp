@@ -82,4 +82,40 @@ SelectionJ select_j_reference(const double* g, const std::int8_t* y, const std::
                               const float* k_i, const double* qd, double qd_i, double g_max,
                               double tau, std::size_t len);
 
+// The pair solver (smo_solver.hpp) keeps one gradient per sample, f_k = (Kβ)_k − z_k with
+// β = α⁺ − α⁻: LIBSVM's two gradients are G⁺_k = f_k + ε and G⁻_k = ε − f_k. For sample k, the
+// best of its variables in I_up has −y·G = up_k − f_k and the best in I_low has y·G = f_k + low_k,
+// where the offsets up_k, low_k ∈ {+ε, −ε} depend only on the bounds of α⁺_k and α⁻_k, and are
+// kNoVariable when neither variable qualifies.
+
+/// Offset of a sample with no variable in I_up (I_low). Finite, so that the loops may assume
+/// finite values; far below any gradient (|f| < 1e50 by far for finite C and targets).
+constexpr double kNoVariable = -1e100;
+
+/// The last argmax over k < len of up[k] − f[k]; index −1 when every offset is kNoVariable.
+Selection select_up(const double* f, const double* up, std::size_t len);
+
+/// The pair solver's gradient update fused with the next select_up: f[k] += K_i[k]·b_i +
+/// K_j[k]·b_j (b = Δβ of the step's two samples; K_j = K_i and b_j = 0 when they are one
+/// sample), then the select_up of the updated f. One pass over the active samples instead of two.
+Selection update_and_select_up(double* f, const double* up, const float* k_i, const float* k_j,
+                               double b_i, double b_j, std::size_t len);
+
+/// Second-order selection over samples: with G_max from select_up, a k with
+/// G_max + f_k + low_k > 0 that maximises the gain (G_max + f_k + low_k)² / (QD_i + QD_k − 2·K_ik)
+/// (τ for a non-positive denominator), compared by cross-multiplication (so among equal gains it
+/// is not always the last); also returns max_k f_k + low_k for the stopping rule.
+SelectionJ select_low(const double* f, const double* low, const float* k_i, const double* qd,
+                      double qd_i, double g_max, double tau, std::size_t len);
+
+/// g[k] += a·K[k] for begin ≤ k < end.
+void add_row(double* g, const float* k_row, double a, std::size_t begin, std::size_t end);
+
+/// Portable versions, for the test that checks the vectorised ones.
+Selection update_and_select_up_reference(double* f, const double* up, const float* k_i,
+                                         const float* k_j, double b_i, double b_j, std::size_t len);
+SelectionJ select_low_reference(const double* f, const double* low, const float* k_i,
+                                const double* qd, double qd_i, double g_max, double tau,
+                                std::size_t len);
+
 }  // namespace fogdrift::svr::detail

@@ -10,6 +10,8 @@
 #include <utility>
 
 #include "svr/loops.hpp"
+#include "svr/pair_solver.hpp"
+#include "svr/smo_parts.hpp"
 
 namespace fogdrift::svr {
 namespace {
@@ -18,22 +20,22 @@ using detail::kFree;
 using detail::kLowerBound;
 using detail::kUpperBound;
 
-constexpr double kTau = 1e-12;  // LIBSVM's TAU: the curvature used when Q is not positive
+using detail::kTau;
 
 // The solver's state in LIBSVM's permuted order: the first `active` variables are not shrunk.
 class Smo {
  public:
   Smo(KernelCache& q, std::span<const double> target, double c, double epsilon,
       const SolverOptions& options)
-      : q_(q),
-        n_(q.size()),
+      : n_(q.size()),
         len_(2 * q.size()),
         c_(c),
         tolerance_(options.tolerance),
-        shrinking_(options.shrinking) {
+        shrinking_(options.shrinking),
+        index_(2 * q.size()),
+        rows_(q, index_.data(), 2 * q.size(), q.size(), options.solver_order_cache_mb) {
     y_.resize(len_);
     p_.resize(len_);
-    index_.resize(len_);
     active_set_.resize(len_);
     qd_.resize(len_);
     for (std::size_t k = 0; k < n_; ++k) {
@@ -49,11 +51,6 @@ class Smo {
     status_.assign(len_, kLowerBound);
     g_.assign(p_.begin(), p_.end());
     g_bar_.assign(len_, 0.0);
-    slot_of_row_.assign(n_, -1);
-    const double slot_bytes = static_cast<double>(len_) * sizeof(float);
-    slot_capacity_ = static_cast<std::size_t>(
-        std::max(2.0, std::min(std::floor(options.solver_order_cache_mb * (1 << 20) / slot_bytes),
-                               static_cast<double>(n_))));
     active_ = len_;
     const std::int64_t len = static_cast<std::int64_t>(len_);
     max_iterations_ =
@@ -100,7 +97,7 @@ class Smo {
         counter = static_cast<std::int64_t>(std::min<std::size_t>(len_, 1000));
         if (shrinking_) {
           shrink();
-          apply_swaps();
+          rows_.apply_swaps();
         }
       }
       if (!select_working_set(i, j)) {
@@ -141,7 +138,6 @@ class Smo {
   }
 
  private:
-  KernelCache& q_;
   std::size_t n_, len_;
   double c_;
   double tolerance_;
@@ -155,47 +151,7 @@ class Smo {
   std::vector<std::uint8_t> status_;
   std::vector<std::int32_t> index_, active_set_;
 
-  // Kernel rows in the solver's variable order (K_r[index_[j]]), so that an iteration reads
-  // contiguous memory instead of gathering two rows (LIBSVM gathers both rows every iteration).
-  // A row stays valid until the order changes, which happens only when shrinking swaps
-  // variables (every ~1000 iterations); in between the working sets reuse a few hundred rows.
-  struct OrderedRow {
-    std::unique_ptr<float[]> data;
-    std::int32_t kernel_index = -1;
-    std::size_t valid = 0;  // entries [0, valid) are current
-    std::uint64_t order = 0, last_use = 0;
-  };
-  std::vector<OrderedRow> slots_;
-  std::vector<std::int32_t> slot_of_row_;
-  std::size_t slot_capacity_ = 2;
-  std::uint64_t order_ = 1, clock_ = 0;
-  std::vector<std::pair<std::int32_t, std::int32_t>> swaps_;  // made by the current shrink
-
-  // Brings the rows in solver order up to date after shrinking swapped variables: swapping two
-  // entries in every row when the swaps are few, otherwise marking all rows stale.
-  void apply_swaps() {
-    if (swaps_.empty()) return;
-    std::size_t valid_entries = 0;
-    for (const auto& row : slots_)
-      if (row.order == order_) valid_entries += row.valid;
-    if (swaps_.size() * slots_.size() * 4 < valid_entries) {
-      for (auto& row : slots_) {
-        if (row.order != order_) continue;
-        float* d = row.data.get();
-        for (const auto& [a, b] : swaps_) {
-          const auto lo = static_cast<std::size_t>(std::min(a, b));
-          const auto hi = static_cast<std::size_t>(std::max(a, b));
-          if (hi < row.valid)
-            std::swap(d[lo], d[hi]);
-          else if (lo < row.valid)
-            row.valid = lo;
-        }
-      }
-    } else {
-      ++order_;
-    }
-    swaps_.clear();
-  }
+  detail::OrderedRows rows_;
 
   bool is_upper(std::size_t k) const { return status_[k] == kUpperBound; }
   bool is_lower(std::size_t k) const { return status_[k] == kLowerBound; }
@@ -205,43 +161,11 @@ class Smo {
   }
 
   // The kernel row of variable k in solver order, first `len` entries at least; unsigned
-  // (Q_kj = y_k·y_j·K). Valid until the next call that has to evict a row (at least two are kept,
-  // and the least recently used goes first).
-  const float* row_in_order(std::size_t k, std::size_t len) {
-    const std::int32_t r = index_[k];
-    std::int32_t s = slot_of_row_[r];
-    if (s < 0) {
-      if (slots_.size() < slot_capacity_) {
-        s = static_cast<std::int32_t>(slots_.size());
-        slots_.emplace_back();
-        slots_.back().data = std::make_unique_for_overwrite<float[]>(len_);
-      } else {
-        s = 0;
-        for (std::size_t t = 1; t < slots_.size(); ++t)
-          if (slots_[t].last_use < slots_[s].last_use) s = static_cast<std::int32_t>(t);
-        slot_of_row_[slots_[s].kernel_index] = -1;
-      }
-      slots_[s].kernel_index = r;
-      slots_[s].valid = 0;
-      slots_[s].order = order_;
-      slot_of_row_[r] = s;
-    }
-    OrderedRow& row = slots_[s];
-    if (row.order != order_) {
-      row.valid = 0;
-      row.order = order_;
-    }
-    row.last_use = ++clock_;
-    if (row.valid < len) {
-      detail::gather(q_.row(static_cast<std::size_t>(r)), index_.data(), row.valid, len,
-                     row.data.get());
-      row.valid = len;
-    }
-    return row.data.get();
-  }
+  // (Q_kj = y_k·y_j·K).
+  const float* row_in_order(std::size_t k, std::size_t len) { return rows_.row(index_[k], len); }
 
   void swap_index(std::size_t a, std::size_t b) {
-    swaps_.emplace_back(static_cast<std::int32_t>(a), static_cast<std::int32_t>(b));
+    rows_.swapped(a, b);
     std::swap(y_[a], y_[b]);
     std::swap(index_[a], index_[b]);
     std::swap(qd_[a], qd_[b]);
@@ -282,68 +206,18 @@ class Smo {
   void step(std::size_t i, std::size_t j) {
     const float* k_i = row_in_order(i, active_);
     const float* k_j = row_in_order(j, active_);
-    const double c_i = c_, c_j = c_;
     const double old_i = alpha_[i], old_j = alpha_[j];
     // LIBSVM's curvature Q_ii + Q_jj ∓ 2Q_ij is K_ii + K_jj − 2K_ij in both branches.
-    if (y_[i] != y_[j]) {
-      double quad = qd_[i] + qd_[j] - 2 * k_i[j];
-      if (quad <= 0) quad = kTau;
-      const double delta = (-g_[i] - g_[j]) / quad;
-      const double diff = alpha_[i] - alpha_[j];
-      alpha_[i] += delta;
-      alpha_[j] += delta;
-      if (diff > 0) {
-        if (alpha_[j] < 0) {
-          alpha_[j] = 0;
-          alpha_[i] = diff;
-        }
-      } else if (alpha_[i] < 0) {
-        alpha_[i] = 0;
-        alpha_[j] = -diff;
-      }
-      if (diff > c_i - c_j) {
-        if (alpha_[i] > c_i) {
-          alpha_[i] = c_i;
-          alpha_[j] = c_i - diff;
-        }
-      } else if (alpha_[j] > c_j) {
-        alpha_[j] = c_j;
-        alpha_[i] = c_j + diff;
-      }
-    } else {
-      double quad = qd_[i] + qd_[j] - 2 * k_i[j];
-      if (quad <= 0) quad = kTau;
-      const double delta = (g_[i] - g_[j]) / quad;
-      const double sum = alpha_[i] + alpha_[j];
-      alpha_[i] -= delta;
-      alpha_[j] += delta;
-      if (sum > c_i) {
-        if (alpha_[i] > c_i) {
-          alpha_[i] = c_i;
-          alpha_[j] = sum - c_i;
-        }
-      } else if (alpha_[j] < 0) {
-        alpha_[j] = 0;
-        alpha_[i] = sum;
-      }
-      if (sum > c_j) {
-        if (alpha_[j] > c_j) {
-          alpha_[j] = c_j;
-          alpha_[i] = sum - c_j;
-        }
-      } else if (alpha_[i] < 0) {
-        alpha_[i] = 0;
-        alpha_[j] = sum;
-      }
-    }
+    detail::two_variable_step(alpha_[i], alpha_[j], y_[i], y_[j], g_[i], g_[j],
+                              qd_[i] + qd_[j] - 2 * k_i[j], c_);
     const double d_i = alpha_[i] - old_i, d_j = alpha_[j] - old_j;
     detail::update_gradient(g_.data(), y_.data(), k_i, k_j, y_[i] * d_i, y_[j] * d_j, active_);
 
     const bool upper_i = is_upper(i), upper_j = is_upper(j);
     update_status(i);
     update_status(j);
-    if (upper_i != is_upper(i)) update_g_bar(i, upper_i ? -c_i : c_i);
-    if (upper_j != is_upper(j)) update_g_bar(j, upper_j ? -c_j : c_j);
+    if (upper_i != is_upper(i)) update_g_bar(i, upper_i ? -c_ : c_);
+    if (upper_j != is_upper(j)) update_g_bar(j, upper_j ? -c_ : c_);
   }
 
   void update_g_bar(std::size_t k, double scale) {
@@ -445,17 +319,19 @@ SolverSummary solve_epsilon_svr(KernelCache& q, std::span<const double> y, doubl
                                 const DualSolution* warm) {
   const auto start = std::chrono::steady_clock::now();
   if (y.size() != q.size()) throw std::invalid_argument("solve_epsilon_svr: target size mismatch");
-  Smo smo(q, y, c, epsilon, options);
   const std::int64_t rows_before = q.rows_computed();
-  bool warm_started = false;
-  if (warm != nullptr && !warm->alpha.empty()) {
-    if (warm->alpha.size() != 2 * q.size())
-      throw std::invalid_argument("solve_epsilon_svr: warm start from data of another size");
-    smo.warm_start(*warm, warm->kernel == q.kernel(), epsilon);
-    warm_started = true;
+  const bool warm_started = warm != nullptr && !warm->alpha.empty();
+  if (warm_started && warm->alpha.size() != 2 * q.size())
+    throw std::invalid_argument("solve_epsilon_svr: warm start from data of another size");
+  SolverSummary summary;
+  if (options.libsvm_path) {
+    Smo smo(q, y, c, epsilon, options);
+    if (warm_started) smo.warm_start(*warm, warm->kernel == q.kernel(), epsilon);
+    summary = smo.run();
+    smo.export_solution(out);
+  } else {
+    summary = detail::solve_pairs(q, y, c, epsilon, options, out, warm_started ? warm : nullptr);
   }
-  SolverSummary summary = smo.run();
-  smo.export_solution(out);
   out.c = c;
   out.epsilon = epsilon;
   out.kernel = q.kernel();

@@ -49,7 +49,7 @@ FitResult finish(const TrainingSet& set, const Params& params, DualSolution dual
 }
 
 SolverOptions solver_options(const Params& p) {
-  return SolverOptions{p.tolerance, p.shrinking, p.max_iterations, p.cache_mb / 2};
+  return SolverOptions{p.tolerance, p.shrinking, p.max_iterations, p.cache_mb / 2, p.libsvm_path};
 }
 
 FitResult fit_with(const TrainingSet& set, KernelCache& cache, const Params& params,

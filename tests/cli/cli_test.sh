@@ -164,6 +164,15 @@ check "one prediction a line" test "$(wc -l <"$work/pred.txt")" -eq 442
 if [ -f "$work/libsvm_pred.txt" ]; then
   check "same predictions as svm-predict" awk 'NR==FNR{a[FNR]=$1;next}{d=a[FNR]-$1; if(d<0)d=-d; if(d>1e-9*(1+($1<0?-$1:$1))) bad=1} END{exit bad}' "$work/pred.txt" "$work/libsvm_pred.txt"
 fi
+check "svr train --solver pairs" run 0 "$fd" svr train --solver pairs -c 100 -g 2 -p 5 "$dia" "$work/dia_pairs.model"
+if [ -f "$work/theirs.txt" ]; then
+  # Another path to the optimum: svm-train's objective to 1e-3 relative, not digit for digit.
+  obj_pairs=$(sed -n 's/^obj = \([^,]*\),.*/\1/p' "$work/out")
+  obj_libsvm=$(sed -n 's/^obj = \([^,]*\),.*/\1/p' "$work/theirs.txt")
+  check "pairs: svm-train's objective to 1e-3" awk -v a="$obj_pairs" -v b="$obj_libsvm" 'BEGIN{d=a-b; if(d<0)d=-d; m=b<0?-b:b; exit !(a != "" && d <= 1e-3*m)}'
+fi
+check "unknown solver rejected" run 1 "$fd" svr train --solver fast "$dia" "$work/x.model"
+check "solver message names --solver" err_has "option --solver: must be libsvm or pairs (got 'fast')"
 check "svr train --json" run 0 "$fd" svr train --json --sigma 0.5 -c 10 -p 5 "$dia" "$work/dia.json"
 check "json summary" out_has '"status": "optimal"'
 check "json model predicts" run 0 "$fd" svr predict -q "$dia" "$work/dia.json" "$work/pred_json.txt"

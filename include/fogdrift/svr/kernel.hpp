@@ -18,6 +18,9 @@ class ThreadPool;
 }
 
 namespace fogdrift::svr {
+namespace detail {
+class RowArena;
+}
 
 enum class KernelType { linear, rbf };
 
@@ -121,7 +124,8 @@ class KernelCache {
   std::vector<std::int32_t> row_of_slot_;
   std::vector<std::int32_t> prev_, next_;  // LRU list of slots; head_ most recent
   std::int32_t head_ = -1, tail_ = -1;
-  std::vector<std::unique_ptr<float[]>> slots_;
+  std::unique_ptr<detail::RowArena> slots_;  // capacity_ rows, reserved, committed when written
+  std::size_t used_ = 0;                     // slots handed out so far
   std::int64_t rows_computed_ = 0;
 
   void touch(std::int32_t slot);

@@ -29,8 +29,12 @@ struct Params {
   double epsilon = 0.1;     ///< half-width ε ≥ 0 of the insensitive tube, target units (-p)
   double tolerance = 1e-3;  ///< stopping tolerance > 0 (-e)
   bool shrinking = true;    ///< (-h)
-  double cache_mb = 200;  ///< kernel rows per fit, MB (-m): half as computed, half in solver order
+  /// Kernel rows per fit, MB (-m): half as computed, half in the solver's order. Rows live in
+  /// blocks of transparent huge pages; each thread keeps the blocks of its last fit for its next
+  /// one (at most two, so at most about this much per thread stays committed between fits).
+  double cache_mb = 200;
   std::int64_t max_iterations = 0;  ///< 0: LIBSVM's max(10⁷, 200·l)
+  bool libsvm_path = false;  ///< SolverOptions::libsvm_path: LIBSVM's working sets one for one
 };
 
 /// Names to use for each parameter in error messages (the CLI passes its flags).

@@ -1,0 +1,176 @@
+// Pieces shared by the two SMO solvers (smo_solver.cpp): the analytic two-variable step and the
+// kernel rows held in a solver's own variable order. Internal header: not installed.
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <utility>
+#include <vector>
+
+#include "fogdrift/svr/kernel.hpp"
+#include "svr/loops.hpp"
+#include "svr/row_arena.hpp"
+
+namespace fogdrift::svr::detail {
+
+constexpr double kTau = 1e-12;  // LIBSVM's TAU: the curvature used when Q is not positive
+
+/// LIBSVM's analytic solution of the two-variable subproblem in α_i, α_j (signs y_i, y_j,
+/// gradients G_i, G_j, curvature `quad` = K_ii + K_jj − 2K_ij), clipped to the box [0, C]² and
+/// keeping y_i·α_i + y_j·α_j fixed.
+inline void two_variable_step(double& a_i, double& a_j, int y_i, int y_j, double g_i, double g_j,
+                              double quad, double c) {
+  if (quad <= 0) quad = kTau;
+  if (y_i != y_j) {
+    const double delta = (-g_i - g_j) / quad;
+    const double diff = a_i - a_j;
+    a_i += delta;
+    a_j += delta;
+    if (diff > 0) {
+      if (a_j < 0) {
+        a_j = 0;
+        a_i = diff;
+      }
+    } else if (a_i < 0) {
+      a_i = 0;
+      a_j = -diff;
+    }
+    if (diff > 0) {  // LIBSVM: diff > C_i − C_j, and C_i = C_j here
+      if (a_i > c) {
+        a_i = c;
+        a_j = c - diff;
+      }
+    } else if (a_j > c) {
+      a_j = c;
+      a_i = c + diff;
+    }
+  } else {
+    const double delta = (g_i - g_j) / quad;
+    const double sum = a_i + a_j;
+    a_i -= delta;
+    a_j += delta;
+    if (sum > c) {
+      if (a_i > c) {
+        a_i = c;
+        a_j = sum - c;
+      }
+    } else if (a_j < 0) {
+      a_j = 0;
+      a_i = sum;
+    }
+    if (sum > c) {
+      if (a_j > c) {
+        a_j = c;
+        a_i = sum - c;
+      }
+    } else if (a_i < 0) {
+      a_i = 0;
+      a_j = sum;
+    }
+  }
+}
+
+/// Kernel rows in a solver's variable order: row r of the kernel read at the solver's positions,
+/// K_r[index[j]], so that an iteration reads contiguous memory instead of gathering two rows
+/// (LIBSVM gathers both rows every iteration). A row stays valid until the order changes, which
+/// happens only when shrinking swaps variables (every ~1000 iterations); in between the working
+/// sets reuse a few hundred rows. Bounded by a row count, least recently used evicted first.
+class OrderedRows {
+ public:
+  /// Rows of `length` entries over `kernel_rows` distinct kernel rows; `index` maps a solver
+  /// position to a kernel row and must outlive this object.
+  OrderedRows(KernelCache& q, const std::int32_t* index, std::size_t length,
+              std::size_t kernel_rows, double cache_mb)
+      : q_(q), index_(index), length_(length), slot_of_row_(kernel_rows, -1) {
+    const double slot_bytes = static_cast<double>(length) * sizeof(float);
+    capacity_ = static_cast<std::size_t>(std::max(
+        2.0,
+        std::min(std::floor(cache_mb * (1 << 20) / slot_bytes), static_cast<double>(kernel_rows))));
+    arena_ = RowArena(capacity_, length);
+  }
+
+  /// Kernel row r in solver order, entries [0, len) current at least. Valid until the next call
+  /// that has to evict a row (at least two are kept).
+  const float* row(std::int32_t r, std::size_t len) {
+    std::int32_t s = slot_of_row_[r];
+    if (s < 0) {
+      if (slots_.size() < capacity_) {
+        s = static_cast<std::int32_t>(slots_.size());
+        slots_.emplace_back();
+      } else {
+        s = 0;
+        for (std::size_t t = 1; t < slots_.size(); ++t)
+          if (slots_[t].last_use < slots_[s].last_use) s = static_cast<std::int32_t>(t);
+        slot_of_row_[slots_[s].kernel_index] = -1;
+      }
+      slots_[s].kernel_index = r;
+      slots_[s].valid = 0;
+      slots_[s].order = order_;
+      slot_of_row_[r] = s;
+    }
+    Slot& slot = slots_[s];
+    if (slot.order != order_) {
+      slot.valid = 0;
+      slot.order = order_;
+    }
+    slot.last_use = ++clock_;
+    if (slot.valid < len) {
+      gather(q_.row(static_cast<std::size_t>(r)), index_, slot.valid, len, data(s));
+      slot.valid = len;
+    }
+    return data(s);
+  }
+
+  /// Records that the solver swapped positions a and b (the index array is already swapped).
+  void swapped(std::size_t a, std::size_t b) {
+    swaps_.emplace_back(static_cast<std::int32_t>(a), static_cast<std::int32_t>(b));
+  }
+
+  /// Brings the rows up to date after a round of swaps: swapping two entries in every row when
+  /// the swaps are few, otherwise marking all rows stale.
+  void apply_swaps() {
+    if (swaps_.empty()) return;
+    std::size_t valid_entries = 0;
+    for (const auto& slot : slots_)
+      if (slot.order == order_) valid_entries += slot.valid;
+    if (swaps_.size() * slots_.size() * 4 < valid_entries) {
+      for (auto& slot : slots_) {
+        if (slot.order != order_) continue;
+        float* d = data(static_cast<std::int32_t>(&slot - slots_.data()));
+        for (const auto& [a, b] : swaps_) {
+          const auto lo = static_cast<std::size_t>(std::min(a, b));
+          const auto hi = static_cast<std::size_t>(std::max(a, b));
+          if (hi < slot.valid)
+            std::swap(d[lo], d[hi]);
+          else if (lo < slot.valid)
+            slot.valid = lo;
+        }
+      }
+    } else {
+      ++order_;
+    }
+    swaps_.clear();
+  }
+
+ private:
+  struct Slot {
+    std::int32_t kernel_index = -1;
+    std::size_t valid = 0;  // entries [0, valid) are current
+    std::uint64_t order = 0, last_use = 0;
+  };
+  KernelCache& q_;
+  const std::int32_t* index_;
+  std::size_t length_;
+  std::vector<std::int32_t> slot_of_row_;
+  std::vector<Slot> slots_;
+  std::size_t capacity_ = 2;
+  std::uint64_t order_ = 1, clock_ = 0;
+  std::vector<std::pair<std::int32_t, std::int32_t>> swaps_;  // made since the last apply_swaps
+  RowArena arena_;                                            // capacity_ rows of length_ floats
+
+  float* data(std::int32_t s) const { return arena_.row(static_cast<std::size_t>(s)); }
+};
+
+}  // namespace fogdrift::svr::detail
