@@ -2,9 +2,11 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <nlohmann/json.hpp>
+#include <numeric>
 #include <set>
 
 #include "fogdrift/atomic_file.hpp"
@@ -128,8 +130,18 @@ FitResult fit(const TrainingSet& set, const Params& params, const DualSolution* 
 std::vector<FitResult> fit_batch(const TrainingSet& set, std::span<const Params> params,
                                  ThreadPool& pool) {
   for (const auto& p : params) validate(p);
+  // Handed out longest first (LPT), so that the threads finish together: a fit's length grows
+  // with C and with γ (a narrower kernel), so larger C first, then larger γ. Each fit runs on one
+  // thread, so the order never changes a result.
+  std::vector<std::size_t> order(params.size());
+  std::iota(order.begin(), order.end(), std::size_t{0});
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    if (params[a].c != params[b].c) return params[a].c > params[b].c;
+    return params[a].kernel.gamma > params[b].kernel.gamma;
+  });
   std::vector<FitResult> out(params.size());
-  pool.parallel_for(params.size(), [&](std::size_t k) { out[k] = fit(set, params[k]); });
+  pool.parallel_for(params.size(),
+                    [&](std::size_t k) { out[order[k]] = fit(set, params[order[k]]); });
   return out;
 }
 

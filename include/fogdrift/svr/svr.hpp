@@ -81,7 +81,7 @@ struct FitResult {
 FitResult fit(const TrainingSet& set, const Params& params, const DualSolution* warm = nullptr);
 
 /// Fits every parameter set, spread over the pool's threads (one fit per thread at a time, cache
-/// budgets as given per fit). Results in the order of `params`.
+/// budgets as given per fit, the largest C first). Results in the order of `params`.
 std::vector<FitResult> fit_batch(const TrainingSet& set, std::span<const Params> params,
                                  ThreadPool& pool);
 
