@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include <thread>
+
 #include <cfloat>
 #include <cmath>
 #include <cstring>
@@ -11,6 +13,7 @@
 #include "fogdrift/random.hpp"
 #include "svr/datasets.hpp"
 #include "svr/loops.hpp"
+#include "svr/row_arena.hpp"
 
 namespace fogdrift::svr {
 namespace {
@@ -162,6 +165,35 @@ TEST(Selections, PairLoopsVectorisedAndPortableAgreeIncludingTies) {
     ASSERT_EQ(c.index, e.index);
     ASSERT_EQ(c.g_max2, e.g_max2);
   }
+}
+
+TEST(RowArena, AThreadReusesTheMemoryOfItsLastFitAndANewThreadDoesNot) {
+  // On a thread of its own, which starts with nothing kept.
+  std::thread([] {
+    float* first = nullptr;
+    {
+      detail::RowArena a(8, 1000);
+      first = a.row(0);
+      for (std::size_t r = 0; r < 8; ++r) a.row(r)[999] = static_cast<float>(r);  // writable
+      EXPECT_EQ(a.row(7)[999], 7.0f);
+      EXPECT_EQ(a.row(1) - a.row(0), 1000);
+    }
+    {
+      detail::RowArena again(4, 1000);  // smaller: the kept block serves it
+      EXPECT_EQ(again.row(0), first);
+    }
+    float* other = nullptr;
+    std::thread([&] {
+      detail::RowArena a(8, 1000);
+      other = a.row(0);
+      a.row(7)[999] = 1.0f;
+    }).join();
+    EXPECT_NE(other, first);
+    detail::RowArena mine(8, 1000);
+    EXPECT_EQ(mine.row(0), first);
+    detail::RowArena empty(0, 1000);  // nothing reserved
+    EXPECT_EQ(empty.rows(), 0u);
+  }).join();
 }
 
 }  // namespace

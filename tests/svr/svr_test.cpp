@@ -258,6 +258,31 @@ TEST(SvrWarmStart, FromAnotherKernelRebuildsTheGradient) {
             1e-3);
 }
 
+TEST(SvrWarmStart, EitherSolverStartsFromTheOthersSolution) {
+  // Both solvers export LIBSVM's layout (α⁺, α⁻, G, Ḡ), so a search may mix them.
+  const Data d = testing::startup_like(540, 7);
+  const TrainingSet set(d);
+  Params p;
+  p.kernel = Kernel::rbf_sigma(1.0);
+  p.c = 3;
+  for (bool first_exact : {true, false}) {
+    SCOPED_TRACE(first_exact ? "LIBSVM path, then pairs" : "pairs, then LIBSVM path");
+    p.libsvm_path = first_exact;
+    p.c = 3;
+    const FitResult first = fit(set, p);
+    p.libsvm_path = !first_exact;
+    p.c = 4;
+    const FitResult warm = fit(set, p, &first.dual);
+    const FitResult cold = fit(set, p);
+    EXPECT_TRUE(warm.summary.solver.gradient_reused);
+    EXPECT_LT(warm.summary.solver.iterations, cold.summary.solver.iterations);
+    EXPECT_LE(std::fabs(warm.summary.solver.objective - cold.summary.solver.objective) /
+                  std::fabs(cold.summary.solver.objective),
+              1e-3);
+    EXPECT_LT(warm.summary.solver.max_violation, p.tolerance);
+  }
+}
+
 TEST(SvrBatch, ResultsDoNotDependOnTheThreadCount) {
   const Data d = testing::startup_like(360, 6);
   const TrainingSet set(d);
