@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <functional>
 #include <map>
 #include <optional>
 
@@ -45,22 +46,33 @@ eval::CompensationMetrics table2_of(const CompensationModel& model, const Datase
   return eval::pool(eval::metrics_per_recording(test, model.predict_dph(test)));
 }
 
-// North-finding RMSE of every recording of a north-finding campaign, raw (no model) or
-// compensated.
-std::vector<double> northfind_rmse(const sim::SimulatedCampaign& nf,
-                                   const CompensationModel* model) {
+// North-finding RMSE of every recording of a north-finding campaign after subtracting
+// `drift(recording)` from the gyro; raw when `drift` is empty.
+using DriftOf = std::function<std::vector<double>(const Recording&)>;
+std::vector<double> northfind_rmse(const sim::SimulatedCampaign& nf, const DriftOf& drift) {
   std::vector<double> out;
   for (std::size_t i = 0; i < nf.recordings.size(); ++i) {
     const CampaignEntry& e = nf.campaign.recordings[i];
     Recording rec = nf.recordings[i];
-    if (model) {
-      const std::vector<double> drift = model->predict_dph(rec);
-      for (std::size_t k = 0; k < drift.size(); ++k) rec.gyro_dph[k] -= drift[k];
+    if (drift) {
+      const std::vector<double> d = drift(rec);
+      for (std::size_t k = 0; k < d.size(); ++k) rec.gyro_dph[k] -= d[k];
     }
     out.push_back(eval::rms(
         eval::northfind_errors_deg(rec, nf.campaign.latitude_deg, e.true_azimuth_deg.value())));
   }
   return out;
+}
+
+DriftOf predicted_by(const CompensationModel& model) {
+  return [&model](const Recording& rec) { return model.predict_dph(rec); };
+}
+
+// The simulator's ground truth, when every recording carries it.
+bool has_true_drift(const sim::SimulatedCampaign& nf) {
+  for (const Recording& rec : nf.recordings)
+    if (!rec.has_column("drift_true_dph")) return false;
+  return !nf.recordings.empty();
 }
 
 svr::Params svr_params_of(const MethodRun& run) {
@@ -134,9 +146,14 @@ SeedRun run_seed(const PaperOptions& o, std::uint64_t seed, Stages& stages, Firs
   const DatasetOptions dataset;
   Dataset train = build_dataset(inputs_of(cal, Role::train), dataset);
   Dataset test = build_dataset(inputs_of(cal, Role::test), dataset);
-  run.raw_rmse_deg = northfind_rmse(nf, nullptr);
+  run.raw_rmse_deg = northfind_rmse(nf, {});
   run.raw_mean_rmse_deg = mean_of(run.raw_rmse_deg);
-  run.stable_rmse_deg = mean_of(northfind_rmse(st, nullptr));
+  if (has_true_drift(nf)) {
+    run.oracle_rmse_deg = northfind_rmse(
+        nf, [](const Recording& rec) { return rec.numeric_column("drift_true_dph"); });
+    run.oracle_mean_rmse_deg = mean_of(run.oracle_rmse_deg);
+  }
+  run.stable_rmse_deg = mean_of(northfind_rmse(st, {}));
   run.denoised_std_dph =
       eval::pool(eval::metrics_per_recording(test, std::vector<double>(test.rows, 0.0)))
           .std_before_dph;
@@ -151,7 +168,7 @@ SeedRun run_seed(const PaperOptions& o, std::uint64_t seed, Stages& stages, Firs
     MethodRun m;
     m.method = std::string(name);
     m.table2 = table2_of(trained.model, test);
-    m.rmse_deg = northfind_rmse(nf, &trained.model);
+    m.rmse_deg = northfind_rmse(nf, predicted_by(trained.model));
     m.mean_rmse_deg = mean_of(m.rmse_deg);
     m.hyperparameters = trained.summary.hyperparameters;
     m.fitness_value = trained.summary.fitness_value;
@@ -228,7 +245,7 @@ std::vector<FitnessRow> fitness_study(const PaperOptions& o, const SeedRun& run,
       const eval::CompensationMetrics m = table2_of(t.model, f.test);
       row.std_dph = m.std_after_dph;
       row.mae_dph = m.mae_dph;
-      row.mean_rmse_deg = mean_of(northfind_rmse(f.nf, &t.model));
+      row.mean_rmse_deg = mean_of(northfind_rmse(f.nf, predicted_by(t.model)));
     }
     rows.push_back(row);
   }
@@ -369,6 +386,13 @@ std::vector<Figure> figures_of(const PaperResult& r, const FirstSeed& f) {
       series.push_back({std::string(name), r.northfind_temps_degc,
                         mean_over_seeds([name](const SeedRun& s) -> const std::vector<double>& {
                           return s.method(name).rmse_deg;
+                        }),
+                        true});
+    }
+    if (!r.seeds.front().oracle_rmse_deg.empty()) {
+      series.push_back({"true drift subtracted", r.northfind_temps_degc,
+                        mean_over_seeds([](const SeedRun& s) -> const std::vector<double>& {
+                          return s.oracle_rmse_deg;
                         }),
                         true});
     }

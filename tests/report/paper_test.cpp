@@ -44,6 +44,10 @@ TEST(Paper, RunsEveryMethodOnEverySeedAndReportsIt) {
     EXPECT_GT(s.denoised_std_dph, 0.001);
     EXPECT_EQ(s.raw_rmse_deg.size(), 2u);
     EXPECT_GT(s.stable_rmse_deg, 0.0);
+    // The simulator's true drift subtracted: the floor of every method, below raw.
+    ASSERT_EQ(s.oracle_rmse_deg.size(), 2u);
+    EXPECT_LT(s.oracle_mean_rmse_deg, s.raw_mean_rmse_deg);
+    EXPECT_DOUBLE_EQ(s.oracle_mean_rmse_deg, (s.oracle_rmse_deg[0] + s.oracle_rmse_deg[1]) / 2);
     for (const MethodRun& m : s.methods) {
       EXPECT_EQ(m.rmse_deg.size(), 2u) << m.method;
       // Every model compensates part of the drift on the test repetition.
@@ -87,6 +91,11 @@ TEST(Paper, RunsEveryMethodOnEverySeedAndReportsIt) {
   EXPECT_EQ(j["seeds"], 2);
   EXPECT_GT(j["elapsed_s"].get<double>(), 0.0);
   EXPECT_TRUE(j["goals"].contains("ssa_northfind_halved"));
+  EXPECT_EQ(j["table3"]["oracle"]["rmse_deg"].size(), 2u);
+  EXPECT_NEAR(j["goals"]["true_drift_subtracted_over_raw"].get<double>(),
+              j["table3"]["oracle"]["mean_deg"].get<double>() /
+                  j["table3"]["raw"]["mean_deg"].get<double>(),
+              1e-12);
   // A mean is the mean of the per-seed values.
   const double s1 = j["per_seed"][0]["methods"]["bp"]["std_dph"];
   const double s2 = j["per_seed"][1]["methods"]["bp"]["std_dph"];
@@ -98,7 +107,8 @@ TEST(Paper, RunsEveryMethodOnEverySeedAndReportsIt) {
   const std::string md = paper_markdown(r);
   for (const char* s :
        {"## Table 1", "1.0520", "## Table 2", "0.0134", "0.0031", "## Table 3", "0.012",
-        "Leave one temperature out", "Training-loss against", "![Fig. 1", "fig_northfind.png"}) {
+        "Leave one temperature out", "Training-loss against", "![Fig. 1", "fig_northfind.png",
+        "| true drift subtracted |", "Subtracting the simulator's true thermal drift"}) {
     EXPECT_NE(md.find(s), std::string::npos) << s;
   }
   // The paper's own Table 3 is shown only for its own temperatures.

@@ -74,6 +74,10 @@ struct SeedRun {
   double denoised_std_dph = 0;       ///< Table 2's "denoised data" row
   std::vector<double> raw_rmse_deg;  ///< Table 3's raw row
   double raw_mean_rmse_deg = 0;
+  /// Table 3 with the simulator's true thermal drift subtracted (its `drift_true_dph`): what a
+  /// perfect compensation would reach, the floor for every method. Empty without that column.
+  std::vector<double> oracle_rmse_deg;
+  double oracle_mean_rmse_deg = 0;
   double stable_rmse_deg = 0;
   std::vector<MethodRun> methods;  ///< in kPaperMethods order
   double seconds = 0;

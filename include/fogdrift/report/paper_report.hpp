@@ -21,6 +21,9 @@ struct PaperVerdict {
   bool svr_better_than_bp = false;  ///< every SVR method's STD below BP's
   double northfind_ratio = 0;       ///< SSA-SVR mean RMSE / raw mean RMSE (goal ≤ 1/2)
   double stable_ratio = 0;          ///< SSA-SVR mean RMSE / stable RMSE (goal ≤ 1.2)
+  /// Perfect compensation's mean RMSE / raw mean RMSE: the lowest northfind_ratio possible on
+  /// this instrument. NaN when the runs have no true drift.
+  double oracle_ratio = 0;
 };
 PaperVerdict verdict(const PaperResult& result);
 
