@@ -123,7 +123,8 @@ void rbf_row_from_distances(const float* dist, std::size_t n, double gamma, floa
 #if FOGDRIFT_HAVE_AVX2_GATHER
 namespace {
 const bool kHasAvx2 = __builtin_cpu_supports("avx2");
-}
+const bool kHasAvx512 = __builtin_cpu_supports("avx512f");
+}  // namespace
 #endif
 
 // A plain indexed copy: AVX2's gather instruction is no faster than scalar loads on the AMD
@@ -248,6 +249,31 @@ Selection update_and_select_up_portable(double* f, const double* up, const float
   return none_if_offsets_only(out);
 }
 
+// Merging per-lane results of the vectorised loops (arrays of `lanes` values; index −1: none):
+// the last maximiser, and the best gain num/den (cross-multiplied, the larger index on ties).
+void merge_max(const double* value, const double* index, int lanes, Selection& out) {
+  for (int t = 0; t < lanes; ++t) {
+    if (index[t] < 0) continue;
+    const auto idx = static_cast<std::int64_t>(index[t]);
+    if (value[t] > out.value || (value[t] == out.value && idx > out.index)) out = {value[t], idx};
+  }
+}
+
+void merge_gain(const double* num, const double* den, const double* index, const double* g_max2,
+                int lanes, SelectionJ& out, double& num_max, double& den_max) {
+  for (int t = 0; t < lanes; ++t) {
+    out.g_max2 = std::max(out.g_max2, g_max2[t]);
+    if (index[t] < 0) continue;
+    const auto idx = static_cast<std::int64_t>(index[t]);
+    const double lhs = num[t] * den_max, rhs = num_max * den[t];
+    if (lhs > rhs || (lhs == rhs && idx > out.index)) {
+      num_max = num[t];
+      den_max = den[t];
+      out.index = idx;
+    }
+  }
+}
+
 // select_low over [begin, len), continuing from `out` and the best gain so far num/den; the
 // portable version, and the tail of the vectorised one.
 void select_low_scalar(const double* f, const double* low, const float* k_i, const double* qd,
@@ -314,11 +340,7 @@ __attribute__((target("avx2"))) Selection merge_lanes_max(__m256d best, __m256d 
   _mm256_store_pd(bv, best);
   _mm256_store_pd(bi, best_index);
   Selection out{-DBL_MAX, -1};
-  for (int k = 0; k < 4; ++k) {
-    if (bi[k] < 0) continue;
-    const auto idx = static_cast<std::int64_t>(bi[k]);
-    if (bv[k] > out.value || (bv[k] == out.value && idx > out.index)) out = {bv[k], idx};
-  }
+  merge_max(bv, bi, 4, out);
   return out;
 }
 
@@ -522,21 +544,114 @@ __attribute__((target("avx2"))) SelectionJ select_low_avx2(const double* f, cons
     _mm256_store_pd(bd, best[s].den);
     _mm256_store_pd(bi, best[s].index);
     _mm256_store_pd(m2, g_max2[s]);
-    for (int t = 0; t < 4; ++t) {
-      out.g_max2 = std::max(out.g_max2, m2[t]);
-      if (bi[t] < 0) continue;
-      const auto idx = static_cast<std::int64_t>(bi[t]);
-      const double lhs = bn[t] * den_max, rhs = num_max * bd[t];
-      if (lhs > rhs || (lhs == rhs && idx > out.index)) {
-        num_max = bn[t];
-        den_max = bd[t];
-        out.index = idx;
-      }
-    }
+    merge_gain(bn, bd, bi, m2, 4, out, num_max, den_max);
   }
   select_low_scalar(f, low, k_i, qd, qd_i, g_max, tau, k, len, out, num_max, den_max);
   return out;
 }
+
+// AVX-512 versions of the pair loops: eight samples a vector, two independent lane sets.
+// GCC 12 warns inside its own AVX-512 headers that their undefined pass-through operand may be
+// used uninitialised (GCC bug 105593); it is not.
+#if defined(__GNUC__) && !defined(__clang__)
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
+#endif
+__attribute__((target("avx512f"))) inline __m512d iota8(std::size_t k) {
+  return _mm512_add_pd(_mm512_set1_pd(static_cast<double>(k)),
+                       _mm512_setr_pd(0, 1, 2, 3, 4, 5, 6, 7));
+}
+
+template <bool kUpdate>
+__attribute__((target("avx512f"))) Selection update_and_select_up_avx512(
+    double* f, const double* up, const float* k_i, const float* k_j, double b_i, double b_j,
+    std::size_t len) {
+  __m512d best[2] = {_mm512_set1_pd(-DBL_MAX), _mm512_set1_pd(-DBL_MAX)};
+  __m512d best_index[2] = {_mm512_set1_pd(-1.0), _mm512_set1_pd(-1.0)};
+  const __m512d bi = _mm512_set1_pd(b_i);
+  const __m512d bj = _mm512_set1_pd(b_j);
+  std::size_t k = 0;
+  for (; k + 16 <= len; k += 16) {
+    for (int s = 0; s < 2; ++s) {
+      const std::size_t at = k + 8 * static_cast<std::size_t>(s);
+      __m512d fk = _mm512_loadu_pd(f + at);
+      if constexpr (kUpdate) {
+        const __m512d ki = _mm512_cvtps_pd(_mm256_loadu_ps(k_i + at));
+        const __m512d kj = _mm512_cvtps_pd(_mm256_loadu_ps(k_j + at));
+        fk = _mm512_add_pd(fk, _mm512_add_pd(_mm512_mul_pd(ki, bi), _mm512_mul_pd(kj, bj)));
+        _mm512_storeu_pd(f + at, fk);
+      }
+      const __m512d v = _mm512_sub_pd(_mm512_loadu_pd(up + at), fk);
+      const __mmask8 take = _mm512_cmp_pd_mask(v, best[s], _CMP_GE_OQ);
+      best[s] = _mm512_mask_blend_pd(take, best[s], v);
+      best_index[s] = _mm512_mask_blend_pd(take, best_index[s], iota8(at));
+    }
+  }
+  Selection out{-DBL_MAX, -1};
+  for (int s = 0; s < 2; ++s) {
+    alignas(64) double bv[8], bx[8];
+    _mm512_store_pd(bv, best[s]);
+    _mm512_store_pd(bx, best_index[s]);
+    merge_max(bv, bx, 8, out);
+  }
+  update_and_select_up_scalar<kUpdate>(f, up, k_i, k_j, b_i, b_j, k, len, out);
+  return none_if_offsets_only(out);
+}
+
+__attribute__((target("avx512f"))) SelectionJ select_low_avx512(const double* f, const double* low,
+                                                                const float* k_i, const double* qd,
+                                                                double qd_i, double g_max,
+                                                                double tau, std::size_t len) {
+  const __m512d gm = _mm512_set1_pd(g_max);
+  const __m512d qdi = _mm512_set1_pd(qd_i);
+  const __m512d two = _mm512_set1_pd(2.0);
+  const __m512d tau8 = _mm512_set1_pd(tau);
+  const __m512d zero = _mm512_setzero_pd();
+  __m512d g_max2[2], num[2], den[2], index[2];
+  for (int s = 0; s < 2; ++s) {
+    g_max2[s] = _mm512_set1_pd(-DBL_MAX);
+    num[s] = zero;
+    den[s] = _mm512_set1_pd(1.0);
+    index[s] = _mm512_set1_pd(-1.0);
+  }
+  std::size_t k = 0;
+  for (; k + 16 <= len; k += 16) {
+    for (int s = 0; s < 2; ++s) {
+      const std::size_t at = k + 8 * static_cast<std::size_t>(s);
+      const __m512d yg = _mm512_add_pd(_mm512_loadu_pd(f + at), _mm512_loadu_pd(low + at));
+      g_max2[s] = _mm512_max_pd(g_max2[s], yg);
+      const __m512d gd = _mm512_add_pd(gm, yg);
+      const __m512d kik = _mm512_cvtps_pd(_mm256_loadu_ps(k_i + at));
+      const __m512d quad =
+          _mm512_sub_pd(_mm512_add_pd(qdi, _mm512_loadu_pd(qd + at)), _mm512_mul_pd(two, kik));
+      const __m512d d =
+          _mm512_mask_blend_pd(_mm512_cmp_pd_mask(quad, zero, _CMP_GT_OQ), tau8, quad);
+      const __m512d n = _mm512_mul_pd(gd, gd);
+      const __mmask8 take =
+          _mm512_cmp_pd_mask(_mm512_mul_pd(n, den[s]), _mm512_mul_pd(num[s], d), _CMP_GE_OQ) &
+          _mm512_cmp_pd_mask(gd, zero, _CMP_GT_OQ);
+      num[s] = _mm512_mask_blend_pd(take, num[s], n);
+      den[s] = _mm512_mask_blend_pd(take, den[s], d);
+      index[s] = _mm512_mask_blend_pd(take, index[s], iota8(at));
+    }
+  }
+  SelectionJ out;
+  out.g_max2 = -DBL_MAX;
+  double num_max = 0, den_max = 1;
+  for (int s = 0; s < 2; ++s) {
+    alignas(64) double bn[8], bd[8], bx[8], m2[8];
+    _mm512_store_pd(bn, num[s]);
+    _mm512_store_pd(bd, den[s]);
+    _mm512_store_pd(bx, index[s]);
+    _mm512_store_pd(m2, g_max2[s]);
+    merge_gain(bn, bd, bx, m2, 8, out, num_max, den_max);
+  }
+  select_low_scalar(f, low, k_i, qd, qd_i, g_max, tau, k, len, out, num_max, den_max);
+  return out;
+}
+#if defined(__GNUC__) && !defined(__clang__)
+#pragma GCC diagnostic pop
+#endif
 #endif
 }  // namespace
 
@@ -571,6 +686,7 @@ Selection select_up(const double* f, const double* up, std::size_t len) {
   // The fused loop without its update; f is only read.
   double* g = const_cast<double*>(f);
 #if FOGDRIFT_HAVE_AVX2_GATHER
+  if (kHasAvx512) return update_and_select_up_avx512<false>(g, up, nullptr, nullptr, 0.0, 0.0, len);
   if (kHasAvx2) return update_and_select_up_avx2<false>(g, up, nullptr, nullptr, 0.0, 0.0, len);
 #endif
   return update_and_select_up_portable<false>(g, up, nullptr, nullptr, 0.0, 0.0, len);
@@ -579,6 +695,7 @@ Selection select_up(const double* f, const double* up, std::size_t len) {
 Selection update_and_select_up(double* f, const double* up, const float* k_i, const float* k_j,
                                double b_i, double b_j, std::size_t len) {
 #if FOGDRIFT_HAVE_AVX2_GATHER
+  if (kHasAvx512) return update_and_select_up_avx512<true>(f, up, k_i, k_j, b_i, b_j, len);
   if (kHasAvx2) return update_and_select_up_avx2<true>(f, up, k_i, k_j, b_i, b_j, len);
 #endif
   return update_and_select_up_portable<true>(f, up, k_i, k_j, b_i, b_j, len);
@@ -587,6 +704,7 @@ Selection update_and_select_up(double* f, const double* up, const float* k_i, co
 SelectionJ select_low(const double* f, const double* low, const float* k_i, const double* qd,
                       double qd_i, double g_max, double tau, std::size_t len) {
 #if FOGDRIFT_HAVE_AVX2_GATHER
+  if (kHasAvx512) return select_low_avx512(f, low, k_i, qd, qd_i, g_max, tau, len);
   if (kHasAvx2) return select_low_avx2(f, low, k_i, qd, qd_i, g_max, tau, len);
 #endif
   return select_low_portable(f, low, k_i, qd, qd_i, g_max, tau, len);
@@ -597,15 +715,33 @@ void add_row(double* g, const float* k_row, double a, std::size_t begin, std::si
   for (std::size_t k = begin; k < end; ++k) g[k] += a * static_cast<double>(k_row[k]);
 }
 
-Selection update_and_select_up_reference(double* f, const double* up, const float* k_i,
-                                         const float* k_j, double b_i, double b_j,
-                                         std::size_t len) {
+bool available(Isa isa) {
+#if FOGDRIFT_HAVE_AVX2_GATHER
+  if (isa == Isa::avx2) return kHasAvx2;
+  if (isa == Isa::avx512) return kHasAvx512;
+#endif
+  return isa == Isa::portable;
+}
+
+Selection update_and_select_up_with(Isa isa, double* f, const double* up, const float* k_i,
+                                    const float* k_j, double b_i, double b_j, std::size_t len) {
+#if FOGDRIFT_HAVE_AVX2_GATHER
+  if (isa == Isa::avx512 && kHasAvx512)
+    return update_and_select_up_avx512<true>(f, up, k_i, k_j, b_i, b_j, len);
+  if (isa == Isa::avx2 && kHasAvx2)
+    return update_and_select_up_avx2<true>(f, up, k_i, k_j, b_i, b_j, len);
+#endif
   return update_and_select_up_portable<true>(f, up, k_i, k_j, b_i, b_j, len);
 }
 
-SelectionJ select_low_reference(const double* f, const double* low, const float* k_i,
-                                const double* qd, double qd_i, double g_max, double tau,
-                                std::size_t len) {
+SelectionJ select_low_with(Isa isa, const double* f, const double* low, const float* k_i,
+                           const double* qd, double qd_i, double g_max, double tau,
+                           std::size_t len) {
+#if FOGDRIFT_HAVE_AVX2_GATHER
+  if (isa == Isa::avx512 && kHasAvx512)
+    return select_low_avx512(f, low, k_i, qd, qd_i, g_max, tau, len);
+  if (isa == Isa::avx2 && kHasAvx2) return select_low_avx2(f, low, k_i, qd, qd_i, g_max, tau, len);
+#endif
   return select_low_portable(f, low, k_i, qd, qd_i, g_max, tau, len);
 }
 

@@ -111,11 +111,15 @@ SelectionJ select_low(const double* f, const double* low, const float* k_i, cons
 /// g[k] += a·K[k] for begin ≤ k < end.
 void add_row(double* g, const float* k_row, double a, std::size_t begin, std::size_t end);
 
-/// Portable versions, for the test that checks the vectorised ones.
-Selection update_and_select_up_reference(double* f, const double* up, const float* k_i,
-                                         const float* k_j, double b_i, double b_j, std::size_t len);
-SelectionJ select_low_reference(const double* f, const double* low, const float* k_i,
-                                const double* qd, double qd_i, double g_max, double tau,
-                                std::size_t len);
+/// The instruction sets the pair loops are built for; the fastest the processor has is used.
+/// Exposed, with the two functions below, for the test that checks every version against the
+/// portable one.
+enum class Isa { portable, avx2, avx512 };
+bool available(Isa isa);
+Selection update_and_select_up_with(Isa isa, double* f, const double* up, const float* k_i,
+                                    const float* k_j, double b_i, double b_j, std::size_t len);
+SelectionJ select_low_with(Isa isa, const double* f, const double* low, const float* k_i,
+                           const double* qd, double qd_i, double g_max, double tau,
+                           std::size_t len);
 
 }  // namespace fogdrift::svr::detail

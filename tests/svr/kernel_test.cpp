@@ -133,38 +133,46 @@ TEST(Selections, VectorisedAndPortableAgreeIncludingTies) {
 }
 
 TEST(Selections, PairLoopsVectorisedAndPortableAgreeIncludingTies) {
+  using detail::Isa;
   Rng rng(6);
   const double offsets[] = {0.25, -0.25, detail::kNoVariable};
-  for (int trial = 0; trial < 300; ++trial) {
-    const std::size_t len = 1 + static_cast<std::size_t>(rng.uniform(0, 90));
-    std::vector<double> f(len), up(len), low(len), qd(len, 1.0);
-    std::vector<float> k_i(len), k_j(len);
-    for (std::size_t t = 0; t < len; ++t) {
-      // Quarters and few distinct values: ties are common and every product is exact.
-      f[t] = std::round(rng.uniform(-8, 8)) / 4;
-      up[t] = offsets[static_cast<int>(rng.uniform(0, 3))];
-      low[t] = offsets[static_cast<int>(rng.uniform(0, 3))];
-      k_i[t] = static_cast<float>(std::round(rng.uniform(0, 4)) / 4);
-      k_j[t] = static_cast<float>(std::round(rng.uniform(0, 4)) / 4);
+  int checked = 0;
+  for (Isa isa : {Isa::avx2, Isa::avx512}) {
+    if (!detail::available(isa)) continue;  // this processor lacks it
+    SCOPED_TRACE(isa == Isa::avx2 ? "AVX2" : "AVX-512");
+    for (int trial = 0; trial < 300; ++trial) {
+      const std::size_t len = 1 + static_cast<std::size_t>(rng.uniform(0, 200));
+      std::vector<double> f(len), up(len), low(len), qd(len, 1.0);
+      std::vector<float> k_i(len), k_j(len);
+      for (std::size_t t = 0; t < len; ++t) {
+        // Halves and quarters, few distinct values: the best is tied in most trials, several
+        // times per vector lane, and every product is exact.
+        f[t] = std::round(rng.uniform(-4, 4)) / 2;
+        up[t] = offsets[static_cast<int>(rng.uniform(0, 3))];
+        low[t] = offsets[static_cast<int>(rng.uniform(0, 3))];
+        k_i[t] = static_cast<float>(std::round(rng.uniform(0, 2)) / 4);
+        k_j[t] = static_cast<float>(std::round(rng.uniform(0, 2)) / 4);
+      }
+      std::vector<double> f2 = f;
+      const auto a = detail::update_and_select_up_with(isa, f.data(), up.data(), k_i.data(),
+                                                       k_j.data(), 0.5, -0.25, len);
+      const auto b = detail::update_and_select_up_with(Isa::portable, f2.data(), up.data(),
+                                                       k_i.data(), k_j.data(), 0.5, -0.25, len);
+      ASSERT_EQ(f, f2);
+      ASSERT_EQ(a.index, b.index);
+      ASSERT_EQ(detail::select_up(f.data(), up.data(), len).index, a.index);
+      if (a.index < 0) continue;
+      ASSERT_EQ(a.value, b.value);
+      const auto c = detail::select_low_with(isa, f.data(), low.data(), k_i.data(), qd.data(), 1.0,
+                                             a.value, 1e-12, len);
+      const auto e = detail::select_low_with(Isa::portable, f.data(), low.data(), k_i.data(),
+                                             qd.data(), 1.0, a.value, 1e-12, len);
+      ASSERT_EQ(c.index, e.index);
+      ASSERT_EQ(c.g_max2, e.g_max2);
+      ++checked;
     }
-    std::vector<double> f2 = f;
-    const auto a =
-        detail::update_and_select_up(f.data(), up.data(), k_i.data(), k_j.data(), 0.5, -0.25, len);
-    const auto b = detail::update_and_select_up_reference(f2.data(), up.data(), k_i.data(),
-                                                          k_j.data(), 0.5, -0.25, len);
-    ASSERT_EQ(f, f2);
-    ASSERT_EQ(a.index, b.index);
-    const auto plain = detail::select_up(f.data(), up.data(), len);
-    ASSERT_EQ(plain.index, a.index);
-    if (a.index < 0) continue;
-    ASSERT_EQ(a.value, b.value);
-    const auto c =
-        detail::select_low(f.data(), low.data(), k_i.data(), qd.data(), 1.0, a.value, 1e-12, len);
-    const auto e = detail::select_low_reference(f.data(), low.data(), k_i.data(), qd.data(), 1.0,
-                                                a.value, 1e-12, len);
-    ASSERT_EQ(c.index, e.index);
-    ASSERT_EQ(c.g_max2, e.g_max2);
   }
+  RecordProperty("vectorised_versions_checked", checked);
 }
 
 TEST(RowArena, AThreadReusesTheMemoryOfItsLastFitAndANewThreadDoesNot) {
