@@ -20,9 +20,11 @@ std::vector<std::size_t> all_rows(const Dataset& data) {
 
 std::string describe_folds(const Dataset& data, const tune::CvOptions& cv) {
   const auto folds = tune::grouped_folds(data, cv);
-  const bool repetition = folds.front().name.starts_with("repetition");
-  return fmt::format("{} ({} folds)", repetition ? "leave one repetition out" : "whole recordings",
-                     folds.size());
+  const std::string& first = folds.front().name;
+  const char* kind = first.starts_with("repetition")     ? "leave one repetition out"
+                     : first.starts_with("temperatures") ? "whole initial temperatures"
+                                                         : "whole recordings";
+  return fmt::format("{} ({} folds)", kind, folds.size());
 }
 
 opt::Algorithm algorithm_of(Method m) {

@@ -35,17 +35,33 @@ std::string to_string(CvScheme scheme) {
       return "repetition";
     case CvScheme::recording:
       return "recording";
+    case CvScheme::temperature:
+      return "temperature";
   }
   return "?";
 }
 
 CvScheme parse_cv_scheme(const std::string& text, const std::string& option) {
-  for (CvScheme s : {CvScheme::automatic, CvScheme::repetition, CvScheme::recording})
+  for (CvScheme s :
+       {CvScheme::automatic, CvScheme::repetition, CvScheme::recording, CvScheme::temperature})
     if (text == to_string(s)) return s;
   throw OptionError(option, fmt::format("'{}' is not a cross-validation scheme (auto, repetition, "
-                                        "recording)",
+                                        "recording, temperature)",
                                         text));
 }
+
+namespace {
+
+// k folds of `available` whole units (recordings, temperatures) need 2 ≤ k ≤ available.
+std::size_t checked_folds(std::size_t k, std::size_t available, const char* units,
+                          const char* counted) {
+  if (k < 2 || k > available)
+    throw OptionError("folds", fmt::format("{} folds of whole {} need 2 to {} (the number of {})",
+                                           k, units, available, counted));
+  return k;
+}
+
+}  // namespace
 
 std::vector<Fold> grouped_folds(const Dataset& data, const CvOptions& options) {
   // Only groups that have rows take part.
@@ -73,13 +89,26 @@ std::vector<Fold> grouped_folds(const Dataset& data, const CvOptions& options) {
       fold_of_group[g] = static_cast<std::size_t>(
           std::find(reps.begin(), reps.end(), data.groups[g].repetition) - reps.begin());
     for (int r : reps) names.push_back(fmt::format("repetition {}", r));
+  } else if (scheme == CvScheme::temperature) {
+    std::set<double> temperatures;
+    for (std::size_t g : groups) temperatures.insert(data.groups[g].initial_temp_degc);
+    const std::size_t k = checked_folds(options.folds, temperatures.size(), "initial temperatures",
+                                        "training temperatures");
+    const std::vector<double> temps(temperatures.begin(), temperatures.end());
+    for (std::size_t g : groups) {
+      const auto t = static_cast<std::size_t>(
+          std::find(temps.begin(), temps.end(), data.groups[g].initial_temp_degc) - temps.begin());
+      fold_of_group[g] = t % k;
+    }
+    for (std::size_t f = 0; f < k; ++f) {
+      std::string held;
+      for (std::size_t t = f; t < temps.size(); t += k)
+        held += fmt::format("{}{:g}", held.empty() ? "" : ",", temps[t]);
+      names.push_back(fmt::format("temperatures {} °C", held));
+    }
   } else {
-    const std::size_t k = options.folds;
-    if (k < 2 || k > groups.size())
-      throw OptionError("folds",
-                        fmt::format("{} folds of whole recordings need 2 to {} (the number "
-                                    "of training recordings)",
-                                    k, groups.size()));
+    const std::size_t k =
+        checked_folds(options.folds, groups.size(), "recordings", "training recordings");
     std::vector<std::size_t> sorted = groups;
     std::stable_sort(sorted.begin(), sorted.end(), [&](std::size_t a, std::size_t b) {
       const GroupInfo &ga = data.groups[a], &gb = data.groups[b];
@@ -149,7 +178,8 @@ void validate(const TuneOptions& options) {
     throw OptionError("tolerance", fmt::format("{} must be finite and > 0", options.tolerance));
   if (!(options.cache_mb >= 0 && std::isfinite(options.cache_mb)))
     throw OptionError("cache_mb", fmt::format("{} must be finite and ≥ 0", options.cache_mb));
-  if (options.cv.scheme == CvScheme::recording && options.cv.folds < 2)
+  if ((options.cv.scheme == CvScheme::recording || options.cv.scheme == CvScheme::temperature) &&
+      options.cv.folds < 2)
     throw OptionError("folds", fmt::format("{} is below 2", options.cv.folds));
   switch (options.optimizer.algorithm) {
     case opt::Algorithm::ssa:

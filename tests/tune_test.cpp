@@ -67,6 +67,40 @@ TEST(GroupedFolds, RecordingFoldsSpanTheTemperatures) {
   EXPECT_THROW(grouped_folds(d, o), OptionError);
 }
 
+TEST(GroupedFolds, TemperatureFoldsHoldOutWholeTemperatures) {
+  const Dataset d = synthetic();  // temperatures -20, 0, 20, 40; three repetitions each
+  CvOptions o;
+  o.scheme = CvScheme::temperature;
+  o.folds = 3;
+  const auto folds = grouped_folds(d, o);
+  ASSERT_EQ(folds.size(), 3u);
+  // Dealt in turn: -20 and 40 in the first fold, 0 in the second, 20 in the third.
+  const std::vector<std::set<double>> held = {{-20.0, 40.0}, {0.0}, {20.0}};
+  EXPECT_EQ(folds[0].name, "temperatures -20,40 °C");
+  EXPECT_EQ(folds[1].name, "temperatures 0 °C");
+  std::set<std::size_t> tested;
+  for (std::size_t f = 0; f < folds.size(); ++f) {
+    std::set<double> test_temps, train_temps;
+    for (auto i : folds[f].test_rows) {
+      test_temps.insert(d.groups[d.group[i]].initial_temp_degc);
+      EXPECT_TRUE(tested.insert(i).second) << "row tested twice";
+    }
+    for (auto i : folds[f].train_rows) train_temps.insert(d.groups[d.group[i]].initial_temp_degc);
+    EXPECT_EQ(test_temps, held[f]) << folds[f].name;
+    for (double t : test_temps) EXPECT_FALSE(train_temps.contains(t)) << folds[f].name;
+    EXPECT_EQ(folds[f].train_rows.size() + folds[f].test_rows.size(), d.rows);
+  }
+  EXPECT_EQ(tested.size(), d.rows);
+  o.folds = 5;  // only four temperatures
+  try {
+    grouped_folds(d, o);
+    ADD_FAILURE() << "five folds of four temperatures accepted";
+  } catch (const OptionError& e) {
+    EXPECT_EQ(e.option(), "folds");
+    EXPECT_NE(std::string(e.what()).find("2 to 4"), std::string::npos) << e.what();
+  }
+}
+
 TEST(ScaleSplit, StandardisesWithTrainingRowsOnly) {
   const Dataset d = synthetic();
   const auto folds = grouped_folds(d);
@@ -217,6 +251,8 @@ TEST(TuneSvr, RejectsImpossibleOptions) {
   expect_option(o, "population");
   EXPECT_THROW(parse_fitness("loo"), OptionError);
   EXPECT_EQ(parse_cv_scheme("recording"), CvScheme::recording);
+  EXPECT_EQ(parse_cv_scheme("temperature"), CvScheme::temperature);
+  EXPECT_THROW(parse_cv_scheme("temperatures"), OptionError);
 }
 
 }  // namespace

@@ -31,6 +31,8 @@ struct PaperArgs {
   std::size_t population = 10;
   std::size_t iterations = 20;
   std::string fitness = "cv";
+  std::string cv = "auto";
+  std::size_t folds = 3;
   double epsilon = 0.1;
   bool search_epsilon = false;
   std::string approach = "calibration";

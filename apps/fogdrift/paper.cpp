@@ -31,6 +31,12 @@ void add_paper_options(CLI::App* cmd, PaperArgs& a) {
       ->capture_default_str();
   cmd->add_option("--fitness", a.fitness, "cv (grouped cross-validation) or train (the paper's)")
       ->capture_default_str();
+  cmd->add_option("--cv", a.cv,
+                  "Folds of the cv fitness: auto or repetition (leave one training repetition "
+                  "out), recording (k folds of whole recordings) or temperature (k folds of whole "
+                  "calibration temperatures, scoring a model where it was not trained)")
+      ->capture_default_str();
+  cmd->add_option("--folds", a.folds, "k for --cv recording or temperature")->capture_default_str();
   cmd->add_option("--epsilon", a.epsilon, "ε of the tuned SVRs (standardised target)")
       ->capture_default_str();
   cmd->add_flag("--search-epsilon", a.search_epsilon,
@@ -64,6 +70,8 @@ void run_paper_command(const PaperArgs& a) {
   o.population = a.population;
   o.iterations = a.iterations;
   o.fitness = tune::parse_fitness(a.fitness, "--fitness");
+  o.cv.scheme = tune::parse_cv_scheme(a.cv, "--cv");
+  o.cv.folds = a.folds;
   o.northfind.approach = sim::approach_from_string(a.approach, "--approach");
   o.studies = !a.no_studies;
   o.epsilon = a.epsilon;

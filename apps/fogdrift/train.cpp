@@ -212,9 +212,12 @@ void add_train(CLI::App& app) {
                   "Temperature rates: centred (offline, no delay) or causal (what the instrument "
                   "can run sample by sample; train with it for a streaming compensator)")
       ->capture_default_str();
-  cmd->add_option("--cv", args->cv, "Folds: auto, repetition (leave one out) or recording")
+  cmd->add_option("--cv", args->cv,
+                  "Folds: auto, repetition (leave one out), recording (k folds of whole "
+                  "recordings) or temperature (k folds of whole initial temperatures: the "
+                  "fitness of a model at temperatures it never saw)")
       ->capture_default_str();
-  cmd->add_option("--folds", args->folds, "Folds of whole recordings for --cv recording")
+  cmd->add_option("--folds", args->folds, "k for --cv recording or temperature")
       ->capture_default_str();
   cmd->add_option("--population", args->population, "Optimizer population")->capture_default_str();
   cmd->add_option("--iterations", args->iterations, "Optimizer iterations")->capture_default_str();

@@ -5,7 +5,8 @@
 // optionally, log10 ε, inside SearchSpace's bounds. Its fitness is the RMSE of the drift on the
 // standardised target, either
 //   - cv (default): pooled over the held-out rows of grouped folds. A fold never splits a
-//     recording: leave one repetition out, or k folds of whole recordings. Features and target
+//     recording: leave one repetition out, k folds of whole recordings, or k folds of whole
+//     initial temperatures. Features and target
 //     are standardised with the statistics of each fold's training rows only; or
 //   - train (the paper's choice): on the training rows themselves, which rewards over-fitting.
 //
@@ -43,13 +44,19 @@ enum class CvScheme {
   automatic,   ///< `repetition` when the data holds two or more repetitions, else `recording`
   repetition,  ///< leave one repetition out: as many folds as repetitions
   recording,   ///< k folds of whole recordings, spread over the initial temperatures
+  /// k folds of whole initial temperatures: a fold holds out every recording of its temperatures,
+  /// so the fitness measures the drift at temperatures the model never saw, as north-finding
+  /// at a new temperature does.
+  temperature,
 };
 std::string to_string(CvScheme scheme);
 CvScheme parse_cv_scheme(const std::string& text, const std::string& option = "cv");
 
 struct CvOptions {
   CvScheme scheme = CvScheme::automatic;
-  std::size_t folds = 3;  ///< k of `recording` folds, 2 ≤ k ≤ number of recordings
+  /// k of `recording` folds (2 ≤ k ≤ number of recordings) or of `temperature` folds
+  /// (2 ≤ k ≤ number of initial temperatures)
+  std::size_t folds = 3;
 };
 
 struct Fold {
@@ -60,8 +67,10 @@ struct Fold {
 
 /// The folds of `data` (rows grouped by Dataset::group). `recording` folds sort the recordings
 /// by (initial temperature, repetition, file) and deal them out in turn, so every fold covers
-/// the temperature range. Throws OptionError("cv", …) for leave-one-repetition-out with one
-/// repetition, OptionError("folds", …) for k outside 2 … recordings.
+/// the temperature range. `temperature` folds deal the sorted initial temperatures out in turn,
+/// so a held-out temperature lies between two kept ones (except at the ends of the range).
+/// Throws OptionError("cv", …) for leave-one-repetition-out with one repetition,
+/// OptionError("folds", …) for k outside 2 … recordings (temperatures).
 std::vector<Fold> grouped_folds(const Dataset& data, const CvOptions& options = {});
 
 /// Features and target of a train/test split, standardised with the training rows' statistics

@@ -89,6 +89,7 @@ TrainOptions train_options(const PaperOptions& o, Method method, std::uint64_t s
   TrainOptions to;
   to.method = method;
   to.tune.fitness = fitness;
+  to.tune.cv = o.cv;
   to.tune.optimizer.run.population = o.population;
   to.tune.optimizer.run.iterations = o.iterations;
   to.tune.optimizer.run.seed = seed;
@@ -433,6 +434,22 @@ void validate(const PaperOptions& o) {
     throw OptionError("--epsilon", fmt::format("{} is outside [0, 10]", o.epsilon));
   if (o.iterations < 1 || o.iterations > 100000)
     throw OptionError("--iterations", fmt::format("{} is outside [1, 100000]", o.iterations));
+  const std::size_t temps = o.calibration.temps_degc.size();
+  const std::size_t train_reps =
+      o.calibration.repetitions > o.calibration.test_repetitions
+          ? static_cast<std::size_t>(o.calibration.repetitions - o.calibration.test_repetitions)
+          : 0;
+  if (o.cv.scheme == tune::CvScheme::temperature && (o.cv.folds < 2 || o.cv.folds > temps))
+    throw OptionError("--folds", fmt::format("{} folds of whole temperatures need 2 to {} (the "
+                                             "calibration temperatures)",
+                                             o.cv.folds, temps));
+  if (o.cv.scheme == tune::CvScheme::recording &&
+      (o.cv.folds < 2 || o.cv.folds > temps * train_reps))
+    throw OptionError("--folds", fmt::format("{} folds of whole recordings need 2 to {} (the "
+                                             "training recordings)",
+                                             o.cv.folds, temps * train_reps));
+  if (o.cv.scheme == tune::CvScheme::repetition && train_reps < 2)
+    throw OptionError("--cv", "leave one repetition out needs two or more training repetitions");
   sim::validate(o.instrument);
   // The simulator names its own flags (--temps, --findings, …); here --temps is the paper's
   // --cal-temps or --nf-temps, and other settings are named by their protocol.

@@ -51,6 +51,15 @@ std::string yes_no(bool ok) {
   return ok ? "**holds**" : "**does not hold**";
 }
 
+// The folds of the cv fitness when they are not the default (leave one repetition out).
+std::string cv_description(const PaperOptions& o) {
+  if (o.fitness != tune::Fitness::cv || o.cv.scheme == tune::CvScheme::automatic ||
+      o.cv.scheme == tune::CvScheme::repetition)
+    return "";
+  return fmt::format(" ({} {} folds)", o.cv.folds,
+                     o.cv.scheme == tune::CvScheme::temperature ? "temperature" : "recording");
+}
+
 }  // namespace
 
 MeanSd mean_sd(const std::vector<double>& values) {
@@ -198,6 +207,8 @@ std::string paper_json(const PaperResult& r) {
                    {"population", o.population},
                    {"iterations", o.iterations},
                    {"fitness", std::string(tune::to_string(o.fitness))},
+                   {"cv", std::string(tune::to_string(o.cv.scheme))},
+                   {"folds", o.cv.folds},
                    {"epsilon", o.search_epsilon ? nlohmann::ordered_json(nullptr)
                                                 : nlohmann::ordered_json(o.epsilon)},
                    {"search_epsilon", o.search_epsilon},
@@ -236,11 +247,11 @@ std::string paper_markdown(const PaperResult& r) {
   md << "# The paper's experiment on the simulated instrument\n\n";
   md << fmt::format(
       "fogdrift {}; {} seed{} ({} … {}); tuned SVRs: population {} × {} iterations, fitness "
-      "`{}`, {}; north-finding start-ups approached as `{}`; {:.0f} s.\n"
+      "`{}`{}, {}; north-finding start-ups approached as `{}`; {:.0f} s.\n"
       "Values are mean ± SD over the seeds; every seed simulates new campaigns and runs new "
       "searches.\n\n",
       kVersion, n, n == 1 ? "" : "s", r.seeds.front().seed, r.seeds.back().seed, o.population,
-      o.iterations, tune::to_string(o.fitness),
+      o.iterations, tune::to_string(o.fitness), cv_description(o),
       o.search_epsilon ? std::string("ε searched") : fmt::format("ε = {}", o.epsilon),
       sim::to_string(o.northfind.approach), r.seconds);
 
@@ -380,9 +391,13 @@ std::string paper_markdown(const PaperResult& r) {
       md << fmt::format("| {} | {:.3g} | {:.3g} | {:.4f} | {:.4f} | {:.4f} | {:.4f} |\n", f.fitness,
                         f.c, f.sigma, f.fitness_value, f.std_dph, f.mae_dph, f.mean_rmse_deg);
     }
-    md << "\n`train` is the paper's fitness, the RMSE on the training rows themselves; `cv` "
-          "holds out whole repetitions. The own-fitness column is each one's RMSE on the "
-          "standardised target.\n\n";
+    md << fmt::format(
+        "\n`train` is the paper's fitness, the RMSE on the training rows themselves; `cv` "
+        "holds out {}. The own-fitness column is each one's RMSE on the standardised "
+        "target.\n\n",
+        o.cv.scheme == tune::CvScheme::temperature ? "whole initial temperatures"
+        : o.cv.scheme == tune::CvScheme::recording ? "whole recordings"
+                                                   : "whole repetitions");
   }
   md << "## Per seed\n\n| seed | denoised STD | SSA-SVR STD | BP STD | raw NF ° | SSA-SVR NF ° "
         "| stable ° | SSA-SVR C | σ | s |\n|---|---|---|---|---|---|---|---|---|---|\n";

@@ -44,6 +44,12 @@ check "paper bad nf temps" run 1 "$fd" paper --nf-temps 10,200
 check "paper bad nf temps message" err_has "option --nf-temps: 200 °C is outside [-70, 100]"
 check "paper bad population" run 1 "$fd" paper --population 3
 check "paper bad population message" err_has "option --population"
+check "paper bad cv" run 1 "$fd" paper --cv temperatures
+check "paper bad cv message" err_has "option --cv: 'temperatures' is not a cross-validation scheme"
+check "paper too many temperature folds" run 1 "$fd" paper --cv temperature --folds 12
+check "paper temperature folds message" err_has "option --folds: 12 folds of whole temperatures need 2 to 11"
+check "paper temperature folds on stdout" run 0 "$fd" paper --seeds 1 --cal-temps 0,20,40 --nf-temps 20 --findings 1 --population 5 --iterations 1 --no-studies --cv temperature --folds 3
+check "paper temperature folds in the header" out_has "fitness \`cv\` (3 temperature folds)"
 check "demo help" run 0 "$fd" demo --help
 check "demo help says what it runs" out_has "fogdrift paper"
 

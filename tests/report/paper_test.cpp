@@ -168,6 +168,19 @@ TEST(Paper, ImpossibleOptionsNameTheOption) {
   o = PaperOptions{};
   o.epsilon = -0.1;
   expect_option(o, "--epsilon");
+  o = PaperOptions{};
+  o.cv.scheme = tune::CvScheme::temperature;
+  o.cv.folds = 12;  // eleven calibration temperatures
+  expect_option(o, "--folds");
+  o.cv.folds = 11;
+  EXPECT_NO_THROW(validate(o));
+  o.cv.scheme = tune::CvScheme::recording;
+  o.cv.folds = 34;  // 11 temperatures × 3 training repetitions
+  expect_option(o, "--folds");
+  o = PaperOptions{};
+  o.cv.scheme = tune::CvScheme::repetition;
+  o.calibration.test_repetitions = 3;  // one training repetition left
+  expect_option(o, "--cv");
 }
 
 }  // namespace

@@ -40,6 +40,9 @@ struct PaperOptions {
   std::size_t population = 10;
   std::size_t iterations = 20;
   tune::Fitness fitness = tune::Fitness::cv;  ///< fitness of the tuned SVRs
+  /// Folds of the `cv` fitness: by default leave one training repetition out; `temperature`
+  /// folds score a candidate at calibration temperatures it was not trained on.
+  tune::CvOptions cv;
   double epsilon = 0.1;         ///< ε of the tuned SVRs' tube (standardised target), when fixed
   bool search_epsilon = false;  ///< the tuned SVRs also search ε (beyond the paper's C and σ)
   MlpOptions mlp;               ///< BP's settings; its seed is each run's seed
