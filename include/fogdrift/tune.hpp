@@ -6,8 +6,8 @@
 // standardised target, either
 //   - cv (default): pooled over the held-out rows of grouped folds. A fold never splits a
 //     recording: leave one repetition out, k folds of whole recordings, or k folds of whole
-//     initial temperatures. Features and target
-//     are standardised with the statistics of each fold's training rows only; or
+//     initial temperatures. Features and target are standardised with the statistics of each
+//     fold's training rows only; or
 //   - train (the paper's choice): on the training rows themselves, which rewards over-fitting.
 //
 // Speed: each fold's data is prepared once (svr::TrainingSet) and reused by every candidate; a
