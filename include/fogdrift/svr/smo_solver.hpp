@@ -43,9 +43,10 @@ struct SolverOptions {
   /// Iteration limit; 0 means LIBSVM's max(10⁷, 100·2l).
   std::int64_t max_iterations = 0;
   /// Memory for kernel rows held in the solver's own variable order, MB (l floats a row for the
-  /// pair solver, 2l for the LIBSVM path; at least two rows). fit() gives it half of
-  /// Params::cache_mb. The memory is reserved, committed as rows are written, and kept by the
-  /// thread for its next fit (see Params::cache_mb).
+  /// pair solver, 2l for the LIBSVM path; at least two rows). fit() gives it 90 % of
+  /// Params::cache_mb for the pair solver and half for the LIBSVM path and for fit_c_path. The
+  /// memory is reserved, committed as rows are written, and kept by the thread for its next fit
+  /// (see Params::cache_mb).
   double solver_order_cache_mb = 100;
   /// true: the per-variable solver that visits LIBSVM's working sets one for one (the same
   /// iterations and support vectors as LIBSVM, for audits); false: the pair solver, faster.
