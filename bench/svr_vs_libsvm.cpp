@@ -64,10 +64,12 @@ LibsvmFit libsvm_fit(LibsvmData& data, double c, double gamma) {
 }
 
 bool g_libsvm_path = false;  // --libsvm-path: fogdrift's solver that follows LIBSVM's path
+bool g_conjugate = true;     // --no-conjugate: the pair solver without conjugate steps
 
 fogdrift::svr::Params params_for(double c, double sigma) {
   fogdrift::svr::Params p;
   p.libsvm_path = g_libsvm_path;
+  p.conjugate = g_conjugate;
   p.kernel = fogdrift::svr::Kernel::rbf_sigma(sigma);
   p.c = c;
   p.epsilon = 0.1;
@@ -106,10 +108,12 @@ int main(int argc, char** argv) {
       threads = false;
     else if (a == "--libsvm-path")
       g_libsvm_path = true;
+    else if (a == "--no-conjugate")
+      g_conjugate = false;
     else {
       std::fprintf(stderr,
                    "usage: %s [--sizes N,N] [--repeats R] [--sweep-n N] [--no-sweep] "
-                   "[--no-threads] [--libsvm-path]\n",
+                   "[--no-threads] [--libsvm-path] [--no-conjugate]\n",
                    argv[0]);
       return 2;
     }

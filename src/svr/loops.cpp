@@ -249,6 +249,25 @@ Selection update_and_select_up_portable(double* f, const double* up, const float
   return none_if_offsets_only(out);
 }
 
+// conjugate_update_and_select_up over [begin, len), continuing from `out`.
+void conjugate_scalar(double* f, const double* up, const float* k_i, const float* k_j, double* kd,
+                      double lambda, double t, std::size_t begin, std::size_t len, Selection& out) {
+  for (std::size_t k = begin; k < len; ++k) {
+    const double q = (static_cast<double>(k_i[k]) - static_cast<double>(k_j[k])) + lambda * kd[k];
+    kd[k] = q;
+    f[k] += t * q;
+    const double v = up[k] - f[k];
+    if (v >= out.value) out = {v, static_cast<std::int64_t>(k)};
+  }
+}
+
+Selection conjugate_portable(double* f, const double* up, const float* k_i, const float* k_j,
+                             double* kd, double lambda, double t, std::size_t len) {
+  Selection out{-DBL_MAX, -1};
+  conjugate_scalar(f, up, k_i, k_j, kd, lambda, t, 0, len, out);
+  return none_if_offsets_only(out);
+}
+
 // Merging per-lane results of the vectorised loops (arrays of `lanes` values; index −1: none):
 // the last maximiser, and the best gain num/den (cross-multiplied, the larger index on ties).
 void merge_max(const double* value, const double* index, int lanes, Selection& out) {
@@ -440,6 +459,27 @@ __attribute__((target("avx2"))) SelectionJ select_j_avx2(const double* g, const 
 
 // The pair solver's loops (see loops.hpp), four samples at a time in the same way.
 
+// The running last maximum of v over four lanes (samples k … k+3), and the merge of two sets of
+// lanes at the end.
+__attribute__((target("avx2"))) inline void keep_last_max(__m256d v, std::size_t k, __m256d& best,
+                                                          __m256d& best_index) {
+  const __m256d take = _mm256_cmp_pd(v, best, _CMP_GE_OQ);
+  best = _mm256_blendv_pd(best, v, take);
+  const __m256d index =
+      _mm256_add_pd(_mm256_set1_pd(static_cast<double>(k)), _mm256_setr_pd(0, 1, 2, 3));
+  best_index = _mm256_blendv_pd(best_index, index, take);
+}
+
+__attribute__((target("avx2"))) inline Selection merge_two_sets(const __m256d best[2],
+                                                                const __m256d best_index[2]) {
+  Selection out = merge_lanes_max(best[0], best_index[0]);
+  const Selection other = merge_lanes_max(best[1], best_index[1]);
+  if (other.index >= 0 &&
+      (other.value > out.value || (other.value == out.value && other.index > out.index)))
+    out = other;
+  return out;
+}
+
 // One block of four for update_and_select_up_avx2: the update, then the running last maximum.
 template <bool kUpdate>
 __attribute__((target("avx2"))) inline void up_block(double* f, const double* up, const float* k_i,
@@ -453,12 +493,7 @@ __attribute__((target("avx2"))) inline void up_block(double* f, const double* up
     fk = _mm256_add_pd(fk, _mm256_add_pd(_mm256_mul_pd(ki, bi), _mm256_mul_pd(kj, bj)));
     _mm256_storeu_pd(f + k, fk);
   }
-  const __m256d v = _mm256_sub_pd(_mm256_loadu_pd(up + k), fk);
-  const __m256d take = _mm256_cmp_pd(v, best, _CMP_GE_OQ);
-  best = _mm256_blendv_pd(best, v, take);
-  const __m256d index =
-      _mm256_add_pd(_mm256_set1_pd(static_cast<double>(k)), _mm256_setr_pd(0, 1, 2, 3));
-  best_index = _mm256_blendv_pd(best_index, index, take);
+  keep_last_max(_mm256_sub_pd(_mm256_loadu_pd(up + k), fk), k, best, best_index);
 }
 
 // Two independent sets of lanes, so that one set's compare-and-blend chain does not stall the
@@ -477,12 +512,42 @@ __attribute__((target("avx2"))) Selection update_and_select_up_avx2(double* f, c
     up_block<kUpdate>(f, up, k_i, k_j, bi, bj, k, best[0], best_index[0]);
     up_block<kUpdate>(f, up, k_i, k_j, bi, bj, k + 4, best[1], best_index[1]);
   }
-  Selection out = merge_lanes_max(best[0], best_index[0]);
-  const Selection other = merge_lanes_max(best[1], best_index[1]);
-  if (other.index >= 0 &&
-      (other.value > out.value || (other.value == out.value && other.index > out.index)))
-    out = other;
+  Selection out = merge_two_sets(best, best_index);
   update_and_select_up_scalar<kUpdate>(f, up, k_i, k_j, b_i, b_j, k, len, out);
+  return none_if_offsets_only(out);
+}
+
+// conjugate_update_and_select_up four samples at a time, in two sets of lanes as above.
+__attribute__((target("avx2"))) inline void conjugate_block(double* f, const double* up,
+                                                            const float* k_i, const float* k_j,
+                                                            double* kd, __m256d lambda, __m256d t,
+                                                            std::size_t k, __m256d& best,
+                                                            __m256d& best_index) {
+  const __m256d ki = _mm256_cvtps_pd(_mm_loadu_ps(k_i + k));
+  const __m256d kj = _mm256_cvtps_pd(_mm_loadu_ps(k_j + k));
+  const __m256d q =
+      _mm256_add_pd(_mm256_sub_pd(ki, kj), _mm256_mul_pd(lambda, _mm256_loadu_pd(kd + k)));
+  _mm256_storeu_pd(kd + k, q);
+  const __m256d fk = _mm256_add_pd(_mm256_loadu_pd(f + k), _mm256_mul_pd(t, q));
+  _mm256_storeu_pd(f + k, fk);
+  keep_last_max(_mm256_sub_pd(_mm256_loadu_pd(up + k), fk), k, best, best_index);
+}
+
+__attribute__((target("avx2"))) Selection conjugate_avx2(double* f, const double* up,
+                                                         const float* k_i, const float* k_j,
+                                                         double* kd, double lambda, double t,
+                                                         std::size_t len) {
+  __m256d best[2] = {_mm256_set1_pd(-DBL_MAX), _mm256_set1_pd(-DBL_MAX)};
+  __m256d best_index[2] = {_mm256_set1_pd(-1.0), _mm256_set1_pd(-1.0)};
+  const __m256d l = _mm256_set1_pd(lambda);
+  const __m256d tv = _mm256_set1_pd(t);
+  std::size_t k = 0;
+  for (; k + 8 <= len; k += 8) {
+    conjugate_block(f, up, k_i, k_j, kd, l, tv, k, best[0], best_index[0]);
+    conjugate_block(f, up, k_i, k_j, kd, l, tv, k + 4, best[1], best_index[1]);
+  }
+  Selection out = merge_two_sets(best, best_index);
+  conjugate_scalar(f, up, k_i, k_j, kd, lambda, t, k, len, out);
   return none_if_offsets_only(out);
 }
 
@@ -562,6 +627,52 @@ __attribute__((target("avx512f"))) inline __m512d iota8(std::size_t k) {
                        _mm512_setr_pd(0, 1, 2, 3, 4, 5, 6, 7));
 }
 
+__attribute__((target("avx512f"))) inline void keep_last_max(__m512d v, std::size_t at,
+                                                             __m512d& best, __m512d& best_index) {
+  const __mmask8 take = _mm512_cmp_pd_mask(v, best, _CMP_GE_OQ);
+  best = _mm512_mask_blend_pd(take, best, v);
+  best_index = _mm512_mask_blend_pd(take, best_index, iota8(at));
+}
+
+__attribute__((target("avx512f"))) inline Selection merge_two_sets(const __m512d best[2],
+                                                                   const __m512d best_index[2]) {
+  Selection out{-DBL_MAX, -1};
+  for (int s = 0; s < 2; ++s) {
+    alignas(64) double bv[8], bx[8];
+    _mm512_store_pd(bv, best[s]);
+    _mm512_store_pd(bx, best_index[s]);
+    merge_max(bv, bx, 8, out);
+  }
+  return out;
+}
+
+__attribute__((target("avx512f"))) Selection conjugate_avx512(double* f, const double* up,
+                                                              const float* k_i, const float* k_j,
+                                                              double* kd, double lambda, double t,
+                                                              std::size_t len) {
+  __m512d best[2] = {_mm512_set1_pd(-DBL_MAX), _mm512_set1_pd(-DBL_MAX)};
+  __m512d best_index[2] = {_mm512_set1_pd(-1.0), _mm512_set1_pd(-1.0)};
+  const __m512d l = _mm512_set1_pd(lambda);
+  const __m512d tv = _mm512_set1_pd(t);
+  std::size_t k = 0;
+  for (; k + 16 <= len; k += 16) {
+    for (int s = 0; s < 2; ++s) {
+      const std::size_t at = k + 8 * static_cast<std::size_t>(s);
+      const __m512d ki = _mm512_cvtps_pd(_mm256_loadu_ps(k_i + at));
+      const __m512d kj = _mm512_cvtps_pd(_mm256_loadu_ps(k_j + at));
+      const __m512d q =
+          _mm512_add_pd(_mm512_sub_pd(ki, kj), _mm512_mul_pd(l, _mm512_loadu_pd(kd + at)));
+      _mm512_storeu_pd(kd + at, q);
+      const __m512d fk = _mm512_add_pd(_mm512_loadu_pd(f + at), _mm512_mul_pd(tv, q));
+      _mm512_storeu_pd(f + at, fk);
+      keep_last_max(_mm512_sub_pd(_mm512_loadu_pd(up + at), fk), at, best[s], best_index[s]);
+    }
+  }
+  Selection out = merge_two_sets(best, best_index);
+  conjugate_scalar(f, up, k_i, k_j, kd, lambda, t, k, len, out);
+  return none_if_offsets_only(out);
+}
+
 template <bool kUpdate>
 __attribute__((target("avx512f"))) Selection update_and_select_up_avx512(
     double* f, const double* up, const float* k_i, const float* k_j, double b_i, double b_j,
@@ -581,19 +692,10 @@ __attribute__((target("avx512f"))) Selection update_and_select_up_avx512(
         fk = _mm512_add_pd(fk, _mm512_add_pd(_mm512_mul_pd(ki, bi), _mm512_mul_pd(kj, bj)));
         _mm512_storeu_pd(f + at, fk);
       }
-      const __m512d v = _mm512_sub_pd(_mm512_loadu_pd(up + at), fk);
-      const __mmask8 take = _mm512_cmp_pd_mask(v, best[s], _CMP_GE_OQ);
-      best[s] = _mm512_mask_blend_pd(take, best[s], v);
-      best_index[s] = _mm512_mask_blend_pd(take, best_index[s], iota8(at));
+      keep_last_max(_mm512_sub_pd(_mm512_loadu_pd(up + at), fk), at, best[s], best_index[s]);
     }
   }
-  Selection out{-DBL_MAX, -1};
-  for (int s = 0; s < 2; ++s) {
-    alignas(64) double bv[8], bx[8];
-    _mm512_store_pd(bv, best[s]);
-    _mm512_store_pd(bx, best_index[s]);
-    merge_max(bv, bx, 8, out);
-  }
+  Selection out = merge_two_sets(best, best_index);
   update_and_select_up_scalar<kUpdate>(f, up, k_i, k_j, b_i, b_j, k, len, out);
   return none_if_offsets_only(out);
 }
@@ -699,6 +801,27 @@ Selection update_and_select_up(double* f, const double* up, const float* k_i, co
   if (kHasAvx2) return update_and_select_up_avx2<true>(f, up, k_i, k_j, b_i, b_j, len);
 #endif
   return update_and_select_up_portable<true>(f, up, k_i, k_j, b_i, b_j, len);
+}
+
+Selection conjugate_update_and_select_up(double* f, const double* up, const float* k_i,
+                                         const float* k_j, double* kd, double lambda, double t,
+                                         std::size_t len) {
+#if FOGDRIFT_HAVE_AVX2_GATHER
+  if (kHasAvx512) return conjugate_avx512(f, up, k_i, k_j, kd, lambda, t, len);
+  if (kHasAvx2) return conjugate_avx2(f, up, k_i, k_j, kd, lambda, t, len);
+#endif
+  return conjugate_portable(f, up, k_i, k_j, kd, lambda, t, len);
+}
+
+Selection conjugate_update_and_select_up_with(Isa isa, double* f, const double* up,
+                                              const float* k_i, const float* k_j, double* kd,
+                                              double lambda, double t, std::size_t len) {
+#if FOGDRIFT_HAVE_AVX2_GATHER
+  if (isa == Isa::avx512 && kHasAvx512)
+    return conjugate_avx512(f, up, k_i, k_j, kd, lambda, t, len);
+  if (isa == Isa::avx2 && kHasAvx2) return conjugate_avx2(f, up, k_i, k_j, kd, lambda, t, len);
+#endif
+  return conjugate_portable(f, up, k_i, k_j, kd, lambda, t, len);
 }
 
 SelectionJ select_low(const double* f, const double* low, const float* k_i, const double* qd,

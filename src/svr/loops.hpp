@@ -108,6 +108,14 @@ Selection update_and_select_up(double* f, const double* up, const float* k_i, co
 SelectionJ select_low(const double* f, const double* low, const float* k_i, const double* qd,
                       double qd_i, double g_max, double tau, std::size_t len);
 
+/// The pair solver's conjugate step (pair_solver.cpp) fused with the next select_up: for k < len,
+/// kd[k] = (K_i[k] − K_j[k]) + λ·kd[k] (the kernel times the new direction d' = u + λ·d, from K·d
+/// in place), f[k] += t·kd[k], then the select_up of the updated f. With λ = 0 and t = 0 it only
+/// records K_i − K_j.
+Selection conjugate_update_and_select_up(double* f, const double* up, const float* k_i,
+                                         const float* k_j, double* kd, double lambda, double t,
+                                         std::size_t len);
+
 /// g[k] += a·K[k] for begin ≤ k < end.
 void add_row(double* g, const float* k_row, double a, std::size_t begin, std::size_t end);
 
@@ -118,6 +126,9 @@ enum class Isa { portable, avx2, avx512 };
 bool available(Isa isa);
 Selection update_and_select_up_with(Isa isa, double* f, const double* up, const float* k_i,
                                     const float* k_j, double b_i, double b_j, std::size_t len);
+Selection conjugate_update_and_select_up_with(Isa isa, double* f, const double* up,
+                                              const float* k_i, const float* k_j, double* kd,
+                                              double lambda, double t, std::size_t len);
 SelectionJ select_low_with(Isa isa, const double* f, const double* low, const float* k_i,
                            const double* qd, double qd_i, double g_max, double tau,
                            std::size_t len);

@@ -67,8 +67,9 @@ FitResult fit_with(const TrainingSet& set, KernelCache& cache, const Params& par
                    double computed_share, const DualSolution* warm) {
   const auto start = std::chrono::steady_clock::now();
   DualSolution dual;
-  const SolverOptions options{params.tolerance, params.shrinking, params.max_iterations,
-                              params.cache_mb * (1 - computed_share), params.libsvm_path};
+  const SolverOptions options{params.tolerance,      params.shrinking,
+                              params.max_iterations, params.cache_mb * (1 - computed_share),
+                              params.libsvm_path,    params.conjugate};
   const SolverSummary s =
       solve_epsilon_svr(cache, set.data().y, params.c, params.epsilon, options, dual, warm);
   const double seconds =

@@ -169,10 +169,37 @@ TEST(Selections, PairLoopsVectorisedAndPortableAgreeIncludingTies) {
                                              qd.data(), 1.0, a.value, 1e-12, len);
       ASSERT_EQ(c.index, e.index);
       ASSERT_EQ(c.g_max2, e.g_max2);
+      // The conjugate step's loop: K·d in place, f along it, the next select_up.
+      std::vector<double> kd(len), kd2;
+      for (std::size_t t = 0; t < len; ++t) kd[t] = std::round(rng.uniform(-4, 4)) / 4;
+      kd2 = kd;
+      f2 = f;
+      const auto g = detail::conjugate_update_and_select_up_with(
+          isa, f.data(), up.data(), k_i.data(), k_j.data(), kd.data(), -0.5, 0.25, len);
+      const auto h = detail::conjugate_update_and_select_up_with(
+          Isa::portable, f2.data(), up.data(), k_i.data(), k_j.data(), kd2.data(), -0.5, 0.25, len);
+      ASSERT_EQ(kd, kd2);
+      ASSERT_EQ(f, f2);
+      ASSERT_EQ(g.index, h.index);
+      ASSERT_EQ(g.value, h.value);
+      ASSERT_EQ(detail::select_up(f.data(), up.data(), len).index, g.index);
       ++checked;
     }
   }
   RecordProperty("vectorised_versions_checked", checked);
+}
+
+TEST(Selections, ConjugateLoopComputesTheDirectionAndTheGradient) {
+  // kd = (K_i − K_j) + λ·kd, f += t·kd, in numbers exact in binary.
+  std::vector<double> f = {1.0, -0.5, 0.25}, up = {0.25, -0.25, detail::kNoVariable};
+  std::vector<double> kd = {2.0, -1.0, 0.5};
+  const std::vector<float> k_i = {1.0F, 0.5F, 0.25F}, k_j = {0.5F, 0.5F, 1.0F};
+  const auto s = detail::conjugate_update_and_select_up(f.data(), up.data(), k_i.data(), k_j.data(),
+                                                        kd.data(), 0.5, 2.0, 3);
+  EXPECT_EQ(kd, (std::vector<double>{1.5, -0.5, -0.5}));
+  EXPECT_EQ(f, (std::vector<double>{4.0, -1.5, -0.75}));
+  EXPECT_EQ(s.index, 1);  // up − f: −3.75, 1.25, and none for the third
+  EXPECT_EQ(s.value, 1.25);
 }
 
 TEST(RowArena, AThreadReusesTheMemoryOfItsLastFitAndANewThreadDoesNot) {

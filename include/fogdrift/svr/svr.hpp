@@ -36,6 +36,7 @@ struct Params {
   double cache_mb = 200;
   std::int64_t max_iterations = 0;  ///< 0: LIBSVM's max(10⁷, 200·l)
   bool libsvm_path = false;  ///< SolverOptions::libsvm_path: LIBSVM's working sets one for one
+  bool conjugate = true;     ///< SolverOptions::conjugate: the pair solver's conjugate steps
 };
 
 /// Names to use for each parameter in error messages (the CLI passes its flags).
