@@ -15,10 +15,10 @@
 //    LIBSVM's, walks l samples instead of 2l variables, and fuses the gradient update with the
 //    next selection. Ties can break differently and a sample is shrunk only with both of its
 //    variables, so its path differs from LIBSVM's in detail; it stops by the same rule, so its
-//    objective agrees with LIBSVM's to about the tolerance (1e-6 relative on the benchmark data)
-//    and at a tight tolerance its predictions are LIBSVM's. It also takes conjugate steps
-//    (SolverOptions::conjugate): the working pair's direction is made Q-conjugate to the last
-//    one, which halves the iterations at large C.
+//    objective agrees with LIBSVM's to about the tolerance (2e-5 relative or better on the
+//    benchmark data) and at a tight tolerance its predictions are LIBSVM's. It also takes
+//    conjugate steps (SolverOptions::conjugate): the working pair's direction is made
+//    Q-conjugate to the last one, which halves the iterations at large C.
 //  * SolverOptions::libsvm_path selects the solver that follows LIBSVM step for step over the 2l
 //    variables: on the same data it visits the same working sets, so its model, iteration count
 //    and support vectors are LIBSVM's to rounding. `fogdrift svr train` uses it by default, for
