@@ -119,11 +119,18 @@ Selection conjugate_update_and_select_up(double* f, const double* up, const floa
 /// g[k] += a·K[k] for begin ≤ k < end.
 void add_row(double* g, const float* k_row, double a, std::size_t begin, std::size_t end);
 
-/// The instruction sets the pair loops are built for; the fastest the processor has is used.
+/// The instruction sets the pair loops and the RBF rows are built for; the fastest the processor
+/// has is used.
 /// Exposed, with the two functions below, for the test that checks every version against the
 /// portable one.
 enum class Isa { portable, avx2, avx512 };
 bool available(Isa isa);
+Isa best_isa();  ///< the fastest this processor has (portable in sanitizer builds)
+/// rbf_row and rbf_row_from_distances in one version; every version gives the same floats.
+void rbf_row_with(Isa isa, const double* xi, double sq_i, const double* xt, const double* sq,
+                  std::size_t n, std::size_t d, double gamma, float* out);
+void rbf_row_from_distances_with(Isa isa, const float* dist, std::size_t n, double gamma,
+                                 float* out);
 Selection update_and_select_up_with(Isa isa, double* f, const double* up, const float* k_i,
                                     const float* k_j, double b_i, double b_j, std::size_t len);
 Selection conjugate_update_and_select_up_with(Isa isa, double* f, const double* up,

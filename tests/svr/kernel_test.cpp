@@ -80,6 +80,48 @@ TEST(KernelRows, DistanceMatrixGivesTheSameRowsToFloatRounding) {
   }
 }
 
+TEST(KernelRows, VectorisedRowsAreBitForBitThePortableOnes) {
+  // The AVX2 and AVX-512 rows must give the floats the portable row gives, so that a fit takes
+  // the same path on every processor: lengths around the vector widths, one and many features,
+  // near and far points (e^x from 1 down to underflow), and distances from the matrix.
+  using detail::Isa;
+  Rng rng(11);
+  int checked = 0;
+  for (Isa isa : {Isa::avx2, Isa::avx512}) {
+    if (!detail::available(isa)) continue;  // this processor lacks it
+    SCOPED_TRACE(isa == Isa::avx2 ? "AVX2" : "AVX-512");
+    for (const std::size_t d : {std::size_t{1}, std::size_t{9}, std::size_t{17}}) {
+      for (const std::size_t n : {1, 3, 4, 7, 8, 9, 15, 16, 17, 100, 257}) {
+        std::vector<double> x(n * d), xt(n * d), sq(n);
+        for (std::size_t i = 0; i < n; ++i) {
+          const double spread = i % 3 == 0 ? 1e-3 : (i % 3 == 1 ? 1.0 : 30.0);
+          for (std::size_t f = 0; f < d; ++f) {
+            x[i * d + f] = rng.normal() * spread;
+            xt[f * n + i] = x[i * d + f];
+            sq[i] += x[i * d + f] * x[i * d + f];
+          }
+        }
+        std::vector<float> a(n), b(n), da(n), db(n), dist(n);
+        for (const double gamma : {1e-3, 0.5, 20.0}) {
+          for (std::size_t i = 0; i < n; i += 1 + n / 5) {
+            detail::rbf_row_with(isa, &x[i * d], sq[i], xt.data(), sq.data(), n, d, gamma,
+                                 a.data());
+            detail::rbf_row_with(Isa::portable, &x[i * d], sq[i], xt.data(), sq.data(), n, d, gamma,
+                                 b.data());
+            ASSERT_EQ(0, std::memcmp(a.data(), b.data(), n * sizeof(float))) << n << " " << d;
+            detail::distance_row(&x[i * d], sq[i], xt.data(), sq.data(), n, d, dist.data());
+            detail::rbf_row_from_distances_with(isa, dist.data(), n, gamma, da.data());
+            detail::rbf_row_from_distances_with(Isa::portable, dist.data(), n, gamma, db.data());
+            ASSERT_EQ(0, std::memcmp(da.data(), db.data(), n * sizeof(float))) << n << " " << d;
+            ++checked;
+          }
+        }
+      }
+    }
+  }
+  RecordProperty("vectorised_rows_checked", checked);
+}
+
 TEST(KernelCache, EvictsTheLeastRecentlyUsedRow) {
   const Data d = testing::smooth(64, 2, 0.0, 4);
   const TrainingSet set(d);
