@@ -14,6 +14,7 @@
 #include "svr/datasets.hpp"
 #include "svr/loops.hpp"
 #include "svr/row_arena.hpp"
+#include "svr/smo_parts.hpp"
 
 namespace fogdrift::svr {
 namespace {
@@ -142,6 +143,46 @@ TEST(KernelCache, EvictsTheLeastRecentlyUsedRow) {
   std::vector<float> expect(64);
   set.kernel_row(Kernel::rbf_sigma(1.0), 1, expect.data());
   EXPECT_EQ(0, std::memcmp(r1, expect.data(), 64 * sizeof(float)));
+}
+
+TEST(OrderedRows, RowsCatchUpWithEveryRoundOfSwaps) {
+  // Rows in solver order are brought up to date only when asked for, by replaying the swaps of
+  // the rounds they missed or by gathering again; either way they must equal the kernel row
+  // read through the current order. Small budgets make both caches evict, rounds of up to 400
+  // swaps make rows replay, gather again, and outlive the bounded swap log.
+  const Data d = testing::smooth(300, 4, 0.1, 5);
+  const TrainingSet set(d);
+  const Kernel k = Kernel::rbf_sigma(0.7);
+  KernelCache q(set, k, 0.02);
+  const std::size_t n = d.rows;
+  std::vector<std::int32_t> index(n);
+  for (std::size_t t = 0; t < n; ++t) index[t] = static_cast<std::int32_t>(t);
+  detail::OrderedRows rows(q, index.data(), n, n, 0.03);
+  std::vector<float> expected(n);
+  Rng rng(8);
+  int compared = 0;
+  for (int round = 0; round < 60; ++round) {
+    const int swaps = static_cast<int>(rng.uniform(0, round % 7 == 6 ? 400 : 20));
+    for (int s = 0; s < swaps; ++s) {
+      const auto a = static_cast<std::size_t>(rng.uniform(0, static_cast<double>(n)));
+      const auto b = static_cast<std::size_t>(rng.uniform(0, static_cast<double>(n)));
+      if (a == b) continue;
+      std::swap(index[a], index[b]);
+      rows.swapped(a, b);
+    }
+    rows.apply_swaps();
+    for (int r = 0; r < 30; ++r) {
+      const auto row = static_cast<std::int32_t>(rng.uniform(0, 40));  // a few rows, reused
+      const auto len = static_cast<std::size_t>(rng.uniform(1, static_cast<double>(n) + 1));
+      const float* got = rows.row(row, len);
+      set.kernel_row(k, static_cast<std::size_t>(row), expected.data());
+      for (std::size_t t = 0; t < len; ++t)
+        ASSERT_EQ(got[t], expected[static_cast<std::size_t>(index[t])])
+            << "round " << round << " row " << row << " position " << t;
+      ++compared;
+    }
+  }
+  RecordProperty("rows_compared", compared);
 }
 
 TEST(Selections, VectorisedAndPortableAgreeIncludingTies) {
