@@ -113,12 +113,12 @@ std::size_t TrainingSet::bytes() const {
 void TrainingSet::kernel_row(const Kernel& kernel, std::size_t i, float* out) const {
   const std::size_t n = data_.rows, d = data_.cols;
   if (kernel.type == KernelType::linear) {
-    detail::linear_row(data_.row(i), feature_major_.data(), n, d, out);
+    detail::linear_row(data_.row(i), feature_major_.data(), n, n, d, out);
   } else if (!distances_.empty()) {
     detail::rbf_row_from_distances(distances_.data() + i * n, n, kernel.gamma, out);
   } else {
-    detail::rbf_row(data_.row(i), squared_norms_[i], feature_major_.data(), squared_norms_.data(),
-                    n, d, kernel.gamma, out);
+    detail::rbf_row(data_.row(i), squared_norms_[i], feature_major_.data(), n,
+                    squared_norms_.data(), n, d, kernel.gamma, out);
   }
 }
 

@@ -62,13 +62,14 @@ inline double exp_core(double x) {
 constexpr std::size_t kBlock = 256;  // columns per block: the accumulators stay in L1
 
 // acc[j] = x_i·x_{j0+j} for j < m, summed over features in order (LIBSVM's order), from the
-// feature-major copy `xt` (d × n). Inlined into each caller's AVX2 and portable builds.
-inline void dot_block(const double* xi, const double* xt, std::size_t n, std::size_t d,
+// feature-major copy `xt` (feature f of column j at xt[f·stride + j]). Inlined into each
+// caller's AVX2 and portable builds.
+inline void dot_block(const double* xi, const double* xt, std::size_t stride, std::size_t d,
                       std::size_t j0, std::size_t m, double* acc) {
   for (std::size_t j = 0; j < m; ++j) acc[j] = 0.0;
   for (std::size_t f = 0; f < d; ++f) {
     const double xf = xi[f];
-    const double* col = xt + f * n + j0;
+    const double* col = xt + f * stride + j0;
     for (std::size_t j = 0; j < m; ++j) acc[j] += xf * col[j];
   }
 }
@@ -80,12 +81,12 @@ float exp_to_float(double x) {
 }
 
 namespace {
-void rbf_row_portable(const double* xi, double sq_i, const double* xt, const double* sq,
-                      std::size_t n, std::size_t d, double gamma, float* out) {
+void rbf_row_portable(const double* xi, double sq_i, const double* xt, std::size_t stride,
+                      const double* sq, std::size_t n, std::size_t d, double gamma, float* out) {
   double acc[kBlock];
   for (std::size_t j0 = 0; j0 < n; j0 += kBlock) {
     const std::size_t m = std::min(kBlock, n - j0);
-    dot_block(xi, xt, n, d, j0, m, acc);
+    dot_block(xi, xt, stride, d, j0, m, acc);
     for (std::size_t j = 0; j < m; ++j) {
       const double dist = (sq_i + sq[j0 + j]) - 2.0 * acc[j];
       out[j0 + j] = static_cast<float>(exp_core(-gamma * dist));
@@ -95,11 +96,12 @@ void rbf_row_portable(const double* xi, double sq_i, const double* xt, const dou
 }  // namespace
 
 FOGDRIFT_CLONES
-void linear_row(const double* xi, const double* xt, std::size_t n, std::size_t d, float* out) {
+void linear_row(const double* xi, const double* xt, std::size_t stride, std::size_t n,
+                std::size_t d, float* out) {
   double acc[kBlock];
   for (std::size_t j0 = 0; j0 < n; j0 += kBlock) {
     const std::size_t m = std::min(kBlock, n - j0);
-    dot_block(xi, xt, n, d, j0, m, acc);
+    dot_block(xi, xt, stride, d, j0, m, acc);
     for (std::size_t j = 0; j < m; ++j) out[j0 + j] = static_cast<float>(acc[j]);
   }
 }
@@ -199,30 +201,30 @@ __attribute__((target("avx2"))) inline __m128 exp_to_float_avx2(__m256d x) {
 // Eight columns from j of an RBF row; `mask` selects the columns that exist (the others read
 // nothing and compute a harmless value). Returns the eight floats.
 __attribute__((target("avx512f"))) inline __m256 rbf_columns_avx512(
-    const double* xi, __m512d sq_i, const double* xt, const double* sq, std::size_t n,
+    const double* xi, __m512d sq_i, const double* xt, std::size_t stride, const double* sq,
     std::size_t d, __m512d minus_gamma, std::size_t j, __mmask8 mask) {
   __m512d acc = _mm512_setzero_pd();
   for (std::size_t f = 0; f < d; ++f)
-    acc = _mm512_add_pd(
-        acc, _mm512_mul_pd(_mm512_set1_pd(xi[f]), _mm512_maskz_loadu_pd(mask, xt + f * n + j)));
+    acc = _mm512_add_pd(acc, _mm512_mul_pd(_mm512_set1_pd(xi[f]),
+                                           _mm512_maskz_loadu_pd(mask, xt + f * stride + j)));
   const __m512d dist = _mm512_sub_pd(_mm512_add_pd(sq_i, _mm512_maskz_loadu_pd(mask, sq + j)),
                                      _mm512_mul_pd(_mm512_set1_pd(2.0), acc));
   return exp_to_float_avx512(_mm512_mul_pd(minus_gamma, dist));
 }
 
 __attribute__((target("avx512f"))) void rbf_row_avx512(const double* xi, double sq_i,
-                                                       const double* xt, const double* sq,
-                                                       std::size_t n, std::size_t d, double gamma,
-                                                       float* out) {
+                                                       const double* xt, std::size_t stride,
+                                                       const double* sq, std::size_t n,
+                                                       std::size_t d, double gamma, float* out) {
   const __m512d sqi = _mm512_set1_pd(sq_i);
   const __m512d minus_gamma = _mm512_set1_pd(-gamma);
   std::size_t j = 0;
   for (; j + 8 <= n; j += 8)
-    _mm256_storeu_ps(out + j, rbf_columns_avx512(xi, sqi, xt, sq, n, d, minus_gamma, j, 0xFF));
+    _mm256_storeu_ps(out + j, rbf_columns_avx512(xi, sqi, xt, stride, sq, d, minus_gamma, j, 0xFF));
   if (j < n) {
     alignas(32) float tail[8];
     const auto mask = static_cast<__mmask8>((1u << (n - j)) - 1u);
-    _mm256_store_ps(tail, rbf_columns_avx512(xi, sqi, xt, sq, n, d, minus_gamma, j, mask));
+    _mm256_store_ps(tail, rbf_columns_avx512(xi, sqi, xt, stride, sq, d, minus_gamma, j, mask));
     std::memcpy(out + j, tail, (n - j) * sizeof(float));
   }
 }
@@ -253,16 +255,17 @@ __attribute__((target("avx2"))) inline __m128 rbf_columns_avx2(const double* xi,
 }
 
 __attribute__((target("avx2"))) void rbf_row_avx2(const double* xi, double sq_i, const double* xt,
-                                                  const double* sq, std::size_t n, std::size_t d,
-                                                  double gamma, float* out) {
+                                                  std::size_t stride, const double* sq,
+                                                  std::size_t n, std::size_t d, double gamma,
+                                                  float* out) {
   const __m256d sqi = _mm256_set1_pd(sq_i);
   const __m256d minus_gamma = _mm256_set1_pd(-gamma);
   std::size_t j = 0;
   for (; j + 4 <= n; j += 4)
-    _mm_storeu_ps(out + j, rbf_columns_avx2(xi, sqi, xt + j, n, sq + j, d, minus_gamma));
+    _mm_storeu_ps(out + j, rbf_columns_avx2(xi, sqi, xt + j, stride, sq + j, d, minus_gamma));
   for (; j < n; ++j) {
     double acc = 0.0;
-    for (std::size_t f = 0; f < d; ++f) acc += xi[f] * xt[f * n + j];
+    for (std::size_t f = 0; f < d; ++f) acc += xi[f] * xt[f * stride + j];
     out[j] = static_cast<float>(exp_core(-gamma * ((sq_i + sq[j]) - 2.0 * acc)));
   }
 }
@@ -283,23 +286,24 @@ __attribute__((target("avx2"))) void rbf_row_from_distances_avx2(const float* di
 #endif
 #endif
 
-void rbf_row(const double* xi, double sq_i, const double* xt, const double* sq, std::size_t n,
-             std::size_t d, double gamma, float* out) {
-  rbf_row_with(best_isa(), xi, sq_i, xt, sq, n, d, gamma, out);
+void rbf_row(const double* xi, double sq_i, const double* xt, std::size_t stride, const double* sq,
+             std::size_t n, std::size_t d, double gamma, float* out) {
+  rbf_row_with(best_isa(), xi, sq_i, xt, stride, sq, n, d, gamma, out);
 }
 
 void rbf_row_from_distances(const float* dist, std::size_t n, double gamma, float* out) {
   rbf_row_from_distances_with(best_isa(), dist, n, gamma, out);
 }
 
-void rbf_row_with(Isa isa, const double* xi, double sq_i, const double* xt, const double* sq,
-                  std::size_t n, std::size_t d, double gamma, float* out) {
+void rbf_row_with(Isa isa, const double* xi, double sq_i, const double* xt, std::size_t stride,
+                  const double* sq, std::size_t n, std::size_t d, double gamma, float* out) {
 #if FOGDRIFT_HAVE_AVX2_GATHER
-  if (isa == Isa::avx512 && kHasAvx512) return rbf_row_avx512(xi, sq_i, xt, sq, n, d, gamma, out);
-  if (isa == Isa::avx2 && kHasAvx2) return rbf_row_avx2(xi, sq_i, xt, sq, n, d, gamma, out);
+  if (isa == Isa::avx512 && kHasAvx512)
+    return rbf_row_avx512(xi, sq_i, xt, stride, sq, n, d, gamma, out);
+  if (isa == Isa::avx2 && kHasAvx2) return rbf_row_avx2(xi, sq_i, xt, stride, sq, n, d, gamma, out);
 #endif
   (void)isa;
-  rbf_row_portable(xi, sq_i, xt, sq, n, d, gamma, out);
+  rbf_row_portable(xi, sq_i, xt, stride, sq, n, d, gamma, out);
 }
 
 void rbf_row_from_distances_with(Isa isa, const float* dist, std::size_t n, double gamma,

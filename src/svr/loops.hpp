@@ -21,14 +21,16 @@ enum : std::uint8_t { kLowerBound = 0, kUpperBound = 1, kFree = 2 };
 /// float rounding boundary. Exposed for its test.
 float exp_to_float(double x);
 
-/// One row of the RBF kernel: out[j] = (float) exp(−γ·((‖x_i‖² + ‖x_j‖²) − 2·x_i·x_j)), the
-/// expression and rounding LIBSVM uses. `xt` holds the data feature-major (d × n), `sq` the
-/// squared norms, `xi` row i (d values, contiguous).
-void rbf_row(const double* xi, double sq_i, const double* xt, const double* sq, std::size_t n,
-             std::size_t d, double gamma, float* out);
+/// One row of the RBF kernel over n columns: out[j] = (float) exp(−γ·((‖x_i‖² + ‖x_j‖²) −
+/// 2·x_i·x_j)), the expression and rounding LIBSVM uses. `xt` holds the columns feature-major
+/// (feature f of column j at xt[f·stride + j]; stride ≥ n), `sq` their squared norms, `xi` row i
+/// (d values, contiguous). A row of a subset of columns is the same floats as the full row's.
+void rbf_row(const double* xi, double sq_i, const double* xt, std::size_t stride, const double* sq,
+             std::size_t n, std::size_t d, double gamma, float* out);
 
-/// One row of the linear kernel: out[j] = (float) x_i·x_j.
-void linear_row(const double* xi, const double* xt, std::size_t n, std::size_t d, float* out);
+/// One row of the linear kernel: out[j] = (float) x_i·x_j, columns as in rbf_row.
+void linear_row(const double* xi, const double* xt, std::size_t stride, std::size_t n,
+                std::size_t d, float* out);
 
 /// One RBF row from precomputed squared distances: out[j] = exp(−γ·dist[j]).
 void rbf_row_from_distances(const float* dist, std::size_t n, double gamma, float* out);
@@ -127,8 +129,8 @@ enum class Isa { portable, avx2, avx512 };
 bool available(Isa isa);
 Isa best_isa();  ///< the fastest this processor has (portable in sanitizer builds)
 /// rbf_row and rbf_row_from_distances in one version; every version gives the same floats.
-void rbf_row_with(Isa isa, const double* xi, double sq_i, const double* xt, const double* sq,
-                  std::size_t n, std::size_t d, double gamma, float* out);
+void rbf_row_with(Isa isa, const double* xi, double sq_i, const double* xt, std::size_t stride,
+                  const double* sq, std::size_t n, std::size_t d, double gamma, float* out);
 void rbf_row_from_distances_with(Isa isa, const float* dist, std::size_t n, double gamma,
                                  float* out);
 Selection update_and_select_up_with(Isa isa, double* f, const double* up, const float* k_i,

@@ -45,7 +45,8 @@ class PairSmo {
         shrinking_(options.shrinking),
         conjugate_(options.conjugate),
         index_(q.size()),
-        rows_(q, index_.data(), q.size(), q.size(), options.solver_order_cache_mb) {
+        rows_(q, index_.data(), q.size(), q.size(), options.solver_order_cache_mb,
+              options.rows_in_order && !q.training_set().has_distances()) {
     z_.assign(target.begin(), target.end());
     qd_.resize(n_);
     for (std::size_t k = 0; k < n_; ++k) {
@@ -139,6 +140,7 @@ class PairSmo {
       active_ = n_;
     }
     summary.iterations = iter;
+    summary.kernel_rows = rows_.rows_computed();
     summary.rho = calculate_rho();
     double v = 0;
     for (std::size_t k = 0; k < n_; ++k)

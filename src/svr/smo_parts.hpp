@@ -1,11 +1,13 @@
 // Pieces shared by the two SMO solvers (smo_solver.cpp): the analytic two-variable step and the
-// kernel rows held in a solver's own variable order. Internal header: not installed.
+// kernel rows held in a solver's own variable order, gathered from a KernelCache or computed
+// straight into that order. Internal header: not installed.
 #pragma once
 
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <utility>
 #include <vector>
 
@@ -72,11 +74,52 @@ inline void two_variable_step(double& a_i, double& a_j, int y_i, int y_j, double
   }
 }
 
+/// The training features in a solver's sample order, feature-major, so that kernel rows can be
+/// computed straight into that order: row r at positions [begin, end) is K(x_r, x_index[j]), the
+/// same floats as TrainingSet::kernel_row(r)[index[j]] (the same products, sums and rounding).
+class DataInOrder {
+ public:
+  /// The identity order. `set` must outlive this object and keep no distance matrix.
+  DataInOrder(const TrainingSet& set, const Kernel& kernel)
+      : set_(set), kernel_(kernel), n_(set.size()), d_(set.dims()), xt_(n_ * d_), sq_(n_) {
+    for (std::size_t j = 0; j < n_; ++j) {
+      for (std::size_t f = 0; f < d_; ++f) xt_[f * n_ + j] = set.data().row(j)[f];
+      sq_[j] = set.squared_norm(j);
+    }
+  }
+
+  /// Positions a and b trade samples.
+  void swap(std::size_t a, std::size_t b) {
+    for (std::size_t f = 0; f < d_; ++f) std::swap(xt_[f * n_ + a], xt_[f * n_ + b]);
+    std::swap(sq_[a], sq_[b]);
+  }
+
+  /// out[j] = K(x_r, x at position j) for begin ≤ j < end.
+  void row(std::size_t r, std::size_t begin, std::size_t end, float* out) const {
+    const double* x = set_.data().row(r);
+    if (kernel_.type == KernelType::linear)
+      linear_row(x, xt_.data() + begin, n_, end - begin, d_, out + begin);
+    else
+      rbf_row(x, set_.squared_norm(r), xt_.data() + begin, n_, sq_.data() + begin, end - begin, d_,
+              kernel_.gamma, out + begin);
+  }
+
+ private:
+  const TrainingSet& set_;
+  Kernel kernel_;
+  std::size_t n_, d_;
+  std::vector<double> xt_;  // d × n, column j the sample at position j
+  std::vector<double> sq_;  // its squared norm
+};
+
 /// Kernel rows in a solver's variable order: row r of the kernel read at the solver's positions,
 /// K_r[index[j]], so that an iteration reads contiguous memory instead of gathering two rows
 /// (LIBSVM gathers both rows every iteration). The order changes only when shrinking swaps
 /// variables (every ~1000 iterations); in between the working sets reuse a few hundred rows.
-/// Bounded by a row count, least recently used evicted first.
+/// Bounded by a row count, least recently used evicted first. Rows come from the KernelCache, one
+/// indexed copy each, or, with `direct`, are computed straight into the solver's order from a
+/// DataInOrder that follows every swap: then no second copy of a row exists, and a row is
+/// computed only as far as the active set reaches (at C = 1, N = 6000, under half of it).
 ///
 /// The swaps of each shrinking round are kept in a log, and a row catches up with them only when
 /// it is next asked for: by swapping entries when the swaps since its order are few, by gathering
@@ -85,10 +128,12 @@ inline void two_variable_step(double& a_i, double& a_j, int y_i, int y_j, double
 class OrderedRows {
  public:
   /// Rows of `length` entries over `kernel_rows` distinct kernel rows; `index` maps a solver
-  /// position to a kernel row and must outlive this object.
+  /// position to a kernel row and must outlive this object. `direct` (only when positions are
+  /// samples, length = kernel_rows, and the data keeps no distance matrix): compute rows in order.
   OrderedRows(KernelCache& q, const std::int32_t* index, std::size_t length,
-              std::size_t kernel_rows, double cache_mb)
+              std::size_t kernel_rows, double cache_mb, bool direct = false)
       : q_(q), index_(index), length_(length), slot_of_row_(kernel_rows, -1) {
+    if (direct) direct_ = std::make_unique<DataInOrder>(q.training_set(), q.kernel());
     const double slot_bytes = static_cast<double>(length) * sizeof(float);
     capacity_ = static_cast<std::size_t>(std::max(
         2.0,
@@ -120,15 +165,24 @@ class OrderedRows {
     if (slot.order != order_) catch_up(slot, data(s));
     slot.last_use = ++clock_;
     if (slot.valid < len) {
-      gather(q_.row(static_cast<std::size_t>(r)), index_, slot.valid, len, data(s));
+      if (direct_) {
+        direct_->row(static_cast<std::size_t>(r), slot.valid, len, data(s));
+        ++rows_computed_;
+      } else {
+        gather(q_.row(static_cast<std::size_t>(r)), index_, slot.valid, len, data(s));
+      }
       slot.valid = len;
     }
     return data(s);
   }
 
+  /// Rows (or parts of rows) computed in order; the KernelCache counts the rest.
+  std::int64_t rows_computed() const { return rows_computed_; }
+
   /// Records that the solver swapped positions a and b (the index array is already swapped).
   void swapped(std::size_t a, std::size_t b) {
     log_.emplace_back(static_cast<std::int32_t>(a), static_cast<std::int32_t>(b));
+    if (direct_) direct_->swap(a, b);
   }
 
   /// Ends a round of swaps: the rows are now out of date and catch up when next asked for.
@@ -154,10 +208,12 @@ class OrderedRows {
   KernelCache& q_;
   const std::int32_t* index_;
   std::size_t length_;
+  std::unique_ptr<DataInOrder> direct_;  // set when rows are computed in order
   std::vector<std::int32_t> slot_of_row_;
   std::vector<Slot> slots_;
   std::size_t capacity_ = 2;
   std::uint64_t order_ = 1, clock_ = 0;
+  std::int64_t rows_computed_ = 0;
   // The swaps of the rounds from first_logged_order_ on; round o (taking order o to o + 1)
   // starts at log_[round_start_[o − first_logged_order_]].
   std::vector<std::pair<std::int32_t, std::int32_t>> log_;

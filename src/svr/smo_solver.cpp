@@ -336,7 +336,7 @@ SolverSummary solve_epsilon_svr(KernelCache& q, std::span<const double> y, doubl
   out.epsilon = epsilon;
   out.kernel = q.kernel();
   summary.warm_started = warm_started;
-  summary.kernel_rows = q.rows_computed() - rows_before;
+  summary.kernel_rows += q.rows_computed() - rows_before;  // plus any the solver computed itself
   summary.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return summary;
 }

@@ -105,11 +105,17 @@ TEST(KernelRows, VectorisedRowsAreBitForBitThePortableOnes) {
         std::vector<float> a(n), b(n), da(n), db(n), dist(n);
         for (const double gamma : {1e-3, 0.5, 20.0}) {
           for (std::size_t i = 0; i < n; i += 1 + n / 5) {
-            detail::rbf_row_with(isa, &x[i * d], sq[i], xt.data(), sq.data(), n, d, gamma,
+            detail::rbf_row_with(isa, &x[i * d], sq[i], xt.data(), n, sq.data(), n, d, gamma,
                                  a.data());
-            detail::rbf_row_with(Isa::portable, &x[i * d], sq[i], xt.data(), sq.data(), n, d, gamma,
-                                 b.data());
+            detail::rbf_row_with(Isa::portable, &x[i * d], sq[i], xt.data(), n, sq.data(), n, d,
+                                 gamma, b.data());
             ASSERT_EQ(0, std::memcmp(a.data(), b.data(), n * sizeof(float))) << n << " " << d;
+            // Columns [begin, n) alone, read with the full row's stride: the same floats.
+            const std::size_t begin = n / 3;
+            std::vector<float> part(n - begin);
+            detail::rbf_row_with(isa, &x[i * d], sq[i], xt.data() + begin, n, sq.data() + begin,
+                                 n - begin, d, gamma, part.data());
+            ASSERT_EQ(0, std::memcmp(part.data(), b.data() + begin, part.size() * sizeof(float)));
             detail::distance_row(&x[i * d], sq[i], xt.data(), sq.data(), n, d, dist.data());
             detail::rbf_row_from_distances_with(isa, dist.data(), n, gamma, da.data());
             detail::rbf_row_from_distances_with(Isa::portable, dist.data(), n, gamma, db.data());
@@ -147,42 +153,46 @@ TEST(KernelCache, EvictsTheLeastRecentlyUsedRow) {
 
 TEST(OrderedRows, RowsCatchUpWithEveryRoundOfSwaps) {
   // Rows in solver order are brought up to date only when asked for, by replaying the swaps of
-  // the rounds they missed or by gathering again; either way they must equal the kernel row
-  // read through the current order. Small budgets make both caches evict, rounds of up to 400
-  // swaps make rows replay, gather again, and outlive the bounded swap log.
+  // the rounds they missed or by gathering (computing) again; either way they must equal the
+  // kernel row read through the current order, bit for bit, whether they are gathered from the
+  // KernelCache or computed in order from features that follow the swaps. Small budgets make
+  // both caches evict, rounds of up to 400 swaps make rows replay, start again, and outlive the
+  // bounded swap log.
   const Data d = testing::smooth(300, 4, 0.1, 5);
   const TrainingSet set(d);
-  const Kernel k = Kernel::rbf_sigma(0.7);
-  KernelCache q(set, k, 0.02);
-  const std::size_t n = d.rows;
-  std::vector<std::int32_t> index(n);
-  for (std::size_t t = 0; t < n; ++t) index[t] = static_cast<std::int32_t>(t);
-  detail::OrderedRows rows(q, index.data(), n, n, 0.03);
-  std::vector<float> expected(n);
-  Rng rng(8);
-  int compared = 0;
-  for (int round = 0; round < 60; ++round) {
-    const int swaps = static_cast<int>(rng.uniform(0, round % 7 == 6 ? 400 : 20));
-    for (int s = 0; s < swaps; ++s) {
-      const auto a = static_cast<std::size_t>(rng.uniform(0, static_cast<double>(n)));
-      const auto b = static_cast<std::size_t>(rng.uniform(0, static_cast<double>(n)));
-      if (a == b) continue;
-      std::swap(index[a], index[b]);
-      rows.swapped(a, b);
-    }
-    rows.apply_swaps();
-    for (int r = 0; r < 30; ++r) {
-      const auto row = static_cast<std::int32_t>(rng.uniform(0, 40));  // a few rows, reused
-      const auto len = static_cast<std::size_t>(rng.uniform(1, static_cast<double>(n) + 1));
-      const float* got = rows.row(row, len);
-      set.kernel_row(k, static_cast<std::size_t>(row), expected.data());
-      for (std::size_t t = 0; t < len; ++t)
-        ASSERT_EQ(got[t], expected[static_cast<std::size_t>(index[t])])
-            << "round " << round << " row " << row << " position " << t;
-      ++compared;
+  for (const Kernel k : {Kernel::rbf_sigma(0.7), Kernel::linear()}) {
+    for (const bool direct : {false, true}) {
+      SCOPED_TRACE(direct ? "computed in order" : "gathered");
+      KernelCache q(set, k, 0.02);
+      const std::size_t n = d.rows;
+      std::vector<std::int32_t> index(n);
+      for (std::size_t t = 0; t < n; ++t) index[t] = static_cast<std::int32_t>(t);
+      detail::OrderedRows rows(q, index.data(), n, n, 0.03, direct);
+      std::vector<float> expected(n);
+      Rng rng(8);
+      for (int round = 0; round < 60; ++round) {
+        const int swaps = static_cast<int>(rng.uniform(0, round % 7 == 6 ? 400 : 20));
+        for (int s = 0; s < swaps; ++s) {
+          const auto a = static_cast<std::size_t>(rng.uniform(0, static_cast<double>(n)));
+          const auto b = static_cast<std::size_t>(rng.uniform(0, static_cast<double>(n)));
+          if (a == b) continue;
+          std::swap(index[a], index[b]);
+          rows.swapped(a, b);
+        }
+        rows.apply_swaps();
+        for (int r = 0; r < 30; ++r) {
+          const auto row = static_cast<std::int32_t>(rng.uniform(0, 40));  // a few, reused
+          const auto len = static_cast<std::size_t>(rng.uniform(1, static_cast<double>(n) + 1));
+          const float* got = rows.row(row, len);
+          set.kernel_row(k, static_cast<std::size_t>(row), expected.data());
+          for (std::size_t t = 0; t < len; ++t)
+            ASSERT_EQ(got[t], expected[static_cast<std::size_t>(index[t])])
+                << "round " << round << " row " << row << " position " << t;
+        }
+      }
+      EXPECT_EQ(rows.rows_computed() > 0, direct);
     }
   }
-  RecordProperty("rows_compared", compared);
 }
 
 TEST(Selections, VectorisedAndPortableAgreeIncludingTies) {

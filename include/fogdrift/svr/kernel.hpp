@@ -88,6 +88,8 @@ class TrainingSet {
   void kernel_row(const Kernel& kernel, std::size_t i, float* out) const;
   /// K(x_i, x_i) in double, LIBSVM's QD.
   double kernel_diagonal(const Kernel& kernel, std::size_t i) const;
+  /// ‖x_i‖², summed over the features in order, as the kernel rows use it.
+  double squared_norm(std::size_t i) const { return squared_norms_[i]; }
 
  private:
   Data data_;
@@ -108,6 +110,7 @@ class KernelCache {
 
   std::size_t size() const { return n_; }
   const Kernel& kernel() const { return kernel_; }
+  const TrainingSet& training_set() const { return set_; }
   /// Row i (size() floats). Valid until the next call to row().
   const float* row(std::size_t i);
   double diagonal(std::size_t i) const { return diagonal_[i]; }

@@ -45,11 +45,17 @@ struct SolverOptions {
   /// Iteration limit; 0 means LIBSVM's max(10⁷, 100·2l).
   std::int64_t max_iterations = 0;
   /// Memory for kernel rows held in the solver's own variable order, MB (l floats a row for the
-  /// pair solver, 2l for the LIBSVM path; at least two rows). fit() gives it 90 % of
-  /// Params::cache_mb for the pair solver and half for the LIBSVM path and for fit_c_path. The
-  /// memory is reserved, committed as rows are written, and kept by the thread for its next fit
-  /// (see Params::cache_mb).
+  /// pair solver, 2l for the LIBSVM path; at least two rows). fit() gives it all of
+  /// Params::cache_mb when the pair solver computes its rows in order (below), 90 % when it reads
+  /// them from a distance matrix, and half for the LIBSVM path and for fit_c_path. The memory is
+  /// reserved, committed as rows are written, and kept by the thread for its next fit (see
+  /// Params::cache_mb).
   double solver_order_cache_mb = 100;
+  /// Pair solver only: compute kernel rows straight into the solver's order from the features,
+  /// and only as far as the active set reaches, instead of copying them out of the KernelCache.
+  /// fit() sets it for single fits; fit_c_path leaves it false so that its fits share the rows
+  /// of one KernelCache. Ignored when the TrainingSet keeps a distance matrix.
+  bool rows_in_order = false;
   /// true: the per-variable solver that visits LIBSVM's working sets one for one (the same
   /// iterations and support vectors as LIBSVM, for audits); false: the pair solver, faster.
   bool libsvm_path = false;
@@ -67,8 +73,10 @@ struct SolverSummary {
   std::int64_t iterations = 0;
   double objective = 0;  ///< dual objective ½αᵀQα + pᵀα at the solution
   double rho = 0;  ///< the model's decision value is Σ(α⁺−α⁻)K − ρ, so the bias b = −ρ
-  double max_violation = 0;      ///< final m(α) − M(α), below the tolerance when optimal
-  std::int64_t kernel_rows = 0;  ///< kernel rows computed (cache misses)
+  double max_violation = 0;  ///< final m(α) − M(α), below the tolerance when optimal
+  /// Kernel rows computed (cache misses). Rows computed in the solver's order (rows_in_order)
+  /// count once for each computation of a row or of the part the active set newly reaches.
+  std::int64_t kernel_rows = 0;
   bool warm_started = false;
   bool gradient_reused = false;      ///< warm start reused the previous gradient (same kernel)
   std::int64_t conjugate_steps = 0;  ///< iterations that stepped along a conjugate direction
