@@ -48,7 +48,10 @@ void ThreadPool::run_tasks() {
 
 void ThreadPool::worker_loop() {
   std::unique_lock lock(mutex_);
-  std::size_t seen = generation_;
+  // Every loop since construction is new to a worker: one that starts only after the first
+  // parallel_for has begun must still join it (reading generation_ here missed that loop, and a
+  // fresh pool's first loop then ran on the calling thread alone).
+  std::size_t seen = 0;
   for (;;) {
     wake_.wait(lock, [&] { return stopping_ || generation_ != seen; });
     if (stopping_) return;

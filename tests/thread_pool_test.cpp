@@ -3,7 +3,9 @@
 #include <gtest/gtest.h>
 
 #include <atomic>
+#include <chrono>
 #include <stdexcept>
+#include <thread>
 #include <vector>
 
 namespace fogdrift {
@@ -28,6 +30,25 @@ TEST(ThreadPool, RunsEveryIndexOnceAndRethrowsTheLowestFailure) {
     std::atomic<int> count{0};
     pool.parallel_for(8, [&](std::size_t) { pool.parallel_for(8, [&](std::size_t) { ++count; }); });
     EXPECT_EQ(count.load(), 64);
+  }
+}
+
+TEST(ThreadPool, AFreshPoolsFirstLoopRunsOnEveryThread) {
+  // Two tasks that each wait for the other can only finish together if two threads run them.
+  // A worker that started after the first loop had begun used to miss that loop, so the calling
+  // thread ran both tasks alone (fit_batch on a new pool ran serially).
+  for (int trial = 0; trial < 20; ++trial) {
+    ThreadPool pool(2);
+    std::atomic<int> arrived{0};
+    std::atomic<int> met{0};
+    pool.parallel_for(2, [&](std::size_t) {
+      ++arrived;
+      const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(10);
+      while (arrived.load() < 2 && std::chrono::steady_clock::now() < deadline)
+        std::this_thread::yield();
+      if (arrived.load() == 2) ++met;
+    });
+    ASSERT_EQ(met.load(), 2) << "trial " << trial << ": the tasks ran one after the other";
   }
 }
 
