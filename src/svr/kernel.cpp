@@ -10,6 +10,7 @@
 #include "fogdrift/thread_pool.hpp"
 #include "svr/loops.hpp"
 #include "svr/row_arena.hpp"
+#include "svr/smo_parts.hpp"
 
 namespace fogdrift::svr {
 

@@ -26,6 +26,7 @@
 #include <cfloat>
 #include <climits>
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 #include "svr/loops.hpp"
@@ -44,14 +45,16 @@ class PairSmo {
         tolerance_(options.tolerance),
         shrinking_(options.shrinking),
         conjugate_(options.conjugate),
-        index_(q.size()),
-        rows_(q, index_.data(), q.size(), q.size(), options.solver_order_cache_mb,
-              options.rows_in_order && !q.training_set().has_distances()) {
-    z_.assign(target.begin(), target.end());
+        order_(take_order(q, options)),
+        index_(order_->index),
+        rows_(*order_->rows),
+        rows_before_(rows_.rows_computed()) {
+    z_.resize(n_);
     qd_.resize(n_);
     for (std::size_t k = 0; k < n_; ++k) {
-      index_[k] = static_cast<std::int32_t>(k);
-      qd_[k] = q.diagonal(k);
+      const auto sample = static_cast<std::size_t>(index_[k]);
+      z_[k] = target[sample];
+      qd_[k] = q.diagonal(sample);
     }
     a_.assign(n_, 0.0);
     b_.assign(n_, 0.0);
@@ -79,17 +82,19 @@ class PairSmo {
   void warm_start(const DualSolution& w, bool same_kernel) {
     const double s = c_ / w.c;
     auto scaled = [&](double v) { return v >= w.c ? c_ : (v <= 0 ? 0.0 : std::min(c_, s * v)); };
-    for (std::size_t k = 0; k < n_; ++k) {  // the order is still the identity
-      a_[k] = scaled(w.alpha[k]);
-      b_[k] = scaled(w.alpha[k + n_]);
+    for (std::size_t k = 0; k < n_; ++k) {  // position k holds sample index_[k]
+      const auto sample = static_cast<std::size_t>(index_[k]);
+      a_[k] = scaled(w.alpha[sample]);
+      b_[k] = scaled(w.alpha[sample + n_]);
       refresh(k);
     }
     if (same_kernel && w.gradient.size() == 2 * n_ && w.gradient_bar.size() == 2 * n_) {
       gradient_reused_ = true;
       for (std::size_t k = 0; k < n_; ++k) {
+        const auto sample = static_cast<std::size_t>(index_[k]);
         // f_prev = G⁺_prev − ε_prev, and f + z = Kβ scales with β.
-        f_[k] = s * ((w.gradient[k] - w.epsilon) + z_[k]) - z_[k];
-        gbar_[k] = s * w.gradient_bar[k];
+        f_[k] = s * ((w.gradient[sample] - w.epsilon) + z_[k]) - z_[k];
+        gbar_[k] = s * w.gradient_bar[sample];
       }
       return;
     }
@@ -140,7 +145,7 @@ class PairSmo {
       active_ = n_;
     }
     summary.iterations = iter;
-    summary.kernel_rows = rows_.rows_computed();
+    summary.kernel_rows = rows_.rows_computed() - rows_before_;
     summary.rho = calculate_rho();
     double v = 0;
     for (std::size_t k = 0; k < n_; ++k)
@@ -151,6 +156,21 @@ class PairSmo {
     summary.conjugate_steps = conjugate_steps_;
     return summary;
   }
+
+  // The order and rows an earlier fit on this cache left, or the identity order with no rows.
+  static std::unique_ptr<SampleOrder> take_order(KernelCache& q, const SolverOptions& options) {
+    std::unique_ptr<SampleOrder> kept = std::move(q.kept_order());
+    if (kept && kept->index.size() == q.size()) return kept;
+    auto order = std::make_unique<SampleOrder>();
+    order->index.resize(q.size());
+    for (std::size_t k = 0; k < q.size(); ++k) order->index[k] = static_cast<std::int32_t>(k);
+    order->rows = std::make_unique<OrderedRows>(
+        q, order->index.data(), q.size(), q.size(), options.solver_order_cache_mb,
+        options.rows_in_order && !q.training_set().has_distances());
+    return order;
+  }
+
+  std::unique_ptr<SampleOrder> release_order() { return std::move(order_); }
 
   void export_solution(DualSolution& out) const {
     out.alpha.assign(2 * n_, 0.0);
@@ -176,9 +196,13 @@ class PairSmo {
   std::size_t active_ = 0;  // samples [0, active_) are not shrunk
   bool unshrunk_ = false;
   bool gradient_reused_ = false;
-  // Per sample, in the solver's order (index_ maps a position to the training sample).
-  std::vector<std::int32_t> index_;
-  OrderedRows rows_;
+  // Per sample, in the solver's order (index_ maps a position to the training sample). The order
+  // and its rows come from the KernelCache when an earlier fit left them there, and go back to
+  // it at the end (release_order).
+  std::unique_ptr<SampleOrder> order_;
+  std::vector<std::int32_t>& index_;
+  OrderedRows& rows_;
+  std::int64_t rows_before_;  // rows_.rows_computed() when this fit began
   std::vector<double> z_, qd_, a_, b_;
   std::vector<double> f_;     // (Kβ)_k − z_k
   std::vector<double> gbar_;  // Σ over variables at the upper bound of C·y·K: LIBSVM's Ḡ⁺
@@ -455,6 +479,7 @@ SolverSummary solve_pairs(KernelCache& q, std::span<const double> target, double
   if (warm != nullptr) smo.warm_start(*warm, warm->kernel == q.kernel());
   const SolverSummary summary = smo.run();
   smo.export_solution(out);
+  q.kept_order() = smo.release_order();
   return summary;
 }
 

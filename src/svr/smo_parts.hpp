@@ -250,4 +250,12 @@ class OrderedRows {
   float* data(std::int32_t s) const { return arena_.row(static_cast<std::size_t>(s)); }
 };
 
+/// A pair solver's sample order and its rows in that order. The KernelCache keeps it from one fit
+/// to the next (fit_c_path), which starts in this order with the rows still valid instead of
+/// building them again from the identity order.
+struct SampleOrder {
+  std::vector<std::int32_t> index;  // position → training sample
+  std::unique_ptr<OrderedRows> rows;
+};
+
 }  // namespace fogdrift::svr::detail

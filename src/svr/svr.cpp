@@ -51,19 +51,20 @@ FitResult finish(const TrainingSet& set, const Params& params, DualSolution dual
 }
 
 // The share of Params::cache_mb for rows as computed (KernelCache); the rest holds rows in the
-// solver's order. A single pair-solver fit computes its rows straight into its own order
+// solver's order. The pair solver computes its rows straight into its own order
 // (SolverOptions::rows_in_order) and needs none, unless the rows come from a distance matrix:
 // then it gets 10 %, which at N = 20,000, C = 10, σ = 0.5 and 200 MB cut a fit from 6.8 s (half
-// and half) to 4.2 s. A C path shares its computed rows between its fits, and with 5 % its
-// 20-value sweep took 0.79 s instead of 0.62 s, so it keeps half and half. The LIBSVM path keeps
-// rows of 2l entries in its order and was measured no faster with any split: half and half too.
-double computed_rows_share(const TrainingSet& set, const Params& p, bool shared_between_fits) {
-  if (p.libsvm_path || shared_between_fits) return 0.5;
+// and half) to 4.2 s. A C path needs none either: its fits pass the solver's order and rows from
+// one to the next through the KernelCache (0.50-0.53 s for the bench's 20-value sweep, as fast
+// as half and half with rows gathered). The LIBSVM path keeps rows of 2l entries in its order
+// and was measured no faster with any split: half and half.
+double computed_rows_share(const TrainingSet& set, const Params& p) {
+  if (p.libsvm_path) return 0.5;
   return set.has_distances() ? 0.1 : 0.0;
 }
 
 FitResult fit_with(const TrainingSet& set, KernelCache& cache, const Params& params,
-                   double computed_share, bool shared_between_fits, const DualSolution* warm) {
+                   double computed_share, const DualSolution* warm) {
   const auto start = std::chrono::steady_clock::now();
   DualSolution dual;
   SolverOptions options;
@@ -73,7 +74,7 @@ FitResult fit_with(const TrainingSet& set, KernelCache& cache, const Params& par
   options.solver_order_cache_mb = params.cache_mb * (1 - computed_share);
   options.libsvm_path = params.libsvm_path;
   options.conjugate = params.conjugate;
-  options.rows_in_order = !shared_between_fits;
+  options.rows_in_order = true;
   const SolverSummary s =
       solve_epsilon_svr(cache, set.data().y, params.c, params.epsilon, options, dual, warm);
   const double seconds =
@@ -136,9 +137,9 @@ std::vector<double> Model::predict(const Data& data, ThreadPool* pool) const {
 FitResult fit(const TrainingSet& set, const Params& params, const DualSolution* warm) {
   validate(params);
   const auto start = std::chrono::steady_clock::now();
-  const double share = computed_rows_share(set, params, false);
+  const double share = computed_rows_share(set, params);
   KernelCache cache(set, params.kernel, params.cache_mb * share);
-  FitResult r = fit_with(set, cache, params, share, false, warm);
+  FitResult r = fit_with(set, cache, params, share, warm);
   r.summary.seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return r;
@@ -167,13 +168,13 @@ std::vector<FitResult> fit_c_path(const TrainingSet& set, const Params& base,
   validate(base);
   std::vector<FitResult> out;
   out.reserve(c_values.size());
-  const double share = computed_rows_share(set, base, true);
+  const double share = computed_rows_share(set, base);
   KernelCache cache(set, base.kernel, base.cache_mb * share);
   for (double c : c_values) {
     Params p = base;
     p.c = c;
     validate(p);
-    out.push_back(fit_with(set, cache, p, share, true, out.empty() ? nullptr : &out.back().dual));
+    out.push_back(fit_with(set, cache, p, share, out.empty() ? nullptr : &out.back().dual));
   }
   return out;
 }

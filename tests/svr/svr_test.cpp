@@ -211,7 +211,7 @@ TEST(SvrWarmStart, CPathMatchesColdFitsAndReusesTheGradient) {
   const std::vector<double> cs{0.1, 0.3, 1, 3, 10, 30, 100};
   const auto path = fit_c_path(set, base, cs);
   ASSERT_EQ(path.size(), cs.size());
-  std::int64_t warm_iterations = 0, cold_iterations = 0;
+  std::int64_t warm_iterations = 0, cold_iterations = 0, warm_rows = 0, cold_rows = 0;
   for (std::size_t k = 0; k < cs.size(); ++k) {
     Params p = base;
     p.c = cs[k];
@@ -227,9 +227,14 @@ TEST(SvrWarmStart, CPathMatchesColdFitsAndReusesTheGradient) {
     if (k > 0) {
       warm_iterations += path[k].summary.solver.iterations;
       cold_iterations += cold.summary.solver.iterations;
+      warm_rows += path[k].summary.solver.kernel_rows;
+      cold_rows += cold.summary.solver.kernel_rows;
     }
   }
   EXPECT_LT(warm_iterations, cold_iterations);
+  // Each fit of the path starts in the order, and with the rows, the last one left.
+  EXPECT_LT(warm_rows * 4, cold_rows)
+      << warm_rows << " rows computed on the path, " << cold_rows << " cold";
 
   // With a tight tolerance, warm and cold reach the same optimum.
   base.tolerance = 1e-6;

@@ -20,7 +20,8 @@ class ThreadPool;
 namespace fogdrift::svr {
 namespace detail {
 class RowArena;
-}
+struct SampleOrder;
+}  // namespace detail
 
 enum class KernelType { linear, rbf };
 
@@ -111,6 +112,9 @@ class KernelCache {
   std::size_t size() const { return n_; }
   const Kernel& kernel() const { return kernel_; }
   const TrainingSet& training_set() const { return set_; }
+  /// The pair solver's sample order and rows, left here by the last fit on this cache for the
+  /// next one (fit_c_path); null before the first. Internal to the solver.
+  std::unique_ptr<detail::SampleOrder>& kept_order() { return kept_order_; }
   /// Row i (size() floats). Valid until the next call to row().
   const float* row(std::size_t i);
   double diagonal(std::size_t i) const { return diagonal_[i]; }
@@ -130,6 +134,7 @@ class KernelCache {
   std::unique_ptr<detail::RowArena> slots_;  // capacity_ rows, reserved, committed when written
   std::size_t used_ = 0;                     // slots handed out so far
   std::int64_t rows_computed_ = 0;
+  std::unique_ptr<detail::SampleOrder> kept_order_;
 
   void touch(std::int32_t slot);
   void unlink(std::int32_t slot);

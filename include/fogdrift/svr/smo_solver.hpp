@@ -45,16 +45,17 @@ struct SolverOptions {
   /// Iteration limit; 0 means LIBSVM's max(10⁷, 100·2l).
   std::int64_t max_iterations = 0;
   /// Memory for kernel rows held in the solver's own variable order, MB (l floats a row for the
-  /// pair solver, 2l for the LIBSVM path; at least two rows). fit() gives it all of
+  /// pair solver, 2l for the LIBSVM path; at least two rows). fit() and fit_c_path give it all of
   /// Params::cache_mb when the pair solver computes its rows in order (below), 90 % when it reads
-  /// them from a distance matrix, and half for the LIBSVM path and for fit_c_path. The memory is
-  /// reserved, committed as rows are written, and kept by the thread for its next fit (see
+  /// them from a distance matrix, and half for the LIBSVM path. The memory is reserved,
+  /// committed as rows are written, and kept by the thread for its next fit (see
   /// Params::cache_mb).
   double solver_order_cache_mb = 100;
   /// Pair solver only: compute kernel rows straight into the solver's order from the features,
-  /// and only as far as the active set reaches, instead of copying them out of the KernelCache.
-  /// fit() sets it for single fits; fit_c_path leaves it false so that its fits share the rows
-  /// of one KernelCache. Ignored when the TrainingSet keeps a distance matrix.
+  /// and only as far as the active set reaches, instead of copying them out of the KernelCache
+  /// (fit() and fit_c_path set it). Ignored when the TrainingSet keeps a distance matrix. Either
+  /// way the pair solver leaves its sample order and these rows in the KernelCache, and the next
+  /// fit on that cache (fit_c_path's next C) starts from them.
   bool rows_in_order = false;
   /// true: the per-variable solver that visits LIBSVM's working sets one for one (the same
   /// iterations and support vectors as LIBSVM, for audits); false: the pair solver, faster.
