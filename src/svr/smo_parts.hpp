@@ -236,6 +236,11 @@ class OrderedRows {
       slot.valid = 0;
       return;
     }
+    if (slot.valid == length_) {  // a whole row: every swap applies, no bounds to check
+      for (std::size_t k = begin; k < log_.size(); ++k)
+        std::swap(d[log_[k].first], d[log_[k].second]);
+      return;
+    }
     for (std::size_t k = begin; k < log_.size(); ++k) {
       const auto [a, b] = log_[k];
       const auto lo = static_cast<std::size_t>(std::min(a, b));
