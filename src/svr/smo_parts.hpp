@@ -119,12 +119,12 @@ class DataInOrder {
 /// Bounded by a row count, least recently used evicted first. Rows come from the KernelCache, one
 /// indexed copy each, or, with `direct`, are computed straight into the solver's order from a
 /// DataInOrder that follows every swap: then no second copy of a row exists, and a row is
-/// computed only as far as the active set reaches (at C = 1, N = 6000, under half of it).
+/// computed only as far as the active set reaches (about half of it at C = 1, N = 6000).
 ///
 /// The swaps of each shrinking round are kept in a log, and a row catches up with them only when
-/// it is next asked for: by swapping entries when the swaps since its order are few, by gathering
-/// it again otherwise. Rows that are never used again cost nothing (bringing every cached row up
-/// to date at each round took a tenth of a fit at C = 1, N = 6000).
+/// it is next asked for: by replaying them, or by starting again when it is far behind. Rows that
+/// are never used again cost nothing (bringing every cached row up to date at each round took a
+/// tenth of a fit at C = 1, N = 6000).
 class OrderedRows {
  public:
   /// Rows of `length` entries over `kernel_rows` distinct kernel rows; `index` maps a solver
@@ -222,8 +222,9 @@ class OrderedRows {
   std::size_t round_begin_ = 0;  // where the swaps of the round under way start
   RowArena arena_;               // capacity_ rows of length_ floats
 
-  // Brings a row from its order to the current one: swapping two entries costs about four
-  // gathered ones, so a row with few valid entries or many swaps behind it is gathered again.
+  // Brings a row from its order to the current one. Replaying a swap costs less than rebuilding an
+  // entry, which may mean recomputing the row, so a row replays the swaps it missed unless they
+  // outnumber its valid entries four to one; then it starts again.
   void catch_up(Slot& slot, float* d) {
     const std::uint64_t from = slot.order;
     slot.order = order_;

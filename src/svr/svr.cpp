@@ -53,11 +53,13 @@ FitResult finish(const TrainingSet& set, const Params& params, DualSolution dual
 // The share of Params::cache_mb for rows as computed (KernelCache); the rest holds rows in the
 // solver's order. The pair solver computes its rows straight into its own order
 // (SolverOptions::rows_in_order) and needs none, unless the rows come from a distance matrix:
-// then it gets 10 %, which at N = 20,000, C = 10, σ = 0.5 and 200 MB cut a fit from 6.8 s (half
-// and half) to 4.2 s. A C path needs none either: its fits pass the solver's order and rows from
-// one to the next through the KernelCache (0.50-0.53 s for the bench's 20-value sweep, as fast
-// as half and half with rows gathered). The LIBSVM path keeps rows of 2l entries in its order
-// and was measured no faster with any split: half and half.
+// then it gathers them and gets the 10 % every fit had before rows were computed in order (at
+// N = 20,000, C = 10, σ = 0.5 and 200 MB, 10 % took a fit from 6.8 s with half and half to
+// 4.2 s; measured without a distance matrix, before rows were computed in order). A C path needs
+// none either: its fits pass the solver's order and rows from one to the next through the
+// KernelCache (0.50-0.53 s for the bench's 20-value sweep, as fast as half and half with rows
+// gathered). The LIBSVM path keeps rows of 2l entries in its order and was measured no faster with
+// any split: half and half.
 double computed_rows_share(const TrainingSet& set, const Params& p) {
   if (p.libsvm_path) return 0.5;
   return set.has_distances() ? 0.1 : 0.0;
