@@ -237,10 +237,10 @@ __attribute__((target("avx512f"))) void rbf_row_from_distances_avx512(const floa
   for (; j + 8 <= n; j += 8)
     _mm256_storeu_ps(out + j, exp_to_float_avx512(_mm512_mul_pd(
                                   minus_gamma, _mm512_cvtps_pd(_mm256_loadu_ps(dist + j)))));
-  for (; j < n; ++j) out[j] = static_cast<float>(exp_core(-gamma * static_cast<double>(dist[j])));
+  rbf_row_from_distances_portable(dist + j, n - j, gamma, out + j);
 }
 
-// Four columns from j; `xt`, `sq` may be a padded copy (see the tail below).
+// Four columns from `xt`, `sq` (pointing at the first of them).
 __attribute__((target("avx2"))) inline __m128 rbf_columns_avx2(const double* xi, __m256d sq_i,
                                                                const double* xt, std::size_t stride,
                                                                const double* sq, std::size_t d,
@@ -263,11 +263,7 @@ __attribute__((target("avx2"))) void rbf_row_avx2(const double* xi, double sq_i,
   std::size_t j = 0;
   for (; j + 4 <= n; j += 4)
     _mm_storeu_ps(out + j, rbf_columns_avx2(xi, sqi, xt + j, stride, sq + j, d, minus_gamma));
-  for (; j < n; ++j) {
-    double acc = 0.0;
-    for (std::size_t f = 0; f < d; ++f) acc += xi[f] * xt[f * stride + j];
-    out[j] = static_cast<float>(exp_core(-gamma * ((sq_i + sq[j]) - 2.0 * acc)));
-  }
+  rbf_row_portable(xi, sq_i, xt + j, stride, sq + j, n - j, d, gamma, out + j);
 }
 
 __attribute__((target("avx2"))) void rbf_row_from_distances_avx2(const float* dist, std::size_t n,
@@ -277,7 +273,7 @@ __attribute__((target("avx2"))) void rbf_row_from_distances_avx2(const float* di
   for (; j + 4 <= n; j += 4)
     _mm_storeu_ps(out + j, exp_to_float_avx2(_mm256_mul_pd(
                                minus_gamma, _mm256_cvtps_pd(_mm_loadu_ps(dist + j)))));
-  for (; j < n; ++j) out[j] = static_cast<float>(exp_core(-gamma * static_cast<double>(dist[j])));
+  rbf_row_from_distances_portable(dist + j, n - j, gamma, out + j);
 }
 
 }  // namespace
@@ -995,11 +991,7 @@ Selection update_and_select_up(double* f, const double* up, const float* k_i, co
 Selection conjugate_update_and_select_up(double* f, const double* up, const float* k_i,
                                          const float* k_j, double* kd, double lambda, double t,
                                          std::size_t len) {
-#if FOGDRIFT_HAVE_AVX2_GATHER
-  if (kHasAvx512) return conjugate_avx512(f, up, k_i, k_j, kd, lambda, t, len);
-  if (kHasAvx2) return conjugate_avx2(f, up, k_i, k_j, kd, lambda, t, len);
-#endif
-  return conjugate_portable(f, up, k_i, k_j, kd, lambda, t, len);
+  return conjugate_update_and_select_up_with(best_isa(), f, up, k_i, k_j, kd, lambda, t, len);
 }
 
 Selection conjugate_update_and_select_up_with(Isa isa, double* f, const double* up,

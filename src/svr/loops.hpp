@@ -122,9 +122,8 @@ Selection conjugate_update_and_select_up(double* f, const double* up, const floa
 void add_row(double* g, const float* k_row, double a, std::size_t begin, std::size_t end);
 
 /// The instruction sets the pair loops and the RBF rows are built for; the fastest the processor
-/// has is used.
-/// Exposed, with the two functions below, for the test that checks every version against the
-/// portable one.
+/// has is used. Exposed, with the functions below, for the test that checks every version
+/// against the portable one.
 enum class Isa { portable, avx2, avx512 };
 bool available(Isa isa);
 Isa best_isa();  ///< the fastest this processor has (portable in sanitizer builds)

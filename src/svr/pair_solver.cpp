@@ -209,10 +209,10 @@ class PairSmo {
   std::vector<double> up_, low_;
   // The last direction, when the last step reached its line minimum: its coefficients per
   // variable (da_ for α⁺, db_ for α⁻; zero outside support_), Kd over the active samples (in β,
-  // d_β = da − db) and dᵀKd. Forgotten when it spans more than kMaxSupport samples: conjugacy
-  // pays off over a few steps, and a short support keeps each step's bookkeeping small.
+  // d_β = da − db) and dᵀKd; there is one when support_ is not empty. Forgotten when it spans
+  // more than kMaxSupport samples: conjugacy pays off over a few steps, and a short support keeps
+  // each step's bookkeeping small.
   static constexpr std::size_t kMaxSupport = 16;
-  bool have_direction_ = false;
   double dkd_ = 0;
   std::vector<double> da_, db_, kd_;
   std::vector<std::uint8_t> in_support_;
@@ -250,7 +250,7 @@ class PairSmo {
     const double g_j = plus_j ? f_[j] + epsilon_ : epsilon_ - f_[j];
     const double k_ij = rows_.row(index_[i], active_)[j];
     const double quad = qd_[i] + qd_[j] - 2 * k_ij;
-    if (have_direction_) {
+    if (!support_.empty()) {
       Selection next;
       if (i != j && conjugate_step(i, j, minus_i, plus_j, y_i * g_i - y_j * g_j, quad, next))
         return next;
@@ -280,7 +280,6 @@ class PairSmo {
       conjugate_update_and_select_up(f_.data(), up_.data(), k_i, k_j, kd_.data(), 0.0, 0.0,
                                      active_);
       dkd_ = quad;
-      have_direction_ = true;
     }
     return next;
   }
@@ -353,7 +352,6 @@ class PairSmo {
       in_support_[k] = 0;
     }
     support_.clear();
-    have_direction_ = false;
   }
 
   // LIBSVM's be_shrunk for both variables of sample k.

@@ -52,11 +52,11 @@ struct SolverOptions {
   /// Params::cache_mb).
   double solver_order_cache_mb = 100;
   /// Pair solver only: compute kernel rows straight into the solver's order from the features,
-  /// and only as far as the active set reaches, instead of copying them out of the KernelCache
-  /// (fit() and fit_c_path set it). Ignored when the TrainingSet keeps a distance matrix. Either
-  /// way the pair solver leaves its sample order and these rows in the KernelCache, and the next
-  /// fit on that cache (fit_c_path's next C) starts from them.
-  bool rows_in_order = false;
+  /// and only as far as the active set reaches; false: copy them out of the KernelCache. Ignored
+  /// (false) when the TrainingSet keeps a distance matrix. Either way the pair solver leaves its
+  /// sample order and these rows in the KernelCache, and the next fit on that cache
+  /// (fit_c_path's next C) starts from them.
+  bool rows_in_order = true;
   /// true: the per-variable solver that visits LIBSVM's working sets one for one (the same
   /// iterations and support vectors as LIBSVM, for audits); false: the pair solver, faster.
   bool libsvm_path = false;

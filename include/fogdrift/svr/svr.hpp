@@ -29,8 +29,9 @@ struct Params {
   double epsilon = 0.1;     ///< half-width ε ≥ 0 of the insensitive tube, target units (-p)
   double tolerance = 1e-3;  ///< stopping tolerance > 0 (-e)
   bool shrinking = true;    ///< (-h)
-  /// Kernel rows per fit, MB (-m): 90 % in the pair solver's order and 10 % as computed (the
-  /// LIBSVM path and fit_c_path, whose fits share the computed rows: half and half). Rows live in
+  /// Kernel rows per fit, MB (-m): all of it for rows computed in the pair solver's order (90 %
+  /// when they come from a distance matrix, 10 % for rows as computed; the LIBSVM path: half and
+  /// half; fit_c_path's fits hand their rows on to the next, see SolverOptions). Rows live in
   /// blocks of transparent huge pages; each thread keeps the blocks of its last fit for its next
   /// one (at most two, so at most about this much per thread stays committed between fits).
   double cache_mb = 200;
