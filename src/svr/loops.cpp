@@ -812,11 +812,11 @@ __attribute__((target("avx512f"))) inline __m512d iota8(std::size_t k) {
                        _mm512_setr_pd(0, 1, 2, 3, 4, 5, 6, 7));
 }
 
-__attribute__((target("avx512f"))) inline void keep_last_max(__m512d v, std::size_t at,
-                                                             __m512d& best, __m512d& best_index) {
+__attribute__((target("avx512f"))) inline void keep_last_max(__m512d v, __m512d at, __m512d& best,
+                                                             __m512d& best_index) {
   const __mmask8 take = _mm512_cmp_pd_mask(v, best, _CMP_GE_OQ);
   best = _mm512_mask_blend_pd(take, best, v);
-  best_index = _mm512_mask_blend_pd(take, best_index, iota8(at));
+  best_index = _mm512_mask_blend_pd(take, best_index, at);
 }
 
 __attribute__((target("avx512f"))) inline Selection merge_two_sets(const __m512d best[2],
@@ -840,6 +840,8 @@ __attribute__((target("avx512f"))) Selection conjugate_avx512(double* f, const d
   const __m512d l = _mm512_set1_pd(lambda);
   const __m512d tv = _mm512_set1_pd(t);
   std::size_t k = 0;
+  __m512d idx[2] = {iota8(0), iota8(8)};
+  const __m512d sixteen = _mm512_set1_pd(16.0);
   for (; k + 16 <= len; k += 16) {
     for (int s = 0; s < 2; ++s) {
       const std::size_t at = k + 8 * static_cast<std::size_t>(s);
@@ -850,7 +852,8 @@ __attribute__((target("avx512f"))) Selection conjugate_avx512(double* f, const d
       _mm512_storeu_pd(kd + at, q);
       const __m512d fk = _mm512_add_pd(_mm512_loadu_pd(f + at), _mm512_mul_pd(tv, q));
       _mm512_storeu_pd(f + at, fk);
-      keep_last_max(_mm512_sub_pd(_mm512_loadu_pd(up + at), fk), at, best[s], best_index[s]);
+      keep_last_max(_mm512_sub_pd(_mm512_loadu_pd(up + at), fk), idx[s], best[s], best_index[s]);
+      idx[s] = _mm512_add_pd(idx[s], sixteen);
     }
   }
   Selection out = merge_two_sets(best, best_index);
@@ -867,6 +870,8 @@ __attribute__((target("avx512f"))) Selection update_and_select_up_avx512(
   const __m512d bi = _mm512_set1_pd(b_i);
   const __m512d bj = _mm512_set1_pd(b_j);
   std::size_t k = 0;
+  __m512d idx[2] = {iota8(0), iota8(8)};
+  const __m512d sixteen = _mm512_set1_pd(16.0);
   for (; k + 16 <= len; k += 16) {
     for (int s = 0; s < 2; ++s) {
       const std::size_t at = k + 8 * static_cast<std::size_t>(s);
@@ -877,7 +882,8 @@ __attribute__((target("avx512f"))) Selection update_and_select_up_avx512(
         fk = _mm512_add_pd(fk, _mm512_add_pd(_mm512_mul_pd(ki, bi), _mm512_mul_pd(kj, bj)));
         _mm512_storeu_pd(f + at, fk);
       }
-      keep_last_max(_mm512_sub_pd(_mm512_loadu_pd(up + at), fk), at, best[s], best_index[s]);
+      keep_last_max(_mm512_sub_pd(_mm512_loadu_pd(up + at), fk), idx[s], best[s], best_index[s]);
+      idx[s] = _mm512_add_pd(idx[s], sixteen);
     }
   }
   Selection out = merge_two_sets(best, best_index);
@@ -902,6 +908,8 @@ __attribute__((target("avx512f"))) SelectionJ select_low_avx512(const double* f,
     index[s] = _mm512_set1_pd(-1.0);
   }
   std::size_t k = 0;
+  __m512d idx[2] = {iota8(0), iota8(8)};
+  const __m512d sixteen = _mm512_set1_pd(16.0);
   for (; k + 16 <= len; k += 16) {
     for (int s = 0; s < 2; ++s) {
       const std::size_t at = k + 8 * static_cast<std::size_t>(s);
@@ -919,7 +927,8 @@ __attribute__((target("avx512f"))) SelectionJ select_low_avx512(const double* f,
           _mm512_cmp_pd_mask(gd, zero, _CMP_GT_OQ);
       num[s] = _mm512_mask_blend_pd(take, num[s], n);
       den[s] = _mm512_mask_blend_pd(take, den[s], d);
-      index[s] = _mm512_mask_blend_pd(take, index[s], iota8(at));
+      index[s] = _mm512_mask_blend_pd(take, index[s], idx[s]);
+      idx[s] = _mm512_add_pd(idx[s], sixteen);
     }
   }
   SelectionJ out;

@@ -27,6 +27,7 @@
 #include <climits>
 #include <cstdint>
 #include <memory>
+#include <span>
 #include <vector>
 
 #include "svr/loops.hpp"
@@ -34,6 +35,17 @@
 
 namespace fogdrift::svr::detail {
 namespace {
+
+// The pair solver's per-sample arrays (11 doubles and a byte per sample), one block per thread
+// kept from fit to fit. Allocated for every fit, they came from fresh pages each time (the
+// allocator gives freed memory at the top of the heap back to the system), and page faults are
+// slow on virtual machines: 426 faults for each C path of the bench's 20 fits. A thread runs one
+// fit at a time, so one block per thread is enough.
+struct Workspace {
+  std::vector<double> values;
+  std::vector<std::uint8_t> flags;
+};
+thread_local Workspace workspace;
 
 class PairSmo {
  public:
@@ -49,27 +61,23 @@ class PairSmo {
         index_(order_->index),
         rows_(*order_->rows),
         rows_before_(rows_.rows_computed()) {
-    z_.resize(n_);
-    qd_.resize(n_);
+    take_arrays();
     for (std::size_t k = 0; k < n_; ++k) {
       const auto sample = static_cast<std::size_t>(index_[k]);
       z_[k] = target[sample];
       qd_[k] = q.diagonal(sample);
     }
-    a_.assign(n_, 0.0);
-    b_.assign(n_, 0.0);
-    f_.resize(n_);
+    std::fill(a_.begin(), a_.end(), 0.0);
+    std::fill(b_.begin(), b_.end(), 0.0);
     for (std::size_t k = 0; k < n_; ++k) f_[k] = -z_[k];
-    gbar_.assign(n_, 0.0);
-    up_.resize(n_);
-    low_.resize(n_);
+    std::fill(gbar_.begin(), gbar_.end(), 0.0);
     for (std::size_t k = 0; k < n_; ++k) refresh(k);
     active_ = n_;
     if (conjugate_) {
-      da_.assign(n_, 0.0);
-      db_.assign(n_, 0.0);
-      kd_.assign(n_, 0.0);
-      in_support_.assign(n_, 0);
+      std::fill(da_.begin(), da_.end(), 0.0);
+      std::fill(db_.begin(), db_.end(), 0.0);
+      std::fill(kd_.begin(), kd_.end(), 0.0);
+      std::fill(in_support_.begin(), in_support_.end(), std::uint8_t{0});
     }
     const std::int64_t len = 2 * static_cast<std::int64_t>(n_);
     max_iterations_ =
@@ -127,16 +135,17 @@ class PairSmo {
         }
       }
       if (!up_current) up = select_up(f_.data(), up_.data(), active_);
-      if (!select_working_set(up, i, j)) {
+      const float* k_i = nullptr;
+      if (!select_working_set(up, i, j, k_i)) {
         forget_direction();
         reconstruct_gradient();
         active_ = n_;
         up = select_up(f_.data(), up_.data(), active_);
-        if (!select_working_set(up, i, j)) break;
+        if (!select_working_set(up, i, j, k_i)) break;
         counter = 1;  // shrink at the next iteration
       }
       ++iter;
-      up = step(i, j);
+      up = step(i, j, k_i);
       up_current = true;
     }
     if (iter >= max_iterations_) {
@@ -203,10 +212,11 @@ class PairSmo {
   std::vector<std::int32_t>& index_;
   OrderedRows& rows_;
   std::int64_t rows_before_;  // rows_.rows_computed() when this fit began
-  std::vector<double> z_, qd_, a_, b_;
-  std::vector<double> f_;     // (Kβ)_k − z_k
-  std::vector<double> gbar_;  // Σ over variables at the upper bound of C·y·K: LIBSVM's Ḡ⁺
-  std::vector<double> up_, low_;
+  // The per-sample arrays are views of this thread's Workspace (take_arrays).
+  std::span<double> z_, qd_, a_, b_;
+  std::span<double> f_;     // (Kβ)_k − z_k
+  std::span<double> gbar_;  // Σ over variables at the upper bound of C·y·K: LIBSVM's Ḡ⁺
+  std::span<double> up_, low_;
   // The last direction, when the last step reached its line minimum: its coefficients per
   // variable (da_ for α⁺, db_ for α⁻; zero outside support_), Kd over the active samples (in β,
   // d_β = da − db) and dᵀKd; there is one when support_ is not empty. Forgotten when it spans
@@ -214,10 +224,23 @@ class PairSmo {
   // each step's bookkeeping small.
   static constexpr std::size_t kMaxSupport = 16;
   double dkd_ = 0;
-  std::vector<double> da_, db_, kd_;
-  std::vector<std::uint8_t> in_support_;
+  std::span<double> da_, db_, kd_;
+  std::span<std::uint8_t> in_support_;
   std::vector<std::size_t> support_;
   std::int64_t conjugate_steps_ = 0;
+
+  // Points the per-sample arrays into this thread's workspace, grown to this fit's size.
+  void take_arrays() {
+    std::span<double>* arrays[] = {&z_, &qd_, &a_, &b_, &f_, &gbar_, &up_, &low_, &da_, &db_, &kd_};
+    const std::size_t count = conjugate_ ? 11 : 8;  // da_, db_, kd_ only for conjugate steps
+    if (workspace.values.size() < count * n_) workspace.values.resize(count * n_);
+    for (std::size_t a = 0; a < count; ++a)
+      *arrays[a] = std::span<double>(workspace.values.data() + a * n_, n_);
+    if (conjugate_) {
+      if (workspace.flags.size() < n_) workspace.flags.resize(n_);
+      in_support_ = std::span<std::uint8_t>(workspace.flags.data(), n_);
+    }
+  }
 
   // The offsets of loops.hpp: I_up offers α⁻ (−y·G = ε − f) when it can fall, else α⁺ (−ε − f)
   // when it can grow; I_low offers α⁺ (f + ε) when it can fall, else α⁻ (f − ε) when it can grow.
@@ -226,11 +249,12 @@ class PairSmo {
     low_[k] = a_[k] > 0 ? epsilon_ : (b_[k] < c_ ? -epsilon_ : kNoVariable);
   }
 
-  // WSS 2 over the active samples; false when optimal within the tolerance.
-  bool select_working_set(const Selection& up, std::size_t& i, std::size_t& j) {
+  // WSS 2 over the active samples; false when optimal within the tolerance. k_i: row i, which
+  // stays valid through the step (a row asked for later evicts the least recently used).
+  bool select_working_set(const Selection& up, std::size_t& i, std::size_t& j, const float*& k_i) {
     if (up.index < 0) return false;
     i = static_cast<std::size_t>(up.index);
-    const float* k_i = rows_.row(index_[i], active_);
+    k_i = rows_.row(index_[i], active_);
     const SelectionJ low =
         select_low(f_.data(), low_.data(), k_i, qd_.data(), qd_[i], up.value, kTau, active_);
     if (up.value + low.g_max2 < tolerance_ || low.index < 0) return false;
@@ -239,8 +263,9 @@ class PairSmo {
   }
 
   // One SMO step on the variable sample i offers to I_up and the one sample j offers to I_low
-  // (two different variables, possibly of one sample); returns the next select_up.
-  Selection step(std::size_t i, std::size_t j) {
+  // (two different variables, possibly of one sample), with k_i row i over the active samples;
+  // returns the next select_up.
+  Selection step(std::size_t i, std::size_t j, const float* k_i) {
     const bool minus_i = b_[i] > 0;  // as refresh() chose
     const bool plus_j = a_[j] > 0;
     double& alpha_i = minus_i ? b_[i] : a_[i];
@@ -248,11 +273,11 @@ class PairSmo {
     const int y_i = minus_i ? -1 : 1, y_j = plus_j ? 1 : -1;
     const double g_i = minus_i ? epsilon_ - f_[i] : f_[i] + epsilon_;
     const double g_j = plus_j ? f_[j] + epsilon_ : epsilon_ - f_[j];
-    const double k_ij = rows_.row(index_[i], active_)[j];
+    const double k_ij = k_i[j];
     const double quad = qd_[i] + qd_[j] - 2 * k_ij;
     if (!support_.empty()) {
       Selection next;
-      if (i != j && conjugate_step(i, j, minus_i, plus_j, y_i * g_i - y_j * g_j, quad, next))
+      if (i != j && conjugate_step(i, j, k_i, minus_i, plus_j, y_i * g_i - y_j * g_j, quad, next))
         return next;
       forget_direction();
     }
@@ -262,11 +287,10 @@ class PairSmo {
     const double d_i = y_i * (alpha_i - old_i), d_j = y_j * (alpha_j - old_j);  // Δβ
     refresh(i);
     refresh(j);
-    if (upper_i != (alpha_i >= c_))
+    if (upper_i != (alpha_i >= c_))  // row i grows in place to n entries
       add_row(gbar_.data(), rows_.row(index_[i], n_), (upper_i ? -c_ : c_) * y_i, 0, n_);
     if (upper_j != (alpha_j >= c_))
       add_row(gbar_.data(), rows_.row(index_[j], n_), (upper_j ? -c_ : c_) * y_j, 0, n_);
-    const float* k_i = rows_.row(index_[i], active_);
     if (i == j) return update_and_select_up(f_.data(), up_.data(), k_i, k_i, d_i + d_j, 0, active_);
     const float* k_j = rows_.row(index_[j], active_);  // evicts the oldest row, never k_i
     const Selection next = update_and_select_up(f_.data(), up_.data(), k_i, k_j, d_i, d_j, active_);
@@ -288,8 +312,8 @@ class PairSmo {
   // sample i offers to I_up and the one sample j offers to I_low as the ordinary step would
   // (∇ᵀu = g_u < 0, uᵀQu = quad). Returns false, having changed only the stored direction, when
   // the step is not a descent step that keeps every variable strictly inside the box.
-  bool conjugate_step(std::size_t i, std::size_t j, bool minus_i, bool plus_j, double g_u,
-                      double quad, Selection& next) {
+  bool conjugate_step(std::size_t i, std::size_t j, const float* k_i, bool minus_i, bool plus_j,
+                      double g_u, double quad, Selection& next) {
     if (!(quad > 0)) return false;
     const double ukd = kd_[i] - kd_[j];
     const double lambda = -ukd / dkd_;
@@ -310,12 +334,13 @@ class PairSmo {
     (plus_j ? da_[j] : db_[j]) -= plus_j ? 1.0 : -1.0;    // −y_j
     for (const std::size_t k : support_)
       if (!inside(a_[k], t * da_[k]) || !inside(b_[k], t * db_[k])) return false;
+    bool rows_asked = false;  // a variable left its upper bound, and Ḡ took its row
     for (const std::size_t k : support_) {
-      move(a_[k], t * da_[k], 1.0, k);
-      move(b_[k], t * db_[k], -1.0, k);
+      rows_asked |= move(a_[k], t * da_[k], 1.0, k);
+      rows_asked |= move(b_[k], t * db_[k], -1.0, k);
       refresh(k);
     }
-    const float* k_i = rows_.row(index_[i], active_);
+    if (rows_asked) k_i = rows_.row(index_[i], active_);  // it may have evicted row i
     const float* k_j = rows_.row(index_[j], active_);
     next = conjugate_update_and_select_up(f_.data(), up_.data(), k_i, k_j, kd_.data(), lambda, t,
                                           active_);
@@ -330,13 +355,15 @@ class PairSmo {
     return delta > 0 ? v + delta < c_ : (delta < 0 ? v + delta > 0 : true);
   }
 
-  // Moves one variable of sample k (sign y) by delta, keeping it in the box and Ḡ current.
-  void move(double& alpha, double delta, double y, std::size_t k) {
-    if (delta == 0) return;
+  // Moves one variable of sample k (sign y) by delta, keeping it in the box and Ḡ current;
+  // true when that needed row k.
+  bool move(double& alpha, double delta, double y, std::size_t k) {
+    if (delta == 0) return false;
     const bool upper = alpha >= c_;
     alpha = std::clamp(alpha + delta, 0.0, c_);
-    if (upper != (alpha >= c_))
-      add_row(gbar_.data(), rows_.row(index_[k], n_), (upper ? -c_ : c_) * y, 0, n_);
+    if (upper == (alpha >= c_)) return false;
+    add_row(gbar_.data(), rows_.row(index_[k], n_), (upper ? -c_ : c_) * y, 0, n_);
+    return true;
   }
 
   void add_to_support(std::size_t k) {
