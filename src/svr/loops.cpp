@@ -990,11 +990,7 @@ Selection select_up(const double* f, const double* up, std::size_t len) {
 
 Selection update_and_select_up(double* f, const double* up, const float* k_i, const float* k_j,
                                double b_i, double b_j, std::size_t len) {
-#if FOGDRIFT_HAVE_AVX2_GATHER
-  if (kHasAvx512) return update_and_select_up_avx512<true>(f, up, k_i, k_j, b_i, b_j, len);
-  if (kHasAvx2) return update_and_select_up_avx2<true>(f, up, k_i, k_j, b_i, b_j, len);
-#endif
-  return update_and_select_up_portable<true>(f, up, k_i, k_j, b_i, b_j, len);
+  return update_and_select_up_with(best_isa(), f, up, k_i, k_j, b_i, b_j, len);
 }
 
 Selection conjugate_update_and_select_up(double* f, const double* up, const float* k_i,
@@ -1016,11 +1012,7 @@ Selection conjugate_update_and_select_up_with(Isa isa, double* f, const double* 
 
 SelectionJ select_low(const double* f, const double* low, const float* k_i, const double* qd,
                       double qd_i, double g_max, double tau, std::size_t len) {
-#if FOGDRIFT_HAVE_AVX2_GATHER
-  if (kHasAvx512) return select_low_avx512(f, low, k_i, qd, qd_i, g_max, tau, len);
-  if (kHasAvx2) return select_low_avx2(f, low, k_i, qd, qd_i, g_max, tau, len);
-#endif
-  return select_low_portable(f, low, k_i, qd, qd_i, g_max, tau, len);
+  return select_low_with(best_isa(), f, low, k_i, qd, qd_i, g_max, tau, len);
 }
 
 FOGDRIFT_CLONES
