@@ -31,9 +31,9 @@ struct PaperArgs {
   std::size_t population = 10;
   std::size_t iterations = 20;
   std::string fitness = "cv";
-  std::string cv = "auto";
+  std::string cv = "temperature";
   std::size_t folds = 3;
-  double epsilon = 0.1;
+  double epsilon = 0.05;
   bool search_epsilon = false;
   std::string approach = "calibration";
   std::string cal_temps;  ///< empty: the paper's −40 … 60 °C

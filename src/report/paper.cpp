@@ -90,6 +90,11 @@ TrainOptions train_options(const PaperOptions& o, Method method, std::uint64_t s
   to.method = method;
   to.tune.fitness = fitness;
   to.tune.cv = o.cv;
+  // BP keeps the weights of its best epoch on a held-out fold and is not refitted, so holding
+  // out whole temperatures would take them out of its training altogether (docs/paper.md
+  // measures what that costs). Its early stopping therefore always holds out a training
+  // repetition, which covers every temperature.
+  if (method == Method::bp) to.tune.cv = tune::CvOptions{};
   to.tune.optimizer.run.population = o.population;
   to.tune.optimizer.run.iterations = o.iterations;
   to.tune.optimizer.run.seed = seed;
@@ -208,6 +213,13 @@ std::vector<LotoRow> loto_study(const PaperOptions& o, const SeedRun& run, const
     // The pool is nested inside the study's loop here: it runs serially.
     TrainOptions to =
         train_options(o, name == "bp" ? Method::bp : Method::svr, run.seed, o.fitness);
+    // One temperature fewer to deal into temperature folds (they only score the model here).
+    if (to.tune.cv.scheme == tune::CvScheme::temperature) {
+      if (temps.size() - 1 >= 2)
+        to.tune.cv.folds = std::min(to.tune.cv.folds, temps.size() - 1);
+      else
+        to.tune.cv = tune::CvOptions{};
+    }
     if (name != "bp") to.svr_params = svr_params_of(run.method(name));
     const TrainResult loto = fogdrift::train(train, f.dataset, to);
     const eval::CompensationMetrics all = table2_of(f.models.at(name), test);
@@ -439,17 +451,6 @@ void validate(const PaperOptions& o) {
       o.calibration.repetitions > o.calibration.test_repetitions
           ? static_cast<std::size_t>(o.calibration.repetitions - o.calibration.test_repetitions)
           : 0;
-  if (o.cv.scheme == tune::CvScheme::temperature && (o.cv.folds < 2 || o.cv.folds > temps))
-    throw OptionError("--folds", fmt::format("{} folds of whole temperatures need 2 to {} (the "
-                                             "calibration temperatures)",
-                                             o.cv.folds, temps));
-  if (o.cv.scheme == tune::CvScheme::recording &&
-      (o.cv.folds < 2 || o.cv.folds > temps * train_reps))
-    throw OptionError("--folds", fmt::format("{} folds of whole recordings need 2 to {} (the "
-                                             "training recordings)",
-                                             o.cv.folds, temps * train_reps));
-  if (o.cv.scheme == tune::CvScheme::repetition && train_reps < 2)
-    throw OptionError("--cv", "leave one repetition out needs two or more training repetitions");
   sim::validate(o.instrument);
   // The simulator names its own flags (--temps, --findings, …); here --temps is the paper's
   // --cal-temps or --nf-temps, and other settings are named by their protocol.
@@ -471,6 +472,18 @@ void validate(const PaperOptions& o) {
   renamed(o.calibration, "--cal-temps", "calibration");
   renamed(o.northfind, "--nf-temps", "northfind");
   renamed(o.stable, "stable --temps", "stable");
+  if (o.cv.scheme == tune::CvScheme::temperature && (o.cv.folds < 2 || o.cv.folds > temps))
+    throw OptionError("--folds", fmt::format("{} folds of whole temperatures need 2 to {} (the "
+                                             "calibration temperatures); set --folds, or --cv "
+                                             "repetition to leave one repetition out",
+                                             o.cv.folds, temps));
+  if (o.cv.scheme == tune::CvScheme::recording &&
+      (o.cv.folds < 2 || o.cv.folds > temps * train_reps))
+    throw OptionError("--folds", fmt::format("{} folds of whole recordings need 2 to {} (the "
+                                             "training recordings)",
+                                             o.cv.folds, temps * train_reps));
+  if (o.cv.scheme == tune::CvScheme::repetition && train_reps < 2)
+    throw OptionError("--cv", "leave one repetition out needs two or more training repetitions");
   if (o.calibration.test_repetitions < 1 ||
       o.calibration.test_repetitions >= o.calibration.repetitions)
     throw OptionError("--repetitions",

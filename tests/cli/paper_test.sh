@@ -7,7 +7,8 @@ data=$2
 source "$(dirname "$0")/common.sh"
 
 # --- paper: the experiment end to end on a small campaign; its JSON is the change indicator --
-tiny=(--seeds 1 --cal-temps 0,40 --nf-temps 10,30 --findings 2 --population 5 --iterations 2)
+# Two calibration temperatures: the default temperature folds need --folds 2.
+tiny=(--seeds 1 --cal-temps 0,40 --folds 2 --nf-temps 10,30 --findings 2 --population 5 --iterations 2)
 check "paper" run 0 "$fd" paper "${tiny[@]}" --out "$work/paper" --json
 check "paper json parses" python3 -c 'import json,sys; d=json.load(open(sys.argv[1])); assert d["seeds"] == 1 and len(d["table3"]["ssa-svr"]["rmse_deg"]) == 2' "$work/out"
 python3 "$(dirname "$0")/round_json.py" <"$work/out" >"$work/paper_small.json"
@@ -31,8 +32,9 @@ check "paper json file equals stdout" cmp -s "$work/out" "$work/paper/paper.json
 check "paper refuses to replace" run 1 "$fd" paper "${tiny[@]}" --out "$work/paper"
 check "paper replace message" err_has "option --out: $work/paper exists and is not empty; use --force"
 check "paper left the old output" test -s "$work/paper/report.md"
-check "paper tables on stdout" run 0 "$fd" paper --seeds 1 --cal-temps 0,40 --nf-temps 20 --findings 1 --population 5 --iterations 1 --no-studies
+check "paper tables on stdout" run 0 "$fd" paper --seeds 1 --cal-temps 0,40 --nf-temps 20 --findings 1 --population 5 --iterations 1 --no-studies --cv repetition
 check "paper stdout has Table 2" out_has "## Table 2 — compensation on the test repetition"
+check "paper repetition folds in the header" out_has "fitness \`cv\` (leave one repetition out)"
 check "paper without studies" bash -c "! grep -qF 'Leave one temperature out' '$work/out'"
 check "paper bad seeds" run 1 "$fd" paper --seeds 0
 check "paper bad seeds message" err_has "option --seeds: 0 is outside [1, 1000]"
@@ -50,6 +52,8 @@ check "paper too many temperature folds" run 1 "$fd" paper --cv temperature --fo
 check "paper temperature folds message" err_has "option --folds: 12 folds of whole temperatures need 2 to 11"
 check "paper temperature folds on stdout" run 0 "$fd" paper --seeds 1 --cal-temps 0,20,40 --nf-temps 20 --findings 1 --population 5 --iterations 1 --no-studies --cv temperature --folds 3
 check "paper temperature folds in the header" out_has "fitness \`cv\` (3 temperature folds)"
+check "paper default folds need three temperatures" run 1 "$fd" paper --cal-temps 0,40
+check "paper default folds message" err_has "option --folds: 3 folds of whole temperatures need 2 to 2 (the calibration temperatures); set --folds, or --cv repetition"
 check "demo help" run 0 "$fd" demo --help
 check "demo help says what it runs" out_has "fogdrift paper"
 

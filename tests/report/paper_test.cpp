@@ -96,6 +96,13 @@ TEST(Paper, RunsEveryMethodOnEverySeedAndReportsIt) {
               j["table3"]["oracle"]["mean_deg"].get<double>() /
                   j["table3"]["raw"]["mean_deg"].get<double>(),
               1e-12);
+  // The SVR methods named as not better than BP are exactly those whose mean STD is not below.
+  nlohmann::json not_better = nlohmann::json::array();
+  for (const char* m : {"svr", "pso-svr", "gwo-svr", "ssa-svr"})
+    if (!(j["table2"][m]["std_dph"].get<double>() < j["table2"]["bp"]["std_dph"].get<double>()))
+      not_better.push_back(m);
+  EXPECT_EQ(j["goals"]["svr_methods_not_better_than_bp"], not_better);
+  EXPECT_EQ(j["goals"]["svr_methods_better_than_bp"].get<bool>(), not_better.empty());
   // A mean is the mean of the per-seed values.
   const double s1 = j["per_seed"][0]["methods"]["bp"]["std_dph"];
   const double s2 = j["per_seed"][1]["methods"]["bp"]["std_dph"];

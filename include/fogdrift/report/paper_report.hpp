@@ -19,8 +19,9 @@ MeanSd mean_sd(const std::vector<double>& values);
 struct PaperVerdict {
   double std_ratio = 0;             ///< SSA-SVR compensated STD / denoised STD (goal ≤ 1/4)
   bool svr_better_than_bp = false;  ///< every SVR method's STD below BP's
-  double northfind_ratio = 0;       ///< SSA-SVR mean RMSE / raw mean RMSE (goal ≤ 1/2)
-  double stable_ratio = 0;          ///< SSA-SVR mean RMSE / stable RMSE (goal ≤ 1.2)
+  std::vector<std::string> not_better_than_bp;  ///< the SVR methods whose STD is not below BP's
+  double northfind_ratio = 0;  ///< SSA-SVR mean RMSE / raw mean RMSE (goal ≤ 1/2)
+  double stable_ratio = 0;     ///< SSA-SVR mean RMSE / stable RMSE (goal ≤ 1.2)
   /// Perfect compensation's mean RMSE / raw mean RMSE: the lowest northfind_ratio possible on
   /// this instrument. NaN when the runs have no true drift.
   double oracle_ratio = 0;
