@@ -89,8 +89,12 @@ TrainResult train(const Dataset& data, const DatasetOptions& dataset, const Trai
       break;
     }
     case Method::bp: {
-      // Early stopping on the held-out recordings of the last grouped fold.
-      const auto folds = tune::grouped_folds(data, options.tune.cv);
+      // Early stopping on the held-out recordings of the last grouped fold. BP is not refitted
+      // after it, so whole temperatures held out would never be trained on: with temperature
+      // folds, it holds out a repetition (or, with one repetition, recordings) instead.
+      tune::CvOptions stop = options.tune.cv;
+      if (stop.scheme == tune::CvScheme::temperature) stop = tune::CvOptions{};
+      const auto folds = tune::grouped_folds(data, stop);
       const tune::Fold& f = folds.back();
       const tune::ScaledSplit split = tune::scale_split(data, f.train_rows, f.test_rows);
       MlpOptions mo = options.mlp;

@@ -71,6 +71,18 @@ TEST(Train, OneSeedOneFileWhateverTheThreadCount) {
   }
 }
 
+TEST(Train, BpStopsOnARepetitionEvenWithTemperatureFolds) {
+  // BP is not refitted after early stopping: a fold of whole temperatures would leave them out
+  // of its training, so it holds out a repetition instead, as with the automatic folds.
+  const Dataset d = test::synthetic();
+  TrainOptions by_temperature = quick(Method::bp);
+  by_temperature.tune.cv = {tune::CvScheme::temperature, 2};
+  const TrainResult t = train(d, {}, by_temperature);
+  const TrainResult a = train(d, {}, quick(Method::bp));
+  EXPECT_EQ(to_json(t.model), to_json(a.model));
+  EXPECT_EQ(t.model.provenance.cv, "early stopping on repetition 3");
+}
+
 TEST(ModelFile, RoundTripsExactly) {
   const Dataset d = test::synthetic();
   test::TempDir dir;

@@ -4,7 +4,9 @@
 //   svr                        LIBSVM's defaults on standardised data: C = 1, γ = 1/features,
 //                              ε = 0.1;
 //   bp                         one-hidden-layer tanh network (mlp.hpp), early-stopped on the
-//                              held-out recordings of the last grouped fold;
+//                              held-out recordings of the last grouped fold; not refitted, so
+//                              temperature folds are replaced by the automatic scheme (a
+//                              held-out repetition), which keeps every temperature in training;
 //   poly                       polynomial in the features, degree 1 … max chosen by grouped CV.
 // Every method reports a fitness on the standardised target: the tuner's (cv or train) for the
 // SVRs, the validation RMSE for BP, the CV RMSE of the chosen degree for the polynomial.

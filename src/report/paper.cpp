@@ -90,11 +90,6 @@ TrainOptions train_options(const PaperOptions& o, Method method, std::uint64_t s
   to.method = method;
   to.tune.fitness = fitness;
   to.tune.cv = o.cv;
-  // BP keeps the weights of its best epoch on a held-out fold and is not refitted, so holding
-  // out whole temperatures would take them out of its training altogether (docs/paper.md
-  // measures what that costs). Its early stopping therefore always holds out a training
-  // repetition, which covers every temperature.
-  if (method == Method::bp) to.tune.cv = tune::CvOptions{};
   to.tune.optimizer.run.population = o.population;
   to.tune.optimizer.run.iterations = o.iterations;
   to.tune.optimizer.run.seed = seed;

@@ -43,8 +43,8 @@ struct PaperOptions {
   /// Folds of the tuned SVRs' `cv` fitness: by default three folds of whole calibration
   /// temperatures, which score a candidate where it was not trained, as a start-up at a new
   /// temperature does; needs at least three calibration temperatures. `repetition` leaves one
-  /// training repetition out instead (docs/paper.md compares them). BP's early stopping always
-  /// holds out a training repetition: it is not refitted, and must see every temperature.
+  /// training repetition out instead (docs/paper.md compares them). With temperature
+  /// folds, BP's early stopping holds out a training repetition (train.hpp): it is not refitted.
   tune::CvOptions cv{tune::CvScheme::temperature, 3};
   /// ε of the tuned SVRs' tube (standardised target), when fixed. The paper does not state it.
   /// Measured on the default instrument: the cv fitness improves from LIBSVM's 0.1 down to 0.05
