@@ -215,7 +215,8 @@ void add_train(CLI::App& app) {
   cmd->add_option("--cv", args->cv,
                   "Folds: auto, repetition (leave one out), recording (k folds of whole "
                   "recordings) or temperature (k folds of whole initial temperatures: the "
-                  "fitness of a model at temperatures it never saw)")
+                  "fitness of a model at temperatures it never saw; bp, which is not refitted "
+                  "after early stopping, then stops on a held-out repetition)")
       ->capture_default_str();
   cmd->add_option("--folds", args->folds, "k for --cv recording or temperature")
       ->capture_default_str();

@@ -210,7 +210,7 @@ std::vector<LotoRow> loto_study(const PaperOptions& o, const SeedRun& run, const
         train_options(o, name == "bp" ? Method::bp : Method::svr, run.seed, o.fitness);
     // One temperature fewer to deal into temperature folds (they only score the model here).
     if (to.tune.cv.scheme == tune::CvScheme::temperature) {
-      if (temps.size() - 1 >= 2)
+      if (temps.size() >= 3)
         to.tune.cv.folds = std::min(to.tune.cv.folds, temps.size() - 1);
       else
         to.tune.cv = tune::CvOptions{};

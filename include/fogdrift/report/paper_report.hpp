@@ -17,9 +17,9 @@ MeanSd mean_sd(const std::vector<double>& values);
 
 /// The paper's goals, judged on the means over seeds.
 struct PaperVerdict {
-  double std_ratio = 0;             ///< SSA-SVR compensated STD / denoised STD (goal ≤ 1/4)
-  bool svr_better_than_bp = false;  ///< every SVR method's STD below BP's
+  double std_ratio = 0;  ///< SSA-SVR compensated STD / denoised STD (goal ≤ 1/4)
   std::vector<std::string> not_better_than_bp;  ///< the SVR methods whose STD is not below BP's
+  bool svr_better_than_bp() const { return not_better_than_bp.empty(); }
   double northfind_ratio = 0;  ///< SSA-SVR mean RMSE / raw mean RMSE (goal ≤ 1/2)
   double stable_ratio = 0;     ///< SSA-SVR mean RMSE / stable RMSE (goal ≤ 1.2)
   /// Perfect compensation's mean RMSE / raw mean RMSE: the lowest northfind_ratio possible on
