@@ -30,6 +30,7 @@ struct SimulateArgs {
   std::string approach = "calibration";
   double soak_s = 1200.0;
   double ramp_degc_per_min = 1.0;
+  double warm_off_s = 600.0;
 };
 
 sim::Instrument load_instrument(const std::string& file) {
@@ -49,6 +50,25 @@ void add_common(CLI::App* cmd, SimulateArgs& a) {
   cmd->add_option("--latitude", a.latitude_deg, "Site latitude, degrees")->capture_default_str();
   cmd->add_flag("--force", a.force, "Replace --out if it exists (only after success)");
 }
+
+// The options of the start-up approaches other than the paper's own.
+void add_start_up(CLI::App* cmd, SimulateArgs& a) {
+  cmd->add_option("--warm-off-s", a.warm_off_s,
+                  "Power-off before a warm restart (--approach warm), s")
+      ->capture_default_str();
+  cmd->add_option("--ramp-degc-per-min", a.ramp_degc_per_min,
+                  "Chamber ramp for --approach ramping (from 10 °C below, starting at power-on) "
+                  "and sweep (between temperatures), °C/min")
+      ->capture_default_str();
+}
+
+constexpr const char* kApproachHelp =
+    "  calibration  the paper's chamber protocol: ramp 10 °C in 10 min, soak 20 min; the\n"
+    "               instrument powers on some 5 °C short of the chamber's temperature\n"
+    "  soaked       soaked to equilibrium (an instrument stored overnight at ambient)\n"
+    "  warm         soaked, powered 30 min, off --warm-off-s, on again (a power cut)\n"
+    "  ramping      from equilibrium 10 °C below, the air ramps up at --ramp-degc-per-min\n"
+    "               from power-on (a chamber still ramping, an enclosure warming in the sun)\n";
 
 void finish(const SimulateArgs& a, const sim::SimulatedCampaign& campaign,
             std::chrono::steady_clock::time_point start, std::string_view scenario) {
@@ -91,9 +111,20 @@ void add_simulate(CLI::App& app) {
 
   auto* cal = cmd->add_subcommand(
       "calibration",
-      "Paper §4.1: chamber steps from -40 to 60 °C by 10 °C, one-hour cycles (20 min soak, 30 min "
-      "powered and recorded, 10 min ramp), repeated; the last repetition is the test set.");
+      std::string("Paper §4.1: chamber steps from -40 to 60 °C by 10 °C, one-hour cycles (20 min "
+                  "soak, 30 min powered and recorded, 10 min ramp), repeated; the last repetition "
+                  "is the test set.\n"
+                  "How each repetition's start-ups begin (--approach A[,B,...]: repetition r takes "
+                  "the r-th, cycling; docs/simulator.md gives the chamber hours of each):\n") +
+          kApproachHelp +
+          "Example: a protocol that covers the field (docs/compensation.md):\n"
+          "  fogdrift simulate calibration --out cal --repetitions 4 "
+          "--approach calibration,soaked,warm,ramping");
   add_common(cal, *args);
+  add_start_up(cal, *args);
+  cal->add_option("--approach", args->approach,
+                  "Start-up approach of each repetition, comma-separated, cycling")
+      ->capture_default_str();
   cal->add_option("--temps", args->temps, "Chamber temperatures, °C, comma-separated")
       ->default_str("-40,-30,...,60");
   cal->add_option("--repetitions", args->repetitions, "Temperature sweeps")->capture_default_str();
@@ -108,31 +139,31 @@ void add_simulate(CLI::App& app) {
     o.seed = args->seed;
     o.output_rate_hz = args->rate_hz;
     o.latitude_deg = args->latitude_deg;
+    o.approaches = sim::approaches_from_string(args->approach, "--approach");
+    o.warm_off_s = args->warm_off_s;
+    o.ramp_degc_per_min = args->ramp_degc_per_min;
     finish(*args, sim::simulate_calibration(load_instrument(args->instrument_file), o), start,
            "calibration");
   });
 
   auto* nf = cmd->add_subcommand(
       "northfind",
-      "Paper §4.2: at each initial temperature, power on and make four-position north-findings "
-      "back to back during the start-up; the true azimuth is in the manifest.\n"
-      "How the instrument reaches each initial temperature (--approach):\n"
-      "  calibration  as in the calibration campaign: two cycles from 20 °C below, ramp, soak;\n"
-      "               it powers on not yet at the chamber's temperature   [default]\n"
-      "  sweep        the temperatures in the given order as one chamber sweep (ramp, soak)\n"
-      "  soaked       soaked to equilibrium at each temperature");
+      std::string(
+          "Paper §4.2: at each initial temperature, power on and make four-position "
+          "north-findings back to back during the start-up; the true azimuth is in the "
+          "manifest.\nHow the instrument reaches each initial temperature (--approach):\n") +
+          kApproachHelp +
+          "  sweep        the temperatures in the given order as one chamber sweep (ramp, soak)");
   add_common(nf, *args);
+  add_start_up(nf, *args);
   nf->add_option("--temps", args->temps, "Initial temperatures, °C, comma-separated")
       ->default_str("-32,-16,-5,17,28,43,54");
   nf->add_option("--findings", args->findings, "Findings per recording")->default_str("5");
   nf->add_option("--position-s", args->position_s, "Seconds per position, rotation included")
       ->capture_default_str();
-  nf->add_option("--approach", args->approach, "calibration, sweep or soaked")
+  nf->add_option("--approach", args->approach, "calibration, soaked, warm, ramping or sweep")
       ->capture_default_str();
   nf->add_option("--soak-s", args->soak_s, "Unpowered soak before power-on, s")
-      ->capture_default_str();
-  nf->add_option("--ramp-degc-per-min", args->ramp_degc_per_min,
-                 "Chamber ramp between temperatures for --approach sweep, °C/min")
       ->capture_default_str();
   nf->callback([args] {
     const auto start = std::chrono::steady_clock::now();
@@ -143,6 +174,7 @@ void add_simulate(CLI::App& app) {
     o.approach = sim::approach_from_string(args->approach, "--approach");
     o.soak_s = args->soak_s;
     o.ramp_degc_per_min = args->ramp_degc_per_min;
+    o.warm_off_s = args->warm_off_s;
     o.seed = args->seed;
     o.output_rate_hz = args->rate_hz;
     o.latitude_deg = args->latitude_deg;

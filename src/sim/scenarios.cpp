@@ -25,7 +25,8 @@ constexpr std::uint64_t kChamberStream = 3'000'000;
 // What made the campaign, for its manifest; a north-finding campaign also records how its
 // start-ups began.
 std::string generator_json(std::string_view scenario, std::uint64_t seed, double rate_hz,
-                           const NorthfindOptions* findings = nullptr) {
+                           const NorthfindOptions* findings = nullptr,
+                           const CalibrationOptions* calibration = nullptr) {
   nlohmann::ordered_json g;
   g["tool"] = "fogdrift simulate";
   g["version"] = kVersion;
@@ -35,8 +36,19 @@ std::string generator_json(std::string_view scenario, std::uint64_t seed, double
   if (findings) {
     g["approach"] = std::string(to_string(findings->approach));
     if (findings->approach != Approach::soaked) g["soak_s"] = findings->soak_s;
-    if (findings->approach == Approach::sweep) g["ramp_degc_per_min"] = findings->ramp_degc_per_min;
+    if (findings->approach == Approach::sweep || findings->approach == Approach::ramping)
+      g["ramp_degc_per_min"] = findings->ramp_degc_per_min;
+    if (findings->approach == Approach::warm) g["warm_off_s"] = findings->warm_off_s;
     if (findings->warmup_s > 0) g["warmup_s"] = findings->warmup_s;
+  }
+  // The calibration's start-up approaches are written only when they are not the paper's.
+  if (calibration && (calibration->approaches.size() != 1 ||
+                      calibration->approaches[0] != Approach::calibration)) {
+    nlohmann::ordered_json list = nlohmann::ordered_json::array();
+    for (Approach a : calibration->approaches) list.push_back(std::string(to_string(a)));
+    g["approaches"] = list;
+    g["warm_off_s"] = calibration->warm_off_s;
+    g["ramp_degc_per_min"] = calibration->ramp_degc_per_min;
   }
   return g.dump();
 }
@@ -63,6 +75,78 @@ void check_latitude(double latitude_deg) {
   }
 }
 
+void check_start_up(double warm_off_s, double ramp_degc_per_min) {
+  if (!(warm_off_s >= 0.0) || warm_off_s > 1e6) {
+    throw OptionError("--warm-off-s", fmt::format("{} s is outside [0, 1e6]", warm_off_s));
+  }
+  if (!(ramp_degc_per_min > 0.0) || ramp_degc_per_min > 100.0) {
+    throw OptionError("--ramp-degc-per-min",
+                      fmt::format("{} is outside (0, 100] °C/min", ramp_degc_per_min));
+  }
+}
+
+// How far below the initial temperature the calibration and ramping approaches begin, °C.
+constexpr double kStepDegc = 10.0;
+
+// The instrument at power-on for a start-up at chamber temperature t0 under an approach that
+// does not depend on the previous recording (all but sweep), and the chamber air from then on.
+// The simulator's clock reads 0 at power-on.
+struct StartUp {
+  NodeTemps temps;
+  AirProfile air;
+};
+
+StartUp start_up(const Instrument& instrument, Approach approach, double t0, double soak_s,
+                 double warm_off_s, double ramp_degc_per_min) {
+  StartUp out;
+  out.air = [t0](double) { return t0; };
+  out.temps.fill(t0);
+  switch (approach) {
+    case Approach::soaked:
+    case Approach::sweep:
+      break;
+    case Approach::calibration: {
+      // Two calibration cycles at t0 − 20 and t0 − 10 °C, then the ramp to t0 and the soak.
+      constexpr double kPoweredS = 1800.0, kRampS = 600.0;
+      NodeTemps start;
+      start.fill(t0 - 2 * kStepDegc);
+      NfsSimulator chamber(instrument, start, 0.0);
+      for (int c = 2; c >= 1; --c) {
+        const double here = t0 - c * kStepDegc;
+        if (c == 1)
+          chamber.advance(
+              soak_s, [here](double) { return here; }, false);
+        const double power_on = chamber.time_s();
+        const AirProfile cycle = [here, power_on](double t) {
+          return here + std::clamp((t - power_on - kPoweredS) / kRampS, 0.0, 1.0) * kStepDegc;
+        };
+        chamber.advance(kPoweredS, cycle, true);
+        chamber.advance(kRampS, cycle, false);
+      }
+      chamber.advance(soak_s, out.air, false);
+      out.temps = chamber.temps_degc();
+      break;
+    }
+    case Approach::warm: {
+      constexpr double kFirstRunS = 1800.0;
+      NfsSimulator chamber(instrument, out.temps, 0.0);
+      chamber.advance(kFirstRunS, out.air, true);
+      chamber.advance(warm_off_s, out.air, false);
+      out.temps = chamber.temps_degc();
+      break;
+    }
+    case Approach::ramping: {
+      out.temps.fill(t0 - kStepDegc);
+      const double ramp_s = kStepDegc / ramp_degc_per_min * 60.0;
+      out.air = [t0, ramp_s](double t) {
+        return t0 - kStepDegc + std::clamp(t / ramp_s, 0.0, 1.0) * kStepDegc;
+      };
+      break;
+    }
+  }
+  return out;
+}
+
 }  // namespace
 
 std::string temperature_tag(double t) {
@@ -78,15 +162,38 @@ std::string_view to_string(Approach approach) {
       return "sweep";
     case Approach::calibration:
       return "calibration";
+    case Approach::warm:
+      return "warm";
+    case Approach::ramping:
+      return "ramping";
   }
   return "?";
 }
 
 Approach approach_from_string(std::string_view name, const std::string& option) {
-  for (Approach a : {Approach::soaked, Approach::sweep, Approach::calibration}) {
+  for (Approach a : kApproaches) {
     if (name == to_string(a)) return a;
   }
-  throw OptionError(option, fmt::format("'{}' is not one of soaked, sweep, calibration", name));
+  throw OptionError(
+      option, fmt::format("'{}' is not one of calibration, soaked, warm, ramping, sweep", name));
+}
+
+std::vector<Approach> approaches_from_string(std::string_view list, const std::string& option) {
+  std::vector<Approach> out;
+  std::size_t from = 0;
+  while (from <= list.size()) {
+    const std::size_t comma = std::min(list.find(',', from), list.size());
+    out.push_back(approach_from_string(list.substr(from, comma - from), option));
+    from = comma + 1;
+  }
+  return out;
+}
+
+CalibrationOptions field_calibration() {
+  CalibrationOptions o;
+  o.approaches = {Approach::calibration, Approach::soaked, Approach::warm, Approach::ramping};
+  o.repetitions = 5;
+  return o;
 }
 
 NorthfindOptions stable_defaults() {
@@ -113,6 +220,14 @@ void validate(const CalibrationOptions& o) {
   if (!(o.chamber_setpoint_sd_degc >= 0.0) || o.chamber_setpoint_sd_degc > 10.0) {
     throw OptionError("chamber_setpoint_sd_degc", "must be in [0, 10] °C");
   }
+  if (o.approaches.empty()) throw OptionError("--approach", "needs at least one approach");
+  for (Approach a : o.approaches) {
+    if (a == Approach::sweep)
+      throw OptionError("--approach",
+                        "sweep is not a calibration approach (the calibration approach is the "
+                        "chamber's sweep)");
+  }
+  check_start_up(o.warm_off_s, o.ramp_degc_per_min);
   check_rate(o.output_rate_hz);
   check_latitude(o.latitude_deg);
 }
@@ -129,10 +244,7 @@ void validate(const NorthfindOptions& o) {
   if (!(o.soak_s >= 0.0) || o.soak_s > 1e6) {
     throw OptionError("--soak-s", fmt::format("{} s is outside [0, 1e6]", o.soak_s));
   }
-  if (!(o.ramp_degc_per_min > 0.0) || o.ramp_degc_per_min > 100.0) {
-    throw OptionError("--ramp-degc-per-min",
-                      fmt::format("{} is outside (0, 100] °C/min", o.ramp_degc_per_min));
-  }
+  check_start_up(o.warm_off_s, o.ramp_degc_per_min);
   check_rate(o.output_rate_hz);
   check_latitude(o.latitude_deg);
 }
@@ -142,7 +254,8 @@ SimulatedCampaign simulate_calibration(const Instrument& instrument, const Calib
   validate(o);
   SimulatedCampaign out;
   out.campaign.latitude_deg = o.latitude_deg;
-  out.campaign.generator_json = generator_json("calibration", o.seed, o.output_rate_hz);
+  out.campaign.generator_json =
+      generator_json("calibration", o.seed, o.output_rate_hz, nullptr, &o);
   const double cycle_s = o.soak_s + o.powered_s + o.ramp_s;
   const std::size_t n_temps = o.temps_degc.size();
 
@@ -163,6 +276,7 @@ SimulatedCampaign simulate_calibration(const Instrument& instrument, const Calib
       const double f = std::min(1.0, (into - hold) / o.ramp_s);
       return reached[i] + f * (reached[i + 1] - reached[i]);
     };
+    const Approach approach = o.approaches[static_cast<std::size_t>(rep - 1) % o.approaches.size()];
     // Each sweep starts from equilibrium at its first temperature: between sweeps the chamber
     // returns to it and soaks the instrument completely.
     NodeTemps start;
@@ -170,7 +284,17 @@ SimulatedCampaign simulate_calibration(const Instrument& instrument, const Calib
     NfsSimulator nfs(instrument, start, 0.0);
     for (std::size_t i = 0; i < n_temps; ++i) {
       const double cycle_start = static_cast<double>(i) * cycle_s;
-      nfs.advance(cycle_start + o.soak_s - nfs.time_s(), air, false);
+      if (approach == Approach::calibration)
+        nfs.advance(cycle_start + o.soak_s - nfs.time_s(), air, false);
+      // Other approaches start each cycle afresh at the reached set point, and their air is
+      // that approach's (the simulator's clock reads 0 at power-on).
+      AirProfile cycle_air = air;
+      if (approach != Approach::calibration) {
+        StartUp s =
+            start_up(instrument, approach, reached[i], o.soak_s, o.warm_off_s, o.ramp_degc_per_min);
+        nfs = NfsSimulator(instrument, s.temps, 0.0);
+        cycle_air = std::move(s.air);
+      }
       RecordSetup setup;
       setup.duration_s = o.powered_s;
       setup.output_rate_hz = o.output_rate_hz;
@@ -181,8 +305,8 @@ SimulatedCampaign simulate_calibration(const Instrument& instrument, const Calib
       setup.seed =
           derive_seed(o.seed, kCalibrationStream + static_cast<std::uint64_t>(rep) * 1000 + i);
       const double power_on = nfs.time_s();
-      Recording rec = nfs.record(setup, air, power_on);
-      nfs.advance(o.ramp_s, air, false);
+      Recording rec = nfs.record(setup, cycle_air, power_on);
+      if (approach == Approach::calibration) nfs.advance(o.ramp_s, air, false);
 
       CampaignEntry e;
       e.file = fmt::format("cal_r{}_{}.csv", rep, temperature_tag(o.temps_degc[i]));
@@ -221,7 +345,6 @@ SimulatedCampaign simulate_findings(const Instrument& instrument, const Northfin
     Rng setup_rng(derive_seed(seed, 100));
     const double azimuth = 360.0 * setup_rng.uniform();
     const double t0 = o.temps_degc[i];
-    const AirProfile air = [t0](double) { return t0; };
 
     RecordSetup setup;
     setup.duration_s = o.findings * 4 * o.position_s;
@@ -242,8 +365,7 @@ SimulatedCampaign simulate_findings(const Instrument& instrument, const Northfin
     }
     setup.seed = seed;
 
-    NodeTemps start;
-    start.fill(t0);  // soaked to equilibrium before power-on
+    StartUp su = start_up(instrument, o.approach, t0, o.soak_s, o.warm_off_s, o.ramp_degc_per_min);
     if (o.approach == Approach::sweep && i > 0) {
       // Off since the previous recording ended: the chamber ramps to t0, then soaks.
       const double from = o.temps_degc[i - 1];
@@ -253,28 +375,10 @@ SimulatedCampaign simulate_findings(const Instrument& instrument, const Northfin
       };
       NfsSimulator chamber(instrument, after_previous, 0.0);
       chamber.advance(ramp_s + o.soak_s, between, false);
-      start = chamber.temps_degc();
-    } else if (o.approach == Approach::calibration) {
-      // Two calibration cycles at t0 − 20 and t0 − 10 °C, then the ramp to t0 and the soak.
-      constexpr double kStepDegc = 10.0, kPoweredS = 1800.0, kRampS = 600.0;
-      start.fill(t0 - 2 * kStepDegc);
-      NfsSimulator chamber(instrument, start, 0.0);
-      for (int c = 2; c >= 1; --c) {
-        const double here = t0 - c * kStepDegc;
-        if (c == 1)
-          chamber.advance(
-              o.soak_s, [here](double) { return here; }, false);
-        const double power_on = chamber.time_s();
-        const AirProfile cycle = [here, power_on](double t) {
-          return here + std::clamp((t - power_on - kPoweredS) / kRampS, 0.0, 1.0) * kStepDegc;
-        };
-        chamber.advance(kPoweredS, cycle, true);
-        chamber.advance(kRampS, cycle, false);
-      }
-      chamber.advance(o.soak_s, air, false);
-      start = chamber.temps_degc();
+      su.temps = chamber.temps_degc();
     }
-    NfsSimulator nfs(instrument, start, 0.0);
+    const AirProfile& air = su.air;
+    NfsSimulator nfs(instrument, su.temps, 0.0);
     nfs.advance(o.warmup_s, air, true);
     Recording rec = nfs.record(setup, air, 0.0);
     after_previous = nfs.temps_degc();

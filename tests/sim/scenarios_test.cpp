@@ -227,7 +227,7 @@ TEST(Scenarios, ImpossibleOptionsNameTheOption) {
   n.soak_s = -1.0;
   EXPECT_THROW(simulate_northfind(Instrument{}, n), OptionError);
   try {
-    approach_from_string("warm", "--approach");
+    approach_from_string("lukewarm", "--approach");
     FAIL();
   } catch (const OptionError& e) {
     EXPECT_NE(std::string(e.what()).find("--approach"), std::string::npos);

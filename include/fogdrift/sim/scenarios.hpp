@@ -8,6 +8,7 @@
 //   stable       the same north-findings after a long powered warm-up at room temperature.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <filesystem>
 #include <string>
@@ -18,6 +19,28 @@
 #include "fogdrift/sim/instrument.hpp"
 
 namespace fogdrift::sim {
+
+/// How a start-up's instrument reaches its initial temperature before power-on: north-finding
+/// start-ups (NorthfindOptions) and calibration cycles (CalibrationOptions) alike.
+enum class Approach {
+  /// Soaked to equilibrium at the initial temperature.
+  soaked,
+  /// The temperatures are one chamber sweep in the given order: after each recording the
+  /// instrument is off while the chamber ramps to the next at ramp_degc_per_min and soaks for
+  /// soak_s. The first starts soaked.
+  sweep,
+  /// The calibration's protocol: from equilibrium 20 °C below, two calibration cycles 10 °C apart
+  /// (30 min powered, ramp 10 °C in 10 min, soak soak_s), so the instrument powers on as it does
+  /// in calibration, not yet at the chamber's temperature — but at a temperature calibration did
+  /// not visit. This is the paper's claim under test, and the default.
+  calibration,
+  /// A warm restart: soaked at the initial temperature, powered for 30 minutes, off for
+  /// warm_off_s, then powered on again — a power cut in the field.
+  warm,
+  /// Powered on while the chamber (or the sun on an enclosure) still warms it: from equilibrium
+  /// 10 °C below, the air ramps to the initial temperature at ramp_degc_per_min from power-on.
+  ramping,
+};
 
 struct CalibrationOptions {
   /// Chamber temperatures of the cycles, °C, in order (default −40, −30, …, 60).
@@ -31,27 +54,29 @@ struct CalibrationOptions {
   double azimuth_deg = 0.0;               ///< heading of the FOG axis in the chamber, ° from north
   double latitude_deg = 30.0;             ///< site latitude, °
   double output_rate_hz = 1.0;            ///< logger rate, Hz
+  /// How each repetition's start-ups begin (Approach): repetition r uses
+  /// approaches[(r − 1) mod size]. Default: the paper's chamber protocol for every repetition.
+  /// `calibration` is the sweep described above; `soaked`, `warm` and `ramping` start every
+  /// cycle afresh at the reached set point (see Approach); `sweep` is not a calibration approach.
+  std::vector<Approach> approaches{Approach::calibration};
+  double warm_off_s = 600.0;       ///< power-off before a warm restart (Approach::warm), s
+  double ramp_degc_per_min = 1.0;  ///< chamber ramp into the set point (Approach::ramping), °C/min
   std::uint64_t seed = 1;
-};
-
-/// How a north-finding recording's instrument reaches its initial temperature before power-on.
-enum class Approach {
-  /// Soaked to equilibrium at the initial temperature.
-  soaked,
-  /// The temperatures are one chamber sweep in the given order: after each recording the
-  /// instrument is off while the chamber ramps to the next at ramp_degc_per_min and soaks for
-  /// soak_s. The first starts soaked.
-  sweep,
-  /// The calibration's protocol: from equilibrium 20 °C below, two calibration cycles 10 °C apart
-  /// (30 min powered, ramp 10 °C in 10 min, soak soak_s), so the instrument powers on as it does
-  /// in calibration, not yet at the chamber's temperature — but at a temperature calibration did
-  /// not visit. This is the paper's claim under test, and the default.
-  calibration,
 };
 
 std::string_view to_string(Approach approach);
 /// Throws OptionError naming `option` for an unknown name.
 Approach approach_from_string(std::string_view name, const std::string& option);
+/// A comma-separated list of approaches ("calibration,soaked,warm"); errors name `option`.
+std::vector<Approach> approaches_from_string(std::string_view list, const std::string& option);
+/// The calibration protocol docs/field.md recommends: the paper's chamber cycles, with the
+/// start-ups of repetitions 1–4 begun as calibration, soaked, warm and ramping, and a fifth
+/// repetition (the chamber's protocol again) to test on.
+CalibrationOptions field_calibration();
+
+/// Every approach, in the order reports list them.
+inline constexpr std::array<Approach, 5> kApproaches = {
+    Approach::calibration, Approach::soaked, Approach::warm, Approach::ramping, Approach::sweep};
 
 struct NorthfindOptions {
   /// Initial (chamber) temperatures, °C; one recording each (default: the paper's seven).
@@ -62,7 +87,8 @@ struct NorthfindOptions {
   /// How the instrument reaches each initial temperature before power-on (Approach).
   Approach approach = Approach::calibration;
   double soak_s = 1200.0;          ///< unpowered soak at each temperature before power-on, s
-  double ramp_degc_per_min = 1.0;  ///< chamber ramp between temperatures for sweep, °C/min
+  double ramp_degc_per_min = 1.0;  ///< chamber ramp for sweep and ramping, °C/min
+  double warm_off_s = 600.0;       ///< power-off before a warm restart (Approach::warm), s
   double latitude_deg = 30.0;      ///< site latitude, °
   double output_rate_hz = 1.0;     ///< logger rate, Hz
   std::uint64_t seed = 1;
