@@ -2,17 +2,21 @@
 
 namespace fogdrift {
 
-StreamingCompensator::StreamingCompensator(const CompensationModel& model, double dt_s)
+StreamingCompensator::StreamingCompensator(const CompensationModel& model, double dt_s,
+                                           bool guarded)
     : model_(model),
       rates_{signal::CausalDifferentiator(model.dataset.preprocessing.rates, dt_s),
              signal::CausalDifferentiator(model.dataset.preprocessing.rates, dt_s),
              signal::CausalDifferentiator(model.dataset.preprocessing.rates, dt_s)},
       columns_(model.dataset.features.columns()),
       features_(model.inputs()),
-      work_(model.inputs()) {}
+      work_(model.inputs()),
+      guarded_(guarded && !model.guard.empty()) {}
 
 void StreamingCompensator::reset() noexcept {
   for (auto& r : rates_) r.reset();
+  filter_.reset();
+  weight_ = 1.0;
 }
 
 double StreamingCompensator::update(const Sample& s) noexcept {
@@ -21,7 +25,10 @@ double StreamingCompensator::update(const Sample& s) noexcept {
   for (std::size_t k = 0; k < 3; ++k) rate[k] = rates_[k].push(temp[k]);
   for (std::size_t c = 0; c < columns_.size(); ++c)
     features_[c] = columns_[c].value(temp, rate, s.time_s);
-  return model_.predict_dph(features_, work_);
+  last_ = model_.predict(features_, work_);
+  if (!guarded_) return last_.drift_dph;
+  weight_ = filter_.update(s.time_s, last_.target_weight, model_.guard.settings.recover_s);
+  return model_.guarded_dph(last_.drift_dph, weight_);
 }
 
 }  // namespace fogdrift

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <limits>
 #include <nlohmann/json.hpp>
 #include <set>
 
@@ -44,26 +45,56 @@ Method parse_method(const std::string& text, const std::string& option) {
                                         text));
 }
 
-double CompensationModel::predict_dph(std::span<const double> features,
-                                      std::span<double> work) const {
+DriftPrediction CompensationModel::predict(std::span<const double> features,
+                                           std::span<double> work) const {
   const std::size_t d = inputs();
   for (std::size_t k = 0; k < d; ++k)
     work[k] = (features[k] - x_scaler.mean[k]) / x_scaler.scale[k];
   const double z = std::visit([&](const auto& r) { return r.predict(work.data()); }, regressor);
-  return z * y_scaler.scale[0] + y_scaler.mean[0];
+  DriftPrediction out;
+  out.drift_dph = z * y_scaler.scale[0] + y_scaler.mean[0];
+  if (guard.empty()) {
+    out.novelty = std::numeric_limits<double>::quiet_NaN();
+  } else {
+    out.novelty = guard.novelty(work.first(d));
+    out.target_weight = guard.target_weight(out.novelty);
+  }
+  return out;
 }
 
-std::vector<double> CompensationModel::predict_dph(const Dataset& data) const {
+double CompensationModel::predict_dph(std::span<const double> features,
+                                      std::span<double> work) const {
+  return predict(features, work).drift_dph;
+}
+
+double CompensationModel::guarded_dph(double drift_dph, double weight) const noexcept {
+  return y_scaler.mean[0] + weight * (drift_dph - y_scaler.mean[0]);
+}
+
+std::vector<double> CompensationModel::predict_dph(const Dataset& data, bool guarded) const {
   if (data.feature_names != feature_names)
     throw OptionError(
         "features", fmt::format("the data has features {} but the model expects {}",
                                 fmt::join(data.feature_names, ","), fmt::join(feature_names, ",")));
   std::vector<double> out(data.rows), work(inputs());
-  for (std::size_t i = 0; i < data.rows; ++i) out[i] = predict_dph(data.row(i), work);
+  GuardFilter filter;
+  for (std::size_t i = 0; i < data.rows; ++i) {
+    const DriftPrediction p = predict(data.row(i), work);
+    out[i] = p.drift_dph;
+    if (guarded && !guard.empty()) {
+      if (i == 0 || data.group[i] != data.group[i - 1]) filter.reset();
+      const double w = filter.update(data.time_s[i], p.target_weight, guard.settings.recover_s);
+      out[i] = guarded_dph(p.drift_dph, w);
+    }
+  }
   return out;
 }
 
-std::vector<double> CompensationModel::predict_dph(const Recording& recording) const {
+std::vector<double> CompensationModel::predict_dph(const Recording& recording, bool guarded) const {
+  return predict(recording, guarded).drift_dph;
+}
+
+RecordingPrediction CompensationModel::predict(const Recording& recording, bool guarded) const {
   FeatureOptions options = dataset.preprocessing;
   options.block.block_s = sample_interval_s(recording);
   const FeatureTable table = compute_features(recording, dataset.features, options);
@@ -71,10 +102,23 @@ std::vector<double> CompensationModel::predict_dph(const Recording& recording) c
     throw InputError(recording.source, 0, 0,
                      fmt::format("gives features {} but the model expects {}",
                                  fmt::join(table.names, ","), fmt::join(feature_names, ",")));
-  std::vector<double> out(table.rows), work(inputs());
+  RecordingPrediction out;
+  out.drift_dph.resize(table.rows);
+  out.novelty.resize(table.rows);
+  out.weight.resize(table.rows);
+  std::vector<double> work(inputs());
   const std::size_t d = inputs();
-  for (std::size_t i = 0; i < table.rows; ++i)
-    out[i] = predict_dph(std::span<const double>(table.x.data() + i * d, d), work);
+  GuardFilter filter;
+  for (std::size_t i = 0; i < table.rows; ++i) {
+    const DriftPrediction p = predict(std::span<const double>(table.x.data() + i * d, d), work);
+    out.novelty[i] = p.novelty;
+    out.weight[i] = 1.0;
+    out.drift_dph[i] = p.drift_dph;
+    if (guarded && !guard.empty()) {
+      out.weight[i] = filter.update(table.time_s[i], p.target_weight, guard.settings.recover_s);
+      out.drift_dph[i] = guarded_dph(p.drift_dph, out.weight[i]);
+    }
+  }
   return out;
 }
 
@@ -130,6 +174,13 @@ std::string to_json(const CompensationModel& m) {
   j["scalers"] = {{"features", {{"mean", m.x_scaler.mean}, {"scale", m.x_scaler.scale}}},
                   {"drift_dph", {{"mean", m.y_scaler.mean[0]}, {"scale", m.y_scaler.scale[0]}}}};
   j["regressor"] = regressor_json(m.regressor);
+  if (!m.guard.empty())
+    j["guard"] = {{"full_at", m.guard.settings.full_at},
+                  {"zero_at", m.guard.settings.zero_at},
+                  {"recover_s", m.guard.settings.recover_s},
+                  {"radius", m.guard.radius},
+                  {"prototypes", m.guard.size()},
+                  {"points", m.guard.prototypes}};
   const Provenance& p = m.provenance;
   ojson hyper = ojson::object();
   for (const auto& [k, v] : p.hyperparameters) hyper[k] = v;
@@ -167,9 +218,9 @@ CompensationModel compensation_model_from_json(const std::string& text, const st
   if (!doc.contains("version") || !doc["version"].is_number_integer())
     fail("version", "required integer field is missing");
   const int version = doc["version"].get<int>();
-  if (version != kCompensationModelVersion)
+  if (version < 1 || version > kCompensationModelVersion)
     fail("version", fmt::format("model format version {} is not supported (this fogdrift reads "
-                                "version {}{})",
+                                "versions 1 to {}{})",
                                 version, kCompensationModelVersion,
                                 version > kCompensationModelVersion
                                     ? "; written by a newer fogdrift, upgrade to read it"
@@ -243,6 +294,18 @@ CompensationModel compensation_model_from_json(const std::string& text, const st
     } else {
       fail("regressor.type", fmt::format("'{}' is not svr, mlp or poly", type));
     }
+    if (version >= 2) {
+      where = "guard";
+      const ojson& g = doc.at("guard");
+      m.guard.settings.full_at = g.at("full_at").get<double>();
+      m.guard.settings.zero_at = g.at("zero_at").get<double>();
+      m.guard.settings.recover_s = g.at("recover_s").get<double>();
+      m.guard.settings.prototypes = g.at("prototypes").get<std::size_t>();
+      m.guard.radius = g.at("radius").get<double>();
+      m.guard.prototypes = g.at("points").get<std::vector<double>>();
+      m.guard.dims = m.feature_names.size();
+      validate(m.guard.settings);
+    }
     where = "provenance";
     const ojson& p = doc.at("provenance");
     m.provenance.method = parse_method(p.at("method").get<std::string>());
@@ -271,6 +334,14 @@ CompensationModel compensation_model_from_json(const std::string& text, const st
     if (!(s > 0) || !std::isfinite(s)) fail("scalers.features.scale", "must be finite and > 0");
   if (!(m.y_scaler.scale[0] > 0) || !std::isfinite(m.y_scaler.scale[0]))
     fail("scalers.drift_dph.scale", "must be finite and > 0");
+  if (version >= 2) {
+    if (m.guard.prototypes.size() != m.guard.settings.prototypes * d || m.guard.prototypes.empty())
+      fail("guard.points", fmt::format("must hold prototypes × {} features numbers", d));
+    if (!(m.guard.radius > 0) || !std::isfinite(m.guard.radius))
+      fail("guard.radius", "must be finite and > 0");
+    for (double v : m.guard.prototypes)
+      if (!std::isfinite(v)) fail("guard.points", "must be finite numbers");
+  }
   const std::size_t regressor_inputs = std::visit(
       [](const auto& r) -> std::size_t {
         if constexpr (std::is_same_v<std::decay_t<decltype(r)>, svr::Model>)
@@ -312,6 +383,61 @@ namespace {
 // The header's streaming part: the causal differentiator (taps of every start-up window length,
 // a buffer of 2W samples per thermometer) and the features in compute_features()'s order, as
 // StreamingCompensator::update() computes them.
+// The novelty guard (guard.hpp) in C: its tables, PREFIX_novelty(features) and
+// PREFIX_target_weight(nu), the same operations in the same order as NoveltyGuard.
+std::string c_guard_part(const CompensationModel& model, const std::string& prefix,
+                         const std::string& upper) {
+  if (model.guard.empty()) return "";
+  const GuardSettings& g = model.guard.settings;
+  std::string h = fmt::format(
+      "/* Novelty guard (fogdrift docs/field.md): nu = distance of the standardised features to\n"
+      " * the nearest of {2} prototypes of the training rows, over the cover radius (every\n"
+      " * training row has nu <= 1). The correction is applied in full up to nu = {3}, to none "
+      "from\n"
+      " * nu = {4}; streaming, the weight falls at once and recovers over {5} s (0: not until\n"
+      " * the next {0}_reset). */\n"
+      "#define {1}_N_GUARD {2}\n",
+      prefix, upper, model.guard.size(), c_number(g.full_at), c_number(g.zero_at),
+      c_number(g.recover_s));
+  h += fmt::format("static const double {}_guard_points[{}] = {{{}}};\n", prefix,
+                   model.guard.prototypes.size(), c_array(model.guard.prototypes));
+  h += fmt::format(
+      "static const double {0}_guard_radius = {1};\n"
+      "static const double {0}_guard_full_at = {2};\n"
+      "static const double {0}_guard_zero_at = {3};\n"
+      "static const double {0}_guard_recover_s = {4};\n\n",
+      prefix, c_number(model.guard.radius), c_number(g.full_at), c_number(g.zero_at),
+      c_number(g.recover_s));
+  h += fmt::format(
+      "/* nu for one row of features in their own units. */\n"
+      "static inline double {0}_novelty(const double features[{1}_N_FEATURES]) {{\n"
+      "  double x[{1}_N_FEATURES], best = HUGE_VAL;\n"
+      "  int i, k;\n"
+      "  for (k = 0; k < {1}_N_FEATURES; ++k)\n"
+      "    x[k] = (features[k] - {0}_feature_mean[k]) / {0}_feature_scale[k];\n"
+      "  for (i = 0; i < {1}_N_GUARD; ++i) {{\n"
+      "    const double* p = {0}_guard_points + i * {1}_N_FEATURES;\n"
+      "    double s = 0.0;\n"
+      "    for (k = 0; k < {1}_N_FEATURES; ++k) {{\n"
+      "      const double e = x[k] - p[k];\n"
+      "      s += e * e;\n"
+      "    }}\n"
+      "    if (s < best) best = s;\n"
+      "  }}\n"
+      "  return sqrt(best) / {0}_guard_radius;\n"
+      "}}\n\n"
+      "/* The share of the correction a sample of novelty nu asks for (0 when nu is not a number). "
+      "*/\n"
+      "static inline double {0}_target_weight(double nu) {{\n"
+      "  if (nu != nu) return 0.0;\n"
+      "  if (nu <= {0}_guard_full_at) return 1.0;\n"
+      "  if (nu >= {0}_guard_zero_at) return 0.0;\n"
+      "  return ({0}_guard_zero_at - nu) / ({0}_guard_zero_at - {0}_guard_full_at);\n"
+      "}}\n\n",
+      prefix, upper);
+  return h;
+}
+
 std::string c_streaming_part(const CompensationModel& model, const std::string& prefix,
                              const std::string& upper, double dt_s) {
   if (!std::isfinite(dt_s)) throw OptionError("stream_dt_s", "must be a finite interval");
@@ -336,6 +462,11 @@ std::string c_streaming_part(const CompensationModel& model, const std::string& 
           : "\n * NOTE: this model was trained with centred rates; streaming applies causal ones, "
             "which\n * lag. Train with --differentiator causal for firmware.");
   h += fmt::format("#define {}_RATE_WINDOW {}\n", upper, w);
+  if (!model.guard.empty())
+    h += fmt::format(
+        "#ifndef {0}_GUARD\n#define {0}_GUARD 1 /* 0: full correction always */\n"
+        "#endif\n",
+        upper);
   h += fmt::format("static const double {}_dt_s = {};\n", prefix, c_number(dt_s));
   h += fmt::format("static const double {}_rate_taps[{}] = {{{}}};\n\n", prefix, taps.size(),
                    c_array(taps));
@@ -344,9 +475,31 @@ std::string c_streaming_part(const CompensationModel& model, const std::string& 
       "  double buffer[3][2 * {1}_RATE_WINDOW]; /* fog, acc1, acc2; newest at size - 1 */\n"
       "  long size;                             /* samples in the buffer */\n"
       "  long count;                            /* samples since power-on */\n"
+      "  double weight;                         /* the guard's weight w, 1 at power-on */\n"
+      "  double last_time_s;                    /* time of the previous sample */\n"
+      "  double novelty;                        /* nu of the last sample (0 without a guard) */\n"
       "}} {0}_state;\n\n"
-      "static inline void {0}_reset({0}_state* s) {{\n  s->size = 0;\n  s->count = 0;\n}}\n\n",
+      "static inline void {0}_reset({0}_state* s) {{\n  s->size = 0;\n  s->count = 0;\n"
+      "  s->weight = 1.0;\n  s->last_time_s = 0.0;\n  s->novelty = 0.0;\n}}\n\n",
       prefix, upper);
+  // With a guard, the weight's recursion (GuardFilter); define PREFIX_GUARD 0 to switch it off.
+  std::string guard;
+  if (!model.guard.empty())
+    guard = fmt::format(
+        "#if {1}_GUARD\n"
+        "  {{\n"
+        "    const double drift = {0}_predict_dph(f);\n"
+        "    const double dt = s->count > 1 ? (time_s - s->last_time_s > 0.0 ? time_s - "
+        "s->last_time_s : 0.0) : 0.0;\n"
+        "    const double v = {0}_target_weight(s->novelty = {0}_novelty(f));\n"
+        "    const double up =\n"
+        "        s->weight + ({0}_guard_recover_s > 0 ? dt / {0}_guard_recover_s : 0.0);\n"
+        "    s->weight = up < v ? up : v;\n"
+        "    s->last_time_s = time_s;\n"
+        "    return {0}_drift_mean_dph + s->weight * (drift - {0}_drift_mean_dph);\n"
+        "  }}\n"
+        "#endif\n",
+        prefix, upper);
   // Feature assignments: FeatureColumn::value() written out in C.
   std::string f;
   const std::vector<FeatureColumn> columns = model.dataset.features.columns();
@@ -403,11 +556,12 @@ std::string c_streaming_part(const CompensationModel& model, const std::string& 
       "    rate[k] = sum / {0}_dt_s;\n"
       "  }}\n"
       "{2}"
+      "{3}"
       "  (void)time_s;\n"
       "  (void)rate;\n"
       "  return {0}_predict_dph(f);\n"
       "}}\n\n",
-      prefix, upper, f);
+      prefix, upper, f, guard);
   return h;
 }
 
@@ -534,6 +688,7 @@ std::string to_c_header(const CompensationModel& model, const std::string& prefi
       "  }}\n"
       "}}\n\n",
       prefix, upper, body);
+  h += c_guard_part(model, prefix, upper);
   if (stream_dt_s > 0) h += c_streaming_part(model, prefix, upper, stream_dt_s);
   h += fmt::format("#endif /* {}_H */\n", upper);
   return h;

@@ -127,5 +127,65 @@ TEST(StreamingCompensator, EqualsTheBatchPath) {
   }
 }
 
+// A start-up unlike the calibration (soaked, where the model saw only the chamber's protocol)
+// trips the novelty guard; the guarded drift is the same in the batch path, the streaming
+// compensator and the compiled C header, and where the weight is 0 the correction is the constant
+// mean drift only.
+TEST(StreamingCompensator, GuardsNovelStartUpsAlikeInEveryPath) {
+  sim::CalibrationOptions co;
+  co.temps_degc = {0, 20, 40};
+  co.repetitions = 2;
+  co.test_repetitions = 0;
+  co.powered_s = 900;
+  const sim::SimulatedCampaign sc = sim::simulate_calibration(sim::Instrument{}, co);
+  std::vector<RecordingInput> inputs;
+  for (std::size_t i = 0; i < sc.recordings.size(); ++i)
+    inputs.push_back(recording_input(sc.campaign, sc.campaign.recordings[i], sc.recordings[i]));
+  DatasetOptions dataset;
+  dataset.preprocessing.rates.causality = signal::Causality::causal;
+  const Dataset data = build_dataset(inputs, dataset);
+  TrainOptions o;
+  o.method = Method::svr;
+  const CompensationModel model = train(data, dataset, o).model;
+  ASSERT_FALSE(model.guard.empty());
+
+  sim::NorthfindOptions no;
+  no.temps_degc = {45};
+  no.findings = 2;
+  no.approach = sim::Approach::soaked;
+  const Recording test = sim::simulate_northfind(sim::Instrument{}, no).recordings.front();
+  const RecordingPrediction batch = model.predict(test);
+  const std::vector<double> unguarded = model.predict_dph(test, false);
+  std::size_t zero = 0;
+  for (std::size_t i = 0; i < test.size(); ++i) {
+    ASSERT_GE(batch.weight[i], 0.0);
+    ASSERT_LE(batch.weight[i], 1.0);
+    if (batch.weight[i] == 0.0) {
+      ++zero;
+      ASSERT_EQ(batch.drift_dph[i], model.y_scaler.mean[0]) << i;
+    }
+    if (batch.weight[i] == 1.0) ASSERT_EQ(batch.drift_dph[i], unguarded[i]) << i;
+  }
+  EXPECT_GT(zero, test.size() / 2) << "the soaked start-up should be novel to this model";
+
+  StreamingCompensator stream(model, 1.0);
+  for (std::size_t i = 0; i < test.size(); ++i) {
+    ASSERT_EQ(stream.update({test.time_s[i], test.gyro_dph[i], test.temp_fog_degc[i],
+                             test.temp_acc1_degc[i], test.temp_acc2_degc[i]}),
+              batch.drift_dph[i])
+        << i;
+    ASSERT_EQ(stream.novelty(), batch.novelty[i]) << i;
+    ASSERT_EQ(stream.weight(), batch.weight[i]) << i;
+  }
+  const std::vector<double> in_c = c_header_stream(model, test);
+  ASSERT_EQ(in_c.size(), test.size());
+  double worst = 0, scale = 0;
+  for (std::size_t i = 0; i < in_c.size(); ++i) {
+    worst = std::max(worst, std::abs(in_c[i] - batch.drift_dph[i]));
+    scale = std::max(scale, std::abs(batch.drift_dph[i]));
+  }
+  EXPECT_LE(worst, 1e-12 * scale);
+}
+
 }  // namespace
 }  // namespace fogdrift

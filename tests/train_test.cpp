@@ -20,6 +20,7 @@ TrainOptions quick(Method method, ThreadPool* pool = nullptr) {
   o.tune.optimizer.run.population = 8;
   o.tune.optimizer.run.iterations = 5;
   o.tune.space.c_max = 10;
+  o.tune.cv = {tune::CvScheme::repetition};  // the synthetic data's repetitions, as written
   o.tune.pool = pool;
   o.mlp.max_epochs = 500;
   return o;
@@ -71,16 +72,22 @@ TEST(Train, OneSeedOneFileWhateverTheThreadCount) {
   }
 }
 
-TEST(Train, BpStopsOnARepetitionEvenWithTemperatureFolds) {
-  // BP is not refitted after early stopping: a fold of whole temperatures would leave them out
-  // of its training, so it holds out a repetition instead, as with the automatic folds.
+TEST(Train, BpStopsOnRecordingsDealtAcrossTemperaturesAndRepetitions) {
+  // BP is not refitted after early stopping: a fold of whole temperatures (or a repetition that
+  // is a start-up condition of its own) would leave them out of its training, so with temperature
+  // or automatic folds it holds out a third of the recordings, dealt across both.
   const Dataset d = test::synthetic();
-  TrainOptions by_temperature = quick(Method::bp);
+  TrainOptions by_temperature = quick(Method::bp), automatic = quick(Method::bp),
+               by_recording = quick(Method::bp);
   by_temperature.tune.cv = {tune::CvScheme::temperature, 2};
+  automatic.tune.cv = {};
+  by_recording.tune.cv = {tune::CvScheme::recording, 3};
   const TrainResult t = train(d, {}, by_temperature);
-  const TrainResult a = train(d, {}, quick(Method::bp));
-  EXPECT_EQ(to_json(t.model), to_json(a.model));
-  EXPECT_EQ(t.model.provenance.cv, "early stopping on repetition 3");
+  EXPECT_EQ(to_json(t.model), to_json(train(d, {}, automatic).model));
+  EXPECT_EQ(to_json(t.model), to_json(train(d, {}, by_recording).model));
+  EXPECT_EQ(t.model.provenance.cv, "early stopping on recordings 3/3");
+  // Asked for, a repetition it is.
+  EXPECT_EQ(train(d, {}, quick(Method::bp)).model.provenance.cv, "early stopping on repetition 3");
 }
 
 TEST(ModelFile, RoundTripsExactly) {
@@ -114,7 +121,7 @@ TEST(ModelFile, RejectsWhatItCannotRead) {
     change(j);
     return j.dump();
   };
-  EXPECT_NE(error_of(edit([](auto& j) { j["version"] = 2; })).find("written by a newer fogdrift"),
+  EXPECT_NE(error_of(edit([](auto& j) { j["version"] = 3; })).find("written by a newer fogdrift"),
             std::string::npos);
   EXPECT_NE(error_of(edit([](auto& j) { j["format"] = "fogdrift-svr"; })).find("m.json: format"),
             std::string::npos);
@@ -128,6 +135,23 @@ TEST(ModelFile, RejectsWhatItCannotRead) {
             std::string::npos);
   EXPECT_NE(error_of(edit([](auto& j) { j["regressor"]["type"] = "forest"; })).find("forest"),
             std::string::npos);
+  // The novelty guard (format version 2): its points must fit the features, its policy its rules.
+  EXPECT_NE(
+      error_of(edit([](auto& j) { j["guard"]["points"].push_back(0.5); })).find("guard.points"),
+      std::string::npos);
+  EXPECT_NE(error_of(edit([](auto& j) { j["guard"]["radius"] = 0; })).find("guard.radius"),
+            std::string::npos);
+  EXPECT_NE(error_of(edit([](auto& j) { j["guard"]["zero_at"] = 1.5; })).find("guard.zero_at"),
+            std::string::npos);
+  EXPECT_NE(error_of(edit([](auto& j) { j["guard"].erase("recover_s"); })).find("m.json: guard"),
+            std::string::npos);
+  // A version-1 file (before the guard) still loads, and compensates unguarded.
+  const CompensationModel v1 = compensation_model_from_json(edit([](auto& j) {
+                                                              j["version"] = 1;
+                                                              j.erase("guard");
+                                                            }),
+                                                            "v1.json");
+  EXPECT_TRUE(v1.guard.empty());
   EXPECT_NE(error_of(edit([](auto& j) { j["provenance"].erase("seed"); })).find("provenance"),
             std::string::npos);
   EXPECT_NE(error_of(edit([](auto& j) { j["features"]["spec"] = "T,bogus"; })).find("features"),

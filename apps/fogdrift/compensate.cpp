@@ -1,6 +1,7 @@
 // fogdrift compensate: subtract a model's predicted drift from a recording (METHOD.md §2 step 5).
 #include <fmt/format.h>
 
+#include <cmath>
 #include <iostream>
 #include <memory>
 #include <nlohmann/json.hpp>
@@ -21,18 +22,21 @@ struct CompensateArgs {
   std::string output;
   bool json = false;
   bool quiet = false;
+  bool no_guard = false;
 };
 
 void run(const CompensateArgs& a) {
   const CompensationModel model = load_compensation_model(a.model);
   const csv::Table table = csv::read(a.input);
-  for (const char* name : {"drift_dph", "gyro_comp_dph"})
+  for (const char* name : {"drift_dph", "gyro_comp_dph", "novelty", "guard_weight"})
     if (table.find(name))
       throw InputError(
           table.file, 1, *table.find(name) + 1,
           fmt::format("already has a {} column; compensate the original recording", name));
   const Recording recording = read_recording(a.input);
-  const std::vector<double> drift = model.predict_dph(recording);
+  const RecordingPrediction prediction = model.predict(recording, !a.no_guard);
+  const std::vector<double>& drift = prediction.drift_dph;
+  const NoveltySummary novelty = summarize_novelty(prediction.novelty, prediction.weight);
   std::vector<double> compensated(drift.size());
   for (std::size_t i = 0; i < drift.size(); ++i) compensated[i] = recording.gyro_dph[i] - drift[i];
 
@@ -44,13 +48,14 @@ void run(const CompensateArgs& a) {
     }
   };
   add_fields(table.header);
-  text += "drift_dph,gyro_comp_dph\n";
+  text += "drift_dph,gyro_comp_dph,novelty,guard_weight\n";
   for (std::size_t i = 0; i < table.rows.size(); ++i) {
     add_fields(table.rows[i]);
-    text += csv::format_number(drift[i]);
-    text += ',';
-    text += csv::format_number(compensated[i]);
-    text += '\n';
+    for (double v : {drift[i], compensated[i], prediction.novelty[i], prediction.weight[i]}) {
+      text += csv::format_number(v);
+      text += ',';
+    }
+    text.back() = '\n';
   }
   write_text_atomically(a.output, text);
   // STD of the gyro before and after (gyro − drift), as evaluate computes them.
@@ -67,15 +72,25 @@ void run(const CompensateArgs& a) {
     j["gyro_comp_std_dph"] = m.std_after_dph;
     j["drift_first_dph"] = drift.front();
     j["drift_last_dph"] = drift.back();
+    j["guard"] = !a.no_guard;
+    j["novelty_outside_share"] =
+        static_cast<double>(novelty.outside) / static_cast<double>(novelty.samples);
+    j["novelty_reduced_share"] =
+        static_cast<double>(novelty.reduced) / static_cast<double>(novelty.samples);
+    j["novelty_max"] = std::isnan(novelty.max_novelty)
+                           ? nlohmann::ordered_json(nullptr)
+                           : nlohmann::ordered_json(novelty.max_novelty);
     std::cout << j.dump(2) << "\n";
   } else if (!a.quiet) {
     std::cout << fmt::format(
         "{}: {} samples compensated with {} ({})\n"
         "  predicted drift {:.4f} → {:.4f} °/h from first to last sample\n"
         "  gyro STD {:.4f} °/h, compensated {:.4f} °/h (sample rate, noise included)\n"
+        "  {}{}\n"
         "  wrote {}\n",
         a.input, drift.size(), a.model, to_string(model.provenance.method), drift.front(),
-        drift.back(), m.std_before_dph, m.std_after_dph, a.output);
+        drift.back(), m.std_before_dph, m.std_after_dph, novelty.line(),
+        a.no_guard ? " (guard off: full correction everywhere)" : "", a.output);
   }
 }
 
@@ -87,8 +102,13 @@ void add_compensate(CLI::App& app) {
       "compensate",
       "Subtract a compensation model's predicted drift from a recording. Every column of IN is\n"
       "written back as read, followed by drift_dph (the predicted drift, °/h) and gyro_comp_dph\n"
-      "(gyro_dph − drift_dph). The features are computed at the recording's own rate with the\n"
-      "model's differentiator, so the output has one row per input row.\n"
+      "(gyro_dph − drift_dph), novelty (how far the sample's inputs lie outside the region the\n"
+      "model was trained on: ≤ 1 inside) and guard_weight (the share of the correction applied).\n"
+      "Where novelty exceeds the model's full_at the correction is reduced, to none at zero_at, "
+      "so\n"
+      "that a model that is extrapolating cannot make a start-up worse than uncompensated\n"
+      "(docs/field.md); --no-guard applies it in full. The features are computed at the\n"
+      "recording's own rate with the model's differentiator: one output row per input row.\n"
       "Example:\n"
       "  fogdrift train cal -o model.json && fogdrift compensate model.json cal/cal_r4_20C.csv "
       "-o comp.csv");
@@ -97,6 +117,8 @@ void add_compensate(CLI::App& app) {
   cmd->add_option("-o,--output", args->output, "CSV to write (atomically)")->required();
   cmd->add_flag("--json", args->json, "Print a summary as JSON");
   cmd->add_flag("-q,--quiet", args->quiet, "Print nothing on success");
+  cmd->add_flag("--no-guard", args->no_guard,
+                "Apply the model's full correction even where its inputs are novel");
   cmd->callback([args] { run(*args); });
 }
 

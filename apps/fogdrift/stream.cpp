@@ -24,6 +24,7 @@ struct StreamArgs {
   std::string model;
   std::string input = "-";
   double rate_hz = 0;
+  bool no_guard = false;
 };
 
 std::vector<std::string> split(const std::string& line) {
@@ -42,7 +43,7 @@ void run(const StreamArgs& a) {
     throw OptionError("--rate-hz", fmt::format("{} is outside (0, 1000] Hz", a.rate_hz));
   const CompensationModel model = load_compensation_model(a.model);
   const double dt_s = 1.0 / a.rate_hz;
-  StreamingCompensator compensator(model, dt_s);
+  StreamingCompensator compensator(model, dt_s, !a.no_guard);
 
   std::ifstream file;
   if (a.input != "-") {
@@ -64,11 +65,11 @@ void run(const StreamArgs& a) {
       throw InputError(name, 1, 0, fmt::format("has no {} column", kNeeded[k]));
     column[k] = static_cast<std::size_t>(it - header.begin());
   }
-  for (const char* added : {"drift_dph", "gyro_comp_dph"})
+  for (const char* added : {"drift_dph", "gyro_comp_dph", "novelty", "guard_weight"})
     if (std::find(header.begin(), header.end(), added) != header.end())
       throw InputError(
           name, 1, 0, fmt::format("already has a {} column; stream the original recording", added));
-  std::cout << line << ",drift_dph,gyro_comp_dph\n" << std::flush;
+  std::cout << line << ",drift_dph,gyro_comp_dph,novelty,guard_weight\n" << std::flush;
 
   std::size_t line_no = 1;
   double previous_time = std::nan("");
@@ -97,7 +98,8 @@ void run(const StreamArgs& a) {
     previous_time = v[0];
     const double drift = compensator.update({v[0], v[1], v[2], v[3], v[4]});
     std::cout << line << ',' << csv::format_number(drift) << ',' << csv::format_number(v[1] - drift)
-              << '\n'
+              << ',' << csv::format_number(compensator.novelty()) << ','
+              << csv::format_number(compensator.weight()) << '\n'
               << std::flush;
   }
 }
@@ -109,9 +111,12 @@ void add_stream(CLI::App& app) {
   auto* cmd = app.add_subcommand(
       "stream",
       "Compensate samples as they arrive: read a recording's CSV line by line from a file or\n"
-      "standard input, and write each line to standard output at once with drift_dph and\n"
-      "gyro_comp_dph appended. The features are computed causally, sample by sample, as the\n"
-      "firmware of export-c --stream-rate-hz does; train the model with --differentiator causal.\n"
+      "standard input, and write each line to standard output at once with drift_dph,\n"
+      "gyro_comp_dph, novelty and guard_weight appended (as fogdrift compensate writes them). The\n"
+      "features are computed causally, sample by sample, as the firmware of export-c\n"
+      "--stream-rate-hz does; train the model with --differentiator causal. Where the inputs are\n"
+      "novel to the model the correction is reduced (docs/field.md); --no-guard switches that "
+      "off.\n"
       "A sample whose time step is off the fixed interval stops the stream with its line.\n"
       "Examples:\n"
       "  logger | fogdrift stream causal.json --rate-hz 1 > compensated.csv\n"
@@ -120,6 +125,8 @@ void add_stream(CLI::App& app) {
   cmd->add_option("input", args->input, "Recording CSV, or - for standard input")
       ->capture_default_str();
   cmd->add_option("--rate-hz", args->rate_hz, "The logger's fixed sample rate, Hz")->required();
+  cmd->add_flag("--no-guard", args->no_guard,
+                "Apply the model's full correction even where its inputs are novel");
   cmd->callback([args] { run(*args); });
 }
 

@@ -32,18 +32,26 @@ struct Sample {
 class StreamingCompensator {
  public:
   /// `dt_s` is the logger's sample interval (the differentiator's taps depend on it).
-  StreamingCompensator(const CompensationModel& model, double dt_s);
+  StreamingCompensator(const CompensationModel& model, double dt_s, bool guarded = true);
 
-  /// The predicted drift at this sample, °/h; compensated output = s.gyro_dph − drift.
+  /// The predicted drift at this sample, °/h, guarded unless the constructor said otherwise
+  /// (guard.hpp); compensated output = s.gyro_dph − drift.
   double update(const Sample& s) noexcept;
   /// Starts again, as at power-on.
   void reset() noexcept;
+  /// ν and w of the last update (NaN and 1 without a guard in the model).
+  double novelty() const noexcept { return last_.novelty; }
+  double weight() const noexcept { return weight_; }
 
  private:
   const CompensationModel& model_;
   std::array<signal::CausalDifferentiator, 3> rates_;
   std::vector<FeatureColumn> columns_;  // the model's inputs (FeatureSpec::columns())
   std::vector<double> features_, work_;
+  bool guarded_;
+  GuardFilter filter_;
+  DriftPrediction last_;
+  double weight_ = 1.0;
 };
 
 }  // namespace fogdrift

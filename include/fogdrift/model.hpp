@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "fogdrift/dataset.hpp"
+#include "fogdrift/guard.hpp"
 #include "fogdrift/mlp.hpp"
 #include "fogdrift/poly.hpp"
 #include "fogdrift/svr/svr.hpp"
@@ -50,6 +51,20 @@ struct Provenance {
   std::string fogdrift_version;
 };
 
+/// One sample's drift as the model predicts it, with the novelty guard's view of it (guard.hpp).
+struct DriftPrediction {
+  double drift_dph = 0;      ///< f(x), the model's drift, °/h, unguarded
+  double novelty = 0;        ///< ν of the sample's inputs; NaN when the model has no guard
+  double target_weight = 1;  ///< v for that ν (1 without a guard)
+};
+
+/// Drift at every sample of a recording, with the guard's view of each.
+struct RecordingPrediction {
+  std::vector<double> drift_dph;  ///< the drift to subtract, °/h (guarded when asked)
+  std::vector<double> novelty;    ///< ν per sample (NaN without a guard)
+  std::vector<double> weight;     ///< w per sample, the share of the correction applied
+};
+
 struct CompensationModel {
   DatasetOptions dataset;  ///< features, preprocessing and target settings
   std::vector<std::string> feature_names;
@@ -57,20 +72,32 @@ struct CompensationModel {
   Standardizer y_scaler;  ///< one column, "drift_dph"
   std::variant<svr::Model, Mlp, Poly> regressor;
   Provenance provenance;
+  /// The region of feature space the model was trained on (guard.hpp); empty in files written
+  /// before format version 2, which then compensate unguarded.
+  NoveltyGuard guard;
 
   std::size_t inputs() const { return feature_names.size(); }
-  /// Drift in °/h for one row of features in their own units; `work` holds inputs() doubles.
+  /// One row of features in their own units, unguarded; `work` holds inputs() doubles.
+  DriftPrediction predict(std::span<const double> features, std::span<double> work) const;
+  /// predict(...).drift_dph.
   double predict_dph(std::span<const double> features, std::span<double> work) const;
-  /// Drift for every row of a dataset built with this model's DatasetOptions.
-  std::vector<double> predict_dph(const Dataset& data) const;
+  /// ȳ + w·(f − ȳ): a drift f with the share w of its correction applied (guard.hpp).
+  double guarded_dph(double drift_dph, double weight) const noexcept;
+  /// Drift for every row of a dataset built with this model's DatasetOptions; with `guarded`
+  /// the guard's weight runs over each recording's rows in order (GuardFilter).
+  std::vector<double> predict_dph(const Dataset& data, bool guarded = true) const;
   /// Drift at every sample of a recording, °/h: the features are computed at the recording's own
   /// rate (blocks of one sample) with the model's differentiator, so the compensated output
   /// keeps the recording's rate. Throws InputError naming the recording when it is too short
-  /// for the differentiator or not uniformly sampled.
-  std::vector<double> predict_dph(const Recording& recording) const;
+  /// for the differentiator or not uniformly sampled. With `guarded` (and a guard in the model)
+  /// the correction is reduced where the inputs are novel, causally (guard.hpp).
+  RecordingPrediction predict(const Recording& recording, bool guarded = true) const;
+  /// predict(recording, guarded).drift_dph.
+  std::vector<double> predict_dph(const Recording& recording, bool guarded = true) const;
 };
 
-inline constexpr int kCompensationModelVersion = 1;
+/// Version 2 adds the novelty guard; version 1 files still load (unguarded).
+inline constexpr int kCompensationModelVersion = 2;
 
 std::string to_json(const CompensationModel& model);
 /// Parses to_json's text; `source` names it in errors. A newer version, another format, a

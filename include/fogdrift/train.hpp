@@ -5,8 +5,10 @@
 //                              ε = 0.1;
 //   bp                         one-hidden-layer tanh network (mlp.hpp), early-stopped on the
 //                              held-out recordings of the last grouped fold; not refitted, so
-//                              temperature folds are replaced by the automatic scheme (a
-//                              held-out repetition), which keeps every temperature in training;
+//                              unless repetition or recording folds are asked for it holds out
+//                              a third of the recordings dealt across temperatures and
+//                              repetitions, which keeps every temperature and start-up
+//                              condition in training;
 //   poly                       polynomial in the features, degree 1 … max chosen by grouped CV.
 // Every method reports a fitness on the standardised target: the tuner's (cv or train) for the
 // SVRs, the validation RMSE for BP, the CV RMSE of the chosen degree for the polynomial.
@@ -28,6 +30,8 @@ struct TrainOptions {
   /// svr: fit with these instead of LIBSVM's defaults (a study refitting a tuned SVR on other
   /// rows); the tolerance is tune.tolerance.
   std::optional<svr::Params> svr_params;
+  /// The novelty guard fitted to the training rows and stored in the model (guard.hpp).
+  GuardSettings guard;
 };
 
 struct TrainSummary {

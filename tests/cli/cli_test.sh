@@ -204,7 +204,7 @@ check "train help lists methods" out_has "ssa-svr  ε-SVR, C and σ tuned by spa
 check "train ssa-svr" run 0 "$fd" train "$work/small" --population 5 --iterations 2 --c-max 10 \
   --threads 1 -o "$work/m1.json"
 check "train prints the fitness" out_has "cv RMSE"
-check "train names the folds" out_has "leave one repetition out (3 folds)"
+check "train names the folds" out_has "whole initial temperatures (3 folds)"
 check "train again on two threads" run 0 "$fd" train "$work/small" --population 5 --iterations 2 \
   --c-max 10 --threads 2 -q -o "$work/m2.json"
 check "one seed, one model file" cmp "$work/m1.json" "$work/m2.json"
@@ -277,8 +277,12 @@ check "mixed message" err_has "is a campaign"
 check "compensate" run 0 "$fd" compensate "$work/svr.json" "$work/small/cal_r4_20C.csv" -o "$work/comp.csv"
 check "compensate summary" out_has "samples compensated with"
 check "one output row per input row" test "$(wc -l <"$work/comp.csv")" -eq "$(wc -l <"$work/small/cal_r4_20C.csv")"
-check "drift columns appended" bash -c "head -1 '$work/comp.csv' | grep -q ',drift_dph,gyro_comp_dph\$'"
-check "gyro_comp = gyro - drift" awk -F, 'NR>1{d=$2-$(NF-1)-$NF; if(d<0)d=-d; if(d>1e-9) bad=1} END{exit bad}' "$work/comp.csv"
+check "drift columns appended" bash -c "head -1 '$work/comp.csv' | grep -q ',drift_dph,gyro_comp_dph,novelty,guard_weight\$'"
+check "gyro_comp = gyro - drift" awk -F, 'NR>1{d=$2-$(NF-3)-$(NF-2); if(d<0)d=-d; if(d>1e-9) bad=1} END{exit bad}' "$work/comp.csv"
+check "guard weights within [0, 1]" awk -F, 'NR>1{if($NF<0||$NF>1||$(NF-1)<0) bad=1} END{exit bad}' "$work/comp.csv"
+check "compensate names the novelty" out_has "novelty: "
+check "compensate without the guard" run 0 "$fd" compensate "$work/svr.json" "$work/small/cal_r4_20C.csv" -o "$work/comp_ng.csv" --no-guard
+check "unguarded weights are 1" awk -F, 'NR>1{if($NF!=1) bad=1} END{exit bad}' "$work/comp_ng.csv"
 check "input columns kept as read" bash -c "cut -d, -f1-10 '$work/comp.csv' | diff -q - '$work/small/cal_r4_20C.csv'"
 check "compensating a compensated file" run 1 "$fd" compensate "$work/svr.json" "$work/comp.csv" -o "$work/comp2.csv"
 check "already-compensated message" err_has "comp.csv:1:11: already has a drift_dph column"

@@ -1,0 +1,149 @@
+#include "fogdrift/guard.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "fogdrift/error.hpp"
+
+namespace fogdrift {
+namespace {
+
+double squared_distance(const double* a, const double* b, std::size_t d) noexcept {
+  double s = 0;
+  for (std::size_t k = 0; k < d; ++k) {
+    const double e = a[k] - b[k];
+    s += e * e;
+  }
+  return s;
+}
+
+// The 90th percentile over (at most kSpacingRows evenly spread) rows of the distance to the
+// nearest such row of another label; 0 with fewer than two labels.
+double spacing_of_labels(std::span<const double> z, std::size_t dims,
+                         std::span<const std::size_t> labels) {
+  constexpr std::size_t kSpacingRows = 4000;
+  const std::size_t n = labels.size();
+  const std::size_t step = (n + kSpacingRows - 1) / kSpacingRows;
+  std::vector<std::size_t> rows;
+  for (std::size_t i = 0; i < n; i += step) rows.push_back(i);
+  std::vector<double> nearest;
+  for (std::size_t i : rows) {
+    double best = std::numeric_limits<double>::infinity();
+    for (std::size_t j : rows)
+      if (labels[j] != labels[i])
+        best = std::min(best, squared_distance(z.data() + i * dims, z.data() + j * dims, dims));
+    if (std::isfinite(best)) nearest.push_back(std::sqrt(best));
+  }
+  if (nearest.empty()) return 0.0;
+  const auto at = nearest.begin() + static_cast<std::ptrdiff_t>(0.9 * double(nearest.size() - 1));
+  std::nth_element(nearest.begin(), at, nearest.end());
+  return *at;
+}
+
+}  // namespace
+
+void validate(const GuardSettings& s) {
+  if (s.prototypes < 1 || s.prototypes > 4096)
+    throw OptionError("guard.prototypes", fmt::format("{} is outside [1, 4096]", s.prototypes));
+  if (!(s.full_at > 0.0) || !std::isfinite(s.full_at))
+    throw OptionError("guard.full_at", fmt::format("{} must be finite and > 0", s.full_at));
+  if (!(s.zero_at > s.full_at) || !std::isfinite(s.zero_at))
+    throw OptionError("guard.zero_at", fmt::format("{} must be greater than guard.full_at ({})",
+                                                   s.zero_at, s.full_at));
+  if (!(s.recover_s >= 0) || !std::isfinite(s.recover_s))
+    throw OptionError(
+        "guard.recover_s",
+        fmt::format("{} s must be finite and ≥ 0 (0: latched until power-on)", s.recover_s));
+}
+
+NoveltyGuard NoveltyGuard::fit(std::span<const double> z, std::size_t dims,
+                               std::span<const std::size_t> labels, const GuardSettings& settings) {
+  validate(settings);
+  if (dims == 0 || z.size() < dims || z.size() % dims != 0)
+    throw OptionError("guard", "needs at least one training row of the model's inputs");
+  const std::size_t n = z.size() / dims;
+  NoveltyGuard g;
+  g.settings = settings;
+  g.settings.prototypes = std::min(settings.prototypes, z.size() / dims);
+  g.dims = dims;
+  // Farthest-point sampling: nearest[i] is row i's squared distance to the prototypes so far.
+  std::vector<double> nearest(n, std::numeric_limits<double>::infinity());
+  std::size_t next = 0;
+  const std::size_t k_max = std::min(settings.prototypes, n);
+  for (std::size_t k = 0; k < k_max; ++k) {
+    const double* p = z.data() + next * dims;
+    g.prototypes.insert(g.prototypes.end(), p, p + dims);
+    std::size_t farthest = 0;
+    double farthest_d2 = -1;
+    for (std::size_t i = 0; i < n; ++i) {
+      nearest[i] = std::min(nearest[i], squared_distance(z.data() + i * dims, p, dims));
+      if (nearest[i] > farthest_d2) farthest_d2 = nearest[i], farthest = i;
+    }
+    next = farthest;
+    g.radius = std::sqrt(farthest_d2);
+  }
+  if (!labels.empty()) {
+    if (labels.size() != n) throw OptionError("guard", "needs one label per training row");
+    g.radius = std::max(g.radius, spacing_of_labels(z, dims, labels));
+  }
+  // With as many prototypes as rows (or repeated rows) the cover radius is 0; a floor keeps ν
+  // finite and says "only these points" (1e-3 standard deviations).
+  g.radius = std::max(g.radius, 1e-3);
+  return g;
+}
+
+double NoveltyGuard::novelty(std::span<const double> z) const noexcept {
+  double best = std::numeric_limits<double>::infinity();
+  for (std::size_t k = 0; k < size(); ++k)
+    best = std::min(best, squared_distance(z.data(), prototypes.data() + k * dims, dims));
+  return std::sqrt(best) / radius;
+}
+
+double NoveltyGuard::target_weight(double nu) const noexcept {
+  if (std::isnan(nu)) return 0.0;  // inputs that are not numbers: no correction
+  if (nu <= settings.full_at) return 1.0;
+  if (nu >= settings.zero_at) return 0.0;
+  return (settings.zero_at - nu) / (settings.zero_at - settings.full_at);
+}
+
+double GuardFilter::update(double time_s, double v, double recover_s) noexcept {
+  const double dt = started_ ? std::max(0.0, time_s - last_time_s_) : 0.0;
+  weight_ = std::min(v, weight_ + (recover_s > 0 ? dt / recover_s : 0.0));
+  last_time_s_ = time_s;
+  started_ = true;
+  return weight_;
+}
+
+}  // namespace fogdrift
+
+namespace fogdrift {
+
+NoveltySummary summarize_novelty(std::span<const double> novelty, std::span<const double> weight) {
+  NoveltySummary s;
+  s.samples = novelty.size();
+  for (std::size_t i = 0; i < novelty.size(); ++i) {
+    if (std::isnan(novelty[i])) {
+      s.max_novelty = novelty[i];
+      continue;
+    }
+    if (novelty[i] > 1.0) ++s.outside;
+    if (i < weight.size() && weight[i] < 1.0) ++s.reduced;
+    if (!std::isnan(s.max_novelty)) s.max_novelty = std::max(s.max_novelty, novelty[i]);
+  }
+  return s;
+}
+
+std::string NoveltySummary::line() const {
+  if (std::isnan(max_novelty)) return "novelty: the model has no guard (format version 1)";
+  const double n = samples ? static_cast<double>(samples) : 1.0;
+  return fmt::format(
+      "novelty: {:.1f} % of {} samples outside the training region (max {:.2f}), correction "
+      "reduced on {:.1f} %",
+      100.0 * static_cast<double>(outside) / n, samples, max_novelty,
+      100.0 * static_cast<double>(reduced) / n);
+}
+
+}  // namespace fogdrift

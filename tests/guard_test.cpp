@@ -1,0 +1,114 @@
+#include "fogdrift/guard.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <vector>
+
+#include "fogdrift/error.hpp"
+#include "fogdrift/random.hpp"
+
+namespace fogdrift {
+namespace {
+
+// Farthest-point sampling on 0, 1, …, 10 (one dimension) with three prototypes picks 0, then 10,
+// then 5 (the farthest from {0, 10}); the cover radius is then 2.
+TEST(NoveltyGuard, FarthestPointsAndCoverRadiusInClosedForm) {
+  std::vector<double> z;
+  for (int i = 0; i <= 10; ++i) z.push_back(i);
+  GuardSettings s;
+  s.prototypes = 3;
+  const NoveltyGuard g = NoveltyGuard::fit(z, 1, {}, s);
+  EXPECT_EQ(g.prototypes, (std::vector<double>{0, 10, 5}));
+  EXPECT_DOUBLE_EQ(g.radius, 2.0);  // 2 → 0 is 2, 3 → 5 is 2, 7 → 5 is 2, 8 → 10 is 2
+  const double outside[] = {16.0};
+  EXPECT_DOUBLE_EQ(g.novelty(outside), 3.0);  // 6 from 10, over r = 2
+}
+
+TEST(NoveltyGuard, EveryTrainingRowIsInside) {
+  Rng rng(7);
+  std::vector<double> z(3000 * 4);
+  for (double& v : z) v = rng.normal();
+  const NoveltyGuard g = NoveltyGuard::fit(z, 4, {}, {});
+  EXPECT_EQ(g.size(), 256u);
+  for (std::size_t i = 0; i < 3000; ++i)
+    ASSERT_LE(g.novelty(std::span<const double>(z.data() + 4 * i, 4)), 1.0 + 1e-12) << i;
+  const double far[] = {8, 8, 8, 8};
+  EXPECT_GT(g.novelty(far), 3.0);
+}
+
+// The unit follows the labels' spacing: two parallel lines 4 apart, one per label, each sampled
+// every 0.01: every row's nearest row of the other label is 4 away, so r = 4 (and not the cover
+// radius of the prototypes), and a point midway between the lines has ν = 0.5.
+TEST(NoveltyGuard, UnitIsTheSpacingBetweenLabels) {
+  std::vector<double> z;
+  std::vector<std::size_t> labels;
+  for (std::size_t line = 0; line < 2; ++line)
+    for (int i = 0; i <= 100; ++i) {
+      z.push_back(0.01 * i);
+      z.push_back(4.0 * static_cast<double>(line));
+      labels.push_back(line);
+    }
+  const NoveltyGuard g = NoveltyGuard::fit(z, 2, labels, {});
+  EXPECT_DOUBLE_EQ(g.radius, 4.0);
+  const double midway[] = {0.5, 2.0};
+  EXPECT_DOUBLE_EQ(g.novelty(midway), 0.5);
+  EXPECT_THROW(NoveltyGuard::fit(z, 2, std::span<const std::size_t>(labels).first(3), {}),
+               OptionError);
+}
+
+TEST(NoveltyGuard, PolicyIsFullThenLinearThenNone) {
+  NoveltyGuard g;
+  g.settings.full_at = 1;
+  g.settings.zero_at = 2;
+  EXPECT_EQ(g.target_weight(0.5), 1.0);
+  EXPECT_EQ(g.target_weight(1.0), 1.0);
+  EXPECT_DOUBLE_EQ(g.target_weight(1.25), 0.75);
+  EXPECT_EQ(g.target_weight(2.0), 0.0);
+  EXPECT_EQ(g.target_weight(50.0), 0.0);
+  EXPECT_EQ(g.target_weight(std::nan("")), 0.0);
+}
+
+// The weight falls at once and recovers by at most dt / recover_s per sample.
+TEST(GuardFilter, FallsAtOnceRecoversAtItsRate) {
+  GuardFilter f;
+  EXPECT_EQ(f.update(0.0, 1.0, 100.0), 1.0);
+  EXPECT_EQ(f.update(1.0, 0.0, 100.0), 0.0);
+  EXPECT_DOUBLE_EQ(f.update(2.0, 1.0, 100.0), 0.01);
+  EXPECT_DOUBLE_EQ(f.update(12.0, 1.0, 100.0), 0.11);
+  EXPECT_DOUBLE_EQ(f.update(13.0, 0.05, 100.0), 0.05);
+  EXPECT_DOUBLE_EQ(f.update(12.0, 1.0, 100.0), 0.05);  // time going back: no recovery
+  f.reset();
+  EXPECT_EQ(f.update(500.0, 0.3, 100.0), 0.3);
+  // recover_s = 0: latched at its lowest until reset.
+  f.reset();
+  EXPECT_EQ(f.update(0.0, 0.4, 0.0), 0.4);
+  EXPECT_EQ(f.update(1000.0, 1.0, 0.0), 0.4);
+  EXPECT_EQ(f.update(2000.0, 0.1, 0.0), 0.1);
+}
+
+TEST(NoveltyGuard, RejectsImpossibleSettings) {
+  auto option_of = [](GuardSettings s) {
+    try {
+      validate(s);
+    } catch (const OptionError& e) {
+      return e.option();
+    }
+    return std::string("(none)");
+  };
+  GuardSettings s;
+  s.prototypes = 0;
+  EXPECT_EQ(option_of(s), "guard.prototypes");
+  s = {};
+  s.full_at = 0;
+  EXPECT_EQ(option_of(s), "guard.full_at");
+  s = {};
+  s.zero_at = s.full_at;
+  EXPECT_EQ(option_of(s), "guard.zero_at");
+  s = {};
+  s.recover_s = -1;
+  EXPECT_EQ(option_of(s), "guard.recover_s");
+}
+
+}  // namespace
+}  // namespace fogdrift
