@@ -90,10 +90,14 @@ TrainResult train(const Dataset& data, const DatasetOptions& dataset, const Trai
     }
     case Method::bp: {
       // Early stopping on the held-out recordings of the last grouped fold. BP is not refitted
-      // after it, so whole temperatures held out would never be trained on: with temperature
-      // folds, it holds out a repetition (or, with one repetition, recordings) instead.
+      // after it, so what the fold holds out is never trained on: it must be like the rest. Whole
+      // temperatures, or a repetition that is a start-up condition of its own (a protocol of
+      // mixed start-ups), would stop it on data it cannot fit (measured: best epoch 2). So
+      // unless repetition or recording folds are asked for, it holds out a third of the
+      // recordings, dealt across temperatures and repetitions.
       tune::CvOptions stop = options.tune.cv;
-      if (stop.scheme == tune::CvScheme::temperature) stop = tune::CvOptions{};
+      if (stop.scheme == tune::CvScheme::temperature || stop.scheme == tune::CvScheme::automatic)
+        stop = {tune::CvScheme::recording, 3};
       const auto folds = tune::grouped_folds(data, stop);
       const tune::Fold& f = folds.back();
       const tune::ScaledSplit split = tune::scale_split(data, f.train_rows, f.test_rows);
@@ -147,6 +151,19 @@ TrainResult train(const Dataset& data, const DatasetOptions& dataset, const Trai
       break;
     }
   }
+  // The guard's region: every training row, standardised as the regressor sees it, its unit
+  // set by the spacing of the calibration temperatures (guard.hpp).
+  std::vector<double> z = data.x;
+  m.x_scaler.apply(z);
+  std::vector<double> temps;
+  for (const GroupInfo& g : data.groups) temps.push_back(g.initial_temp_degc);
+  std::vector<std::size_t> labels(data.rows);
+  for (std::size_t i = 0; i < data.rows; ++i) {
+    std::size_t k = 0;
+    while (temps[k] != temps[data.group[i]]) ++k;  // the first group of the same temperature
+    labels[i] = k;
+  }
+  m.guard = NoveltyGuard::fit(z, data.cols(), labels, options.guard);
   p.fitness = s.fitness;
   p.fitness_value = s.fitness_value;
   p.hyperparameters = s.hyperparameters;

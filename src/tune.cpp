@@ -73,9 +73,14 @@ std::vector<Fold> grouped_folds(const Dataset& data, const CvOptions& options) {
   std::set<int> repetitions;
   for (std::size_t g : groups) repetitions.insert(data.groups[g].repetition);
 
+  std::set<double> temperatures;
+  for (std::size_t g : groups) temperatures.insert(data.groups[g].initial_temp_degc);
+
   CvScheme scheme = options.scheme;
   if (scheme == CvScheme::automatic)
-    scheme = repetitions.size() >= 2 ? CvScheme::repetition : CvScheme::recording;
+    scheme = temperatures.size() >= std::max<std::size_t>(3, options.folds) ? CvScheme::temperature
+             : repetitions.size() >= 2                                      ? CvScheme::repetition
+                                                                            : CvScheme::recording;
 
   std::vector<std::size_t> fold_of_group(data.groups.size(), 0);
   std::vector<std::string> names;

@@ -19,9 +19,35 @@ namespace {
 
 using test::synthetic;
 
+// The automatic folds: k folds of whole temperatures when there are at least max(3, k)
+// temperatures, else leave one repetition out (else recordings).
+TEST(GroupedFolds, AutomaticFoldsAreTemperaturesWhenThereAreEnough) {
+  const Dataset d = synthetic();
+  std::set<double> temps;
+  for (const auto& g : d.groups) temps.insert(g.initial_temp_degc);
+  ASSERT_GE(temps.size(), 3u);
+  const auto automatic = grouped_folds(d);
+  const auto by_temperature = grouped_folds(d, {CvScheme::temperature, 3});
+  ASSERT_EQ(automatic.size(), by_temperature.size());
+  for (std::size_t f = 0; f < automatic.size(); ++f) {
+    EXPECT_EQ(automatic[f].name, by_temperature[f].name);
+    EXPECT_EQ(automatic[f].test_rows, by_temperature[f].test_rows);
+  }
+  // Two temperatures: leave one repetition out.
+  std::vector<std::size_t> two;
+  const double first = *temps.begin(), second = *std::next(temps.begin());
+  for (std::size_t g = 0; g < d.groups.size(); ++g)
+    if (d.groups[g].initial_temp_degc == first || d.groups[g].initial_temp_degc == second)
+      two.push_back(g);
+  const auto fallback = grouped_folds(d.select_groups(two));
+  EXPECT_EQ(fallback.front().name, "repetition 1");
+  // More folds asked than temperatures: repetitions too.
+  EXPECT_EQ(grouped_folds(d, {CvScheme::automatic, temps.size() + 1}).front().name, "repetition 1");
+}
+
 TEST(GroupedFolds, LeaveOneRepetitionOutNeverSplitsARecording) {
   const Dataset d = synthetic();
-  const auto folds = grouped_folds(d);
+  const auto folds = grouped_folds(d, {CvScheme::repetition});
   ASSERT_EQ(folds.size(), 3u);
   std::set<std::size_t> tested;
   for (std::size_t f = 0; f < 3; ++f) {
@@ -123,6 +149,7 @@ TEST(ScaleSplit, StandardisesWithTrainingRowsOnly) {
 TEST(SvrLoss, AgreesWithLibsvmFoldByFold) {
   const Dataset d = synthetic();
   TuneOptions o;
+  o.cv = {CvScheme::repetition};
   for (double c : {0.1, 10.0}) {
     for (double sigma : {0.5, 2.0}) {
       svr::Params p;
@@ -131,7 +158,7 @@ TEST(SvrLoss, AgreesWithLibsvmFoldByFold) {
       p.epsilon = 0.1;
       double sse = 0;
       std::size_t n = 0;
-      for (const Fold& f : grouped_folds(d)) {
+      for (const Fold& f : grouped_folds(d, o.cv)) {
         const ScaledSplit s = scale_split(d, f.train_rows, f.test_rows);
         svr::testing::OracleFit ref;
         svr::testing::libsvm_train(s.train, p, ref);

@@ -31,7 +31,10 @@ struct TrainArgs {
   std::size_t iterations = 50;
   std::uint64_t seed = 1;
   unsigned threads = 0;
-  double c_min = 1e-2, c_max = 1e3, sigma_min = 0.05, sigma_max = 20, epsilon = 0.1;
+  // The library's defaults, so that they live in one place.
+  double c_min = tune::SearchSpace{}.c_min, c_max = tune::SearchSpace{}.c_max,
+         sigma_min = tune::SearchSpace{}.sigma_min, sigma_max = tune::SearchSpace{}.sigma_max,
+         epsilon = tune::SearchSpace{}.epsilon;
   bool search_epsilon = false;
   std::size_t hidden = 10;
   std::size_t max_degree = 3;
@@ -191,8 +194,15 @@ void add_train(CLI::App& app) {
       "  bp       one-hidden-layer tanh network, Adam, early stopping on held-out recordings\n"
       "  poly     polynomial in the features, degree chosen by cross-validation\n"
       "Fitness of a candidate (C, σ): 'cv' (default) is the RMSE over grouped folds that never\n"
-      "split a recording (leave one repetition out when there are several); 'train' is the\n"
-      "paper's training RMSE, which favours over-fitting. C and σ are searched in log10 space.\n"
+      "split a recording: with --cv auto, three folds of whole calibration temperatures (a model\n"
+      "scored where it was not trained, as a start-up at a new temperature asks), or with fewer\n"
+      "than three temperatures, leave one repetition out; 'train' is the paper's training RMSE,\n"
+      "which favours over-fitting. C and σ are searched in log10 space, ε is 0.05 "
+      "(docs/tuning.md).\n"
+      "The model records the region of feature space it was trained on; compensate, stream,\n"
+      "evaluate, northfind and export-c reduce its correction outside it (docs/field.md).\n"
+      "Calibrate under the start-up conditions the instrument will meet: docs/field.md gives the\n"
+      "protocol (fogdrift simulate calibration --approach calibration,soaked,warm,ramping).\n"
       "Examples:\n"
       "  fogdrift simulate calibration --out cal && fogdrift train cal -o model.json\n"
       "  fogdrift train cal --method pso-svr --population 30 --iterations 40 --seed 2 -o pso.json\n"
@@ -213,10 +223,11 @@ void add_train(CLI::App& app) {
                   "can run sample by sample; train with it for a streaming compensator)")
       ->capture_default_str();
   cmd->add_option("--cv", args->cv,
-                  "Folds: auto, repetition (leave one out), recording (k folds of whole "
-                  "recordings) or temperature (k folds of whole initial temperatures: the "
-                  "fitness of a model at temperatures it never saw; bp, which is not refitted "
-                  "after early stopping, then stops on a held-out repetition)")
+                  "Folds: auto (temperature with at least three temperatures, else repetition), "
+                  "repetition (leave one out), recording (k folds of whole recordings) or "
+                  "temperature (k folds of whole initial temperatures: the fitness of a model at "
+                  "temperatures it never saw). bp, which is not refitted after early stopping, "
+                  "stops on a third of the recordings unless repetition or recording is asked")
       ->capture_default_str();
   cmd->add_option("--folds", args->folds, "k for --cv recording or temperature")
       ->capture_default_str();
