@@ -1,0 +1,52 @@
+// North-finding where the field needs it (docs/field.md): a campaign's start-ups found raw, with
+// the simulator's true drift subtracted (the floor no model can pass, when the recordings carry
+// drift_true_dph), and compensated; and the share of the removable error a compensation removes,
+//
+//     removed = (raw² − compensated²) / (raw² − floor²)
+//
+// on the mean RMSEs over the start-ups: 1 is perfect compensation, 0 none, below 0 worse than
+// none. Table 2 cannot show this (it tests on calibration's own protocol); Table 3 under every
+// start-up condition can.
+#pragma once
+
+#include <cstddef>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "fogdrift/campaign.hpp"
+#include "fogdrift/recording.hpp"
+
+namespace fogdrift::eval {
+
+/// Predicted drift at every sample of a recording, °/h (e.g. CompensationModel::predict_dph).
+using DriftOf = std::function<std::vector<double>(const Recording&)>;
+
+struct FieldRecording {
+  std::string file;
+  double initial_temp_degc = 0;
+  double raw_rmse_deg = 0;    ///< RMSE of the recording's findings, uncompensated
+  double floor_rmse_deg = 0;  ///< with drift_true_dph subtracted; NaN without that column
+  double comp_rmse_deg = 0;   ///< with the drift subtracted; NaN without a drift
+};
+
+struct FieldSummary {
+  std::vector<FieldRecording> recordings;  ///< the northfind recordings, in campaign order
+  std::size_t worse_than_raw = 0;          ///< recordings whose compensated RMSE exceeds raw
+
+  double raw_mean_rmse_deg() const;    ///< mean over recordings, as the paper's Table 3 "mean"
+  double floor_mean_rmse_deg() const;  ///< NaN if any recording lacks the true drift
+  double comp_mean_rmse_deg() const;   ///< NaN without a drift
+  /// (raw² − comp²) / (raw² − floor²) on the means; NaN when either is unknown or raw ≤ floor.
+  double share_removed() const;
+  /// Appends another summary's recordings (another seed of the same experiment).
+  void accumulate(const FieldSummary& other);
+};
+
+/// Finds north on every `northfind` recording of `campaign` (recordings[i] is the file of
+/// campaign.recordings[i]). `drift` may be empty (raw and floor only). Throws InputError naming
+/// campaign.json when a northfind recording lacks its true azimuth.
+FieldSummary field_summary(const Campaign& campaign, const std::vector<Recording>& recordings,
+                           const DriftOf& drift);
+
+}  // namespace fogdrift::eval
