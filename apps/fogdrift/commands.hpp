@@ -36,6 +36,9 @@ struct PaperArgs {
   double epsilon = 0.05;
   bool search_epsilon = false;
   std::string approach = "calibration";
+  std::string cal_approaches = "calibration,soaked,warm,ramping";
+  std::string start_ups = "calibration,soaked,warm,ramping";
+  int repetitions = 5;
   std::string cal_temps;  ///< empty: the paper's −40 … 60 °C
   std::string nf_temps;   ///< empty: the paper's seven
   int findings = 5;

@@ -42,8 +42,19 @@ void add_paper_options(CLI::App* cmd, PaperArgs& a) {
   cmd->add_flag("--search-epsilon", a.search_epsilon,
                 "The tuned SVRs also search ε in [0.001, 1] (the paper tunes C and σ only)");
   cmd->add_option("--approach", a.approach,
-                  "How the north-finding start-ups begin: calibration, sweep or soaked "
-                  "(fogdrift simulate northfind --help)")
+                  "How the Table 3 north-finding start-ups begin: calibration, soaked, warm, "
+                  "ramping or sweep (fogdrift simulate northfind --help)")
+      ->capture_default_str();
+  cmd->add_option("--cal-approaches", a.cal_approaches,
+                  "How each calibration repetition's start-ups begin, cycling (fogdrift simulate "
+                  "calibration --help): the protocol docs/field.md recommends; the paper's own is "
+                  "--cal-approaches calibration --repetitions 4")
+      ->capture_default_str();
+  cmd->add_option("--repetitions", a.repetitions,
+                  "Calibration repetitions; the last one is the test repetition")
+      ->capture_default_str();
+  cmd->add_option("--start-ups", a.start_ups,
+                  "Approaches of the start-up conditions table, comma-separated, or none")
       ->capture_default_str();
   cmd->add_option("--cal-temps", a.cal_temps,
                   "Calibration chamber temperatures, °C, comma-separated")
@@ -73,6 +84,10 @@ void run_paper_command(const PaperArgs& a) {
   o.cv.scheme = tune::parse_cv_scheme(a.cv, "--cv");
   o.cv.folds = a.folds;
   o.northfind.approach = sim::approach_from_string(a.approach, "--approach");
+  o.calibration.approaches = sim::approaches_from_string(a.cal_approaches, "--cal-approaches");
+  o.calibration.repetitions = a.repetitions;
+  o.start_ups = a.start_ups == "none" ? std::vector<sim::Approach>{}
+                                      : sim::approaches_from_string(a.start_ups, "--start-ups");
   o.studies = !a.no_studies;
   o.epsilon = a.epsilon;
   o.search_epsilon = a.search_epsilon;

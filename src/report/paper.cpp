@@ -11,6 +11,7 @@
 
 #include "fogdrift/dataset.hpp"
 #include "fogdrift/error.hpp"
+#include "fogdrift/eval/field.hpp"
 #include "fogdrift/eval/northfind.hpp"
 #include "fogdrift/eval/startup.hpp"
 #include "fogdrift/features.hpp"
@@ -155,6 +156,17 @@ SeedRun run_seed(const PaperOptions& o, std::uint64_t seed, Stages& stages, Firs
     run.oracle_mean_rmse_deg = mean_of(run.oracle_rmse_deg);
   }
   run.stable_rmse_deg = mean_of(northfind_rmse(st, {}));
+  // The start-up conditions table: the same temperatures under every approach asked for.
+  std::vector<sim::SimulatedCampaign> start_ups;
+  for (sim::Approach a : o.start_ups) {
+    sim::NorthfindOptions ao = no;
+    ao.approach = a;
+    start_ups.push_back(sim::simulate_northfind(o.instrument, ao));
+    const eval::FieldSummary f =
+        eval::field_summary(start_ups.back().campaign, start_ups.back().recordings, {});
+    run.start_up_raw_rmse_deg.push_back(f.raw_mean_rmse_deg());
+    run.start_up_floor_rmse_deg.push_back(f.floor_mean_rmse_deg());
+  }
   run.denoised_std_dph =
       eval::pool(eval::metrics_per_recording(test, std::vector<double>(test.rows, 0.0)))
           .std_before_dph;
@@ -171,6 +183,15 @@ SeedRun run_seed(const PaperOptions& o, std::uint64_t seed, Stages& stages, Firs
     m.table2 = table2_of(trained.model, test);
     m.rmse_deg = northfind_rmse(nf, predicted_by(trained.model));
     m.mean_rmse_deg = mean_of(m.rmse_deg);
+    for (const sim::SimulatedCampaign& c : start_ups) {
+      for (bool guarded : {true, false}) {
+        const eval::DriftOf drift = [&](const Recording& rec) {
+          return trained.model.predict_dph(rec, guarded);
+        };
+        (guarded ? m.start_up_rmse_deg : m.start_up_unguarded_rmse_deg)
+            .push_back(eval::field_summary(c.campaign, c.recordings, drift).comp_mean_rmse_deg());
+      }
+    }
     m.hyperparameters = trained.summary.hyperparameters;
     m.fitness_value = trained.summary.fitness_value;
     m.train_seconds = trained.summary.seconds;

@@ -91,21 +91,46 @@ PaperVerdict verdict(const PaperResult& r) {
   const double bp_std =
       over_seeds(r, [](const SeedRun& s) { return s.method("bp").table2.std_after_dph; }).mean;
   v.std_ratio = ssa_std / denoised;
-  for (const char* m : {"svr", "pso-svr", "gwo-svr", "ssa-svr"}) {
+  for (const char* m : {"pso-svr", "gwo-svr", "ssa-svr"}) {
     const double std =
         over_seeds(r, [m](const SeedRun& s) { return s.method(m).table2.std_after_dph; }).mean;
-    if (!(std < bp_std)) v.not_better_than_bp.emplace_back(m);
+    if (std > bp_std) v.tuned_worse_than_bp.emplace_back(m);
   }
   const double ssa_nf =
       over_seeds(r, [](const SeedRun& s) { return s.method("ssa-svr").mean_rmse_deg; }).mean;
-  v.northfind_ratio =
-      ssa_nf / over_seeds(r, [](const SeedRun& s) { return s.raw_mean_rmse_deg; }).mean;
+  const double raw_nf = over_seeds(r, [](const SeedRun& s) { return s.raw_mean_rmse_deg; }).mean;
+  v.northfind_ratio = ssa_nf / raw_nf;
   v.stable_ratio = ssa_nf / over_seeds(r, [](const SeedRun& s) { return s.stable_rmse_deg; }).mean;
-  v.oracle_ratio =
-      has_oracle(r) ? over_seeds(r, [](const SeedRun& s) { return s.oracle_mean_rmse_deg; }).mean /
-                          over_seeds(r, [](const SeedRun& s) { return s.raw_mean_rmse_deg; }).mean
+  const double floor_nf =
+      has_oracle(r) ? over_seeds(r, [](const SeedRun& s) { return s.oracle_mean_rmse_deg; }).mean
                     : std::nan("");
+  v.oracle_ratio = floor_nf / raw_nf;
+  v.floor_ratio = ssa_nf / floor_nf;
+  const std::vector<sim::Approach>& ups = r.options.start_ups;
+  for (std::size_t a = 0; a < ups.size(); ++a) {
+    const double raw =
+        over_seeds(r, [a](const SeedRun& s) { return s.start_up_raw_rmse_deg[a]; }).mean;
+    const double floor =
+        over_seeds(r, [a](const SeedRun& s) { return s.start_up_floor_rmse_deg[a]; }).mean;
+    for (std::string_view name : kPaperMethods) {
+      const std::string m(name);
+      const double comp =
+          over_seeds(r, [&](const SeedRun& s) { return s.method(m).start_up_rmse_deg[a]; }).mean;
+      if (comp > raw)
+        v.worse_than_raw.push_back(fmt::format("{} under {}", m, sim::to_string(ups[a])));
+      if (m == "ssa-svr")
+        v.ssa_removed.push_back(
+            raw > floor ? (raw * raw - comp * comp) / (raw * raw - floor * floor) : std::nan(""));
+    }
+  }
   return v;
+}
+
+bool PaperVerdict::holds() const {
+  bool start_ups = worse_than_raw.empty();
+  for (double x : ssa_removed) start_ups = start_ups && x >= 0.6;
+  return std_ratio <= 0.25 && tuned_worse_than_bp.empty() && stable_ratio <= 1.2 &&
+         floor_ratio <= 1.15 && start_ups;
 }
 
 std::string paper_json(const PaperResult& r) {
@@ -170,15 +195,47 @@ std::string paper_json(const PaperResult& r) {
   j["seed_values"] = seeds;
 
   const PaperVerdict v = verdict(r);
+  auto number = [](double x) { return std::isnan(x) ? json(nullptr) : json(x); };
   j["goals"] = {{"ssa_std_over_denoised", v.std_ratio},
                 {"ssa_std_at_most_quarter", v.std_ratio <= 0.25},
-                {"svr_methods_better_than_bp", v.svr_better_than_bp()},
-                {"svr_methods_not_better_than_bp", v.not_better_than_bp},
-                {"ssa_northfind_over_raw", v.northfind_ratio},
-                {"ssa_northfind_halved", v.northfind_ratio <= 0.5},
+                {"tuned_svr_no_worse_than_bp", v.tuned_worse_than_bp.empty()},
+                {"tuned_svr_worse_than_bp", v.tuned_worse_than_bp},
                 {"ssa_northfind_over_stable", v.stable_ratio},
-                {"ssa_northfind_within_20pct_of_stable", v.stable_ratio <= 1.2}};
-  if (!std::isnan(v.oracle_ratio)) j["goals"]["true_drift_subtracted_over_raw"] = v.oracle_ratio;
+                {"ssa_northfind_within_20pct_of_stable", v.stable_ratio <= 1.2},
+                {"ssa_northfind_over_floor", number(v.floor_ratio)},
+                {"ssa_northfind_within_15pct_of_floor", v.floor_ratio <= 1.15},
+                {"ssa_northfind_over_raw", v.northfind_ratio},
+                {"true_drift_subtracted_over_raw", number(v.oracle_ratio)},
+                {"ssa_removed_by_start_up", json::object()},
+                {"start_ups_removed_at_least_60pct", true},
+                {"worse_than_raw", v.worse_than_raw},
+                {"none_worse_than_raw", v.worse_than_raw.empty()},
+                {"all_hold", v.holds()}};
+  for (std::size_t a = 0; a < v.ssa_removed.size(); ++a) {
+    j["goals"]["ssa_removed_by_start_up"][std::string(sim::to_string(r.options.start_ups[a]))] =
+        number(v.ssa_removed[a]);
+    if (!(v.ssa_removed[a] >= 0.6)) j["goals"]["start_ups_removed_at_least_60pct"] = false;
+  }
+  // The start-up conditions table: every method under every approach, mean over seeds.
+  json su = json::object();
+  for (std::size_t a = 0; a < r.options.start_ups.size(); ++a) {
+    json x;
+    x["raw_mean_deg"] =
+        over_seeds(r, [a](const SeedRun& s) { return s.start_up_raw_rmse_deg[a]; }).mean;
+    x["floor_mean_deg"] =
+        number(over_seeds(r, [a](const SeedRun& s) { return s.start_up_floor_rmse_deg[a]; }).mean);
+    for (std::string_view name : kPaperMethods) {
+      const std::string m(name);
+      x[m] = {
+          {"mean_deg",
+           over_seeds(r, [&](const SeedRun& s) { return s.method(m).start_up_rmse_deg[a]; }).mean},
+          {"unguarded_mean_deg", over_seeds(r, [&](const SeedRun& s) {
+                                   return s.method(m).start_up_unguarded_rmse_deg[a];
+                                 }).mean}};
+    }
+    su[std::string(sim::to_string(r.options.start_ups[a]))] = x;
+  }
+  j["start_ups"] = su;
 
   json studies;
   studies["loto"] = json::array();
@@ -335,29 +392,93 @@ std::string paper_markdown(const PaperResult& r) {
         "from seed to seed; the means over temperatures and seeds are what to compare.\n\n";
 
   const PaperVerdict v = verdict(r);
-  md << "## The paper's claims, on these runs\n\n";
+  md << "## The goals, on these runs\n\n"
+        "The paper's goals as fogdrift states them (docs/paper.md explains why \"halved\" and "
+        "\"every SVR better than BP\" are not among them), and the field's (docs/field.md).\n\n";
   md << fmt::format(
       "- SSA-SVR's compensated STD is {:.2f} of the denoised STD (paper {:.2f}; goal at most "
       "0.25): {}.\n",
       v.std_ratio, 0.0031 / 0.0134, yes_no(v.std_ratio <= 0.25));
-  md << fmt::format("- Every SVR method's compensated STD below BP's: {}{}.\n",
-                    yes_no(v.svr_better_than_bp()),
-                    v.svr_better_than_bp()
+  md << fmt::format("- The tuned SVR methods' compensated STD no worse than BP's: {}{}.\n",
+                    yes_no(v.tuned_worse_than_bp.empty()),
+                    v.tuned_worse_than_bp.empty()
                         ? std::string()
-                        : fmt::format(" (not below: {})", fmt::join(v.not_better_than_bp, ", ")));
-  md << fmt::format(
-      "- SSA-SVR's mean start-up north-finding RMSE is {:.2f} of the raw one (paper {:.2f}; goal "
-      "at most 0.5): {}.\n",
-      v.northfind_ratio, 0.0101 / 0.0209, yes_no(v.northfind_ratio <= 0.5));
-  if (!std::isnan(v.oracle_ratio))
-    md << fmt::format(
-        "  Subtracting the simulator's true thermal drift, which no model can beat, gives {:.2f} "
-        "of the raw RMSE: the rest is the gyro's noise over five findings.\n",
-        v.oracle_ratio);
+                        : fmt::format(" (worse: {})", fmt::join(v.tuned_worse_than_bp, ", ")));
   md << fmt::format(
       "- SSA-SVR's mean start-up RMSE is {:.2f} times the stable stage's (paper {:.2f}; goal at "
-      "most 1.2): {}.\n\n",
+      "most 1.2): {}.\n",
       v.stable_ratio, 0.0101 / 0.012, yes_no(v.stable_ratio <= 1.2));
+  if (!std::isnan(v.floor_ratio))
+    md << fmt::format(
+        "- It is {:.2f} times the floor, the RMSE with the simulator's true drift subtracted "
+        "(goal at most 1.15): {}. (Raw to SSA-SVR: {:.2f}; raw to the floor: {:.2f}, the "
+        "lowest any model can reach.)\n",
+        v.floor_ratio, yes_no(v.floor_ratio <= 1.15), v.northfind_ratio, v.oracle_ratio);
+  if (!v.ssa_removed.empty()) {
+    std::vector<std::string> parts;
+    bool all = true;
+    for (std::size_t a = 0; a < v.ssa_removed.size(); ++a) {
+      parts.push_back(fmt::format("{} {:.0f} %", sim::to_string(r.options.start_ups[a]),
+                                  100 * v.ssa_removed[a]));
+      all = all && v.ssa_removed[a] >= 0.6;
+    }
+    md << fmt::format(
+        "- Share of the removable north-finding error SSA-SVR removes under every start-up "
+        "condition (goal at least 60 %): {}: {}.\n",
+        fmt::join(parts, ", "), yes_no(all));
+    md << fmt::format("- No method worse than raw under any start-up condition, guard on: {}{}.\n",
+                      yes_no(v.worse_than_raw.empty()),
+                      v.worse_than_raw.empty()
+                          ? std::string()
+                          : fmt::format(" (worse: {})", fmt::join(v.worse_than_raw, "; ")));
+  }
+  md << "\n";
+
+  if (!r.options.start_ups.empty()) {
+    md << "## Start-up conditions\n\n"
+          "Mean start-up north-finding RMSE (°) at the north-finding temperatures when the "
+          "instrument powers on as each approach says (fogdrift simulate northfind --help), with "
+          "the novelty guard (and without it, in brackets), and the share of the removable error "
+          "removed, (raw² − comp²) / (raw² − floor²). The models are those of Tables 1–3, "
+          "calibrated under: " +
+              std::string() +
+              [&] {
+                std::vector<std::string> names;
+                for (sim::Approach a : r.options.calibration.approaches)
+                  names.emplace_back(sim::to_string(a));
+                return fmt::format("{}", fmt::join(names, ", "));
+              }() +
+              ".\n\n| method |";
+    for (sim::Approach a : r.options.start_ups) md << " " << sim::to_string(a) << " |";
+    md << "\n|---|";
+    for (std::size_t a = 0; a < r.options.start_ups.size(); ++a) md << "---|";
+    auto mean_at = [&](std::size_t a, auto get) {
+      return over_seeds(r, [&](const SeedRun& s) { return get(s)[a]; }).mean;
+    };
+    md << "\n| raw |";
+    for (std::size_t a = 0; a < r.options.start_ups.size(); ++a)
+      md << fmt::format(" {:.4f} |",
+                        mean_at(a, [](const SeedRun& s) { return s.start_up_raw_rmse_deg; }));
+    md << "\n| true drift subtracted |";
+    for (std::size_t a = 0; a < r.options.start_ups.size(); ++a)
+      md << fmt::format(" {:.4f} |",
+                        mean_at(a, [](const SeedRun& s) { return s.start_up_floor_rmse_deg; }));
+    for (std::string_view name : kPaperMethods) {
+      const std::string m(name);
+      md << "\n| " << m << " |";
+      for (std::size_t a = 0; a < r.options.start_ups.size(); ++a) {
+        const double raw = mean_at(a, [](const SeedRun& s) { return s.start_up_raw_rmse_deg; });
+        const double floor = mean_at(a, [](const SeedRun& s) { return s.start_up_floor_rmse_deg; });
+        const double comp =
+            mean_at(a, [&](const SeedRun& s) { return s.method(m).start_up_rmse_deg; });
+        const double off =
+            mean_at(a, [&](const SeedRun& s) { return s.method(m).start_up_unguarded_rmse_deg; });
+        md << fmt::format(" {:.4f} ({:.4f}), {:.0f} % |", comp, off,
+                          100 * (raw * raw - comp * comp) / (raw * raw - floor * floor));
+      }
+    }
+    md << "\n\n";
+  }
 
   if (!r.loto.empty()) {
     md << fmt::format(
