@@ -2,6 +2,8 @@
 
 #include <cmath>
 #include <stdexcept>
+#include <tuple>
+#include <vector>
 
 namespace fogdrift::eval {
 namespace {
@@ -52,27 +54,72 @@ CompensationMetrics pool(std::span<const CompensationMetrics> recordings) {
     sq_sum += r.rmse_dph * r.rmse_dph * static_cast<double>(r.rows);
     before += r.std_before_dph * r.std_before_dph;
     after += r.std_after_dph * r.std_after_dph;
+    p.startup_before_dph += r.startup_before_dph * r.startup_before_dph;
+    p.startup_after_dph += r.startup_after_dph * r.startup_after_dph;
+    p.opposite_before_dph += r.opposite_before_dph * r.opposite_before_dph;
+    p.opposite_after_dph += r.opposite_after_dph * r.opposite_after_dph;
   }
   if (p.rows == 0) return p;
   p.mae_dph = abs_sum / static_cast<double>(p.rows);
   p.rmse_dph = std::sqrt(sq_sum / static_cast<double>(p.rows));
   p.std_before_dph = std::sqrt(before / static_cast<double>(k));
   p.std_after_dph = std::sqrt(after / static_cast<double>(k));
+  for (double* v :
+       {&p.startup_before_dph, &p.startup_after_dph, &p.opposite_before_dph, &p.opposite_after_dph})
+    *v = std::sqrt(*v / static_cast<double>(k));
   return p;
 }
 
+std::pair<double, double> finding_metrics(std::span<const double> time_s, std::span<const double> r,
+                                          const FindingWindows& w) {
+  const std::size_t n = r.size();
+  if (n < 2 || time_s.size() != n) return {0.0, 0.0};
+  double mean = 0;
+  for (double v : r) mean += v;
+  mean /= static_cast<double>(n);
+  // Start-up residual: the rows within startup_s of the first.
+  double ss = 0;
+  std::size_t m = 0;
+  for (std::size_t i = 0; i < n && time_s[i] - time_s[0] < w.startup_s; ++i, ++m)
+    ss += (r[i] - mean) * (r[i] - mean);
+  const double startup = m ? std::sqrt(ss / static_cast<double>(m)) : 0.0;
+  // Opposite difference over windows of P rows, 2P apart, by prefix sums.
+  const double dt = (time_s[n - 1] - time_s[0]) / static_cast<double>(n - 1);
+  const auto p = static_cast<std::size_t>(std::lround(w.position_s / dt));
+  if (p == 0 || 3 * p > n) return {startup, 0.0};
+  std::vector<double> prefix(n + 1, 0.0);
+  for (std::size_t i = 0; i < n; ++i) prefix[i + 1] = prefix[i] + r[i];
+  double dd = 0;
+  const std::size_t starts = n - 3 * p + 1;
+  for (std::size_t t = 0; t < starts; ++t) {
+    const double a = (prefix[t + p] - prefix[t]) / static_cast<double>(p);
+    const double b = (prefix[t + 3 * p] - prefix[t + 2 * p]) / static_cast<double>(p);
+    dd += (a - b) * (a - b);
+  }
+  return {startup, std::sqrt(dd / static_cast<double>(starts))};
+}
+
 std::vector<CompensationMetrics> metrics_per_recording(const Dataset& data,
-                                                       std::span<const double> predicted_dph) {
+                                                       std::span<const double> predicted_dph,
+                                                       const FindingWindows& windows) {
   if (predicted_dph.size() != data.rows)
     throw std::invalid_argument("metrics_per_recording: one prediction per row is needed");
-  std::vector<std::vector<double>> y(data.groups.size()), p(data.groups.size());
+  std::vector<std::vector<double>> y(data.groups.size()), p(data.groups.size()),
+      t(data.groups.size());
   for (std::size_t i = 0; i < data.rows; ++i) {
     y[data.group[i]].push_back(data.y[i]);
     p[data.group[i]].push_back(predicted_dph[i]);
+    t[data.group[i]].push_back(data.time_s[i]);
   }
   std::vector<CompensationMetrics> out;
-  for (std::size_t g = 0; g < data.groups.size(); ++g)
-    out.push_back(compensation_metrics(y[g], p[g]));
+  for (std::size_t g = 0; g < data.groups.size(); ++g) {
+    CompensationMetrics m = compensation_metrics(y[g], p[g]);
+    std::vector<double> after(y[g].size());
+    for (std::size_t i = 0; i < after.size(); ++i) after[i] = y[g][i] - p[g][i];
+    std::tie(m.startup_before_dph, m.opposite_before_dph) = finding_metrics(t[g], y[g], windows);
+    std::tie(m.startup_after_dph, m.opposite_after_dph) = finding_metrics(t[g], after, windows);
+    out.push_back(m);
+  }
   return out;
 }
 

@@ -254,12 +254,16 @@ check "no model written on error" test ! -e "$work/x.json"
 # --- evaluate ---------------------------------------------------------------------------------
 check "evaluate on the test repetition" run 0 "$fd" evaluate "$work/svr.json" "$work/small"
 check "evaluate prints the Table 2 view" out_has "Table 2 view: denoised STD"
-check "evaluate has a row per test recording" test "$(grep -c '^| cal_r4_' "$work/out")" -eq 3
+check "evaluate has a row per test recording" test "$(grep -c '^| cal_r4_' "$work/out")" -eq 6
+check "evaluate shows what a finding sees" out_has "| recording | first 5 min residual | opposite positions 180 s apart | guard |"
+check "evaluate without the guard" run 0 "$fd" evaluate "$work/svr.json" "$work/small" --no-guard --json
+check "evaluate json has the finding metrics" out_has '"opposite_difference_after_dph"'
+check "evaluate json says the guard is off" out_has '"guard": false'
 check "evaluate --json" run 0 "$fd" evaluate --json "$work/svr.json" "$work/small"
 check "evaluate json overall" out_has '"std_compensated_dph"'
 check "evaluate --allan" run 0 "$fd" evaluate --allan "$work/svr.json" "$work/small"
 check "evaluate allan table" out_has "| recording | ARW (°/√h) | bias instability (°/h) | RRW (°/h/√h) |"
-check "evaluate allan row per recording" test "$(grep -c '^| cal_r4_.* → ' "$work/out")" -eq 3
+check "evaluate allan row per recording" test "$(grep -c '^| cal_r4_.* → .* → .* → ' "$work/out")" -eq 3
 check "evaluate --allan --json" run 0 "$fd" evaluate --allan --json "$work/svr.json" "$work/small"
 check "evaluate allan json" python3 -c 'import json,sys; d=json.load(open(sys.argv[1])); r=d["recordings"][0]["allan"]; assert 0.0003 < r["raw"]["arw_deg_per_rt_h"] < 0.0008 and r["compensated"]["bias_instability_dph"] < r["raw"]["bias_instability_dph"]' "$work/out"
 check "evaluate files" run 0 "$fd" evaluate "$work/poly.json" "$work/small/cal_r4_20C.csv"
@@ -338,6 +342,20 @@ check "bad prefix" run 1 "$fd" export-c "$work/bp.json" -o "$work/bad.h" --prefi
 check "prefix message" err_has "option --prefix: '4unit' is not a C identifier"
 check "no header on error" test ! -e "$work/bad.h"
 
+# --- start-up approaches ------------------------------------------------------------------------
+check "calibration under mixed start-ups" run 0 "$fd" simulate calibration --out "$work/mixed" \
+  --temps 0,30 --repetitions 3 --approach soaked,ramping --seed 4
+check "mixed campaign's manifest names the approaches" python3 -c 'import json,sys; assert json.load(open(sys.argv[1]))["generator"]["approaches"] == ["soaked", "ramping"]' "$work/mixed/campaign.json"
+check "sweep is no calibration approach" run 1 "$fd" simulate calibration --out "$work/nope" --approach calibration,sweep
+check "sweep message" err_has "option --approach: sweep is not a calibration approach"
+check "no campaign on error" test ! -e "$work/nope"
+check "bad approach name" run 1 "$fd" simulate northfind --out "$work/nope" --approach lukewarm
+check "bad approach message" err_has "option --approach: 'lukewarm' is not one of calibration, soaked, warm, ramping, sweep"
+check "bad warm-off" run 1 "$fd" simulate northfind --out "$work/nope" --approach warm --warm-off-s -5
+check "bad warm-off message" err_has "option --warm-off-s: -5 s is outside [0, 1e6]"
+check "warm restarts" run 0 "$fd" simulate northfind --out "$work/nfw" --approach warm --temps 10 --findings 1
+check "warm manifest" python3 -c 'import json,sys; assert json.load(open(sys.argv[1]))["generator"]["approach"] == "warm"' "$work/nfw/campaign.json"
+
 # --- northfind --------------------------------------------------------------------------------
 check "simulate northfind" run 0 "$fd" simulate northfind --out "$work/nf2" --temps -16,28 --seed 2
 check "northfind raw" run 0 "$fd" northfind "$work/nf2"
@@ -348,6 +366,9 @@ check "northfind with a model" run 0 "$fd" northfind "$work/nf2" --model "$work/
 check "northfind compensated column" out_has "comp. err °"
 check "northfind --json" run 0 "$fd" northfind --json "$work/nf2" --model "$work/svr.json"
 check "northfind json table" out_has '"compensated_rmse_deg"'
+check "northfind shows the floor" out_has '"true_drift_subtracted_rmse_deg"'
+check "northfind share removed" run 0 "$fd" northfind "$work/nf2" --model "$work/svr.json" --no-guard
+check "northfind names the share" out_has "of the removable error"
 check "northfind on a calibration campaign" run 1 "$fd" northfind "$work/small"
 check "northfind calibration message" err_has "no northfind or stable recordings"
 

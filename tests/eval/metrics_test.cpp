@@ -72,3 +72,37 @@ TEST(CompensationMetrics, PerRecordingFollowsTheGroups) {
 
 }  // namespace
 }  // namespace fogdrift::eval
+
+namespace fogdrift::eval {
+namespace {
+
+// A drift ramp a·t: any two windows of P seconds, 2P apart, differ by 2aP exactly.
+TEST(FindingMetrics, OppositeDifferenceOfARampIsTwiceItsRiseOverAPosition) {
+  std::vector<double> t, r;
+  for (int i = 0; i < 180; ++i) {
+    t.push_back(5.0 + 10.0 * i);
+    r.push_back(0.002 * t.back());
+  }
+  const auto [startup, opposite] = finding_metrics(t, r, {300.0, 90.0});
+  EXPECT_NEAR(opposite, 2 * 0.002 * 90.0, 1e-12);
+  EXPECT_GT(startup, 0.0);
+}
+
+// 1 °/h for the first 300 s of 1800 s, then 0: the mean is 1/6, so the first five minutes sit
+// 5/6 above it.
+TEST(FindingMetrics, StartupResidualIsTheFirstMinutesAgainstTheWholeMean) {
+  std::vector<double> t, r;
+  for (int i = 0; i < 180; ++i) {
+    t.push_back(10.0 * i);
+    r.push_back(t.back() < 300.0 ? 1.0 : 0.0);
+  }
+  EXPECT_NEAR(finding_metrics(t, r).first, 5.0 / 6.0, 1e-12);
+  // Shorter than three positions: no opposite difference.
+  EXPECT_EQ(
+      finding_metrics(std::span<const double>(t).first(20), std::span<const double>(r).first(20))
+          .second,
+      0.0);
+}
+
+}  // namespace
+}  // namespace fogdrift::eval

@@ -8,10 +8,21 @@
 // A recording's constant offset does not count in the STDs: Table 2's STD is the zero-bias
 // stability over the powered window. Over several recordings, MAE and RMSE pool every row and
 // the STDs are the root mean square of the per-recording STDs.
+//
+// Where north-finding needs it (docs/field.md), with r the output before (y) or after (y − ŷ)
+// compensation, less its mean over the recording:
+//   start-up residual     RMS of r over the first startup_s after power-on: the drift a finding
+//                         made in the first minutes still sees
+//   opposite difference   RMS over every start time t of  mean r[t, t + P) − mean r[t + 2P, t + 3P)
+//                         with P = position_s: the difference between two opposite positions of
+//                         a four-position finding, the part of the drift the azimuth sees
+//                         (δψ ≈ difference / (2 Ω_ie cos φ), docs/simulator.md §5)
+// Both pool as the root mean square over recordings.
 #pragma once
 
 #include <cstddef>
 #include <span>
+#include <utility>
 #include <vector>
 
 #include "fogdrift/dataset.hpp"
@@ -24,6 +35,16 @@ struct CompensationMetrics {
   double rmse_dph = 0;
   double std_before_dph = 0;  ///< the denoised, uncompensated drift
   double std_after_dph = 0;   ///< the compensated output
+  /// Start-up residual and opposite-position difference, before and after (0 when the metrics
+  /// come without times: compensation_metrics()).
+  double startup_before_dph = 0, startup_after_dph = 0;
+  double opposite_before_dph = 0, opposite_after_dph = 0;
+};
+
+/// The windows of the north-finding metrics.
+struct FindingWindows {
+  double startup_s = 300.0;  ///< the first minutes after power-on, s
+  double position_s = 90.0;  ///< time per four-position position, s (the paper's protocol)
 };
 
 /// Metrics of one recording. Throws std::invalid_argument for sizes that differ, and needs at
@@ -38,6 +59,13 @@ CompensationMetrics pool(std::span<const CompensationMetrics> recordings);
 /// Metrics of every recording (group) of `data`, in data.groups order, from predictions of its
 /// rows; a group without rows (Dataset::select_groups keeps every group) has rows = 0.
 std::vector<CompensationMetrics> metrics_per_recording(const Dataset& data,
-                                                       std::span<const double> predicted_dph);
+                                                       std::span<const double> predicted_dph,
+                                                       const FindingWindows& windows = {});
+
+/// The start-up residual and opposite difference of one recording's output `r` at times
+/// `time_s` (uniformly spaced): {startup, opposite}, °/h. The opposite difference is 0 when the
+/// recording is shorter than 3 positions.
+std::pair<double, double> finding_metrics(std::span<const double> time_s, std::span<const double> r,
+                                          const FindingWindows& windows = {});
 
 }  // namespace fogdrift::eval
