@@ -99,37 +99,29 @@ void run(const EvaluateArgs& a) {
     j["model"] = a.model;
     j["method"] = method;
     j["source"] = source;
-    j["overall"] = {{"rows", all.rows},
-                    {"mae_dph", all.mae_dph},
-                    {"rmse_dph", all.rmse_dph},
-                    {"std_denoised_dph", all.std_before_dph},
-                    {"std_compensated_dph", all.std_after_dph},
-                    {"startup_residual_before_dph", all.startup_before_dph},
-                    {"startup_residual_after_dph", all.startup_after_dph},
-                    {"opposite_difference_before_dph", all.opposite_before_dph},
-                    {"opposite_difference_after_dph", all.opposite_after_dph}};
+    // The metrics of one recording or of all, under the same names.
+    auto metrics_json = [](const eval::CompensationMetrics& m) {
+      return nlohmann::ordered_json{{"rows", m.rows},
+                                    {"mae_dph", m.mae_dph},
+                                    {"rmse_dph", m.rmse_dph},
+                                    {"std_denoised_dph", m.std_before_dph},
+                                    {"std_compensated_dph", m.std_after_dph},
+                                    {"startup_residual_before_dph", m.startup_before_dph},
+                                    {"startup_residual_after_dph", m.startup_after_dph},
+                                    {"opposite_difference_before_dph", m.opposite_before_dph},
+                                    {"opposite_difference_after_dph", m.opposite_after_dph}};
+    };
+    j["overall"] = metrics_json(all);
     j["guard"] = guarded;
     for (std::size_t g = 0; g < per.size(); ++g) {
-      const auto& m = per[g];
-      j["recordings"].push_back(
-          {{"file", data.groups[g].file},
-           {"initial_temp_degc", data.groups[g].initial_temp_degc},
-           {"repetition", data.groups[g].repetition},
-           {"rows", m.rows},
-           {"mae_dph", m.mae_dph},
-           {"rmse_dph", m.rmse_dph},
-           {"std_denoised_dph", m.std_before_dph},
-           {"std_compensated_dph", m.std_after_dph},
-           {"startup_residual_before_dph", m.startup_before_dph},
-           {"startup_residual_after_dph", m.startup_after_dph},
-           {"opposite_difference_before_dph", m.opposite_before_dph},
-           {"opposite_difference_after_dph", m.opposite_after_dph},
-           {"novelty_outside_share",
-            static_cast<double>(novelty[g].outside) /
-                static_cast<double>(std::max<std::size_t>(1, novelty[g].samples))},
-           {"novelty_reduced_share",
-            static_cast<double>(novelty[g].reduced) /
-                static_cast<double>(std::max<std::size_t>(1, novelty[g].samples))}});
+      nlohmann::ordered_json r = {{"file", data.groups[g].file},
+                                  {"initial_temp_degc", data.groups[g].initial_temp_degc},
+                                  {"repetition", data.groups[g].repetition}};
+      r.update(metrics_json(per[g]));
+      const double n = static_cast<double>(std::max<std::size_t>(1, novelty[g].samples));
+      r["novelty_outside_share"] = static_cast<double>(novelty[g].outside) / n;
+      r["novelty_reduced_share"] = static_cast<double>(novelty[g].reduced) / n;
+      j["recordings"].push_back(r);
       if (a.allan)
         j["recordings"].back()["allan"] = {{"raw", terms_json(allan[g].raw)},
                                            {"compensated", terms_json(allan[g].compensated)}};

@@ -51,6 +51,11 @@ void run(const ExportArgs& a) {
               ? ""
               : " (the model was trained with centred rates: train with "
                 "--differentiator causal for firmware)");
+    if (!model.guard.empty())
+      std::cout << fmt::format(
+          "  and {}_novelty(features): {} guard prototypes, correction "
+          "reduced from novelty {} to none at {}\n",
+          a.prefix, model.guard.size(), model.guard.settings.full_at, model.guard.settings.zero_at);
   }
 }
 
@@ -68,6 +73,9 @@ void add_export_c(CLI::App& app) {
       "With --stream-rate-hz the header also computes the features itself, causally, from one\n"
       "sample (time, three temperatures) at a time: PREFIX_update(&state, ...), the streaming\n"
       "compensator in C; train the model with --differentiator causal for it.\n"
+      "A model with a novelty guard (docs/field.md) also gets PREFIX_novelty(features) and\n"
+      "PREFIX_target_weight(nu); PREFIX_update then reduces the correction where the inputs are\n"
+      "novel, as fogdrift stream does (#define PREFIX_GUARD 0 before the #include: full).\n"
       "Examples:\n"
       "  fogdrift export-c model.json -o unit42.h --prefix unit42   # unit42_predict_dph(...)\n"
       "  fogdrift export-c causal.json -o unit42.h --stream-rate-hz 1  # and unit42_update(...)");
