@@ -68,7 +68,9 @@ double CompensationModel::predict_dph(std::span<const double> features,
 }
 
 double CompensationModel::guarded_dph(double drift_dph, double weight) const noexcept {
-  return y_scaler.mean[0] + weight * (drift_dph - y_scaler.mean[0]);
+  // w = 0 gives ȳ exactly, also for a drift that is not a number (inputs that were not).
+  return weight == 0.0 ? y_scaler.mean[0]
+                       : y_scaler.mean[0] + weight * (drift_dph - y_scaler.mean[0]);
 }
 
 std::vector<double> CompensationModel::predict_dph(const Dataset& data, bool guarded) const {
@@ -496,6 +498,7 @@ std::string c_streaming_part(const CompensationModel& model, const std::string& 
         "        s->weight + ({0}_guard_recover_s > 0 ? dt / {0}_guard_recover_s : 0.0);\n"
         "    s->weight = up < v ? up : v;\n"
         "    s->last_time_s = time_s;\n"
+        "    if (s->weight == 0.0) return {0}_drift_mean_dph;\n"
         "    return {0}_drift_mean_dph + s->weight * (drift - {0}_drift_mean_dph);\n"
         "  }}\n"
         "#endif\n",

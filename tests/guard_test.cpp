@@ -87,6 +87,14 @@ TEST(GuardFilter, FallsAtOnceRecoversAtItsRate) {
   EXPECT_EQ(f.update(2000.0, 0.1, 0.0), 0.1);
 }
 
+TEST(NoveltyGuard, NotANumberStopsTheCorrection) {
+  std::vector<double> z = {0, 1, 2, 3};
+  const NoveltyGuard g = NoveltyGuard::fit(z, 1, {}, {});
+  const double nan[] = {std::nan("")};
+  EXPECT_FALSE(std::isfinite(g.novelty(nan)));  // no prototype is nearer than infinity
+  EXPECT_EQ(g.target_weight(g.novelty(nan)), 0.0);
+}
+
 TEST(NoveltyGuard, RejectsImpossibleSettings) {
   auto option_of = [](GuardSettings s) {
     try {

@@ -29,7 +29,9 @@
 // between the positions of a four-position finding is itself a drift (docs/field.md). The
 // guarded drift is  ȳ + w·(f(x) − ȳ),  with ȳ the training target's mean (the turn-on bias,
 // which a north-finding and a compensated STD do not see). At w = 0 the output is the
-// uncompensated gyro shifted by a constant.
+// uncompensated gyro shifted by a constant. Inputs that are not numbers are near no prototype
+// (ν = ∞, or NaN) and so v = 0: the correction stops, latched like any other, rather than
+// passing a NaN on.
 #pragma once
 
 #include <cstddef>
@@ -55,7 +57,8 @@ struct GuardSettings {
   double recover_s = 0.0;
 };
 
-/// Throws OptionError naming the field (guard.prototypes, guard.full_at, guard.zero_at).
+/// Throws OptionError naming the field (guard.prototypes, guard.full_at, guard.zero_at,
+/// guard.recover_s) and the rule.
 void validate(const GuardSettings& settings);
 
 struct NoveltyGuard {

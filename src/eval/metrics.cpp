@@ -106,10 +106,11 @@ std::vector<CompensationMetrics> metrics_per_recording(const Dataset& data,
     throw std::invalid_argument("metrics_per_recording: one prediction per row is needed");
   std::vector<std::vector<double>> y(data.groups.size()), p(data.groups.size()),
       t(data.groups.size());
+  const bool timed = data.time_s.size() == data.rows;  // a hand-made dataset may have no times
   for (std::size_t i = 0; i < data.rows; ++i) {
     y[data.group[i]].push_back(data.y[i]);
     p[data.group[i]].push_back(predicted_dph[i]);
-    t[data.group[i]].push_back(data.time_s[i]);
+    if (timed) t[data.group[i]].push_back(data.time_s[i]);
   }
   std::vector<CompensationMetrics> out;
   for (std::size_t g = 0; g < data.groups.size(); ++g) {

@@ -36,7 +36,7 @@ struct CompensationMetrics {
   double std_before_dph = 0;  ///< the denoised, uncompensated drift
   double std_after_dph = 0;   ///< the compensated output
   /// Start-up residual and opposite-position difference, before and after (0 when the metrics
-  /// come without times: compensation_metrics()).
+  /// come without times: compensation_metrics(), or a dataset without time_s).
   double startup_before_dph = 0, startup_after_dph = 0;
   double opposite_before_dph = 0, opposite_after_dph = 0;
 };
