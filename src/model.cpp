@@ -393,14 +393,14 @@ std::string c_guard_part(const CompensationModel& model, const std::string& pref
   const GuardSettings& g = model.guard.settings;
   std::string h = fmt::format(
       "/* Novelty guard (fogdrift docs/field.md): nu = distance of the standardised features to\n"
-      " * the nearest of {2} prototypes of the training rows, over the cover radius (every\n"
-      " * training row has nu <= 1). The correction is applied in full up to nu = {3}, to none "
-      "from\n"
-      " * nu = {4}; streaming, the weight falls at once and recovers over {5} s (0: not until\n"
-      " * the next {0}_reset). */\n"
+      " * the nearest of {2} prototypes of the training rows, in units of the spacing between\n"
+      " * the calibration temperatures (a start-up like the calibration's at a new temperature\n"
+      " * has nu of about 1). The correction is applied in full up to nu = {3}, to none from\n"
+      " * nu = {4}; streaming, the weight falls at once and {5}. */\n"
       "#define {1}_N_GUARD {2}\n",
       prefix, upper, model.guard.size(), c_number(g.full_at), c_number(g.zero_at),
-      c_number(g.recover_s));
+      g.recover_s > 0 ? fmt::format("recovers over {} s", c_number(g.recover_s))
+                      : fmt::format("stays at its lowest until the next {}_reset", prefix));
   h += fmt::format("static const double {}_guard_points[{}] = {{{}}};\n", prefix,
                    model.guard.prototypes.size(), c_array(model.guard.prototypes));
   h += fmt::format(
