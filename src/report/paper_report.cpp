@@ -13,7 +13,7 @@
 namespace fogdrift::report {
 namespace {
 
-// The paper's values (METHOD.md §3).
+// The paper's values (its Tables 1-3, restated in docs/paper.md).
 constexpr double kPaperC = 1.0520, kPaperSigma = 0.9506;
 constexpr double kPaperDenoisedStd = 0.0134, kPaperStableRmse = 0.012;
 const std::map<std::string, std::pair<double, double>> kPaperTable2 = {
