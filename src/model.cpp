@@ -106,6 +106,7 @@ RecordingPrediction CompensationModel::predict(const Recording& recording, bool 
                                  fmt::join(table.names, ","), fmt::join(feature_names, ",")));
   RecordingPrediction out;
   out.drift_dph.resize(table.rows);
+  out.model_drift_dph.resize(table.rows);
   out.novelty.resize(table.rows);
   out.weight.resize(table.rows);
   std::vector<double> work(inputs());
@@ -113,6 +114,7 @@ RecordingPrediction CompensationModel::predict(const Recording& recording, bool 
   GuardFilter filter;
   for (std::size_t i = 0; i < table.rows; ++i) {
     const DriftPrediction p = predict(std::span<const double>(table.x.data() + i * d, d), work);
+    out.model_drift_dph[i] = p.drift_dph;
     out.novelty[i] = p.novelty;
     out.weight[i] = 1.0;
     out.drift_dph[i] = p.drift_dph;

@@ -12,6 +12,7 @@
 #include "commands.hpp"
 #include "fogdrift/campaign.hpp"
 #include "fogdrift/error.hpp"
+#include "fogdrift/eval/field.hpp"
 #include "fogdrift/eval/startup.hpp"
 #include "fogdrift/model.hpp"
 
@@ -91,10 +92,6 @@ void run(const NorthfindArgs& a) {
     for (double x : v) s += x;
     return v.empty() ? 0.0 : s / static_cast<double>(v.size());
   };
-  // The share of the removable error removed (docs/field.md).
-  auto removed = [](double raw, double comp, double floor) {
-    return (raw * raw - comp * comp) / (raw * raw - floor * floor);
-  };
   const std::string method = model ? to_string(model->provenance.method) : "";
 
   if (a.json) {
@@ -126,7 +123,8 @@ void run(const NorthfindArgs& a) {
       std::vector<double> floor;
       for (const auto& [t0, e] : by_temp) floor.push_back(eval::rms(floor_by_temp[t0]));
       t["true_drift_subtracted_rmse_deg"] = floor;
-      if (model) t["removable_error_removed"] = removed(mean(raw), mean(comp), mean(floor));
+      if (model)
+        t["removable_error_removed"] = eval::share_removed(mean(raw), mean(comp), mean(floor));
     }
     j["table3"] = t;
     if (model) j["guard"] = !a.no_guard;
@@ -171,7 +169,7 @@ void run(const NorthfindArgs& a) {
     if (model)
       std::cout << fmt::format(
           "\n  {} removes {:.0f} % of the removable error, (raw² − comp²) / (raw² − floor²)\n",
-          method, 100 * removed(mean(raw_rmse), mean(comp_rmse), mean(floor)));
+          method, 100 * eval::share_removed(mean(raw_rmse), mean(comp_rmse), mean(floor)));
   }
   if (model && a.no_guard) std::cout << "  (guard off: the model's full correction everywhere)\n";
   if (!stable_raw.empty())

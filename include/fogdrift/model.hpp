@@ -60,9 +60,10 @@ struct DriftPrediction {
 
 /// Drift at every sample of a recording, with the guard's view of each.
 struct RecordingPrediction {
-  std::vector<double> drift_dph;  ///< the drift to subtract, °/h (guarded when asked)
-  std::vector<double> novelty;    ///< ν per sample (NaN without a guard)
-  std::vector<double> weight;     ///< w per sample, the share of the correction applied
+  std::vector<double> drift_dph;        ///< the drift to subtract, °/h (guarded when asked)
+  std::vector<double> model_drift_dph;  ///< f, the model's drift before the guard, °/h
+  std::vector<double> novelty;          ///< ν per sample (NaN without a guard)
+  std::vector<double> weight;           ///< w per sample, the share of the correction applied
 };
 
 struct CompensationModel {

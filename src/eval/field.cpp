@@ -42,12 +42,14 @@ double FieldSummary::comp_mean_rmse_deg() const {
   return mean_over(recordings, [](const FieldRecording& r) { return r.comp_rmse_deg; });
 }
 
-double FieldSummary::share_removed() const {
-  const double raw = raw_mean_rmse_deg(), floor = floor_mean_rmse_deg(),
-               comp = comp_mean_rmse_deg();
+double share_removed(double raw, double comp, double floor) {
   if (!std::isfinite(raw) || !std::isfinite(floor) || !std::isfinite(comp) || raw <= floor)
     return kNaN;
   return (raw * raw - comp * comp) / (raw * raw - floor * floor);
+}
+
+double FieldSummary::share_removed() const {
+  return eval::share_removed(raw_mean_rmse_deg(), comp_mean_rmse_deg(), floor_mean_rmse_deg());
 }
 
 void FieldSummary::accumulate(const FieldSummary& other) {

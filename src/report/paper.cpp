@@ -184,13 +184,18 @@ SeedRun run_seed(const PaperOptions& o, std::uint64_t seed, Stages& stages, Firs
     m.rmse_deg = northfind_rmse(nf, predicted_by(trained.model));
     m.mean_rmse_deg = mean_of(m.rmse_deg);
     for (const sim::SimulatedCampaign& c : start_ups) {
-      for (bool guarded : {true, false}) {
-        const eval::DriftOf drift = [&](const Recording& rec) {
-          return trained.model.predict_dph(rec, guarded);
-        };
-        (guarded ? m.start_up_rmse_deg : m.start_up_unguarded_rmse_deg)
-            .push_back(eval::field_summary(c.campaign, c.recordings, drift).comp_mean_rmse_deg());
-      }
+      // One prediction per recording gives both the guarded and the unguarded drift.
+      std::vector<RecordingPrediction> predicted;
+      for (const Recording& rec : c.recordings) predicted.push_back(trained.model.predict(rec));
+      auto of = [&](const Recording& rec) -> const RecordingPrediction& {
+        return predicted[static_cast<std::size_t>(&rec - c.recordings.data())];
+      };
+      const eval::DriftOf guarded = [&](const Recording& rec) { return of(rec).drift_dph; };
+      const eval::DriftOf unguarded = [&](const Recording& rec) { return of(rec).model_drift_dph; };
+      m.start_up_rmse_deg.push_back(
+          eval::field_summary(c.campaign, c.recordings, guarded).comp_mean_rmse_deg());
+      m.start_up_unguarded_rmse_deg.push_back(
+          eval::field_summary(c.campaign, c.recordings, unguarded).comp_mean_rmse_deg());
     }
     m.hyperparameters = trained.summary.hyperparameters;
     m.fitness_value = trained.summary.fitness_value;
@@ -478,6 +483,8 @@ void validate(const PaperOptions& o) {
       std::string flag = e.option();
       if (flag == "--temps")
         flag = temps_flag;
+      else if (flag == "--approach" && protocol == "calibration")
+        flag = "--cal-approaches";
       else if (flag != "--findings" || protocol != "northfind")
         flag = protocol + " " + flag;
       const std::string what = e.what();

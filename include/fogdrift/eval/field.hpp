@@ -19,6 +19,10 @@
 
 namespace fogdrift::eval {
 
+/// (raw² − comp²) / (raw² − floor²), the share of the removable error removed, from RMSEs; NaN
+/// when any is not finite or raw ≤ floor (nothing removable).
+double share_removed(double raw_deg, double comp_deg, double floor_deg);
+
 /// Predicted drift at every sample of a recording, °/h (e.g. CompensationModel::predict_dph).
 using DriftOf = std::function<std::vector<double>(const Recording&)>;
 

@@ -34,6 +34,8 @@ struct PaperVerdict {
   std::vector<double> ssa_removed;
   /// "METHOD under APPROACH" for every method whose guarded mean RMSE exceeds raw (goal: none).
   std::vector<std::string> worse_than_raw;
+  /// SSA-SVR removes at least 60 % under every start-up condition (true with none asked).
+  bool start_ups_removed_enough() const;
   bool holds() const;  ///< every goal above
 };
 PaperVerdict verdict(const PaperResult& result);
