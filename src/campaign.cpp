@@ -107,7 +107,8 @@ Campaign read_campaign(const fs::path& path) {
 
   Campaign c;
   c.dir = manifest.has_parent_path() ? manifest.parent_path() : fs::path(".");
-  c.latitude_deg = number_in(doc, "latitude_deg", -90, 90, false, file, "");
+  if (doc.contains("latitude_deg"))
+    c.latitude_deg = number_in(doc, "latitude_deg", -90, 90, false, file, "");
   if (doc.contains("generator")) c.generator_json = doc["generator"].dump();
   if (doc.contains("notes")) c.notes_json = doc["notes"].dump();
   if (!doc.contains("recordings")) fail(file, "recordings", "required field is missing");
@@ -172,6 +173,14 @@ Campaign read_campaign(const fs::path& path) {
       fail(file, path_i + ".file",
            fmt::format("recording \"{}\" does not exist", rec_path.string()));
     }
+    if (!c.latitude_deg &&
+        (e.scenario != Scenario::calibration || (e.true_azimuth_deg && !e.input_rate_dph))) {
+      fail(file, "latitude_deg",
+           fmt::format("required field is missing: {} uses it ({})", path_i,
+                       e.scenario != Scenario::calibration
+                           ? "north-finding needs the Earth rate"
+                           : "its input rate is the Earth rate at true_azimuth_deg"));
+    }
     c.recordings.push_back(std::move(e));
   }
   return c;
@@ -181,7 +190,7 @@ std::string manifest_json(const Campaign& c) {
   using ojson = nlohmann::ordered_json;
   ojson doc = ojson::object();
   doc["format"] = kCampaignFormat;
-  doc["latitude_deg"] = c.latitude_deg;
+  if (c.latitude_deg) doc["latitude_deg"] = *c.latitude_deg;
   if (!c.generator_json.empty()) doc["generator"] = ojson::parse(c.generator_json);
   if (!c.notes_json.empty()) doc["notes"] = ojson::parse(c.notes_json);
   ojson list = ojson::array();

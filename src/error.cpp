@@ -23,6 +23,8 @@ InputError::InputError(std::string file, std::size_t line, std::size_t column, s
       message_(std::move(message)) {}
 
 OptionError::OptionError(const std::string& option, const std::string& message)
-    : std::invalid_argument(fmt::format("option {}: {}", option, message)), option_(option) {}
+    : std::invalid_argument(fmt::format("option {}: {}", option, message)),
+      option_(option),
+      message_(message) {}
 
 }  // namespace fogdrift

@@ -215,12 +215,36 @@ double sample_interval_s(const Recording& recording) {
     if (std::fabs(step - median) > 0.01 * median) {
       // Line numbers count the header as line 1; sample i + 1 is on line i + 3.
       throw InputError(recording.source, i + 3, 0,
-                       fmt::format("time_s steps by {} s here but by {} s elsewhere; features need "
-                                   "uniform sampling (within 1 %)",
+                       fmt::format("time_s steps by {:.6g} s here but by {:.6g} s elsewhere; "
+                                   "features need uniform sampling (within 1 %): put the log on a "
+                                   "uniform grid first with 'fogdrift import --rate-hz' "
+                                   "(docs/logs.md)",
                                    step, median));
     }
   }
   return median;
+}
+
+FeatureOptions preprocessing_for(double dt_s, std::size_t shortest_samples,
+                                 const FeatureOptions& base) {
+  if (!(dt_s > 0) || !std::isfinite(dt_s))
+    throw OptionError("dt_s", "the sample interval must be positive and finite");
+  FeatureOptions o = base;
+  const FeatureOptions defaults;
+  const double per_block = std::max(1.0, std::round(defaults.block.block_s / dt_s));
+  o.block.block_s = per_block * dt_s;
+  if (std::fabs(defaults.block.block_s / dt_s - per_block) <= 1e-6 * per_block)
+    o.block.block_s = defaults.block.block_s;  // exactly 10 s, not 10 s up to rounding
+  constexpr double kMinWindow = 5;
+  double window = std::max(defaults.rates.window_s / dt_s, kMinWindow);
+  if (o.rates.causality == signal::Causality::centred && shortest_samples > 0) {
+    const double longest_odd =
+        static_cast<double>(shortest_samples % 2 == 1 ? shortest_samples : shortest_samples - 1);
+    window = std::max(kMinWindow, std::min(window, longest_odd));
+  }
+  o.rates.window_s = window * dt_s;
+  if (window == defaults.rates.window_s / dt_s) o.rates.window_s = defaults.rates.window_s;
+  return o;
 }
 
 FeatureTable compute_features(const Recording& recording, const FeatureSpec& spec,
@@ -232,7 +256,9 @@ FeatureTable compute_features(const Recording& recording, const FeatureSpec& spe
     block = signal::block_samples(options.block, dt);
     signal::validate(options.rates, dt, n);
   } catch (const OptionError& e) {
-    throw InputError(recording.source, 0, 0, e.what());
+    // The setting, named as the library names it, and the recording that cannot meet it.
+    throw OptionError(e.option(), fmt::format("{} (in {}, sampled every {:.6g} s)", e.message(),
+                                              recording.source, dt));
   }
   if (n < block) {
     throw InputError(

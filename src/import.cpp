@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <cmath>
 #include <numbers>
 #include <set>
 
@@ -65,7 +66,27 @@ LinearConversion parse_unit(std::string_view column, std::string_view unit) {
       }
       return {*scale, *offset};
     }
-    return unknown("degC, K, degF, counts:SCALE:OFFSET");
+    if (starts_with(unit, "int")) {
+      const std::string_view rest = unit.substr(3);
+      const auto c1 = rest.find(':');
+      const auto c2 = c1 == std::string_view::npos ? c1 : rest.find(':', c1 + 1);
+      const std::string_view bits = rest.substr(0, c1);
+      int n = 0;
+      for (int b : {8, 12, 16, 24, 32})
+        if (bits == std::to_string(b)) n = b;
+      if (n == 0 || c2 == std::string_view::npos) {
+        throw OptionError(option,
+                          "a signed register is intN:SCALE:OFFSET with N = 8, 12, 16, 24 or 32, "
+                          "meaning °C = value·SCALE + OFFSET, e.g. int16:0.0078125:0");
+      }
+      const auto scale = csv::parse_number(rest.substr(c1 + 1, c2 - c1 - 1));
+      const auto offset = csv::parse_number(rest.substr(c2 + 1));
+      if (!scale || !offset || *scale == 0.0) {
+        throw OptionError(option, "intN:SCALE:OFFSET needs finite numbers and a non-zero SCALE");
+      }
+      return {*scale, *offset, n};
+    }
+    return unknown("degC, K, degF, counts:SCALE:OFFSET, intN:SCALE:OFFSET");
   }
   if (column == "accel_x_g" || column == "accel_y_g") {
     if (unit == "g") return {1.0, 0.0};
@@ -81,7 +102,8 @@ LinearConversion parse_unit(std::string_view column, std::string_view unit) {
   throw OptionError(option, fmt::format("'{}' is not a fogdrift column", column));
 }
 
-Recording import_recording(const std::filesystem::path& path, const ImportOptions& options) {
+std::vector<Recording> import_recordings(const std::filesystem::path& path,
+                                         const ImportOptions& options, ImportReport* report) {
   if (options.decimal_comma && options.delimiter == ',') {
     throw OptionError("--decimal-comma", "needs a delimiter other than ',' (use --delimiter ';')");
   }
@@ -133,7 +155,19 @@ Recording import_recording(const std::filesystem::path& path, const ImportOption
                          fmt::format("column '{}' (for {}): '{}' is not a finite number",
                                      table.header[c], target, cell));
       }
-      values.push_back(*v * conv.scale + conv.offset);
+      double raw = *v;
+      if (conv.signed_bits > 0) {
+        const double range = std::ldexp(1.0, conv.signed_bits);  // 2^N
+        if (raw != std::floor(raw) || raw < -range / 2 || raw >= range) {
+          throw InputError(
+              file, table.row_line[i], c + 1,
+              fmt::format("column '{}' (for {}): '{}' is not an int{} register value "
+                          "(a whole number in [{}, {}])",
+                          table.header[c], target, cell, conv.signed_bits, -range / 2, range - 1));
+        }
+        if (raw >= range / 2) raw -= range;  // the unsigned bit pattern of a negative value
+      }
+      values.push_back(raw * conv.scale + conv.offset);
     }
     used.insert(c);
     return values;
@@ -164,22 +198,6 @@ Recording import_recording(const std::filesystem::path& path, const ImportOption
   if (auto c = column_for("table_deg")) rec.table_deg = convert("table_deg", *c);
   if (auto c = column_for("chamber_degc")) rec.chamber_degc = convert("chamber_degc", *c);
 
-  if (options.time_from_zero) {
-    const double t0 = rec.time_s.front();
-    for (double& t : rec.time_s) t -= t0;
-  }
-  const std::size_t time_col = *column_for("time_s") + 1;
-  for (std::size_t i = 0; i < rec.time_s.size(); ++i) {
-    if (i == 0 && rec.time_s[0] < 0.0) {
-      throw InputError(file, table.row_line[0], time_col,
-                       "time is negative after conversion (use --time-from-zero for loggers "
-                       "that do not count from power-on)");
-    }
-    if (i > 0 && !(rec.time_s[i] > rec.time_s[i - 1])) {
-      throw InputError(file, table.row_line[i], time_col, "time does not strictly increase");
-    }
-  }
-
   if (options.keep_extra) {
     for (std::size_t c = 0; c < table.header.size(); ++c) {
       if (used.count(c)) continue;
@@ -191,8 +209,89 @@ Recording import_recording(const std::filesystem::path& path, const ImportOption
       rec.extra.push_back(std::move(extra));
     }
   }
-  validate(rec);
-  return rec;
+
+  // Power cycles: a time smaller than the one before starts a new recording.
+  const std::size_t time_col = *column_for("time_s") + 1;
+  std::vector<std::size_t> starts = {0};
+  for (std::size_t i = 1; i < rec.time_s.size(); ++i) {
+    if (rec.time_s[i] > rec.time_s[i - 1]) continue;
+    if (rec.time_s[i] < rec.time_s[i - 1] && options.split_at_reset) {
+      starts.push_back(i);
+      continue;
+    }
+    throw InputError(file, table.row_line[i], time_col,
+                     rec.time_s[i] == rec.time_s[i - 1]
+                         ? "time does not strictly increase (the same stamp twice)"
+                         : "time goes backwards; if the logger was power-cycled here, import "
+                           "with --split-at-reset (one recording per power cycle)");
+  }
+  starts.push_back(rec.time_s.size());
+
+  std::vector<Recording> cycles;
+  for (std::size_t k = 0; k + 1 < starts.size(); ++k) {
+    const std::size_t first = starts[k];
+    Recording cycle = slice(rec, first, starts[k + 1]);
+    if (cycle.size() < 2) {
+      throw InputError(file, table.row_line[first], time_col,
+                       "a power cycle of a single sample; a recording needs at least 2");
+    }
+    if (options.outliers) {
+      for (std::size_t c = 0; c < options.outlier_columns.size(); ++c) {
+        const std::string& name = options.outlier_columns[c];
+        std::vector<double>* x = name == "gyro_dph"         ? &cycle.gyro_dph
+                                 : name == "temp_fog_degc"  ? &cycle.temp_fog_degc
+                                 : name == "temp_acc1_degc" ? &cycle.temp_acc1_degc
+                                 : name == "temp_acc2_degc" ? &cycle.temp_acc2_degc
+                                 : name == "chamber_degc" && cycle.chamber_degc
+                                     ? &*cycle.chamber_degc
+                                 : name == "accel_x_g" && cycle.accel_x_g ? &*cycle.accel_x_g
+                                 : name == "accel_y_g" && cycle.accel_y_g ? &*cycle.accel_y_g
+                                                                          : nullptr;
+        if (!x) {
+          throw OptionError("--outlier-columns",
+                            fmt::format("'{}' is not a signal column of {} (gyro_dph, "
+                                        "temp_*_degc, and chamber_degc or accel_*_g when present)",
+                                        name, file));
+        }
+        signal::HampelResult h;
+        try {
+          h = signal::hampel(*x, *options.outliers);
+        } catch (const OptionError& e) {
+          throw OptionError(e.option() == "half_window" ? "--hampel" : "--hampel-sigma",
+                            e.message());
+        }
+        if (report) {
+          if (k == 0) report->outliers.push_back({name, {}, {}, {}});
+          ImportReport::Replaced& r = report->outliers[c];
+          for (std::size_t i : h.replaced) {
+            r.lines.push_back(table.row_line[first + i]);
+            r.was.push_back((*x)[i]);
+            r.now.push_back(h.signal[i]);
+          }
+        }
+        *x = std::move(h.signal);
+      }
+    }
+    if (options.time_from_zero) {
+      const double t0 = cycle.time_s.front();
+      for (double& t : cycle.time_s) t -= t0;
+    }
+    if (cycle.time_s.front() < 0.0) {
+      throw InputError(file, table.row_line[first], time_col,
+                       "time is negative after conversion (use --time-from-zero for loggers "
+                       "that do not count from power-on)");
+    }
+    validate(cycle);
+    cycles.push_back(std::move(cycle));
+  }
+  return cycles;
+}
+
+Recording import_recording(const std::filesystem::path& path, const ImportOptions& options,
+                           ImportReport* report) {
+  ImportOptions one = options;
+  one.split_at_reset = false;
+  return std::move(import_recordings(path, one, report).front());
 }
 
 }  // namespace fogdrift

@@ -157,6 +157,32 @@ Recording read_recording(const std::filesystem::path& path) {
   return rec;
 }
 
+Recording slice(const Recording& r, std::size_t begin, std::size_t end) {
+  if (begin > end || end > r.size()) throw std::out_of_range("slice: range outside the recording");
+  const auto b = static_cast<std::ptrdiff_t>(begin), e = static_cast<std::ptrdiff_t>(end);
+  auto cut = [&](const std::vector<double>& v) {
+    return std::vector<double>(v.begin() + b, v.begin() + e);
+  };
+  auto cut_optional = [&](const std::optional<std::vector<double>>& v) {
+    return v ? std::optional<std::vector<double>>(cut(*v)) : std::nullopt;
+  };
+  Recording out;
+  out.time_s = cut(r.time_s);
+  out.gyro_dph = cut(r.gyro_dph);
+  out.temp_fog_degc = cut(r.temp_fog_degc);
+  out.temp_acc1_degc = cut(r.temp_acc1_degc);
+  out.temp_acc2_degc = cut(r.temp_acc2_degc);
+  out.accel_x_g = cut_optional(r.accel_x_g);
+  out.accel_y_g = cut_optional(r.accel_y_g);
+  out.table_deg = cut_optional(r.table_deg);
+  out.chamber_degc = cut_optional(r.chamber_degc);
+  for (const auto& x : r.extra)
+    out.extra.push_back(
+        {x.name, std::vector<std::string>(x.cells.begin() + b, x.cells.begin() + e)});
+  out.source = r.source;
+  return out;
+}
+
 void validate(const Recording& r) {
   const std::string file = r.source.empty() ? std::string("<recording>") : r.source;
   const std::size_t n = r.size();

@@ -121,11 +121,13 @@ TEST(Features, TooShortForTheWindowOrABlock) {
   try {
     compute_features(r, default_feature_spec());  // 121 s centred window
     FAIL();
-  } catch (const InputError& e) {
-    EXPECT_EQ(e.file(), "quadratic.csv");
+  } catch (const OptionError& e) {
+    // The setting a user can change, and the recording that cannot meet it.
+    EXPECT_EQ(e.option(), "window_s");
     EXPECT_NE(e.message().find("window of 121 samples is longer than the signal (100"),
               std::string::npos)
         << e.what();
+    EXPECT_NE(e.message().find("quadratic.csv"), std::string::npos) << e.what();
   }
   FeatureOptions options;
   options.rates.window_s = 5.0;
@@ -137,7 +139,7 @@ TEST(Features, TooShortForTheWindowOrABlock) {
     EXPECT_NE(e.message().find("fewer than one averaging block"), std::string::npos);
   }
   options.block.block_s = 2.5;
-  EXPECT_THROW(compute_features(r, default_feature_spec(), options), InputError);
+  EXPECT_THROW(compute_features(r, default_feature_spec(), options), OptionError);
 }
 
 }  // namespace

@@ -4,11 +4,14 @@
 #include <filesystem>
 #include <iostream>
 #include <memory>
+#include <optional>
 
 #include "commands.hpp"
 #include "fogdrift/error.hpp"
 #include "fogdrift/import.hpp"
 #include "fogdrift/recording.hpp"
+#include "fogdrift/regrid.hpp"
+#include "fogdrift/signal/hampel.hpp"
 
 namespace fs = std::filesystem;
 
@@ -24,7 +27,78 @@ struct ImportArgs {
   bool decimal_comma = false;
   bool time_from_zero = false;
   bool drop_extra = false;
+  bool split_at_reset = false;
+  double rate_hz = 0;
+  std::string method = "auto";
+  double max_gap_s = -1;
+  std::size_t hampel = 0;
+  double hampel_sigma = signal::HampelOptions{}.n_sigma;
+  std::string outlier_columns = "gyro_dph,temp_fog_degc,temp_acc1_degc,temp_acc2_degc";
+  bool quiet = false;
 };
+
+std::vector<std::string> split_list(const std::string& text) {
+  std::vector<std::string> out;
+  std::size_t pos = 0;
+  while (pos <= text.size()) {
+    const auto comma = text.find(',', pos);
+    out.push_back(text.substr(pos, comma == std::string::npos ? std::string::npos : comma - pos));
+    if (comma == std::string::npos) break;
+    pos = comma + 1;
+  }
+  return out;
+}
+
+/// out.csv -> out_1.csv, out_2.csv, ... for the segments of a split recording.
+fs::path segment_path(const fs::path& target, std::size_t index, std::size_t count) {
+  if (count == 1) return target;
+  return target.parent_path() /
+         fmt::format("{}_{}{}", target.stem().string(), index + 1, target.extension().string());
+}
+
+/// How import treated one file, for people: spikes, grid, gaps and segments.
+void report(const ImportReport& imported, const std::vector<RegridSummary>& grids) {
+  for (const auto& r : imported.outliers) {
+    if (r.lines.empty()) {
+      std::cout << fmt::format("  spikes: none in {}\n", r.column);
+      continue;
+    }
+    std::cout << fmt::format("  spikes: {} replaced in {}", r.lines.size(), r.column);
+    for (std::size_t k = 0; k < std::min<std::size_t>(r.lines.size(), 5); ++k)
+      std::cout << fmt::format("{} line {} {:.6g} -> {:.6g}", k ? "," : ":", r.lines[k], r.was[k],
+                               r.now[k]);
+    std::cout << (r.lines.size() > 5 ? ", ...\n" : "\n");
+  }
+  for (const RegridSummary& g : grids) {
+    std::cout << fmt::format(
+        "  grid: {} samples (median step {:.6g} s, jitter up to {:.1f} %) -> {} samples at {:.6g} "
+        "Hz by {}\n",
+        g.input_samples, g.input_median_step_s, 100 * g.input_max_jitter, g.output_samples,
+        g.rate_hz, to_string(g.method));
+    std::size_t bridged = 0, split = 0;
+    for (const auto& gap : g.gaps) (gap.bridged ? bridged : split) += 1;
+    if (!g.gaps.empty())
+      std::cout << fmt::format(
+          "  gaps: {} bridged by interpolation, {} split (limit --max-gap-s "
+          "{:.6g} s)\n",
+          bridged, split, g.max_gap_s);
+    for (std::size_t k = 0; k < g.gaps.size() && k < 10; ++k) {
+      const auto& gap = g.gaps[k];
+      std::cout << fmt::format(
+          "    {:.6g} .. {:.6g} s ({:.6g} s): {}\n", gap.start_s, gap.end_s, gap.length_s(),
+          gap.bridged ? fmt::format("bridged, {} samples interpolated", gap.filled)
+                      : std::string("split"));
+    }
+    if (g.gaps.size() > 10) std::cout << fmt::format("    ... {} more\n", g.gaps.size() - 10);
+    if (g.dropped_segments)
+      std::cout << fmt::format("  dropped {} segment(s) of a single sample\n", g.dropped_segments);
+    if (!g.dropped_columns.empty()) {
+      std::string list;
+      for (const auto& c : g.dropped_columns) list += (list.empty() ? "" : ", ") + c;
+      std::cout << "  not carried onto the grid (text columns): " << list << "\n";
+    }
+  }
+}
 
 std::pair<std::string, std::string> split_assignment(const std::string& text,
                                                      const std::string& option) {
@@ -54,7 +128,11 @@ void add_import(CLI::App& app) {
       "    --map temp_fog_degc=T0 --unit temp_fog_degc=counts:0.0625:-40 ...\n"
       "Units: time_s s|ms|us; gyro_dph deg/h|deg/s|rad/s|mrad/s|arcsec/s; temperatures\n"
       "degC|K|degF|counts:SCALE:OFFSET (°C = counts·SCALE + OFFSET); accel_*_g g|mg|m/s2;\n"
-      "table_deg deg|rad. See docs/formats.md.");
+      "table_deg deg|rad; a signed register logged as unsigned counts: intN:SCALE:OFFSET.\n"
+      "Jittery, bursty or gappy logs: --rate-hz R puts them on a uniform grid (what train needs),\n"
+      "bridging gaps up to --max-gap-s and splitting at longer ones (out.csv -> out_1.csv, ...).\n"
+      "Spikes: --hampel 5 replaces samples more than --hampel-sigma local STDs from the median of\n"
+      "11 samples. Each change is reported. See docs/logs.md for a logger file from end to end.");
   auto a = std::make_shared<ImportArgs>();
   cmd->add_option("INPUT", a->inputs, "Foreign CSV file(s)")->required()->check(CLI::ExistingFile);
   cmd->add_option("--out,-o", a->out,
@@ -68,6 +146,29 @@ void add_import(CLI::App& app) {
   cmd->add_flag("--time-from-zero", a->time_from_zero,
                 "Subtract the first time stamp (for loggers that count from their own boot)");
   cmd->add_flag("--drop-extra", a->drop_extra, "Do not keep unmapped columns");
+  cmd->add_flag("--split-at-reset", a->split_at_reset,
+                "A time stamp smaller than the one before is a power cycle: write one recording "
+                "per cycle (out.csv -> out_1.csv, out_2.csv, ...)");
+  cmd->add_option("--rate-hz", a->rate_hz,
+                  "Put the recording on a uniform grid at this rate, Hz (0: keep the logger's "
+                  "time stamps); for bursts, the burst rate, e.g. 1/305 s = 0.0032787")
+      ->capture_default_str();
+  cmd->add_option("--method", a->method,
+                  "Grid filling: mean (bins of 1/rate; anti-aliasing for faster logs), linear "
+                  "(interpolation; jitter), auto (mean when the log is at least twice as fast)")
+      ->capture_default_str();
+  cmd->add_option("--max-gap-s", a->max_gap_s,
+                  "Longest gap bridged by interpolation, s; longer gaps split the recording "
+                  "(default: 10 grid steps)");
+  cmd->add_option("--hampel", a->hampel,
+                  "Replace spikes: Hampel filter of half-width N samples (0: off; 5 is usual)")
+      ->capture_default_str();
+  cmd->add_option("--hampel-sigma", a->hampel_sigma, "Hampel threshold, local STDs")
+      ->capture_default_str();
+  cmd->add_option("--outlier-columns", a->outlier_columns,
+                  "Columns the Hampel filter looks at, comma-separated")
+      ->capture_default_str();
+  cmd->add_flag("-q,--quiet", a->quiet, "Print nothing on success");
   cmd->callback([a] {
     ImportOptions o;
     for (const auto& m : a->maps) {
@@ -82,6 +183,29 @@ void add_import(CLI::App& app) {
     o.decimal_comma = a->decimal_comma;
     o.time_from_zero = a->time_from_zero;
     o.keep_extra = !a->drop_extra;
+    o.split_at_reset = a->split_at_reset;
+    if (a->hampel > 0) {
+      o.outliers = signal::HampelOptions{a->hampel, a->hampel_sigma};
+      o.outlier_columns = split_list(a->outlier_columns);
+    } else if (a->hampel_sigma != signal::HampelOptions{}.n_sigma) {
+      throw OptionError("--hampel-sigma", "has no effect without --hampel N");
+    }
+    std::optional<RegridOptions> grid;
+    if (a->rate_hz != 0) {
+      grid.emplace();
+      grid->rate_hz = a->rate_hz;
+      grid->max_gap_s = a->max_gap_s;
+      try {
+        grid->method = regrid_method_from_string(a->method);
+      } catch (const OptionError& e) {
+        throw OptionError("--method", e.message());
+      }
+      if (a->max_gap_s < 0 && a->max_gap_s != -1)
+        throw OptionError("--max-gap-s", fmt::format("{} s is negative", a->max_gap_s));
+    } else if (a->method != "auto" || a->max_gap_s != -1) {
+      throw OptionError(a->method != "auto" ? "--method" : "--max-gap-s",
+                        "has no effect without --rate-hz R");
+    }
     const bool to_folder = a->inputs.size() > 1 || fs::is_directory(a->out);
     if (to_folder && !fs::is_directory(a->out)) {
       throw OptionError("--out", fmt::format("'{}' must be an existing folder when importing "
@@ -89,15 +213,45 @@ void add_import(CLI::App& app) {
                                              a->out));
     }
     // Read and convert everything first, so a bad file leaves no partial set of outputs.
-    std::vector<std::pair<fs::path, Recording>> converted;
+    struct Converted {
+      fs::path target;
+      std::vector<Recording> segments;
+      ImportReport report;
+      std::vector<RegridSummary> grids;  ///< one per power cycle
+    };
+    std::vector<Converted> converted;
     for (const auto& input : a->inputs) {
-      const fs::path target =
-          to_folder ? fs::path(a->out) / fs::path(input).filename() : fs::path(a->out);
-      converted.emplace_back(target, import_recording(input, o));
+      Converted c;
+      c.target = to_folder ? fs::path(a->out) / fs::path(input).filename() : fs::path(a->out);
+      for (Recording& rec : import_recordings(input, o, &c.report)) {
+        if (!grid) {
+          c.segments.push_back(std::move(rec));
+          continue;
+        }
+        RegridResult r;
+        try {
+          r = regrid(rec, *grid);
+        } catch (const OptionError& e) {
+          throw OptionError(e.option() == "rate_hz" ? "--rate-hz" : "--max-gap-s", e.message());
+        }
+        for (auto& seg : r.segments) c.segments.push_back(std::move(seg));
+        c.grids.push_back(r.summary);
+      }
+      converted.push_back(std::move(c));
     }
-    for (const auto& [target, rec] : converted) {
-      write_recording(target, rec);
-      std::cout << fmt::format("{} -> {} ({} samples)\n", rec.source, target.string(), rec.size());
+    for (const auto& c : converted) {
+      for (std::size_t k = 0; k < c.segments.size(); ++k) {
+        const fs::path path = segment_path(c.target, k, c.segments.size());
+        write_recording(path, c.segments[k]);
+        if (!a->quiet)
+          std::cout << fmt::format("{} -> {} ({} samples, {:.6g} .. {:.6g} s)\n",
+                                   c.segments[k].source, path.string(), c.segments[k].size(),
+                                   c.segments[k].time_s.front(), c.segments[k].time_s.back());
+      }
+      if (!a->quiet) report(c.report, c.grids);
+      if (!a->quiet && c.grids.empty() && !is_uniformly_sampled(c.segments.front()))
+        std::cout << "  note: the time steps are not uniform (within 1 %); train needs that: "
+                     "import again with --rate-hz R\n";
     }
   });
 }

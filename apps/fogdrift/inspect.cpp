@@ -59,10 +59,12 @@ int inspect_campaign(const fs::path& path, bool json) {
   int failures = 0;
   nlohmann::ordered_json out;
   out["campaign"] = c.dir.string();
-  out["latitude_deg"] = c.latitude_deg;
+  if (c.latitude_deg) out["latitude_deg"] = *c.latitude_deg;
   if (!json) {
-    std::cout << fmt::format("{}: campaign, latitude {}°, {} recordings\n", c.dir.string(),
-                             c.latitude_deg, c.recordings.size());
+    std::cout << fmt::format(
+        "{}: campaign, {}, {} recordings\n", c.dir.string(),
+        c.latitude_deg ? fmt::format("latitude {}°", *c.latitude_deg) : "no latitude",
+        c.recordings.size());
     std::cout << fmt::format(
         "  {:<28}{:<12}{:<6}{:>4}{:>8}{:>8}{:>9}{:>6}{:>17}{:>17}{:>17}{:>11}"
         "{:>10}\n",

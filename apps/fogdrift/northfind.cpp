@@ -51,17 +51,18 @@ void run(const NorthfindArgs& a) {
                        fmt::format("{}: a north-finding recording needs true_azimuth_deg", e.file));
     Recording rec = read_recording(campaign.path_of(e));
     Row r{e.file, e.scenario, e.initial_temp_degc, *e.true_azimuth_deg, {}, {}, {}};
-    r.raw = eval::northfind_errors_deg(rec, campaign.latitude_deg, *e.true_azimuth_deg);
+    r.raw = eval::northfind_errors_deg(rec, campaign.latitude_deg.value(), *e.true_azimuth_deg);
     if (rec.has_column("drift_true_dph")) {
       Recording truth = rec;
       const std::vector<double> d = rec.numeric_column("drift_true_dph");
       for (std::size_t i = 0; i < d.size(); ++i) truth.gyro_dph[i] -= d[i];
-      r.floor = eval::northfind_errors_deg(truth, campaign.latitude_deg, *e.true_azimuth_deg);
+      r.floor =
+          eval::northfind_errors_deg(truth, campaign.latitude_deg.value(), *e.true_azimuth_deg);
     }
     if (model) {
       const std::vector<double> drift = model->predict_dph(rec, !a.no_guard);
       for (std::size_t i = 0; i < drift.size(); ++i) rec.gyro_dph[i] -= drift[i];
-      r.comp = eval::northfind_errors_deg(rec, campaign.latitude_deg, *e.true_azimuth_deg);
+      r.comp = eval::northfind_errors_deg(rec, campaign.latitude_deg.value(), *e.true_azimuth_deg);
     }
     rows.push_back(std::move(r));
   }

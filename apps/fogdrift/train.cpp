@@ -6,10 +6,12 @@
 #include <map>
 #include <memory>
 #include <nlohmann/json.hpp>
+#include <optional>
 
 #include "cli_util.hpp"
 #include "commands.hpp"
 #include "fogdrift/campaign.hpp"
+#include "fogdrift/csv.hpp"
 #include "fogdrift/error.hpp"
 #include "fogdrift/sha256.hpp"
 #include "fogdrift/thread_pool.hpp"
@@ -26,6 +28,8 @@ struct TrainArgs {
   std::string features = default_feature_spec().to_string();
   std::string cv = "auto";
   std::string differentiator = "centred";
+  std::string block_s = "auto";
+  std::string rate_window_s = "auto";
   std::size_t folds = 3;
   std::size_t population = 20;
   std::size_t iterations = 50;
@@ -44,20 +48,36 @@ struct TrainArgs {
 
 // Library option names as the user typed them.
 OptionError as_flag(const OptionError& e) {
-  static const std::map<std::string, std::string> flags = {
-      {"population", "--population"}, {"iterations", "--iterations"},
-      {"c_min", "--c-min"},           {"c_max", "--c-max"},
-      {"sigma_min", "--sigma-min"},   {"sigma_max", "--sigma-max"},
-      {"epsilon", "--epsilon"},       {"epsilon_min", "--epsilon"},
-      {"epsilon_max", "--epsilon"},   {"cv", "--cv"},
-      {"folds", "--folds"},           {"hidden", "--hidden"},
-      {"degree", "--max-degree"},     {"features", "--features"}};
+  static const std::map<std::string, std::string> flags = {{"population", "--population"},
+                                                           {"iterations", "--iterations"},
+                                                           {"c_min", "--c-min"},
+                                                           {"c_max", "--c-max"},
+                                                           {"sigma_min", "--sigma-min"},
+                                                           {"sigma_max", "--sigma-max"},
+                                                           {"epsilon", "--epsilon"},
+                                                           {"epsilon_min", "--epsilon"},
+                                                           {"epsilon_max", "--epsilon"},
+                                                           {"cv", "--cv"},
+                                                           {"folds", "--folds"},
+                                                           {"hidden", "--hidden"},
+                                                           {"degree", "--max-degree"},
+                                                           {"features", "--features"},
+                                                           {"block_s", "--block-s"},
+                                                           {"window_s", "--rate-window-s"},
+                                                           {"poly_order", "--rate-window-s"}};
   const auto it = flags.find(e.option());
   if (it == flags.end()) return e;
-  std::string message = e.what();
-  const std::string prefix = "option " + e.option() + ": ";
-  if (message.rfind(prefix, 0) == 0) message.erase(0, prefix.size());
-  return OptionError(it->second, message);
+  return OptionError(it->second, e.message());
+}
+
+/// "auto" or a positive number of seconds.
+std::optional<double> seconds_or_auto(const std::string& text, const std::string& flag) {
+  if (text == "auto") return std::nullopt;
+  const auto v = csv::parse_number(text);
+  if (!v || !(*v > 0))
+    throw OptionError(flag,
+                      fmt::format("'{}' is neither auto nor a positive number of seconds", text));
+  return v;
 }
 
 void run(const TrainArgs& a) {
@@ -103,11 +123,33 @@ void run(const TrainArgs& a) {
     };
   }
 
+  const auto block_s = seconds_or_auto(a.block_s, "--block-s");
+  const auto window_s = seconds_or_auto(a.rate_window_s, "--rate-window-s");
   const Campaign campaign = read_campaign(a.campaign);
   TrainResult result;
   Dataset data;
+  std::vector<std::string> notes;
   try {
-    data = build_dataset(campaign, Role::train, Scenario::calibration, dataset);
+    std::vector<RecordingInput> inputs = read_inputs(campaign, Role::train, Scenario::calibration);
+    // Preprocessing fitted to the recordings' sampling, unless the user fixed it.
+    const double dt_s = sample_interval_s(inputs.front().recording);
+    std::size_t shortest = inputs.front().recording.size();
+    for (const auto& in : inputs) shortest = std::min(shortest, in.recording.size());
+    const FeatureOptions fitted = preprocessing_for(dt_s, shortest, dataset.preprocessing);
+    const FeatureOptions defaults;
+    dataset.preprocessing.block.block_s = block_s.value_or(fitted.block.block_s);
+    dataset.preprocessing.rates.window_s = window_s.value_or(fitted.rates.window_s);
+    if (!block_s && fitted.block.block_s != defaults.block.block_s)
+      notes.push_back(
+          fmt::format("recordings sampled every {:.6g} s: blocks of {:.6g} s, not {} s "
+                      "(--block-s)",
+                      dt_s, fitted.block.block_s, defaults.block.block_s));
+    if (!window_s && fitted.rates.window_s != defaults.rates.window_s)
+      notes.push_back(
+          fmt::format("recordings sampled every {:.6g} s, shortest {} samples: "
+                      "temperature rates over {:.6g} s, not {} s (--rate-window-s)",
+                      dt_s, shortest, fitted.rates.window_s, defaults.rates.window_s));
+    data = build_dataset(inputs, dataset);
     if (data.rows == 0)
       throw InputError((campaign.dir / "campaign.json").string(), 0, 0,
                        "no calibration recording has role \"train\"; nothing to train on");
@@ -157,7 +199,10 @@ void run(const TrainArgs& a) {
                  {"early_stopped", s.mlp.status == MlpStatus::early_stopped},
                  {"train_rmse", s.mlp.train_rmse}};
     if (s.method == Method::poly) j["poly_cv_rmse_by_degree"] = s.poly_cv_rmse;
+    j["notes"] = notes;
     j["warnings"] = data.warnings;
+    j["block_s"] = dataset.preprocessing.block.block_s;
+    j["rate_window_s"] = dataset.preprocessing.rates.window_s;
     j["seconds"] = s.seconds;
     std::cout << j.dump(2) << "\n";
   } else if (!a.quiet) {
@@ -174,6 +219,7 @@ void run(const TrainArgs& a) {
       std::cout << fmt::format("  search: {}; {} distinct candidates, {} SVR fits\n",
                                s.tuning.optimizer.brief_report(), s.tuning.candidates,
                                s.tuning.fits);
+    for (const auto& n : notes) std::cout << "  note: " << n << "\n";
     for (const auto& w : data.warnings) std::cout << "  warning: " << w << "\n";
     std::cout << fmt::format("  wrote {} in {:.1f} s\n", a.output, s.seconds);
   }
@@ -221,6 +267,16 @@ void add_train(CLI::App& app) {
   cmd->add_option("--differentiator", args->differentiator,
                   "Temperature rates: centred (offline, no delay) or causal (what the instrument "
                   "can run sample by sample; train with it for a streaming compensator)")
+      ->capture_default_str();
+  cmd->add_option(
+         "--block-s", args->block_s,
+         "Averaging block of the modelling rows, s, a whole number of samples; auto: 10 s, "
+         "or the nearest whole number of samples for a log that 10 s does not divide "
+         "(one sample for logs slower than 0.1 Hz)")
+      ->capture_default_str();
+  cmd->add_option("--rate-window-s", args->rate_window_s,
+                  "Window of the temperature-rate differentiator, s; auto: 121 s, at least 5 "
+                  "samples, and (centred) no longer than the shortest recording")
       ->capture_default_str();
   cmd->add_option("--cv", args->cv,
                   "Folds: auto (temperature with at least three temperatures, else repetition), "

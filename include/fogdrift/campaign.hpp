@@ -49,7 +49,10 @@ struct CampaignEntry {
 
 struct Campaign {
   std::filesystem::path dir;  ///< folder holding campaign.json (set by read_campaign)
-  double latitude_deg = 0;    ///< site latitude, degrees, in [-90, 90]
+  /// Site latitude, degrees, in [-90, 90]. Required only where it is used: for northfind and
+  /// stable recordings, and for a calibration recording whose input rate comes from its true
+  /// azimuth (no input_rate_dph).
+  std::optional<double> latitude_deg;
   std::vector<CampaignEntry> recordings;
   std::string generator_json;  ///< "generator" object as JSON text (who made the data), or empty
   std::string notes_json;      ///< free-form "notes" value as JSON text, or empty

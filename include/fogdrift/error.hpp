@@ -35,9 +35,11 @@ class OptionError : public std::invalid_argument {
  public:
   OptionError(const std::string& option, const std::string& message);
   const std::string& option() const { return option_; }
+  const std::string& message() const { return message_; }  ///< what() without "option X: "
 
  private:
   std::string option_;
+  std::string message_;
 };
 
 }  // namespace fogdrift

@@ -106,6 +106,17 @@ struct FeatureOptions {
   signal::BlockAverageOptions block;    ///< block averaging (default 10 s)
 };
 
+/// The default preprocessing fitted to recordings sampled every dt_s seconds, the shortest of
+/// which has shortest_samples samples (docs/logs.md, "Slow or short logs"):
+///   block_s   10 s when that is a whole number of samples; else the whole number of samples
+///             nearest 10 s, at least one (a log slower than 0.1 Hz is not averaged further);
+///   window_s  121 s when that spans at least 5 samples, else 5 samples; for the centred
+///             differentiator no longer than the shortest recording (its largest odd number of
+///             samples, at least 5: a shorter recording still fails, naming window_s).
+/// The differentiator's causality and degree are kept from `base`.
+FeatureOptions preprocessing_for(double dt_s, std::size_t shortest_samples,
+                                 const FeatureOptions& base = {});
+
 /// Feature rows of one recording, at the block rate.
 struct FeatureTable {
   std::vector<std::string> names;

@@ -6,23 +6,30 @@
 //   time_s          s | ms | us
 //   gyro_dph        deg/h | deg/s | rad/s | mrad/s | arcsec/s
 //   temp_*_degc, chamber_degc   degC | K | degF | counts:SCALE:OFFSET  (°C = counts·SCALE + OFFSET)
+//                               | intN:SCALE:OFFSET (N-bit two's complement register, N = 8, 12,
+//                                 16, 24, 32, logged signed or as its unsigned bit pattern)
 //   accel_*_g       g | mg | m/s2
 //   table_deg       deg | rad
 #pragma once
 
 #include <filesystem>
 #include <map>
+#include <optional>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "fogdrift/recording.hpp"
+#include "fogdrift/signal/hampel.hpp"
 
 namespace fogdrift {
 
-/// value_in_fogdrift_units = raw·scale + offset
+/// value_in_fogdrift_units = raw·scale + offset, where raw is first read as an N-bit two's
+/// complement integer when signed_bits = N > 0 (so 65535 is −1 for N = 16).
 struct LinearConversion {
   double scale = 1.0;
   double offset = 0.0;
+  int signed_bits = 0;  ///< 0: the raw value as it is; N: an N-bit signed register
 };
 
 /// The conversion named by `unit` for fogdrift column `column` (e.g. "gyro_dph", "rad/s").
@@ -39,11 +46,39 @@ struct ImportOptions {
   bool decimal_comma = false;   ///< numbers written "1,5" (needs a delimiter other than ',')
   bool time_from_zero = false;  ///< subtract the first time stamp (loggers that count from boot)
   bool keep_extra = true;       ///< keep unmapped foreign columns as extra columns
+  /// A time stamp smaller than the one before is a power cycle (a logger counting from its own
+  /// boot) and starts a new recording, its time counted from its own first sample; without this
+  /// it is an error. Only import_recordings() accepts it.
+  bool split_at_reset = false;
+  /// Spike removal (signal/hampel.hpp) on the columns in outlier_columns, after unit conversion;
+  /// none when empty.
+  std::optional<signal::HampelOptions> outliers;
+  /// fogdrift columns the spike removal looks at; every one must be in the recording.
+  std::vector<std::string> outlier_columns = {"gyro_dph", "temp_fog_degc", "temp_acc1_degc",
+                                              "temp_acc2_degc"};
+};
+
+/// What import changed besides units: the samples the spike removal replaced, per column.
+struct ImportReport {
+  struct Replaced {
+    std::string column;
+    std::vector<std::size_t> lines;  ///< the file lines of the replaced samples
+    std::vector<double> was, now;    ///< their values before and after, fogdrift units
+  };
+  std::vector<Replaced> outliers;  ///< one entry per column looked at, in outlier_columns order
 };
 
 /// Reads the foreign file `path` and returns a validated recording. Throws InputError naming the
 /// file, line and column for bad cells and non-increasing time, and OptionError for a mapping to a
 /// column the file does not have or an impossible option combination.
-Recording import_recording(const std::filesystem::path& path, const ImportOptions& options);
+/// When `report` is given it receives what the spike removal replaced.
+Recording import_recording(const std::filesystem::path& path, const ImportOptions& options,
+                           ImportReport* report = nullptr);
+
+/// The same for a log that may hold several power cycles (options.split_at_reset): one recording
+/// per cycle, in file order. Spikes are looked for within each cycle.
+std::vector<Recording> import_recordings(const std::filesystem::path& path,
+                                         const ImportOptions& options,
+                                         ImportReport* report = nullptr);
 
 }  // namespace fogdrift

@@ -65,6 +65,10 @@ Recording read_recording(const std::filesystem::path& path);
 /// lengths, finite values, strictly increasing time). Throws InputError naming `source`.
 void validate(const Recording& recording);
 
+/// Samples [begin, end) of `recording`, every column (extras too); source is kept.
+/// Throws std::out_of_range when the range is not inside the recording.
+Recording slice(const Recording& recording, std::size_t begin, std::size_t end);
+
 /// Writes the recording atomically: known columns in the canonical order, then the extras.
 void write_recording(const std::filesystem::path& path, const Recording& recording);
 

@@ -70,13 +70,14 @@ FieldSummary field_summary(const Campaign& campaign, const std::vector<Recording
     FieldRecording r;
     r.file = e.file;
     r.initial_temp_degc = e.initial_temp_degc;
-    r.raw_rmse_deg = rmse_after(rec, {}, campaign.latitude_deg, *e.true_azimuth_deg);
+    r.raw_rmse_deg = rmse_after(rec, {}, campaign.latitude_deg.value(), *e.true_azimuth_deg);
     r.floor_rmse_deg = rec.has_column("drift_true_dph")
                            ? rmse_after(rec, rec.numeric_column("drift_true_dph"),
-                                        campaign.latitude_deg, *e.true_azimuth_deg)
+                                        campaign.latitude_deg.value(), *e.true_azimuth_deg)
                            : kNaN;
     r.comp_rmse_deg =
-        drift ? rmse_after(rec, drift(rec), campaign.latitude_deg, *e.true_azimuth_deg) : kNaN;
+        drift ? rmse_after(rec, drift(rec), campaign.latitude_deg.value(), *e.true_azimuth_deg)
+              : kNaN;
     if (r.comp_rmse_deg > r.raw_rmse_deg) ++out.worse_than_raw;
     out.recordings.push_back(std::move(r));
   }

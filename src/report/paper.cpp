@@ -59,8 +59,8 @@ std::vector<double> northfind_rmse(const sim::SimulatedCampaign& nf, const Drift
       const std::vector<double> d = drift(rec);
       for (std::size_t k = 0; k < d.size(); ++k) rec.gyro_dph[k] -= d[k];
     }
-    out.push_back(eval::rms(
-        eval::northfind_errors_deg(rec, nf.campaign.latitude_deg, e.true_azimuth_deg.value())));
+    out.push_back(eval::rms(eval::northfind_errors_deg(rec, nf.campaign.latitude_deg.value(),
+                                                       e.true_azimuth_deg.value())));
   }
   return out;
 }

@@ -132,8 +132,8 @@ TEST(Northfind, ZeroDriftAndNoiseGivesTheTrueAzimuth) {
     const auto& e = nf.campaign.recordings[i];
     EXPECT_EQ(e.scenario, Scenario::northfind);
     ASSERT_TRUE(e.true_azimuth_deg.has_value());
-    const auto errors =
-        eval::northfind_errors_deg(nf.recordings[i], nf.campaign.latitude_deg, *e.true_azimuth_deg);
+    const auto errors = eval::northfind_errors_deg(
+        nf.recordings[i], nf.campaign.latitude_deg.value(), *e.true_azimuth_deg);
     ASSERT_EQ(errors.size(), 5u);
     // Constant turn-on bias and accelerometer biases (thermal part included) cancel exactly.
     for (double err : errors) EXPECT_NEAR(err, 0.0, 1e-6) << e.file;
