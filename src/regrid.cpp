@@ -81,20 +81,22 @@ bool is_uniformly_sampled(const Recording& recording) {
 }
 
 RegridResult regrid(const Recording& rec, const RegridOptions& options) {
-  if (!(options.rate_hz > 0) || options.rate_hz > 1000 || !std::isfinite(options.rate_hz))
-    throw OptionError("rate_hz", fmt::format("{} Hz is outside (0, 1000]", options.rate_hz));
+  if (!(options.step_s >= 1e-3) || options.step_s > 1e6)
+    throw OptionError("step_s", fmt::format("a grid step of {} s is outside [0.001, 1e6] s "
+                                            "(a rate of 1 µHz to 1 kHz)",
+                                            options.step_s));
   if (!std::isfinite(options.max_gap_s))
     throw OptionError("max_gap_s", "must be a finite number of seconds");
   if (options.min_segment_samples < 2)
     throw OptionError("min_segment_samples", "a segment needs at least 2 samples");
   validate(rec);
 
-  const double h = 1.0 / options.rate_hz;
+  const double h = options.step_s;
   const auto& t = rec.time_s;
   const std::size_t n = t.size();
   RegridResult result;
   RegridSummary& s = result.summary;
-  s.rate_hz = options.rate_hz;
+  s.step_s = h;
   s.max_gap_s = options.max_gap_s < 0 ? 10.0 * h : options.max_gap_s;
   s.input_samples = n;
   s.input_median_step_s = median_time_step_s(t);
@@ -102,6 +104,12 @@ RegridResult regrid(const Recording& rec, const RegridOptions& options) {
              : s.input_median_step_s <= 0.5 * h        ? RegridMethod::mean
                                                        : RegridMethod::linear;
   for (const auto& e : rec.extra) s.dropped_columns.push_back(e.name);
+  for (std::size_t j = 0; j + 1 < n; ++j) {
+    const double step = t[j + 1] - t[j];
+    if (step <= 1.5 * s.input_median_step_s)
+      s.input_max_jitter =
+          std::max(s.input_max_jitter, std::fabs(step / s.input_median_step_s - 1.0));
+  }
 
   // The grid points of each segment, before values are filled in.
   std::vector<std::vector<GridPoint>> segments(1);
@@ -187,13 +195,7 @@ RegridResult regrid(const Recording& rec, const RegridOptions& options) {
     std::size_t i = 0;
     for (std::size_t j = 0; j + 1 < n; ++j) {
       const double step = t[j + 1] - t[j];
-      if (step > gap_step) {
-        RegridGap gap{t[j], t[j + 1], step <= s.max_gap_s, 0};
-        s.gaps.push_back(gap);
-      } else {
-        s.input_max_jitter =
-            std::max(s.input_max_jitter, std::fabs(step / s.input_median_step_s - 1.0));
-      }
+      if (step > gap_step) s.gaps.push_back({t[j], t[j + 1], step <= s.max_gap_s, 0});
     }
     std::size_t next_gap = 0;
     for (long long k = k_first; k <= k_last; ++k) {
@@ -246,9 +248,9 @@ RegridResult regrid(const Recording& rec, const RegridOptions& options) {
   result.segments = std::move(kept);
   if (result.segments.empty()) {
     throw InputError(rec.source, 0, 0,
-                     fmt::format("no stretch of at least {} samples at {} Hz remains between "
-                                 "gaps longer than {} s",
-                                 options.min_segment_samples, options.rate_hz, s.max_gap_s));
+                     fmt::format("no stretch of at least {} samples on a {} s grid remains "
+                                 "between gaps longer than {} s",
+                                 options.min_segment_samples, h, s.max_gap_s));
   }
   for (const auto& seg : result.segments) validate(seg);
   return result;

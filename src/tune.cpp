@@ -6,6 +6,7 @@
 #include <chrono>
 #include <cmath>
 #include <functional>
+#include <limits>
 #include <map>
 #include <memory>
 #include <mutex>
@@ -429,6 +430,71 @@ double svr_loss(const Dataset& data, const svr::Params& params, const TuneOption
   double loss = 0;
   objective.evaluate(std::span<const double>(&point, 1), std::span<double>(&loss, 1), 1);
   return loss;
+}
+
+}  // namespace fogdrift::tune
+
+namespace fogdrift::tune {
+
+std::vector<BoxEdge> box_edges(const TuneSummary& summary, const SearchSpace& space) {
+  struct Axis {
+    const char* name;
+    double low, high;
+    double (*get)(const svr::Params&);
+  };
+  std::vector<Axis> axes = {
+      {"C", space.c_min, space.c_max, [](const svr::Params& p) { return p.c; }},
+      {"sigma", space.sigma_min, space.sigma_max,
+       [](const svr::Params& p) { return p.kernel.sigma(); }}};
+  if (space.search_epsilon)
+    axes.push_back({"epsilon", space.epsilon_min, space.epsilon_max,
+                    [](const svr::Params& p) { return p.epsilon; }});
+  std::vector<BoxEdge> edges;
+  for (const Axis& a : axes) {
+    const double lo = std::log10(a.low), hi = std::log10(a.high), span = hi - lo;
+    const double best = std::log10(a.get(summary.best));
+    for (const bool upper : {false, true}) {
+      const double edge = upper ? hi : lo;
+      if (std::fabs(best - edge) > 0.02 * span) continue;
+      // The best fitness at least `inset` (log10) further inside than the edge.
+      const double inset = std::min(1.0, 0.25 * span);
+      double inside = std::numeric_limits<double>::infinity();
+      for (const Candidate& c : summary.history) {
+        const double x = std::log10(a.get(c.params));
+        if ((upper ? edge - x : x - edge) >= inset) inside = std::min(inside, c.loss);
+      }
+      BoxEdge e;
+      e.parameter = a.name;
+      e.upper = upper;
+      e.value = a.get(summary.best);
+      e.low = a.low;
+      e.high = a.high;
+      e.improvement = std::isfinite(inside) && inside > 0
+                          ? std::max(0.0, (inside - summary.best_fitness) / inside)
+                          : 0.0;
+      edges.push_back(e);
+    }
+  }
+  return edges;
+}
+
+SearchSpace widened(const SearchSpace& space, const std::vector<BoxEdge>& edges) {
+  SearchSpace w = space;
+  for (const BoxEdge& e : edges) {
+    double* low = e.parameter == "C"       ? &w.c_min
+                  : e.parameter == "sigma" ? &w.sigma_min
+                                           : &w.epsilon_min;
+    double* high = e.parameter == "C"       ? &w.c_max
+                   : e.parameter == "sigma" ? &w.sigma_max
+                                            : &w.epsilon_max;
+    const double floor = e.parameter == "C" ? 1e-6 : e.parameter == "sigma" ? 1e-4 : 1e-6;
+    const double ceiling = e.parameter == "C" ? 1e8 : e.parameter == "sigma" ? 1e4 : 10.0;
+    if (e.upper)
+      *high = std::min(ceiling, *high * 10.0);
+    else
+      *low = std::max(floor, *low / 10.0);
+  }
+  return w;
 }
 
 }  // namespace fogdrift::tune

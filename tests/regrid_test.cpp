@@ -37,7 +37,7 @@ TEST(Regrid, JitteryMillisecondStampsOnAFiftyHertzGrid) {
     t.push_back(std::round((1.0 + 0.02 * i + jitter(rng)) * 1e3) / 1e3);
   const Recording rec = from_times(t, ramp);
   ASSERT_FALSE(is_uniformly_sampled(rec));
-  const RegridResult r = regrid(rec, {50.0});
+  const RegridResult r = regrid(rec, {0.02});
   EXPECT_EQ(r.summary.method, RegridMethod::linear);
   ASSERT_EQ(r.segments.size(), 1u);
   const Recording& out = r.segments[0];
@@ -76,7 +76,7 @@ TEST(Regrid, BurstsBecomeTheirMeans) {
     means.push_back(sum / 250);
   }
   rec.extra.push_back({"status", std::vector<std::string>(rec.size(), "OK")});
-  const RegridResult r = regrid(rec, {1.0 / 305.0});
+  const RegridResult r = regrid(rec, {305.0});
   EXPECT_EQ(r.summary.method, RegridMethod::mean);
   ASSERT_EQ(r.segments.size(), 1u);
   const Recording& out = r.segments[0];
@@ -139,7 +139,7 @@ TEST(Regrid, RejectsImpossibleOptions) {
     regrid(rec, {0.0});
     FAIL();
   } catch (const OptionError& e) {
-    EXPECT_EQ(e.option(), "rate_hz");
+    EXPECT_EQ(e.option(), "step_s");
   }
   RegridOptions o{1.0};
   o.min_segment_samples = 10;

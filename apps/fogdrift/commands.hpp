@@ -11,6 +11,7 @@ namespace fogdrift::app {
 void add_simulate(CLI::App& app);
 void add_inspect(CLI::App& app);
 void add_import(CLI::App& app);
+void add_campaign(CLI::App& app);
 void add_denoise(CLI::App& app);
 void add_demo(CLI::App& app);
 void add_svr(CLI::App& app);

@@ -1,6 +1,8 @@
 // fogdrift import: turn a foreign logger CSV into a fogdrift recording.
 #include <fmt/format.h>
 
+#include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <iostream>
 #include <memory>
@@ -29,9 +31,11 @@ struct ImportArgs {
   bool drop_extra = false;
   bool split_at_reset = false;
   double rate_hz = 0;
+  double step_s = 0;
   std::string method = "auto";
   double max_gap_s = -1;
-  std::size_t hampel = 0;
+  bool hampel = false;
+  std::size_t hampel_half_window = signal::HampelOptions{}.half_window;
   double hampel_sigma = signal::HampelOptions{}.n_sigma;
   std::string outlier_columns = "gyro_dph,temp_fog_degc,temp_acc1_degc,temp_acc2_degc";
   bool quiet = false;
@@ -63,18 +67,24 @@ void report(const ImportReport& imported, const std::vector<RegridSummary>& grid
       std::cout << fmt::format("  spikes: none in {}\n", r.column);
       continue;
     }
+    // The largest first: the ones a user checks against the logger's own notes.
+    std::vector<std::size_t> order(r.lines.size());
+    for (std::size_t k = 0; k < order.size(); ++k) order[k] = k;
+    std::stable_sort(order.begin(), order.end(), [&](std::size_t x, std::size_t y) {
+      return std::fabs(r.was[x] - r.now[x]) > std::fabs(r.was[y] - r.now[y]);
+    });
     std::cout << fmt::format("  spikes: {} replaced in {}", r.lines.size(), r.column);
-    for (std::size_t k = 0; k < std::min<std::size_t>(r.lines.size(), 5); ++k)
-      std::cout << fmt::format("{} line {} {:.6g} -> {:.6g}", k ? "," : ":", r.lines[k], r.was[k],
-                               r.now[k]);
+    for (std::size_t k = 0; k < std::min<std::size_t>(order.size(), 5); ++k)
+      std::cout << fmt::format("{} line {} {:.6g} -> {:.6g}", k ? "," : ":", r.lines[order[k]],
+                               r.was[order[k]], r.now[order[k]]);
     std::cout << (r.lines.size() > 5 ? ", ...\n" : "\n");
   }
   for (const RegridSummary& g : grids) {
     std::cout << fmt::format(
-        "  grid: {} samples (median step {:.6g} s, jitter up to {:.1f} %) -> {} samples at {:.6g} "
-        "Hz by {}\n",
+        "  grid: {} samples (median step {:.6g} s, jitter up to {:.1f} %) -> {} samples every "
+        "{:.6g} s by {}\n",
         g.input_samples, g.input_median_step_s, 100 * g.input_max_jitter, g.output_samples,
-        g.rate_hz, to_string(g.method));
+        g.step_s, to_string(g.method));
     std::size_t bridged = 0, split = 0;
     for (const auto& gap : g.gaps) (gap.bridged ? bridged : split) += 1;
     if (!g.gaps.empty())
@@ -131,8 +141,8 @@ void add_import(CLI::App& app) {
       "table_deg deg|rad; a signed register logged as unsigned counts: intN:SCALE:OFFSET.\n"
       "Jittery, bursty or gappy logs: --rate-hz R puts them on a uniform grid (what train needs),\n"
       "bridging gaps up to --max-gap-s and splitting at longer ones (out.csv -> out_1.csv, ...).\n"
-      "Spikes: --hampel 5 replaces samples more than --hampel-sigma local STDs from the median of\n"
-      "11 samples. Each change is reported. See docs/logs.md for a logger file from end to end.");
+      "Spikes: --hampel replaces samples more than --hampel-sigma local STDs from the median of\n"
+      "their window. Each change is reported. See docs/logs.md for a logger file from end to end.");
   auto a = std::make_shared<ImportArgs>();
   cmd->add_option("INPUT", a->inputs, "Foreign CSV file(s)")->required()->check(CLI::ExistingFile);
   cmd->add_option("--out,-o", a->out,
@@ -153,6 +163,9 @@ void add_import(CLI::App& app) {
                   "Put the recording on a uniform grid at this rate, Hz (0: keep the logger's "
                   "time stamps); for bursts, the burst rate, e.g. 1/305 s = 0.0032787")
       ->capture_default_str();
+  cmd->add_option("--step-s", a->step_s,
+                  "The same as --rate-hz, given as the grid step, s (e.g. 60 for bursts every "
+                  "minute); times are then whole multiples of it");
   cmd->add_option("--method", a->method,
                   "Grid filling: mean (bins of 1/rate; anti-aliasing for faster logs), linear "
                   "(interpolation; jitter), auto (mean when the log is at least twice as fast)")
@@ -160,10 +173,14 @@ void add_import(CLI::App& app) {
   cmd->add_option("--max-gap-s", a->max_gap_s,
                   "Longest gap bridged by interpolation, s; longer gaps split the recording "
                   "(default: 10 grid steps)");
-  cmd->add_option("--hampel", a->hampel,
-                  "Replace spikes: Hampel filter of half-width N samples (0: off; 5 is usual)")
+  cmd->add_flag("--hampel", a->hampel,
+                "Replace spikes by the local median (Hampel filter), before --rate-hz");
+  cmd->add_option("--hampel-half-window", a->hampel_half_window,
+                  "Hampel window: this many samples either side")
       ->capture_default_str();
-  cmd->add_option("--hampel-sigma", a->hampel_sigma, "Hampel threshold, local STDs")
+  cmd->add_option("--hampel-sigma", a->hampel_sigma,
+                  "Hampel threshold, local STDs (3, the textbook value, replaces 0.7-3 % of good "
+                  "samples; see docs/signal.md)")
       ->capture_default_str();
   cmd->add_option("--outlier-columns", a->outlier_columns,
                   "Columns the Hampel filter looks at, comma-separated")
@@ -184,16 +201,23 @@ void add_import(CLI::App& app) {
     o.time_from_zero = a->time_from_zero;
     o.keep_extra = !a->drop_extra;
     o.split_at_reset = a->split_at_reset;
-    if (a->hampel > 0) {
-      o.outliers = signal::HampelOptions{a->hampel, a->hampel_sigma};
+    if (a->hampel) {
+      o.outliers = signal::HampelOptions{a->hampel_half_window, a->hampel_sigma};
       o.outlier_columns = split_list(a->outlier_columns);
-    } else if (a->hampel_sigma != signal::HampelOptions{}.n_sigma) {
-      throw OptionError("--hampel-sigma", "has no effect without --hampel N");
+    } else if (a->hampel_sigma != signal::HampelOptions{}.n_sigma ||
+               a->hampel_half_window != signal::HampelOptions{}.half_window) {
+      throw OptionError(a->hampel_sigma != signal::HampelOptions{}.n_sigma ? "--hampel-sigma"
+                                                                           : "--hampel-half-window",
+                        "has no effect without --hampel");
     }
     std::optional<RegridOptions> grid;
-    if (a->rate_hz != 0) {
+    if (a->rate_hz != 0 && a->step_s != 0)
+      throw OptionError("--step-s", "give --rate-hz or --step-s, not both");
+    if (a->rate_hz < 0)
+      throw OptionError("--rate-hz", fmt::format("{} Hz is negative", a->rate_hz));
+    if (a->rate_hz != 0 || a->step_s != 0) {
       grid.emplace();
-      grid->rate_hz = a->rate_hz;
+      grid->step_s = a->step_s != 0 ? a->step_s : 1.0 / a->rate_hz;
       grid->max_gap_s = a->max_gap_s;
       try {
         grid->method = regrid_method_from_string(a->method);
@@ -204,7 +228,7 @@ void add_import(CLI::App& app) {
         throw OptionError("--max-gap-s", fmt::format("{} s is negative", a->max_gap_s));
     } else if (a->method != "auto" || a->max_gap_s != -1) {
       throw OptionError(a->method != "auto" ? "--method" : "--max-gap-s",
-                        "has no effect without --rate-hz R");
+                        "has no effect without --rate-hz R or --step-s S");
     }
     const bool to_folder = a->inputs.size() > 1 || fs::is_directory(a->out);
     if (to_folder && !fs::is_directory(a->out)) {
@@ -232,7 +256,10 @@ void add_import(CLI::App& app) {
         try {
           r = regrid(rec, *grid);
         } catch (const OptionError& e) {
-          throw OptionError(e.option() == "rate_hz" ? "--rate-hz" : "--max-gap-s", e.message());
+          throw OptionError(e.option() != "step_s" ? "--max-gap-s"
+                            : a->step_s != 0       ? "--step-s"
+                                                   : "--rate-hz",
+                            e.message());
         }
         for (auto& seg : r.segments) c.segments.push_back(std::move(seg));
         c.grids.push_back(r.summary);

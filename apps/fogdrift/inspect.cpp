@@ -66,8 +66,8 @@ int inspect_campaign(const fs::path& path, bool json) {
         c.latitude_deg ? fmt::format("latitude {}°", *c.latitude_deg) : "no latitude",
         c.recordings.size());
     std::cout << fmt::format(
-        "  {:<28}{:<12}{:<6}{:>4}{:>8}{:>8}{:>9}{:>6}{:>17}{:>17}{:>17}{:>11}"
-        "{:>10}\n",
+        "  {:<28}  {:<11}  {:<5}  {:>3}  {:>6}  {:>8}  {:>7}  {:>8}  {:>15}  {:>15}  {:>15}  "
+        "{:>12}  {:>10}\n",
         "file", "scenario", "role", "rep", "T0 °C", "samples", "min", "Hz", "T_fog °C", "T_acc1 °C",
         "T_acc2 °C", "gyro °/h", "std °/h");
   }
@@ -84,9 +84,10 @@ int inspect_campaign(const fs::path& path, bool json) {
         auto range = [&](std::size_t i) {
           return fmt::format("{:.2f}..{:.2f}", s.columns[i].min, s.columns[i].max);
         };
+        // Two spaces between columns, so that a wide value never runs into its neighbour.
         std::cout << fmt::format(
-            "  {:<28}{:<12}{:<6}{:>4}{:>8.1f}{:>8}{:>9.1f}{:>6.3g}{:>17}{:>17}{:>17}{:>11.4f}"
-            "{:>10.4f}\n",
+            "  {:<28}  {:<11}  {:<5}  {:>3}  {:>6.1f}  {:>8}  {:>7.1f}  {:>8.3g}  {:>15}  {:>15}  "
+            "{:>15}  {:>12.6g}  {:>10.4g}\n",
             e.file, to_string(e.scenario), to_string(e.role), e.repetition, e.initial_temp_degc,
             s.samples, s.duration_s / 60.0, s.sample_rate_hz, range(1), range(2), range(3),
             s.columns[0].mean, s.columns[0].std);

@@ -22,6 +22,7 @@ int main(int argc, char** argv) {
   fogdrift::app::add_simulate(app);
   fogdrift::app::add_inspect(app);
   fogdrift::app::add_import(app);
+  fogdrift::app::add_campaign(app);
   fogdrift::app::add_denoise(app);
   fogdrift::app::add_svr(app);
   fogdrift::app::add_train(app);

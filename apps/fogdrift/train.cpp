@@ -40,6 +40,7 @@ struct TrainArgs {
          sigma_min = tune::SearchSpace{}.sigma_min, sigma_max = tune::SearchSpace{}.sigma_max,
          epsilon = tune::SearchSpace{}.epsilon;
   bool search_epsilon = false;
+  bool auto_box = false;
   std::size_t hidden = 10;
   std::size_t max_degree = 3;
   bool json = false;
@@ -103,6 +104,7 @@ void run(const TrainArgs& a) {
   options.tune.space.sigma_max = a.sigma_max;
   options.tune.space.epsilon = a.epsilon;
   options.tune.space.search_epsilon = a.search_epsilon;
+  options.auto_box_rounds = a.auto_box ? 3 : 0;
   options.mlp.hidden = a.hidden;
   options.poly_max_degree = a.max_degree;
   ThreadPool pool(a.threads);
@@ -167,6 +169,18 @@ void run(const TrainArgs& a) {
   save(result.model, a.output);
 
   const TrainSummary& s = result.summary;
+  // A best value on the edge of its box: the box, not the data, may have stopped the search.
+  std::vector<std::string> edge_notes;
+  for (const auto& e : s.box_edges) {
+    const std::string flag = e.parameter == "C"       ? (e.upper ? "--c-max" : "--c-min")
+                             : e.parameter == "sigma" ? (e.upper ? "--sigma-max" : "--sigma-min")
+                                                      : "--search-epsilon bounds";
+    edge_notes.push_back(fmt::format(
+        "{} = {:.6g} is at the {} edge of its box [{:.6g}, {:.6g}]; the fitness there is {:.1f} % "
+        "better than further inside, so a wider box may do better: {} or --auto-box",
+        e.parameter, e.value, e.upper ? "upper" : "lower", e.low, e.high, 100.0 * e.improvement,
+        flag));
+  }
   if (a.json) {
     nlohmann::ordered_json j;
     j["model"] = a.output;
@@ -200,6 +214,18 @@ void run(const TrainArgs& a) {
                  {"train_rmse", s.mlp.train_rmse}};
     if (s.method == Method::poly) j["poly_cv_rmse_by_degree"] = s.poly_cv_rmse;
     j["notes"] = notes;
+    nlohmann::ordered_json edges = nlohmann::ordered_json::array();
+    for (const auto& e : s.box_edges)
+      edges.push_back({{"parameter", e.parameter},
+                       {"edge", e.upper ? "upper" : "lower"},
+                       {"value", e.value},
+                       {"box", {e.low, e.high}},
+                       {"improvement", e.improvement}});
+    j["box_edges"] = edges;
+    nlohmann::ordered_json boxes = nlohmann::ordered_json::array();
+    for (const auto& b : s.boxes)
+      boxes.push_back({{"c", {b.c_min, b.c_max}}, {"sigma", {b.sigma_min, b.sigma_max}}});
+    j["boxes_searched"] = boxes;
     j["warnings"] = data.warnings;
     j["block_s"] = dataset.preprocessing.block.block_s;
     j["rate_window_s"] = dataset.preprocessing.rates.window_s;
@@ -219,7 +245,15 @@ void run(const TrainArgs& a) {
       std::cout << fmt::format("  search: {}; {} distinct candidates, {} SVR fits\n",
                                s.tuning.optimizer.brief_report(), s.tuning.candidates,
                                s.tuning.fits);
+    if (s.boxes.size() > 1) {
+      const auto& b = s.boxes.back();
+      std::cout << fmt::format(
+          "  auto-box: {} searches, last box C [{:.6g}, {:.6g}], sigma "
+          "[{:.6g}, {:.6g}]\n",
+          s.boxes.size(), b.c_min, b.c_max, b.sigma_min, b.sigma_max);
+    }
     for (const auto& n : notes) std::cout << "  note: " << n << "\n";
+    for (const auto& n : edge_notes) std::cout << "  warning: " << n << "\n";
     for (const auto& w : data.warnings) std::cout << "  warning: " << w << "\n";
     std::cout << fmt::format("  wrote {} in {:.1f} s\n", a.output, s.seconds);
   }
@@ -302,6 +336,9 @@ void add_train(CLI::App& app) {
   cmd->add_option("--epsilon", args->epsilon, "ε of the tube (standardised target)")
       ->capture_default_str();
   cmd->add_flag("--search-epsilon", args->search_epsilon, "Also search ε in [0.001, 1]");
+  cmd->add_flag("--auto-box", args->auto_box,
+                "When the best C, σ or ε lies on an edge of its box, widen the box a decade "
+                "there and search again (at most 3 times); train warns of such edges either way");
   cmd->add_option("--hidden", args->hidden, "bp: hidden tanh units")->capture_default_str();
   cmd->add_option("--max-degree", args->max_degree, "poly: highest degree tried")
       ->capture_default_str();

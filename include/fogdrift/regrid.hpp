@@ -2,7 +2,7 @@
 //
 // Real loggers stamp samples with jitter (a 50 Hz logger with millisecond stamps steps by 19, 20
 // and 21 ms), log in bursts (250 samples at 50 Hz every five minutes), and drop samples. The
-// grid is t_k = k·h with h = 1 / rate_hz, so every output time is a whole multiple of h.
+// grid is t_k = k·h with h = step_s, so every output time is a whole multiple of h.
 //
 // Two ways of filling it:
 //   mean    bin k holds the samples with t in [t_k − h/2, t_k + h/2); its value is their mean, a
@@ -37,8 +37,8 @@ std::string_view to_string(RegridMethod method);  ///< "auto", "mean", "linear"
 RegridMethod regrid_method_from_string(std::string_view text);
 
 struct RegridOptions {
-  /// Output rate, Hz, in (0, 1000].
-  double rate_hz = 1.0;
+  /// Grid step h, s, in [0.001, 1e6] (1 / the output rate).
+  double step_s = 1.0;
   RegridMethod method = RegridMethod::automatic;
   /// Longest gap bridged by interpolation, s, >= 0; a longer gap splits the recording.
   /// Negative means the default: 10 grid steps.
@@ -58,7 +58,7 @@ struct RegridGap {
 
 struct RegridSummary {
   RegridMethod method = RegridMethod::mean;  ///< the method used (never automatic)
-  double rate_hz = 0;
+  double step_s = 0;
   double max_gap_s = 0;  ///< the limit applied, s
   std::size_t input_samples = 0;
   double input_median_step_s = 0;  ///< s
@@ -74,7 +74,7 @@ struct RegridResult {
   RegridSummary summary;
 };
 
-/// The recording on the grid (see the file comment). Throws OptionError naming rate_hz, max_gap_s
+/// The recording on the grid (see the file comment). Throws OptionError naming step_s, max_gap_s
 /// or min_segment_samples for an impossible option, and InputError naming the recording when no
 /// segment of at least min_segment_samples remains.
 RegridResult regrid(const Recording& recording, const RegridOptions& options);

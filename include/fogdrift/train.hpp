@@ -32,6 +32,9 @@ struct TrainOptions {
   std::optional<svr::Params> svr_params;
   /// The novelty guard fitted to the training rows and stored in the model (guard.hpp).
   GuardSettings guard;
+  /// Tuned SVRs: when the best C, σ or ε lies on an edge of its box, widen the box by a decade
+  /// there and search again, at most this many times (0: never; tune::box_edges()).
+  std::size_t auto_box_rounds = 0;
 };
 
 struct TrainSummary {
@@ -39,7 +42,11 @@ struct TrainSummary {
   std::string fitness;       ///< "cv", "train" or "validation"
   double fitness_value = 0;  ///< RMSE on the standardised target
   std::vector<std::pair<std::string, double>> hyperparameters;
-  tune::TuneSummary tuning;          ///< SVR methods with a search
+  tune::TuneSummary tuning;  ///< SVR methods with a search (the last, with auto-box)
+  /// Tuned SVRs: the boxes searched, in order (more than one with auto-box), and the edges the
+  /// last search's best lies on.
+  std::vector<tune::SearchSpace> boxes;
+  std::vector<tune::BoxEdge> box_edges;
   MlpSummary mlp;                    ///< bp
   std::vector<double> poly_cv_rmse;  ///< poly: CV RMSE of degree 1, 2, …
   std::size_t rows = 0;

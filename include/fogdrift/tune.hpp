@@ -140,6 +140,26 @@ struct TuneSummary {
 /// Searches C, σ (and ε) for `data` (training recordings only) with the chosen optimizer.
 TuneSummary tune_svr(const Dataset& data, const TuneOptions& options);
 
+/// A searched parameter whose best value lies on an edge of its box: the search may have been
+/// stopped by the box rather than by the data (docs/tuning.md, "Box edges").
+struct BoxEdge {
+  std::string parameter;     ///< "C", "sigma" or "epsilon"
+  bool upper = false;        ///< the upper edge (else the lower)
+  double value = 0;          ///< the best value found
+  double low = 0, high = 0;  ///< the box searched
+  /// How much better the best fitness is than the best at least a quarter of the box's log10
+  /// span (at most one decade) further inside: (inside − best) / inside, >= 0. Large means the
+  /// fitness was still improving toward the edge.
+  double improvement = 0;
+};
+
+/// The searched parameters whose best value is within 2 % of the box's log10 span of an edge.
+std::vector<BoxEdge> box_edges(const TuneSummary& summary, const SearchSpace& space);
+
+/// The box widened by one decade beyond each edge in `edges`, within C in [1e-6, 1e8],
+/// σ in [1e-4, 1e4] and ε in [1e-6, 10]; unchanged where an edge is already at that limit.
+SearchSpace widened(const SearchSpace& space, const std::vector<BoxEdge>& edges);
+
 /// The fitness of one parameter set, as the search computes it (for baselines and reports).
 double svr_loss(const Dataset& data, const svr::Params& params, const TuneOptions& options);
 

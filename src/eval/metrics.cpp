@@ -28,29 +28,41 @@ CompensationMetrics compensation_metrics(std::span<const double> target_dph,
   m.rows = target_dph.size();
   if (m.rows == 0) return m;
   std::vector<double> residual(m.rows);
-  double abs_sum = 0, sq_sum = 0;
+  double abs_sum = 0, sq_sum = 0, abs_before = 0, sum_before = 0, sum_after = 0;
   for (std::size_t i = 0; i < m.rows; ++i) {
     residual[i] = target_dph[i] - predicted_dph[i];
     abs_sum += std::abs(residual[i]);
     sq_sum += residual[i] * residual[i];
+    abs_before += std::abs(target_dph[i]);
+    sum_before += target_dph[i];
+    sum_after += residual[i];
   }
   const double n = static_cast<double>(m.rows);
   m.mae_dph = abs_sum / n;
+  m.mae_before_dph = abs_before / n;
+  m.mean_before_dph = sum_before / n;
+  m.mean_after_dph = sum_after / n;
   m.rmse_dph = std::sqrt(sq_sum / n);
   m.std_before_dph = sample_std(target_dph);
   m.std_after_dph = sample_std(residual);
+  m.pooled_std_before_dph = m.std_before_dph;
+  m.pooled_std_after_dph = m.std_after_dph;
   return m;
 }
 
 CompensationMetrics pool(std::span<const CompensationMetrics> recordings) {
   CompensationMetrics p;
-  double abs_sum = 0, sq_sum = 0, before = 0, after = 0;
+  double abs_sum = 0, sq_sum = 0, before = 0, after = 0, abs_before = 0;
+  double sum_before = 0, sum_after = 0;
   std::size_t k = 0;
   for (const auto& r : recordings) {
     if (r.rows == 0) continue;
     ++k;
     p.rows += r.rows;
     abs_sum += r.mae_dph * static_cast<double>(r.rows);
+    abs_before += r.mae_before_dph * static_cast<double>(r.rows);
+    sum_before += r.mean_before_dph * static_cast<double>(r.rows);
+    sum_after += r.mean_after_dph * static_cast<double>(r.rows);
     sq_sum += r.rmse_dph * r.rmse_dph * static_cast<double>(r.rows);
     before += r.std_before_dph * r.std_before_dph;
     after += r.std_after_dph * r.std_after_dph;
@@ -61,6 +73,24 @@ CompensationMetrics pool(std::span<const CompensationMetrics> recordings) {
   }
   if (p.rows == 0) return p;
   p.mae_dph = abs_sum / static_cast<double>(p.rows);
+  p.mae_before_dph = abs_before / static_cast<double>(p.rows);
+  p.mean_before_dph = sum_before / static_cast<double>(p.rows);
+  p.mean_after_dph = sum_after / static_cast<double>(p.rows);
+  // Pooled variance: within-recording sums of squares plus the offsets of the recording means.
+  if (p.rows > 1) {
+    double ss_before = 0, ss_after = 0;
+    for (const auto& r : recordings) {
+      if (r.rows == 0) continue;
+      const double n = static_cast<double>(r.rows);
+      ss_before +=
+          (n - 1) * r.pooled_std_before_dph * r.pooled_std_before_dph +
+          n * (r.mean_before_dph - p.mean_before_dph) * (r.mean_before_dph - p.mean_before_dph);
+      ss_after += (n - 1) * r.pooled_std_after_dph * r.pooled_std_after_dph +
+                  n * (r.mean_after_dph - p.mean_after_dph) * (r.mean_after_dph - p.mean_after_dph);
+    }
+    p.pooled_std_before_dph = std::sqrt(ss_before / static_cast<double>(p.rows - 1));
+    p.pooled_std_after_dph = std::sqrt(ss_after / static_cast<double>(p.rows - 1));
+  }
   p.rmse_dph = std::sqrt(sq_sum / static_cast<double>(p.rows));
   p.std_before_dph = std::sqrt(before / static_cast<double>(k));
   p.std_after_dph = std::sqrt(after / static_cast<double>(k));

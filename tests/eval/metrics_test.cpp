@@ -49,6 +49,21 @@ TEST(CompensationMetrics, PoolsRecordings) {
                std::invalid_argument);
 }
 
+TEST(CompensationMetrics, PooledStdKeepsTheOffsetsBetweenRecordings) {
+  // Two recordings, each flat before compensation but at different offsets.
+  const std::vector<double> y1{1, 1, 1}, y2{-2, -2, -2, -2}, p1{1, 1, 1}, p2{0, 0, 0, 0};
+  const std::vector<CompensationMetrics> v{compensation_metrics(y1, p1),
+                                           compensation_metrics(y2, p2)};
+  const CompensationMetrics p = pool(v);
+  EXPECT_DOUBLE_EQ(p.std_before_dph, 0.0);  // Table 2's STD: offsets do not count
+  // All seven rows pooled: 1,1,1,−2,−2,−2,−2 has mean −5/7; by hand, Σ(x − mean)² = 108/7.
+  EXPECT_NEAR(p.pooled_std_before_dph, std::sqrt(108.0 / 7 / 6), 1e-15);
+  // After: residuals 0,0,0,−2,−2,−2,−2: mean −8/7, Σ(x − mean)² = 48/7.
+  EXPECT_NEAR(p.pooled_std_after_dph, std::sqrt(48.0 / 7 / 6), 1e-15);
+  EXPECT_DOUBLE_EQ(p.mae_before_dph, 11.0 / 7);  // mean |y|
+  EXPECT_DOUBLE_EQ(p.mae_dph, 8.0 / 7);
+}
+
 // Rows are grouped by recording, in the dataset's group order, whatever order the rows are in.
 TEST(CompensationMetrics, PerRecordingFollowsTheGroups) {
   Dataset d;

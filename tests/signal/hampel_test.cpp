@@ -40,6 +40,18 @@ TEST(Hampel, ReplacesSpikesByTheirWindowMedianAndNothingElse) {
   }
 }
 
+TEST(Hampel, DefaultsLeavePlainGaussianNoiseAlone) {
+  std::mt19937_64 rng(11);
+  std::normal_distribution<double> noise(0.0, 1.0);
+  std::vector<double> x(40000);
+  for (double& v : x) v = noise(rng);
+  EXPECT_EQ(hampel(x).replaced.size(), 0u);
+  // The textbook 3σ over 11 samples replaces a few per cent of good samples (docs/signal.md).
+  const double share = static_cast<double>(hampel(x, {5, 3.0}).replaced.size()) / 40000.0;
+  EXPECT_GT(share, 0.02);
+  EXPECT_LT(share, 0.035);
+}
+
 TEST(Hampel, KeepsTheStepsOfAQuantisedThermometer) {
   // A slow warm-up read with 0.0625 °C resolution: flat runs and single-count steps.
   std::vector<double> x;

@@ -8,6 +8,9 @@
 // A recording's constant offset does not count in the STDs: Table 2's STD is the zero-bias
 // stability over the powered window. Over several recordings, MAE and RMSE pool every row and
 // the STDs are the root mean square of the per-recording STDs.
+// Beside them, what a user of an uncompensated gyro would see: MAE before = mean |y| (the drift
+// with its turn-on offset), and pooled STDs over every row of every recording, offsets between
+// recordings kept (for one recording they equal the STDs).
 //
 // Where north-finding needs it (docs/field.md), with r the output before (y) or after (y − ŷ)
 // compensation, less its mean over the recording:
@@ -33,8 +36,12 @@ struct CompensationMetrics {
   std::size_t rows = 0;
   double mae_dph = 0;
   double rmse_dph = 0;
-  double std_before_dph = 0;  ///< the denoised, uncompensated drift
-  double std_after_dph = 0;   ///< the compensated output
+  double std_before_dph = 0;                       ///< the denoised, uncompensated drift
+  double std_after_dph = 0;                        ///< the compensated output
+  double mae_before_dph = 0;                       ///< mean |y|: the error with no compensation
+  double mean_before_dph = 0, mean_after_dph = 0;  ///< mean of y and of y − ŷ
+  /// Sample STD over every row pooled, offsets between recordings kept.
+  double pooled_std_before_dph = 0, pooled_std_after_dph = 0;
   /// Start-up residual and opposite-position difference, before and after (0 when the metrics
   /// come without times: compensation_metrics(), or a dataset without time_s).
   double startup_before_dph = 0, startup_after_dph = 0;

@@ -14,11 +14,19 @@
 
 namespace fogdrift::signal {
 
+// The defaults are chosen so that plain Gaussian noise loses (almost) nothing. The MAD of a short
+// window is a noisy scale, so the customary 3σ replaces many good samples. Share of samples of
+// white Gaussian noise replaced, measured over 40,000 samples (docs/signal.md):
+//   h = 5:  3σ 2.7 %, 5σ 0.53 %, 6σ 0.27 %
+//   h = 10: 3σ 1.6 %, 5σ 0.10 %, 6σ 0.03 %
+//   h = 25: 3σ 0.67 %, 5σ 0.01 %, 6σ 0
+// A logger's spikes (bus glitches, a register's error value) are tens of σ and are caught either
+// way.
 struct HampelOptions {
   /// Half-width h of the window, samples, >= 1 (window of 2h + 1 samples).
-  std::size_t half_window = 5;
-  /// Threshold in local standard deviations, > 0. 3 is the customary choice.
-  double n_sigma = 3.0;
+  std::size_t half_window = 25;
+  /// Threshold in local standard deviations, > 0.
+  double n_sigma = 6.0;
 };
 
 /// κ = 1 / Φ⁻¹(3/4): the MAD of a Gaussian times κ is its standard deviation.

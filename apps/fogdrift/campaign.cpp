@@ -1,0 +1,186 @@
+// fogdrift campaign: write a campaign folder (recordings and campaign.json) from recordings or
+// from one long log cut into recordings, validated as inspect validates (docs/logs.md).
+#include <fmt/format.h>
+
+#include <cmath>
+#include <filesystem>
+#include <iostream>
+#include <memory>
+#include <optional>
+#include <set>
+
+#include "cli_util.hpp"
+#include "commands.hpp"
+#include "fogdrift/atomic_file.hpp"
+#include "fogdrift/campaign.hpp"
+#include "fogdrift/cut.hpp"
+#include "fogdrift/error.hpp"
+#include "fogdrift/recording.hpp"
+#include "fogdrift/version.hpp"
+
+namespace fs = std::filesystem;
+
+namespace fogdrift::app {
+namespace {
+
+struct CampaignArgs {
+  std::string out;
+  std::vector<std::string> inputs;
+  std::string test = "last";
+  std::string repetitions;
+  std::optional<double> input_rate_dph;
+  std::optional<double> latitude_deg;
+  std::optional<double> true_azimuth_deg;
+  double cut_gap_s = 0;
+  double cut_window_s = 0;
+  bool force = false;
+};
+
+/// The 1-based positions named by --test: "last", "none", or a list such as 3 or 2,5.
+std::set<std::size_t> test_positions(const std::string& text, std::size_t count) {
+  if (text == "none") return {};
+  if (text == "last") return {count};
+  std::set<std::size_t> out;
+  for (double v : parse_number_list(text, "--test")) {
+    if (v != std::floor(v) || v < 1 || v > static_cast<double>(count))
+      throw OptionError("--test", fmt::format("{} is not a recording number 1..{} (the order in "
+                                              "which they are listed, after cutting)",
+                                              v, count));
+    out.insert(static_cast<std::size_t>(v));
+  }
+  return out;
+}
+
+void run(const CampaignArgs& a) {
+  if (a.input_rate_dph && (a.latitude_deg || a.true_azimuth_deg))
+    throw OptionError("--input-rate-dph",
+                      "give either the input rate or the latitude and the "
+                      "true azimuth, not both");
+  if (!a.input_rate_dph && !(a.latitude_deg && a.true_azimuth_deg))
+    throw OptionError("--input-rate-dph",
+                      "say what rate the gyro sensed, so that train models drift and not the "
+                      "input: --input-rate-dph R (0 for an axis that sees no rotation, e.g. "
+                      "horizontal and pointing east or west, or a MEMS gyro whose noise hides the "
+                      "Earth rate), or --latitude-deg L --true-azimuth-deg A (the Earth rate's "
+                      "projection on a horizontal axis)");
+
+  CutOptions cut_options;
+  cut_options.gap_s = a.cut_gap_s;
+  cut_options.window_s = a.cut_window_s;
+  std::vector<Recording> pieces;
+  for (const auto& input : a.inputs) {
+    const Recording rec = read_recording(input);
+    try {
+      for (auto& p : cut(rec, cut_options)) pieces.push_back(std::move(p));
+    } catch (const OptionError& e) {
+      throw OptionError(e.option() == "gap_s" ? "--cut-gap-s" : "--cut-window-s", e.message());
+    }
+  }
+  const std::set<std::size_t> tests = test_positions(a.test, pieces.size());
+  if (tests.size() == pieces.size()) throw OptionError("--test", "leaves no recording to train on");
+  std::vector<double> reps;
+  if (!a.repetitions.empty()) {
+    reps = parse_number_list(a.repetitions, "--repetitions");
+    if (reps.size() != pieces.size())
+      throw OptionError("--repetitions", fmt::format("lists {} numbers for {} recordings",
+                                                     reps.size(), pieces.size()));
+  }
+
+  Campaign c;
+  c.latitude_deg = a.latitude_deg;
+  c.generator_json = fmt::format(R"({{"tool": "fogdrift campaign", "version": "{}"}})", kVersion);
+  std::set<std::string> names;
+  for (std::size_t k = 0; k < pieces.size(); ++k) {
+    CampaignEntry e;
+    std::string stem = fs::path(pieces[k].source).stem().string();
+    e.file = fmt::format("{}_{:02}.csv", stem, k + 1);
+    if (!names.insert(e.file).second) e.file = fmt::format("rec_{:02}.csv", k + 1);
+    e.scenario = Scenario::calibration;
+    e.role = tests.count(k + 1) ? Role::test : Role::train;
+    e.repetition = reps.empty() ? 1 : static_cast<int>(reps[k]);
+    if (!reps.empty() && (reps[k] != std::floor(reps[k]) || reps[k] < 1))
+      throw OptionError("--repetitions", fmt::format("{} is not an integer >= 1", reps[k]));
+    // The start-up condition: the FOG thermometer's first reading, to 0.1 °C.
+    e.initial_temp_degc = std::round(pieces[k].temp_fog_degc.front() * 10.0) / 10.0;
+    if (e.initial_temp_degc < -70 || e.initial_temp_degc > 100)
+      throw InputError(pieces[k].source, 2, 0,
+                       fmt::format("temp_fog_degc starts at {} °C, outside [-70, 100]: check "
+                                   "its unit (--unit at import)",
+                                   e.initial_temp_degc));
+    e.input_rate_dph = a.input_rate_dph;
+    e.true_azimuth_deg = a.true_azimuth_deg;
+    c.recordings.push_back(std::move(e));
+  }
+
+  fill_directory_atomically(a.out, a.force, [&](const fs::path& dir) {
+    for (std::size_t k = 0; k < pieces.size(); ++k) {
+      Recording r = pieces[k];
+      r.source = c.recordings[k].file;
+      write_recording(dir / c.recordings[k].file, r);
+    }
+    write_manifest(dir, c);
+    // Validate as inspect does, before the folder appears under its name.
+    const Campaign back = read_campaign(dir);
+    for (const auto& e : back.recordings) read_recording(back.path_of(e));
+  });
+
+  std::cout << fmt::format("{}: campaign of {} recordings ({} train, {} test)\n", a.out,
+                           pieces.size(), pieces.size() - tests.size(), tests.size());
+  std::cout << fmt::format("  {:<28}  {:<5}  {:>3}  {:>8}  {:>8}  {:>9}\n", "file", "role", "rep",
+                           "T0 °C", "samples", "minutes");
+  for (std::size_t k = 0; k < pieces.size(); ++k) {
+    const auto& e = c.recordings[k];
+    const auto& t = pieces[k].time_s;
+    std::cout << fmt::format("  {:<28}  {:<5}  {:>3}  {:>8.1f}  {:>8}  {:>9.1f}\n", e.file,
+                             to_string(e.role), e.repetition, e.initial_temp_degc, t.size(),
+                             (t.back() - t.front()) / 60.0);
+  }
+  std::cout << fmt::format("  next: fogdrift inspect {0}; fogdrift train {0} -o model.json\n",
+                           a.out);
+}
+
+}  // namespace
+
+void add_campaign(CLI::App& app) {
+  auto a = std::make_shared<CampaignArgs>();
+  auto* cmd = app.add_subcommand(
+      "campaign",
+      "Make a campaign folder (recordings and campaign.json) from fogdrift recordings, or from\n"
+      "one long log cut into recordings at gaps (--cut-gap-s) or into fixed windows\n"
+      "(--cut-window-s). Power cycles in a raw log are split by 'import --split-at-reset'.\n"
+      "Every recording is a calibration start-up; its initial temperature is the FOG\n"
+      "thermometer's first reading. The folder is validated as inspect validates and appears\n"
+      "only when complete. Examples:\n"
+      "  fogdrift campaign cal run_1.csv run_2.csv run_3.csv --input-rate-dph 0\n"
+      "  fogdrift campaign cal long.csv --cut-gap-s 600 --test 2,5 --latitude-deg 47.4 \\\n"
+      "    --true-azimuth-deg 90\n"
+      "See docs/logs.md.");
+  cmd->add_option("OUT", a->out, "Campaign folder to create (must not exist or be empty)")
+      ->required();
+  cmd->add_option("RECORDING", a->inputs, "fogdrift recordings (CSV), in start-up order")
+      ->required()
+      ->check(CLI::ExistingFile);
+  cmd->add_option("--test", a->test,
+                  "Recordings held out for evaluate: 'last', 'none', or numbers such as 2,5 "
+                  "(1-based, after cutting)")
+      ->capture_default_str();
+  cmd->add_option("--repetitions", a->repetitions,
+                  "Repetition number of each recording, e.g. 1,1,1,2,2,2 (default: all 1)");
+  cmd->add_option("--input-rate-dph", a->input_rate_dph,
+                  "The rate the gyro sensed, °/h, the same in every recording (0 for an axis that "
+                  "sees no rotation)");
+  cmd->add_option("--latitude-deg", a->latitude_deg, "Site latitude, degrees (with azimuth)")
+      ->check(CLI::Range(-90.0, 90.0));
+  cmd->add_option("--true-azimuth-deg", a->true_azimuth_deg,
+                  "Azimuth of the horizontal sensitive axis, degrees from true north")
+      ->check(CLI::Range(0.0, 360.0));
+  cmd->add_option("--cut-gap-s", a->cut_gap_s, "Cut at time steps longer than this, s (0: no)")
+      ->capture_default_str();
+  cmd->add_option("--cut-window-s", a->cut_window_s,
+                  "Cut into windows of this length, s (0: no); a last window under half is dropped")
+      ->capture_default_str();
+  cmd->add_flag("--force", a->force, "Replace OUT if it exists (only after success)");
+  cmd->callback([a] { run(*a); });
+}
+
+}  // namespace fogdrift::app
