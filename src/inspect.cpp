@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "fogdrift/regrid.hpp"
+
 namespace fogdrift {
 
 ColumnRange column_range(const std::string& name, const std::vector<double>& v) {
@@ -41,6 +43,7 @@ RecordingSummary summarize(const Recording& rec) {
       s.longest_gap_s = std::max(s.longest_gap_s, d);
     }
   }
+  s.uniformly_sampled = is_uniformly_sampled(rec);
   s.columns.push_back(column_range("gyro_dph", rec.gyro_dph));
   s.columns.push_back(column_range("temp_fog_degc", rec.temp_fog_degc));
   s.columns.push_back(column_range("temp_acc1_degc", rec.temp_acc1_degc));

@@ -30,6 +30,7 @@ nlohmann::ordered_json summary_json(const RecordingSummary& s) {
     j["columns"][c.name] = {{"min", c.min}, {"max", c.max}, {"mean", c.mean}, {"std", c.std}};
   }
   j["extra_columns"] = s.extra_columns;
+  j["uniformly_sampled"] = s.uniformly_sampled;
   return j;
 }
 
@@ -47,6 +48,14 @@ void print_recording(const std::string& path, const RecordingSummary& s) {
     std::cout << fmt::format("  {:<16}{:>14.6g}{:>14.6g}{:>14.6g}{:>14.6g}\n", c.name, c.min, c.max,
                              c.mean, c.std);
   }
+  if (s.uniformly_sampled)
+    std::cout << "  training    usable as it stands (uniform time steps)\n";
+  else
+    std::cout << fmt::format(
+        "  training    not usable as it stands: time steps vary by more than 1 % (median {1:.6g} "
+        "s, longest {0:.6g} s); put the logger's file on a uniform grid with 'fogdrift import "
+        "FILE --rate-hz R' (docs/logs.md)\n",
+        s.longest_gap_s, s.sample_interval_s);
   if (!s.extra_columns.empty()) {
     std::string list;
     for (const auto& e : s.extra_columns) list += (list.empty() ? "" : ", ") + e;
@@ -56,7 +65,7 @@ void print_recording(const std::string& path, const RecordingSummary& s) {
 
 int inspect_campaign(const fs::path& path, bool json) {
   const Campaign c = read_campaign(path);
-  int failures = 0;
+  int failures = 0, irregular = 0;
   nlohmann::ordered_json out;
   out["campaign"] = c.dir.string();
   if (c.latitude_deg) out["latitude_deg"] = *c.latitude_deg;
@@ -80,6 +89,7 @@ int inspect_campaign(const fs::path& path, bool json) {
       const Recording rec = read_recording(c.path_of(e));
       const RecordingSummary s = summarize(rec);
       r["summary"] = summary_json(s);
+      if (!s.uniformly_sampled) ++irregular;
       if (!json) {
         auto range = [&](std::size_t i) {
           return fmt::format("{:.2f}..{:.2f}", s.columns[i].min, s.columns[i].max);
@@ -100,11 +110,17 @@ int inspect_campaign(const fs::path& path, bool json) {
     out["recordings"].push_back(r);
   }
   out["valid"] = failures == 0;
+  out["uniformly_sampled"] = irregular == 0;
   if (json)
     std::cout << out.dump(2) << "\n";
-  else if (failures == 0)
+  else if (failures == 0) {
     std::cout << "campaign is valid\n";
-  else
+    if (irregular > 0)
+      std::cout << fmt::format(
+          "but {} recording(s) are not uniformly sampled, which train needs: "
+          "import the logger's files with --rate-hz R (docs/logs.md)\n",
+          irregular);
+  } else
     std::cout << fmt::format("campaign has {} invalid recording(s)\n", failures);
   return failures == 0 ? 0 : 1;
 }

@@ -21,6 +21,7 @@ struct RecordingSummary {
   double sample_rate_hz = 0;         ///< 1 / median step
   std::size_t gaps = 0;              ///< steps longer than 1.5 × the median
   double longest_gap_s = 0;          ///< longest step, s
+  bool uniformly_sampled = false;    ///< every step within 1 % of the median (train needs it)
   std::vector<ColumnRange> columns;  ///< every known numeric column except time_s
   std::vector<std::string> extra_columns;
 };

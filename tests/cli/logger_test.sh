@@ -1,0 +1,95 @@
+#!/usr/bin/env bash
+# A logger file as a thermal chamber gives it (tests/data/logger/tvac_log.csv, made by
+# scripts/make_logger_fixture.py), taken from raw file to an evaluated model with the commands of
+# docs/logs.md only, and the messages a new user meets on the way.
+# Usage: logger_test.sh PATH/TO/fogdrift PATH/TO/tests/data
+set -u
+fd=$1
+data=$2
+source "$(dirname "$0")/common.sh"
+raw=$data/logger/tvac_log.csv
+
+# The fixture is what its script makes.
+check "fixture is reproducible" python3 "$(dirname "$0")/../../scripts/make_logger_fixture.py" "$work/again.csv"
+check "fixture unchanged" cmp -s "$work/again.csv" "$raw"
+
+u=int16:0.00390625:25
+map=(--map time_s=millis --unit time_s=ms --map gyro_dph=gx_dps --unit gyro_dph=deg/s
+     --map temp_fog_degc=temp_raw --unit temp_fog_degc=$u
+     --map temp_acc1_degc=temp_raw --unit temp_acc1_degc=$u
+     --map temp_acc2_degc=temp_raw --unit temp_acc2_degc=$u)
+
+# --- what a new user meets first ----------------------------------------------------------------
+check "power cycles need --split-at-reset" run 1 "$fd" import "$raw" -o "$work/x.csv" "${map[@]}"
+check "power cycle message" err_has "time goes backwards; if the logger was power-cycled here, import with --split-at-reset"
+check "nothing written" test ! -e "$work/x.csv"
+check "plain counts read negatives wrong" run 0 "$fd" import "$raw" -o "$work/counts.csv" --split-at-reset \
+  --map time_s=millis --unit time_s=ms --map gyro_dph=gx_dps --unit gyro_dph=deg/s \
+  --map temp_fog_degc=temp_raw --unit temp_fog_degc=counts:0.00390625:25 \
+  --map temp_acc1_degc=temp_raw --map temp_acc2_degc=temp_raw
+check "unsigned reading of -10 °C is 246 °C" bash -c "awk -F, 'NR==2{exit !(\$3 > 200)}' '$work/counts_1.csv'"
+check "campaign catches the wrong unit" run 1 "$fd" campaign "$work/wrong" "$work"/counts_*.csv --input-rate-dph 0
+check "wrong unit message" err_has "counts_1.csv:2: temp_fog_degc starts at 246 °C, outside [-70, 100]: check its unit"
+check "import without a grid" run 0 "$fd" import "$raw" -o "$work/nogrid.csv" --split-at-reset "${map[@]}"
+check "import says the steps are not uniform" out_has "note: the time steps are not uniform (within 1 %); train needs that: import again with --rate-hz R"
+check "inspect a jittery recording" run 0 "$fd" inspect "$work/nogrid_1.csv"
+check "inspect says it is not usable for training, and the fix" out_has "not usable as it stands: time steps vary by more than 1 %"
+check "campaign of jittery bursts" run 0 "$fd" campaign "$work/jitter" "$work"/nogrid_*.csv --input-rate-dph 0
+check "train refuses non-uniform time" run 1 "$fd" train "$work/jitter" -o "$work/j.json" --method svr
+check "non-uniform message names the fix" err_has "put the log on a uniform grid first with 'fogdrift import --rate-hz'"
+check "bad register width" run 1 "$fd" import "$raw" -o "$work/x.csv" --unit temp_fog_degc=int15:1:0
+check "bad register message" err_has "intN:SCALE:OFFSET with N = 8, 12, 16, 24 or 32"
+check "grid option without a grid" run 1 "$fd" import "$raw" -o "$work/x.csv" "${map[@]}" --max-gap-s 10
+check "grid option message" err_has "option --max-gap-s: has no effect without --rate-hz R or --step-s S"
+
+# --- the documented path: import, campaign, train, evaluate --------------------------------------
+check "import" run 0 "$fd" import "$raw" -o "$work/tvac.csv" --split-at-reset "${map[@]}" --hampel --step-s 60
+check "one recording per power cycle" test "$(ls "$work"/tvac_*.csv | wc -l)" -eq 4
+check "the three spikes, and only they" test "$(grep -c 'spikes: [12] replaced' "$work/out")" -eq 4
+check "gyro spikes reported with their lines" out_has "spikes: 2 replaced in gyro_dph: line 609 28800 -> "
+check "thermometer spike reported" out_has "spikes: 1 replaced in temp_fog_degc: line 4013 152.996 -> "
+check "bursts averaged" out_has "-> 60 samples every 60 s by mean"
+check "the lost bursts bridged and said" out_has "bridged, 5 samples interpolated"
+check "inspect a gridded recording" run 0 "$fd" inspect "$work/tvac_1.csv"
+check "inspect says it is usable" out_has "training    usable as it stands"
+check "uniform now" bash -c "awk -F, 'NR>2{d=\$1-p; if (d!=60) exit 1} {p=\$1}' '$work/tvac_3.csv'"
+check "negative temperatures read right" bash -c "awk -F, 'NR==2{exit !(\$3 > -10.5 && \$3 < -9.5)}' '$work/tvac_1.csv'"
+
+check "campaign needs the input rate" run 1 "$fd" campaign "$work/camp" "$work"/tvac_*.csv
+check "input rate message" err_has "say what rate the gyro sensed"
+check "no half-made campaign" test ! -e "$work/camp"
+check "campaign" run 0 "$fd" campaign "$work/camp" "$work"/tvac_?.csv --test 2 --input-rate-dph 0
+check "campaign lists four" test "$(grep -c '^  tvac_' "$work/out")" -eq 4
+check "initial temperatures from the thermometer" grep -qE '^  tvac_2_02.csv +test +1 +5.0 +60 ' "$work/out"
+check "inspect accepts it" run 0 "$fd" inspect "$work/camp"
+check "inspect says valid" out_has "campaign is valid"
+check "no latitude needed" out_has "no latitude"
+check "manifest keeps the input rate" grep -q '"input_rate_dph": 0' "$work/camp/campaign.json"
+
+check "default features need three thermometers" run 1 "$fd" train "$work/camp" -o "$work/m.json" --method svr
+check "constant gradient message" err_has "is constant (0) over the 180 training rows"
+check "train, one thermometer" run 0 "$fd" train "$work/camp" -o "$work/m.json" --features "T(fog),dT(fog)"
+check "train adapts the block" out_has "blocks of 60 s, not 10 s (--block-s)"
+check "train adapts the rate window" out_has "temperature rates over 300 s, not 121 s (--rate-window-s)"
+check "train says the box stopped it" out_has "sigma = 20 is at the upper edge of its box [0.05, 20]"
+check "train --auto-box" run 0 "$fd" train "$work/camp" -o "$work/m.json" --features "T(fog),dT(fog)" --auto-box --json
+check "auto-box widened sigma" python3 -c 'import json,sys; d=json.load(open(sys.argv[1])); assert len(d["boxes_searched"]) >= 2 and d["hyperparameters"]["sigma"] > 20, d' "$work/out"
+check "an impossible block names its flag" run 1 "$fd" train "$work/camp" -o "$work/b.json" --features "T(fog),dT(fog)" --block-s 90
+check "block message" err_has "option --block-s: 90.000000 s is not a whole multiple of the sample interval"
+
+check "evaluate" run 0 "$fd" evaluate "$work/m.json" "$work/camp" --allan
+check "evaluate before and after" out_has "| tvac_2_02.csv | 5 | "
+check "no paper figures on user data" bash -c "! grep -q 'paper:' '$work/out'"
+check "Allan note states the real length" out_has "(59-minute recordings read bias instability"
+check "compensation lowers the error" python3 - "$fd" "$work" <<'PY'
+import json, subprocess, sys
+fd, work = sys.argv[1], sys.argv[2]
+out = subprocess.run([fd, "evaluate", "--json", f"{work}/m.json", f"{work}/camp"],
+                     capture_output=True, text=True, check=True).stdout
+o = json.loads(out)["overall"]
+assert o["mae_dph"] < 0.5 * o["mae_before_dph"], o
+assert o["std_compensated_dph"] < o["std_denoised_dph"], o
+PY
+
+echo "logger: $passed passed, $failed failed"
+[ "$failed" -eq 0 ]
