@@ -204,6 +204,22 @@ FeatureSpec default_feature_spec() {
   return FeatureSpec::parse("T,dT,grad");
 }
 
+FeatureSpec default_feature_spec(const std::vector<Thermometer>& present) {
+  if (present.empty()) throw OptionError("features", "no thermometer to build features from");
+  if (present.size() == 3) return default_feature_spec();
+  std::string list;
+  for (Thermometer k : present) list += (list.empty() ? "" : ",") + std::string(to_string(k));
+  return FeatureSpec::parse(present.size() == 1 ? fmt::format("T({0}),dT({0})", list)
+                                                : fmt::format("T({0}),dT({0}),grad({0})", list));
+}
+
+std::vector<Thermometer> thermometers_of(const Recording& recording) {
+  std::vector<Thermometer> out = {Thermometer::fog};
+  if (!recording.temp_acc1_degc.empty()) out.push_back(Thermometer::acc1);
+  if (!recording.temp_acc2_degc.empty()) out.push_back(Thermometer::acc2);
+  return out;
+}
+
 double sample_interval_s(const Recording& recording) {
   const auto& t = recording.time_s;
   if (t.size() < 2) {
@@ -270,6 +286,19 @@ FeatureTable compute_features(const Recording& recording, const FeatureSpec& spe
   const std::array<const std::vector<double>*, 3> temps = {
       &recording.temp_fog_degc, &recording.temp_acc1_degc, &recording.temp_acc2_degc};
   const std::vector<FeatureColumn> plan = spec.columns();
+  for (Thermometer k : {Thermometer::acc1, Thermometer::acc2}) {
+    if (!temps[static_cast<std::size_t>(k)]->empty()) continue;
+    for (const FeatureColumn& c : plan) {
+      if (!c.reads(k)) continue;
+      throw InputError(
+          recording.source, 1, 0,
+          fmt::format("has no {} column, which the feature {} reads (spec '{}'); a unit with "
+                      "fewer thermometers trains on those it has, e.g. --features \"{}\" "
+                      "(docs/logs.md)",
+                      column_name(k), c.name(), spec.to_string(),
+                      default_feature_spec(thermometers_of(recording)).to_string()));
+    }
+  }
   // Rates only of the thermometers some input reads.
   std::array<std::vector<double>, 3> rates;
   for (Thermometer k : {Thermometer::fog, Thermometer::acc1, Thermometer::acc2}) {
@@ -282,7 +311,7 @@ FeatureTable compute_features(const Recording& recording, const FeatureSpec& spe
   for (std::size_t s = 0; s < n; ++s) {
     std::array<double, 3> temp{}, rate{};
     for (std::size_t i = 0; i < 3; ++i) {
-      temp[i] = (*temps[i])[s];
+      temp[i] = temps[i]->empty() ? 0.0 : (*temps[i])[s];  // an absent one is never read
       rate[i] = rates[i].empty() ? 0.0 : rates[i][s];
     }
     for (std::size_t c = 0; c < plan.size(); ++c)

@@ -191,8 +191,8 @@ std::vector<Recording> import_recordings(const std::filesystem::path& path,
   rec.time_s = convert("time_s", *column_for("time_s"));
   rec.gyro_dph = convert("gyro_dph", *column_for("gyro_dph"));
   rec.temp_fog_degc = convert("temp_fog_degc", *column_for("temp_fog_degc"));
-  rec.temp_acc1_degc = convert("temp_acc1_degc", *column_for("temp_acc1_degc"));
-  rec.temp_acc2_degc = convert("temp_acc2_degc", *column_for("temp_acc2_degc"));
+  if (auto c = column_for("temp_acc1_degc")) rec.temp_acc1_degc = convert("temp_acc1_degc", *c);
+  if (auto c = column_for("temp_acc2_degc")) rec.temp_acc2_degc = convert("temp_acc2_degc", *c);
   if (auto c = column_for("accel_x_g")) rec.accel_x_g = convert("accel_x_g", *c);
   if (auto c = column_for("accel_y_g")) rec.accel_y_g = convert("accel_y_g", *c);
   if (auto c = column_for("table_deg")) rec.table_deg = convert("table_deg", *c);
@@ -236,17 +236,23 @@ std::vector<Recording> import_recordings(const std::filesystem::path& path,
                        "a power cycle of a single sample; a recording needs at least 2");
     }
     if (options.outliers) {
-      for (std::size_t c = 0; c < options.outlier_columns.size(); ++c) {
-        const std::string& name = options.outlier_columns[c];
-        std::vector<double>* x = name == "gyro_dph"         ? &cycle.gyro_dph
-                                 : name == "temp_fog_degc"  ? &cycle.temp_fog_degc
-                                 : name == "temp_acc1_degc" ? &cycle.temp_acc1_degc
-                                 : name == "temp_acc2_degc" ? &cycle.temp_acc2_degc
-                                 : name == "chamber_degc" && cycle.chamber_degc
-                                     ? &*cycle.chamber_degc
-                                 : name == "accel_x_g" && cycle.accel_x_g ? &*cycle.accel_x_g
-                                 : name == "accel_y_g" && cycle.accel_y_g ? &*cycle.accel_y_g
-                                                                          : nullptr;
+      std::vector<std::string> columns = options.outlier_columns;
+      if (columns.empty()) {
+        columns = {"gyro_dph", "temp_fog_degc"};
+        if (!cycle.temp_acc1_degc.empty()) columns.emplace_back("temp_acc1_degc");
+        if (!cycle.temp_acc2_degc.empty()) columns.emplace_back("temp_acc2_degc");
+      }
+      for (std::size_t c = 0; c < columns.size(); ++c) {
+        const std::string& name = columns[c];
+        std::vector<double>* x =
+            name == "gyro_dph"                                          ? &cycle.gyro_dph
+            : name == "temp_fog_degc"                                   ? &cycle.temp_fog_degc
+            : name == "temp_acc1_degc" && !cycle.temp_acc1_degc.empty() ? &cycle.temp_acc1_degc
+            : name == "temp_acc2_degc" && !cycle.temp_acc2_degc.empty() ? &cycle.temp_acc2_degc
+            : name == "chamber_degc" && cycle.chamber_degc              ? &*cycle.chamber_degc
+            : name == "accel_x_g" && cycle.accel_x_g                    ? &*cycle.accel_x_g
+            : name == "accel_y_g" && cycle.accel_y_g                    ? &*cycle.accel_y_g
+                                                                        : nullptr;
         if (!x) {
           throw OptionError("--outlier-columns",
                             fmt::format("'{}' is not a signal column of {} (gyro_dph, "

@@ -46,8 +46,10 @@ RecordingSummary summarize(const Recording& rec) {
   s.uniformly_sampled = is_uniformly_sampled(rec);
   s.columns.push_back(column_range("gyro_dph", rec.gyro_dph));
   s.columns.push_back(column_range("temp_fog_degc", rec.temp_fog_degc));
-  s.columns.push_back(column_range("temp_acc1_degc", rec.temp_acc1_degc));
-  s.columns.push_back(column_range("temp_acc2_degc", rec.temp_acc2_degc));
+  if (!rec.temp_acc1_degc.empty())
+    s.columns.push_back(column_range("temp_acc1_degc", rec.temp_acc1_degc));
+  if (!rec.temp_acc2_degc.empty())
+    s.columns.push_back(column_range("temp_acc2_degc", rec.temp_acc2_degc));
   if (rec.accel_x_g) s.columns.push_back(column_range("accel_x_g", *rec.accel_x_g));
   if (rec.accel_y_g) s.columns.push_back(column_range("accel_y_g", *rec.accel_y_g));
   if (rec.table_deg) s.columns.push_back(column_range("table_deg", *rec.table_deg));

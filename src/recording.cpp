@@ -23,8 +23,11 @@ std::vector<double>* known_column(Recording& r, std::string_view name, bool crea
   if (name == "time_s") return &r.time_s;
   if (name == "gyro_dph") return &r.gyro_dph;
   if (name == "temp_fog_degc") return &r.temp_fog_degc;
-  if (name == "temp_acc1_degc") return &r.temp_acc1_degc;
-  if (name == "temp_acc2_degc") return &r.temp_acc2_degc;
+  // The second and third thermometers may be absent: an empty column (recording.hpp).
+  if (name == "temp_acc1_degc")
+    return create || !r.temp_acc1_degc.empty() ? &r.temp_acc1_degc : nullptr;
+  if (name == "temp_acc2_degc")
+    return create || !r.temp_acc2_degc.empty() ? &r.temp_acc2_degc : nullptr;
   if (name == "accel_x_g") return opt(r.accel_x_g);
   if (name == "accel_y_g") return opt(r.accel_y_g);
   if (name == "table_deg") return opt(r.table_deg);
@@ -66,14 +69,13 @@ void check_time(const std::vector<double>& time_s, const std::string& file,
 }  // namespace
 
 const std::vector<std::string>& required_columns() {
-  static const std::vector<std::string> names = {"time_s", "gyro_dph", "temp_fog_degc",
-                                                 "temp_acc1_degc", "temp_acc2_degc"};
+  static const std::vector<std::string> names = {"time_s", "gyro_dph", "temp_fog_degc"};
   return names;
 }
 
 const std::vector<std::string>& optional_columns() {
-  static const std::vector<std::string> names = {"accel_x_g", "accel_y_g", "table_deg",
-                                                 "chamber_degc"};
+  static const std::vector<std::string> names = {
+      "temp_acc1_degc", "temp_acc2_degc", "accel_x_g", "accel_y_g", "table_deg", "chamber_degc"};
   return names;
 }
 
@@ -111,8 +113,9 @@ Recording read_recording(const std::filesystem::path& path) {
     if (!table.find(name)) {
       throw InputError(file, 1, 0,
                        fmt::format("missing required column '{}' (required: time_s, gyro_dph, "
-                                   "temp_fog_degc, temp_acc1_degc, temp_acc2_degc; use "
-                                   "'fogdrift import' for other names or units)",
+                                   "temp_fog_degc; temp_acc1_degc and temp_acc2_degc when the "
+                                   "unit has them; use 'fogdrift import' for other names or "
+                                   "units)",
                                    name));
     }
   }
@@ -161,7 +164,7 @@ Recording slice(const Recording& r, std::size_t begin, std::size_t end) {
   if (begin > end || end > r.size()) throw std::out_of_range("slice: range outside the recording");
   const auto b = static_cast<std::ptrdiff_t>(begin), e = static_cast<std::ptrdiff_t>(end);
   auto cut = [&](const std::vector<double>& v) {
-    return std::vector<double>(v.begin() + b, v.begin() + e);
+    return v.empty() ? v : std::vector<double>(v.begin() + b, v.begin() + e);  // absent stays so
   };
   auto cut_optional = [&](const std::optional<std::vector<double>>& v) {
     return v ? std::optional<std::vector<double>>(cut(*v)) : std::nullopt;

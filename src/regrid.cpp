@@ -27,8 +27,8 @@ Channels channels(const Recording& from, Recording& to) {
   };
   add(from.gyro_dph, to.gyro_dph);
   add(from.temp_fog_degc, to.temp_fog_degc);
-  add(from.temp_acc1_degc, to.temp_acc1_degc);
-  add(from.temp_acc2_degc, to.temp_acc2_degc);
+  if (!from.temp_acc1_degc.empty()) add(from.temp_acc1_degc, to.temp_acc1_degc);  // absent: stays
+  if (!from.temp_acc2_degc.empty()) add(from.temp_acc2_degc, to.temp_acc2_degc);
   auto optional = [&](const std::optional<std::vector<double>>& a,
                       std::optional<std::vector<double>>& b) {
     if (!a) return;

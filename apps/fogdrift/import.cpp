@@ -37,7 +37,7 @@ struct ImportArgs {
   bool hampel = false;
   std::size_t hampel_half_window = signal::HampelOptions{}.half_window;
   double hampel_sigma = signal::HampelOptions{}.n_sigma;
-  std::string outlier_columns = "gyro_dph,temp_fog_degc,temp_acc1_degc,temp_acc2_degc";
+  std::string outlier_columns;  ///< empty: gyro_dph and every thermometer the file has
   bool quiet = false;
 };
 
@@ -183,8 +183,8 @@ void add_import(CLI::App& app) {
                   "samples; see docs/signal.md)")
       ->capture_default_str();
   cmd->add_option("--outlier-columns", a->outlier_columns,
-                  "Columns the Hampel filter looks at, comma-separated")
-      ->capture_default_str();
+                  "Columns the Hampel filter looks at, comma-separated (default: gyro_dph and "
+                  "every thermometer the file has)");
   cmd->add_flag("-q,--quiet", a->quiet, "Print nothing on success");
   cmd->callback([a] {
     ImportOptions o;
@@ -203,7 +203,7 @@ void add_import(CLI::App& app) {
     o.split_at_reset = a->split_at_reset;
     if (a->hampel) {
       o.outliers = signal::HampelOptions{a->hampel_half_window, a->hampel_sigma};
-      o.outlier_columns = split_list(a->outlier_columns);
+      if (!a->outlier_columns.empty()) o.outlier_columns = split_list(a->outlier_columns);
     } else if (a->hampel_sigma != signal::HampelOptions{}.n_sigma ||
                a->hampel_half_window != signal::HampelOptions{}.half_window) {
       throw OptionError(a->hampel_sigma != signal::HampelOptions{}.n_sigma ? "--hampel-sigma"

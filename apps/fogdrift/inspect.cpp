@@ -91,16 +91,18 @@ int inspect_campaign(const fs::path& path, bool json) {
       r["summary"] = summary_json(s);
       if (!s.uniformly_sampled) ++irregular;
       if (!json) {
-        auto range = [&](std::size_t i) {
-          return fmt::format("{:.2f}..{:.2f}", s.columns[i].min, s.columns[i].max);
+        auto range = [&](const char* name) {
+          for (const auto& c : s.columns)
+            if (c.name == name) return fmt::format("{:.2f}..{:.2f}", c.min, c.max);
+          return std::string("absent");
         };
         // Two spaces between columns, so that a wide value never runs into its neighbour.
         std::cout << fmt::format(
             "  {:<28}  {:<11}  {:<5}  {:>3}  {:>6.1f}  {:>8}  {:>7.1f}  {:>8.3g}  {:>15}  {:>15}  "
             "{:>15}  {:>12.6g}  {:>10.4g}\n",
             e.file, to_string(e.scenario), to_string(e.role), e.repetition, e.initial_temp_degc,
-            s.samples, s.duration_s / 60.0, s.sample_rate_hz, range(1), range(2), range(3),
-            s.columns[0].mean, s.columns[0].std);
+            s.samples, s.duration_s / 60.0, s.sample_rate_hz, range("temp_fog_degc"),
+            range("temp_acc1_degc"), range("temp_acc2_degc"), s.columns[0].mean, s.columns[0].std);
       }
     } catch (const InputError& err) {
       ++failures;

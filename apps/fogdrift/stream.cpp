@@ -14,6 +14,7 @@
 #include "fogdrift/compensator.hpp"
 #include "fogdrift/csv.hpp"
 #include "fogdrift/error.hpp"
+#include "fogdrift/features.hpp"
 #include "fogdrift/model.hpp"
 #include "fogdrift/recording.hpp"
 
@@ -58,12 +59,21 @@ void run(const StreamArgs& a) {
   const std::vector<std::string> header = split(line);
   constexpr std::array<const char*, 5> kNeeded = {"time_s", "gyro_dph", "temp_fog_degc",
                                                   "temp_acc1_degc", "temp_acc2_degc"};
+  // The accelerometers' thermometers are needed only when the model reads them.
+  const std::vector<FeatureColumn> plan = model.dataset.features.columns();
+  auto model_reads = [&](Thermometer k) {
+    return std::any_of(plan.begin(), plan.end(),
+                       [k](const FeatureColumn& c) { return c.reads(k); });
+  };
+  const std::array<bool, 5> needed = {true, true, true, model_reads(Thermometer::acc1),
+                                      model_reads(Thermometer::acc2)};
+  constexpr std::size_t kAbsent = static_cast<std::size_t>(-1);
   std::array<std::size_t, 5> column{};
   for (std::size_t k = 0; k < kNeeded.size(); ++k) {
     const auto it = std::find(header.begin(), header.end(), kNeeded[k]);
-    if (it == header.end())
+    if (it == header.end() && needed[k])
       throw InputError(name, 1, 0, fmt::format("has no {} column", kNeeded[k]));
-    column[k] = static_cast<std::size_t>(it - header.begin());
+    column[k] = it == header.end() ? kAbsent : static_cast<std::size_t>(it - header.begin());
   }
   for (const char* added : {"drift_dph", "gyro_comp_dph", "novelty", "guard_weight"})
     if (std::find(header.begin(), header.end(), added) != header.end())
@@ -80,8 +90,9 @@ void run(const StreamArgs& a) {
     if (fields.size() != header.size())
       throw InputError(name, line_no, 0,
                        fmt::format("has {} fields, the header {}", fields.size(), header.size()));
-    std::array<double, 5> v{};
+    std::array<double, 5> v{};  // a thermometer the model does not read, and the file lacks: 0
     for (std::size_t k = 0; k < kNeeded.size(); ++k) {
+      if (column[k] == kAbsent) continue;
       const auto value = csv::parse_number(fields[column[k]]);
       if (!value || !std::isfinite(*value))
         throw InputError(
@@ -118,6 +129,7 @@ void add_stream(CLI::App& app) {
       "novel to the model the correction is reduced (docs/field.md); --no-guard switches that "
       "off.\n"
       "A sample whose time step is off the fixed interval stops the stream with its line.\n"
+      "temp_acc1_degc and temp_acc2_degc are needed only when the model reads them.\n"
       "Examples:\n"
       "  logger | fogdrift stream causal.json --rate-hz 1 > compensated.csv\n"
       "  fogdrift stream causal.json cal/cal_r4_20C.csv --rate-hz 1");

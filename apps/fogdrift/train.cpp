@@ -1,6 +1,7 @@
 // fogdrift train: fit a compensation model on a campaign's training recordings (METHOD.md §2).
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <chrono>
 #include <iostream>
 #include <map>
@@ -25,7 +26,7 @@ struct TrainArgs {
   std::string output;
   std::string method = "ssa-svr";
   std::string fitness = "cv";
-  std::string features = default_feature_spec().to_string();
+  std::string features = "auto";
   std::string cv = "auto";
   std::string differentiator = "centred";
   std::string block_s = "auto";
@@ -88,7 +89,7 @@ void run(const TrainArgs& a) {
     options.method = parse_method(a.method, "--method");
     options.tune.fitness = tune::parse_fitness(a.fitness, "--fitness");
     options.tune.cv.scheme = tune::parse_cv_scheme(a.cv, "--cv");
-    dataset.features = FeatureSpec::parse(a.features);
+    if (a.features != "auto") dataset.features = FeatureSpec::parse(a.features);
     dataset.preprocessing.rates.causality =
         signal::parse_causality(a.differentiator, "--differentiator");
   } catch (const OptionError& e) {
@@ -138,6 +139,20 @@ void run(const TrainArgs& a) {
     std::size_t shortest = inputs.front().recording.size();
     for (const auto& in : inputs) shortest = std::min(shortest, in.recording.size());
     const FeatureOptions fitted = preprocessing_for(dt_s, shortest, dataset.preprocessing);
+    if (a.features == "auto") {
+      // The paper's inputs over the thermometers every training recording has.
+      std::vector<Thermometer> common = thermometers_of(inputs.front().recording);
+      for (const auto& in : inputs) {
+        const auto has = thermometers_of(in.recording);
+        std::erase_if(common, [&](Thermometer k) {
+          return std::find(has.begin(), has.end(), k) == has.end();
+        });
+      }
+      dataset.features = default_feature_spec(common);
+      if (common.size() < 3)
+        notes.push_back(fmt::format("{} thermometer{}: features '{}' (--features)", common.size(),
+                                    common.size() == 1 ? "" : "s", dataset.features.to_string()));
+    }
     const FeatureOptions defaults;
     dataset.preprocessing.block.block_s = block_s.value_or(fitted.block.block_s);
     dataset.preprocessing.rates.window_s = window_s.value_or(fitted.rates.window_s);
@@ -296,7 +311,8 @@ void add_train(CLI::App& app) {
       ->capture_default_str();
   cmd->add_option("--features", args->features,
                   "Feature spec: terms T, dT, grad, dgrad, t, TdT, each optionally with its "
-                  "thermometers, e.g. 'T,dT(fog),grad'")
+                  "thermometers, e.g. 'T,dT(fog),grad'; auto: the paper's T,dT,grad over the "
+                  "thermometers every training recording has (T(fog),dT(fog) with one)")
       ->capture_default_str();
   cmd->add_option("--differentiator", args->differentiator,
                   "Temperature rates: centred (offline, no delay) or causal (what the instrument "

@@ -68,6 +68,12 @@ struct FeatureColumn {
     }
     return 0.0;
   }
+  /// Whether it reads thermometer `k` at all (its temperature or its rate).
+  bool reads(Thermometer k) const noexcept {
+    if (term == FeatureTerm::time) return false;
+    const bool two = term == FeatureTerm::gradient || term == FeatureTerm::gradient_rate;
+    return a == k || (two && b == k);
+  }
   /// Whether it reads the rate of thermometer `k`.
   bool reads_rate(Thermometer k) const noexcept {
     return (term == FeatureTerm::rate || term == FeatureTerm::temp_rate_product) ? a == k
@@ -99,6 +105,14 @@ struct FeatureSpec {
 
 /// The paper's inputs, "T,dT,grad" (9 features).
 FeatureSpec default_feature_spec();
+
+/// The paper's inputs over the thermometers a unit has (docs/logs.md, "Fewer thermometers"):
+/// all three: "T,dT,grad"; two: "T(a,b),dT(a,b),grad(a,b)"; one: "T(a),dT(a)".
+/// Throws OptionError("features", ...) for an empty list.
+FeatureSpec default_feature_spec(const std::vector<Thermometer>& present);
+
+/// The thermometers `recording` has, in fog, acc1, acc2 order (fog always).
+std::vector<Thermometer> thermometers_of(const Recording& recording);
 
 /// How a recording becomes modelling rows.
 struct FeatureOptions {

@@ -47,15 +47,15 @@ struct ImportOptions {
   bool time_from_zero = false;  ///< subtract the first time stamp (loggers that count from boot)
   bool keep_extra = true;       ///< keep unmapped foreign columns as extra columns
   /// A time stamp smaller than the one before is a power cycle (a logger counting from its own
-  /// boot) and starts a new recording, its time counted from its own first sample; without this
-  /// it is an error. Only import_recordings() accepts it.
+  /// boot) and starts a new recording, its times as logged (time_from_zero applies to each);
+  /// without this it is an error. Only import_recordings() accepts it.
   bool split_at_reset = false;
   /// Spike removal (signal/hampel.hpp) on the columns in outlier_columns, after unit conversion;
   /// none when empty.
   std::optional<signal::HampelOptions> outliers;
-  /// fogdrift columns the spike removal looks at; every one must be in the recording.
-  std::vector<std::string> outlier_columns = {"gyro_dph", "temp_fog_degc", "temp_acc1_degc",
-                                              "temp_acc2_degc"};
+  /// fogdrift columns the spike removal looks at; every one must be in the recording. Empty:
+  /// gyro_dph and every thermometer the recording has.
+  std::vector<std::string> outlier_columns;
 };
 
 /// What import changed besides units: the samples the spike removal replaced, per column.

@@ -3,12 +3,13 @@
 // File format (docs/formats.md): CSV with a header row. Required columns, in any order:
 //   time_s          seconds since power-on, strictly increasing
 //   gyro_dph        FOG rate output, °/h
-//   temp_fog_degc   FOG built-in thermometer, °C
+//   temp_fog_degc   FOG built-in thermometer, °C (a unit with one thermometer logs it here)
+// Thermometers the unit may lack (docs/logs.md, "Fewer thermometers"):
 //   temp_acc1_degc  accelerometer 1 built-in thermometer, °C
 //   temp_acc2_degc  accelerometer 2 built-in thermometer, °C
-// Optional columns: accel_x_g, accel_y_g (accelerometers, g), table_deg (turntable angle, °),
-// chamber_degc (chamber air, °C, for reference only). Any other column is kept verbatim and
-// ignored by the method.
+// In memory an absent thermometer is an empty column. Other optional columns: accel_x_g,
+// accel_y_g (accelerometers, g), table_deg (turntable angle, °), chamber_degc (chamber air, °C,
+// for reference only). Any other column is kept verbatim and ignored by the method.
 #pragma once
 
 #include <cstddef>
@@ -30,8 +31,8 @@ struct Recording {
   std::vector<double> time_s;
   std::vector<double> gyro_dph;
   std::vector<double> temp_fog_degc;
-  std::vector<double> temp_acc1_degc;
-  std::vector<double> temp_acc2_degc;
+  std::vector<double> temp_acc1_degc;  ///< empty when the unit has no such thermometer
+  std::vector<double> temp_acc2_degc;  ///< empty when the unit has no such thermometer
   std::optional<std::vector<double>> accel_x_g;
   std::optional<std::vector<double>> accel_y_g;
   std::optional<std::vector<double>> table_deg;

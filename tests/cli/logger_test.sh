@@ -91,5 +91,26 @@ assert o["mae_dph"] < 0.5 * o["mae_before_dph"], o
 assert o["std_compensated_dph"] < o["std_denoised_dph"], o
 PY
 
+# --- one thermometer, as it is: no copies onto the columns the unit lacks ------------------------
+check "import one thermometer" run 0 "$fd" import "$raw" -o "$work/one.csv" --split-at-reset --hampel --step-s 60 \
+  --map time_s=millis --unit time_s=ms --map gyro_dph=gx_dps --unit gyro_dph=deg/s \
+  --map temp_fog_degc=temp_raw --unit temp_fog_degc=$u
+check "only the columns it has" bash -c "head -1 '$work/one_1.csv' | grep -qx 'time_s,gyro_dph,temp_fog_degc'"
+check "spikes looked for in what it has" out_has "spikes: 1 replaced in temp_fog_degc"
+check "inspect one thermometer" run 0 "$fd" inspect "$work/one_2.csv"
+check "inspect shows no absent column" bash -c "! grep -q temp_acc '$work/out'"
+check "campaign of one thermometer" run 0 "$fd" campaign "$work/one" "$work"/one_?.csv --test 2 --input-rate-dph 0
+check "inspect the campaign" run 0 "$fd" inspect "$work/one"
+check "absent columns said so" out_has "absent"
+check "train picks features it can compute" run 0 "$fd" train "$work/one" -o "$work/one.json" --method svr
+check "train says which" out_has "1 thermometer: features 'T(fog),dT(fog)' (--features)"
+check "a spec reading an absent thermometer" run 1 "$fd" train "$work/one" -o "$work/x.json" --method svr --features T,dT,grad
+check "absent thermometer message" err_has "has no temp_acc1_degc column, which the feature T_acc1_degc reads (spec 'T,dT,grad'); a unit with fewer thermometers trains on those it has, e.g. --features \"T(fog),dT(fog)\""
+check "same model as three copies" bash -c "'$fd' train '$work/camp' -o '$work/copies.json' --method svr --features 'T(fog),dT(fog)' -q && python3 -c 'import json,sys; a=json.load(open(sys.argv[1]))[\"regressor\"]; b=json.load(open(sys.argv[2]))[\"regressor\"]; assert a==b' '$work/one.json' '$work/copies.json'"
+check "evaluate one thermometer" run 0 "$fd" evaluate "$work/one.json" "$work/one"
+check "compensate one thermometer" run 0 "$fd" compensate "$work/one.json" "$work/one/one_2_02.csv" -o "$work/one_comp.csv"
+check "stream without the absent columns" bash -c "'$fd' stream '$work/one.json' '$work/one/one_2_02.csv' --rate-hz 0.016666666666666666 --no-guard >'$work/one_stream.csv'"
+check "stream has a row per sample" test "$(wc -l <"$work/one_stream.csv")" -eq 61
+
 echo "logger: $passed passed, $failed failed"
 [ "$failed" -eq 0 ]
