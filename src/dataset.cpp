@@ -47,7 +47,10 @@ std::vector<double> drift_target(const RecordingInput& input, const DatasetOptio
     try {
       gyro = signal::denoise(gyro, options.denoise).signal;
     } catch (const OptionError& e) {
-      throw InputError(rec.source, 0, 0, e.what());
+      // The setting that cannot be met is the target's denoising, whatever field it names.
+      throw OptionError("denoise",
+                        fmt::format("{}: {}; the gyro target is wavelet-denoised before training",
+                                    rec.source, e.message()));
     }
   }
   const std::size_t n = gyro.size();

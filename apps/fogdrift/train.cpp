@@ -42,6 +42,7 @@ struct TrainArgs {
          epsilon = tune::SearchSpace{}.epsilon;
   bool search_epsilon = false;
   bool auto_box = false;
+  bool no_denoise = false;
   std::size_t hidden = 10;
   std::size_t max_degree = 3;
   bool json = false;
@@ -66,7 +67,8 @@ OptionError as_flag(const OptionError& e) {
                                                            {"features", "--features"},
                                                            {"block_s", "--block-s"},
                                                            {"window_s", "--rate-window-s"},
-                                                           {"poly_order", "--rate-window-s"}};
+                                                           {"poly_order", "--rate-window-s"},
+                                                           {"denoise", "--no-denoise"}};
   const auto it = flags.find(e.option());
   if (it == flags.end()) return e;
   return OptionError(it->second, e.message());
@@ -106,6 +108,7 @@ void run(const TrainArgs& a) {
   options.tune.space.epsilon = a.epsilon;
   options.tune.space.search_epsilon = a.search_epsilon;
   options.auto_box_rounds = a.auto_box ? 3 : 0;
+  dataset.denoise_target = !a.no_denoise;
   options.mlp.hidden = a.hidden;
   options.poly_max_degree = a.max_degree;
   ThreadPool pool(a.threads);
@@ -352,6 +355,9 @@ void add_train(CLI::App& app) {
   cmd->add_option("--epsilon", args->epsilon, "ε of the tube (standardised target)")
       ->capture_default_str();
   cmd->add_flag("--search-epsilon", args->search_epsilon, "Also search ε in [0.001, 1]");
+  cmd->add_flag("--no-denoise", args->no_denoise,
+                "Train on the raw gyro, not its wavelet-denoised version (for recordings too "
+                "short to denoise, or already smooth: a log of burst means)");
   cmd->add_flag("--auto-box", args->auto_box,
                 "When the best C, σ or ε lies on an edge of its box, widen the box a decade "
                 "there and search again (at most 3 times); train warns of such edges either way");

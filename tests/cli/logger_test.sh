@@ -112,5 +112,14 @@ check "compensate one thermometer" run 0 "$fd" compensate "$work/one.json" "$wor
 check "stream without the absent columns" bash -c "'$fd' stream '$work/one.json' '$work/one/one_2_02.csv' --rate-hz 0.016666666666666666 --no-guard >'$work/one_stream.csv'"
 check "stream has a row per sample" test "$(wc -l <"$work/one_stream.csv")" -eq 61
 
+# --- recordings too short to denoise ------------------------------------------------------------
+mkdir -p "$work/short"
+for i in 1 2 3 4; do head -9 "$work/one_$i.csv" >"$work/short/s$i.csv"; done
+check "campaign of short recordings" run 0 "$fd" campaign "$work/shortc" "$work"/short/s?.csv --input-rate-dph 0
+check "too short to denoise names the flag" run 1 "$fd" train "$work/shortc" -o "$work/s.json" --method svr
+check "denoise message" err_has "option --no-denoise: "
+check "denoise message names the recording" err_has "s1_01.csv: a signal of 8 samples is too short to denoise with sym4"
+check "train --no-denoise" run 0 "$fd" train "$work/shortc" -o "$work/s.json" --method svr --no-denoise
+
 echo "logger: $passed passed, $failed failed"
 [ "$failed" -eq 0 ]
