@@ -128,6 +128,19 @@ RecordingPrediction CompensationModel::predict(const Recording& recording, bool 
 
 namespace {
 
+/// The temperature arguments a model reads, e.g. "temp_fog_degc" (docs/logs.md, "Fewer
+/// thermometers").
+std::string thermometers_read(const CompensationModel& model) {
+  std::string out;
+  const auto plan = model.dataset.features.columns();
+  for (Thermometer k : {Thermometer::fog, Thermometer::acc1, Thermometer::acc2}) {
+    if (std::none_of(plan.begin(), plan.end(), [k](const FeatureColumn& c) { return c.reads(k); }))
+      continue;
+    out += (out.empty() ? "" : ", ") + std::string(column_name(k));
+  }
+  return out.empty() ? std::string("none") : out;
+}
+
 ojson regressor_json(const std::variant<svr::Model, Mlp, Poly>& regressor) {
   if (const auto* m = std::get_if<svr::Model>(&regressor)) {
     ojson j = ojson::parse(svr::to_json(*m));
@@ -458,13 +471,15 @@ std::string c_streaming_part(const CompensationModel& model, const std::string& 
       " *   {0}_state s; {0}_reset(&s);   at power-on\n"
       " *   drift_dph = {0}_update(&s, time_s, temp_fog_degc, temp_acc1_degc, temp_acc2_degc);\n"
       " * Temperature rates: causal Savitzky-Golay derivative over the last {1} samples (fewer\n"
-      " * during the first {1}); the taps for k + 1 samples start at k(k + 1)/2 in the table.{3} "
+      " * during the first {1}); the taps for k + 1 samples start at k(k + 1)/2 in the table.\n"
+      " * Thermometers this model reads: {4}; pass 0 for the others.{3} "
       "*/\n",
       prefix, w, c_number(dt_s),
       model.dataset.preprocessing.rates.causality == signal::Causality::causal
           ? ""
           : "\n * NOTE: this model was trained with centred rates; streaming applies causal ones, "
-            "which\n * lag. Train with --differentiator causal for firmware.");
+            "which\n * lag. Train with --differentiator causal for firmware.",
+      thermometers_read(model));
   h += fmt::format("#define {}_RATE_WINDOW {}\n", upper, w);
   if (!model.guard.empty())
     h += fmt::format(
