@@ -47,6 +47,46 @@ TEST(Cut, AtGapsThenIntoWindows) {
   EXPECT_DOUBLE_EQ(w120.back().time_s.back(), 739.0);
 }
 
+TEST(Cut, AtTheEndsOfTemperaturePlateaus) {
+  // A chamber staircase at 1 Hz: 20 °C for 1000 s, a ramp of 1.2 °C/min for 500 s, 30 °C for
+  // 1000 s, another ramp, 40 °C for 1000 s; the unit 5 °C warmer than the air.
+  auto chamber = [](double t) {
+    return t < 1000   ? 20.0
+           : t < 1500 ? 20.0 + (t - 1000) / 50.0
+           : t < 2500 ? 30.0
+           : t < 3000 ? 30.0 + (t - 2500) / 50.0
+                      : 40.0;
+  };
+  Recording rec;
+  rec.source = "stairs.csv";
+  rec.chamber_degc.emplace();
+  for (int i = 0; i < 4000; ++i) {
+    const double t = i;
+    rec.time_s.push_back(t);
+    rec.gyro_dph.push_back(0);
+    rec.temp_fog_degc.push_back(chamber(t) + 5.0);
+    rec.chamber_degc->push_back(chamber(t));
+  }
+  CutOptions o;
+  o.plateaus = true;
+  CutSummary s;
+  const auto pieces = cut(rec, o, &s);
+  ASSERT_EQ(pieces.size(), 3u);
+  EXPECT_EQ(s.plateaus, 2u);
+  // By hand: near a ramp starting at R, the ±60 s slope at sample i is (i + 60 − R)/100 °C/min,
+  // below 0.05 up to i = R − 56; the next piece starts one sample later.
+  EXPECT_DOUBLE_EQ(pieces[1].time_s.front(), 1000 - 55);
+  EXPECT_DOUBLE_EQ(pieces[2].time_s.front(), 2500 - 55);
+  // Each piece: a step and the plateau it settles to.
+  EXPECT_DOUBLE_EQ(pieces[1].chamber_degc->back(), 30.0);
+  EXPECT_DOUBLE_EQ(pieces[2].chamber_degc->back(), 40.0);
+  // Without a chamber column, the FOG thermometer is read.
+  rec.chamber_degc.reset();
+  EXPECT_EQ(cut(rec, o).size(), 3u);
+  o.plateau_min_s = 1200;  // no plateau is that long: no cut
+  EXPECT_EQ(cut(rec, o).size(), 1u);
+}
+
 TEST(Cut, RejectsImpossibleOptionsAndEmptyResults) {
   const Recording rec = seconds({0, 1, 2});
   try {

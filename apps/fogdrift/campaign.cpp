@@ -33,6 +33,9 @@ struct CampaignArgs {
   std::optional<double> true_azimuth_deg;
   double cut_gap_s = 0;
   double cut_window_s = 0;
+  bool cut_plateaus = false;
+  double plateau_rate_degc_per_min = CutOptions{}.plateau_rate_degc_per_min;
+  double plateau_min_s = CutOptions{}.plateau_min_s;
   bool force = false;
 };
 
@@ -67,13 +70,21 @@ void run(const CampaignArgs& a) {
   CutOptions cut_options;
   cut_options.gap_s = a.cut_gap_s;
   cut_options.window_s = a.cut_window_s;
+  cut_options.plateaus = a.cut_plateaus;
+  cut_options.plateau_rate_degc_per_min = a.plateau_rate_degc_per_min;
+  cut_options.plateau_min_s = a.plateau_min_s;
   std::vector<Recording> pieces;
   for (const auto& input : a.inputs) {
     const Recording rec = read_recording(input);
     try {
       for (auto& p : cut(rec, cut_options)) pieces.push_back(std::move(p));
     } catch (const OptionError& e) {
-      throw OptionError(e.option() == "gap_s" ? "--cut-gap-s" : "--cut-window-s", e.message());
+      const std::string flag = e.option() == "gap_s"      ? "--cut-gap-s"
+                               : e.option() == "window_s" ? "--cut-window-s"
+                               : e.option() == "plateau_rate_degc_per_min"
+                                   ? "--plateau-rate-degc-per-min"
+                                   : "--plateau-min-s";
+      throw OptionError(flag, e.message());
     }
   }
   const std::set<std::size_t> tests = test_positions(a.test, pieces.size());
@@ -146,8 +157,10 @@ void add_campaign(CLI::App& app) {
   auto* cmd = app.add_subcommand(
       "campaign",
       "Make a campaign folder (recordings and campaign.json) from fogdrift recordings, or from\n"
-      "one long log cut into recordings at gaps (--cut-gap-s) or into fixed windows\n"
-      "(--cut-window-s). Power cycles in a raw log are split by 'import --split-at-reset'.\n"
+      "one long log cut into recordings at gaps (--cut-gap-s), at the ends of temperature\n"
+      "plateaus (--cut-plateaus: each piece a chamber step and the plateau it settles to), or\n"
+      "into fixed windows (--cut-window-s). Power cycles in a raw log are split by\n"
+      "'import --split-at-reset'.\n"
       "Every recording is a calibration start-up; its initial temperature is the FOG\n"
       "thermometer's first reading. The folder is validated as inspect validates and appears\n"
       "only when complete. Examples:\n"
@@ -178,6 +191,13 @@ void add_campaign(CLI::App& app) {
       ->capture_default_str();
   cmd->add_option("--cut-window-s", a->cut_window_s,
                   "Cut into windows of this length, s (0: no); a last window under half is dropped")
+      ->capture_default_str();
+  cmd->add_flag("--cut-plateaus", a->cut_plateaus,
+                "Cut where each temperature plateau ends (chamber_degc, else temp_fog_degc)");
+  cmd->add_option("--plateau-rate-degc-per-min", a->plateau_rate_degc_per_min,
+                  "A plateau's |rate| stays below this, °C/min (slope over ±60 s)")
+      ->capture_default_str();
+  cmd->add_option("--plateau-min-s", a->plateau_min_s, "Shortest plateau, s")
       ->capture_default_str();
   cmd->add_flag("--force", a->force, "Replace OUT if it exists (only after success)");
   cmd->callback([a] { run(*a); });

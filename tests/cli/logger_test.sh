@@ -61,6 +61,10 @@ check "no half-made campaign" test ! -e "$work/camp"
 check "campaign" run 0 "$fd" campaign "$work/camp" "$work"/tvac_?.csv --test 2 --input-rate-dph 0
 check "campaign lists four" test "$(grep -c '^  tvac_' "$work/out")" -eq 4
 check "initial temperatures from the thermometer" grep -qE '^  tvac_2_02.csv +test +1 +5.0 +60 ' "$work/out"
+check "a warm-up is one plateau: no cut" run 0 "$fd" campaign "$work/plateaus" "$work"/tvac_?.csv --input-rate-dph 0 --cut-plateaus
+check "plateaus left four recordings" test "$(grep -c '^  tvac_' "$work/out")" -eq 4
+check "an impossible plateau" run 1 "$fd" campaign "$work/bad_plateau" "$work"/tvac_?.csv --input-rate-dph 0 --cut-plateaus --plateau-min-s 0
+check "plateau message names the flag" err_has "option --plateau-min-s: 0 s is not a positive duration"
 check "inspect accepts it" run 0 "$fd" inspect "$work/camp"
 check "inspect says valid" out_has "campaign is valid"
 check "no latitude needed" out_has "no latitude"
