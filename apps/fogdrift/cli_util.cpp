@@ -6,6 +6,7 @@
 #include <cerrno>
 #include <cstring>
 #include <fstream>
+#include <map>
 #include <sstream>
 
 #include "fogdrift/csv.hpp"
@@ -39,6 +40,23 @@ std::string read_text_file(const std::string& path) {
   std::stringstream buffer;
   buffer << in.rdbuf();
   return buffer.str();
+}
+
+void with_model_settings(const std::string& model_path, const std::function<void()>& body) {
+  try {
+    body();
+  } catch (const OptionError& e) {
+    static const std::map<std::string, std::string> train_flag = {{"window_s", "--rate-window-s"},
+                                                                  {"poly_order", "--rate-window-s"},
+                                                                  {"block_s", "--block-s"},
+                                                                  {"denoise", "--no-denoise"},
+                                                                  {"dt_s", "--rate-hz"}};
+    const auto it = train_flag.find(e.option());
+    if (it == train_flag.end() || e.option() == "dt_s") throw;
+    throw InputError(model_path, 0, 0,
+                     fmt::format("the model's {} (set by train {}) does not fit this data: {}",
+                                 e.option(), it->second, e.message()));
+  }
 }
 
 bool stderr_is_terminal() {

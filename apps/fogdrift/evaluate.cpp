@@ -8,6 +8,7 @@
 #include <memory>
 #include <nlohmann/json.hpp>
 
+#include "cli_util.hpp"
 #include "commands.hpp"
 #include "fogdrift/campaign.hpp"
 #include "fogdrift/error.hpp"
@@ -229,7 +230,7 @@ void add_evaluate(CLI::App& app) {
   cmd->add_flag("--allan", args->allan,
                 "Also the overlapping Allan deviation of every recording's output before and "
                 "after compensation: angle random walk, bias instability, rate random walk");
-  cmd->callback([args] { run(*args); });
+  cmd->callback([args] { with_model_settings(args->model, [&] { run(*args); }); });
 }
 
 }  // namespace fogdrift::app

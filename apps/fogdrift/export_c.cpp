@@ -4,6 +4,7 @@
 #include <iostream>
 #include <memory>
 
+#include "cli_util.hpp"
 #include "commands.hpp"
 #include "fogdrift/atomic_file.hpp"
 #include "fogdrift/error.hpp"
@@ -86,7 +87,7 @@ void add_export_c(CLI::App& app) {
                   "Also write PREFIX_update() for samples at this fixed rate, Hz (0: none)")
       ->capture_default_str();
   cmd->add_flag("-q,--quiet", args->quiet, "Print nothing on success");
-  cmd->callback([args] { run(*args); });
+  cmd->callback([args] { with_model_settings(args->model, [&] { run(*args); }); });
 }
 
 }  // namespace fogdrift::app

@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 #include <optional>
 
+#include "cli_util.hpp"
 #include "commands.hpp"
 #include "fogdrift/campaign.hpp"
 #include "fogdrift/error.hpp"
@@ -198,7 +199,7 @@ void add_northfind(CLI::App& app) {
   cmd->add_flag("--json", args->json, "Print the findings and Table 3 as JSON");
   cmd->add_flag("--no-guard", args->no_guard,
                 "Apply the model's full correction even where its inputs are novel");
-  cmd->callback([args] { run(*args); });
+  cmd->callback([args] { with_model_settings(args->model, [&] { run(*args); }); });
 }
 
 }  // namespace fogdrift::app

@@ -10,6 +10,7 @@
 #include <iostream>
 #include <memory>
 
+#include "cli_util.hpp"
 #include "commands.hpp"
 #include "fogdrift/compensator.hpp"
 #include "fogdrift/csv.hpp"
@@ -139,7 +140,7 @@ void add_stream(CLI::App& app) {
   cmd->add_option("--rate-hz", args->rate_hz, "The logger's fixed sample rate, Hz")->required();
   cmd->add_flag("--no-guard", args->no_guard,
                 "Apply the model's full correction even where its inputs are novel");
-  cmd->callback([args] { run(*args); });
+  cmd->callback([args] { with_model_settings(args->model, [&] { run(*args); }); });
 }
 
 }  // namespace fogdrift::app

@@ -123,6 +123,8 @@ check "campaign of short recordings" run 0 "$fd" campaign "$work/shortc" "$work"
 check "too short to denoise names the flag" run 1 "$fd" train "$work/shortc" -o "$work/s.json" --method svr
 check "denoise message" err_has "option --no-denoise: "
 check "denoise message names the recording" err_has "s1_01.csv: a signal of 8 samples is too short to denoise with sym4"
+check "a model's setting the data cannot meet" run 1 "$fd" evaluate "$work/one.json" "$work/shortc"
+check "model setting message" err_has "one.json: the model's denoise (set by train --no-denoise) does not fit this data: "
 check "train --no-denoise" run 0 "$fd" train "$work/shortc" -o "$work/s.json" --method svr --no-denoise
 
 echo "logger: $passed passed, $failed failed"
