@@ -1,6 +1,6 @@
-// The streaming compensator allocates nothing per sample (STYLE.md §14). A program of its own:
-// it replaces the global allocation functions to count calls, which must not touch the main
-// suite. Every non-aligned form is replaced, so allocation and release always pair.
+// The streaming compensator allocates nothing per sample (docs/architecture.md, invariants). A
+// program of its own: it replaces the global allocation functions to count calls, which must not
+// touch the main suite. Every non-aligned form is replaced, so allocation and release always pair.
 #include <gtest/gtest.h>
 
 #include <atomic>

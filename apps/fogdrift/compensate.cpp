@@ -1,4 +1,5 @@
-// fogdrift compensate: subtract a model's predicted drift from a recording (METHOD.md §2 step 5).
+// fogdrift compensate: subtract a model's predicted drift from a recording (docs/method.md §2 step
+// 5).
 #include <fmt/format.h>
 
 #include <cmath>

@@ -1,4 +1,5 @@
-// fogdrift denoise: wavelet-threshold denoising of one column of a CSV file (METHOD.md §2 step 1).
+// fogdrift denoise: wavelet-threshold denoising of one column of a CSV file (docs/method.md §2 step
+// 1).
 #include <fmt/format.h>
 
 #include <charconv>

@@ -1,4 +1,4 @@
-// fogdrift train: fit a compensation model on a campaign's training recordings (METHOD.md §2).
+// fogdrift train: fit a compensation model on a campaign's training recordings (docs/method.md §2).
 #include <fmt/format.h>
 
 #include <algorithm>

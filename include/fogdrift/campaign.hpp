@@ -20,7 +20,7 @@ namespace fogdrift {
 /// The manifest's format tag; a reader refuses any other.
 inline constexpr std::string_view kCampaignFormat = "fogdrift-campaign/1";
 
-/// What a recording was made for (METHOD.md §3).
+/// What a recording was made for (docs/method.md §3).
 enum class Scenario {
   calibration,  ///< static start-up in the thermal chamber (paper §4.1): the drift to model
   northfind,    ///< four-position north-findings during start-up (paper §4.2)

@@ -1,5 +1,5 @@
 // Compensation one sample at a time, causally, as an instrument's processor runs it
-// (METHOD.md §4: "applied sample by sample, causally, in real time").
+// (docs/method.md §4: a model in the field runs causally, one sample at a time).
 //
 // Each update takes the logger's sample (time, gyro, three temperatures), differentiates the
 // temperatures with the causal Savitzky–Golay filter of the model's window and degree

@@ -1,5 +1,5 @@
 // Modelling data assembled from recordings: inputs X (features.hpp), the drift target y, and the
-// group of every row, so that cross-validation can hold out whole recordings (METHOD.md §2).
+// group of every row, so that cross-validation can hold out whole recordings (docs/method.md §2).
 //
 // Target (per recording, at the recording's rate, then block-averaged like the features):
 //   y = denoised gyro_dph - input rate

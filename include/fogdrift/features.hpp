@@ -1,4 +1,4 @@
-// The model input x built from the instrument's three thermometers (METHOD.md §2 step 2, the
+// The model input x built from the instrument's three thermometers (docs/method.md §2 step 2, the
 // paper's eq. 3: temperature, temperature rate and gradient terms), and the preprocessing that
 // turns a 1 Hz recording into modelling rows.
 //

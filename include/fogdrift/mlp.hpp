@@ -1,4 +1,4 @@
-// The BP baseline (METHOD.md §2, paper Table 2 "BP"): a one-hidden-layer perceptron
+// The BP baseline (docs/method.md §2, paper Table 2 "BP"): a one-hidden-layer perceptron
 //   ŷ = w2ᵀ·tanh(W1·x + b1) + b2
 // trained by back-propagation of the mean squared error with Adam (Kingma & Ba, ICLR 2015; the
 // update of their Algorithm 1 with β1 = 0.9, β2 = 0.999, ε̂ = 1e-8) over the full batch, and

@@ -1,5 +1,5 @@
 // A compensation model: everything needed to turn a recording into predicted drift, in one
-// versioned JSON file (STYLE.md §12):
+// versioned JSON file (docs/architecture.md, invariants):
 //   features  the FeatureSpec text and names, the differentiator and block settings
 //   target    how the training target was formed (wavelet denoising settings)
 //   scalers   feature and target standardisation fitted on the training rows

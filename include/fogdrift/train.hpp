@@ -1,4 +1,4 @@
-// Training a compensation model by any of the paper's methods (METHOD.md §2, §3):
+// Training a compensation model by any of the paper's methods (docs/method.md §2, §3):
 //   ssa-svr, pso-svr, gwo-svr  ε-SVR with C and σ tuned by that optimizer (tune.hpp), then
 //                              refitted on all training rows;
 //   svr                        LIBSVM's defaults on standardised data: C = 1, γ = 1/features,

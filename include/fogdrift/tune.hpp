@@ -1,4 +1,4 @@
-// Hyperparameter tuning of the ε-SVR (METHOD.md §2 step 4) and the grouped cross-validation it
+// Hyperparameter tuning of the ε-SVR (docs/method.md §2 step 4) and the grouped cross-validation it
 // and the baselines share.
 //
 // The problem handed to an optimizer (opt/problem.hpp) has the coordinates log10 C, log10 σ and,

@@ -56,8 +56,8 @@ TEST(FourPosition, IgnoringTiltWouldBeWrong) {
 }
 
 TEST(FourPosition, RateErrorToAzimuthErrorMatchesTheSmallAngleRule) {
-  // METHOD.md: δψ ≈ δω / (Ω_ie cos φ); here a rate error δ on the 0° reading alone, at ψ = 90°,
-  // changes ω0 − ω180 by δ, so δψ = δ / (2 Ω_N) rad.
+  // docs/method.md: δψ ≈ δω / (Ω_ie cos φ); here a rate error δ on the 0° reading alone, at ψ =
+  // 90°, changes ω0 − ω180 by δ, so δψ = δ / (2 Ω_N) rad.
   const double latitude = 30.0, delta = 0.0027;
   const sim::Platform p(90.0, 0, 0);
   FourPositionReadings r = exact_readings(p, latitude, 0, 0, 0);

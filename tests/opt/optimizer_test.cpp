@@ -1,6 +1,6 @@
-// One suite for SSA, PSO and GWO (STYLE.md §8): standard functions with thresholds a broken
-// update rule would miss, against random search with the same budget, bounds, budgets,
-// determinism across thread counts, early stop and bad options.
+// One suite for SSA, PSO and GWO (docs/architecture.md, invariants): standard functions with
+// thresholds a broken update rule would miss, against random search with the same budget, bounds,
+// budgets, determinism across thread counts, early stop and bad options.
 #include "fogdrift/opt/optimizer.hpp"
 
 #include <gtest/gtest.h>

@@ -68,7 +68,8 @@ TEST(Calibration, SameSeedSameBytesOtherSeedOtherNoise) {
   EXPECT_EQ(manifest_json(a.campaign), manifest_json(b.campaign));
 }
 
-// The default instrument is paper-like (issue: denoised start-up STD 0.01–0.02 °/h, paper 0.0134).
+// The default instrument is paper-like (denoised start-up STD 0.01–0.02 °/h, paper 0.0134;
+// docs/simulator.md §5).
 TEST(Calibration, StartUpDriftStatisticsArePaperLike) {
   const auto& c = default_calibration();
   std::vector<double> true_std, smooth_std;

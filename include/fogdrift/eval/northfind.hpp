@@ -1,4 +1,4 @@
-// Four-position north-finding (METHOD.md §3, paper §4.2).
+// Four-position north-finding (docs/method.md §3, paper §4.2).
 //
 // The FOG and two accelerometers are read at turntable angles 0°, 90°, 180° and 270°. With
 // θ the table angle, the platform frame P (x_p: FOG axis at 0°, z_p: table axis) gives

@@ -1,5 +1,6 @@
 // Start-up drift statistics of a static recording: how much the (smoothed) gyro output wanders
-// during the powered window, and where its start-up dip lies (METHOD.md §1; paper Fig. 1, Table 2).
+// during the powered window, and where its start-up dip lies (docs/method.md §1; paper Fig. 1,
+// Table 2).
 #pragma once
 
 #include <cstddef>

@@ -1,6 +1,6 @@
 // Sparrow search algorithm (SSA): Xue J., Shen B., "A novel swarm intelligence optimization
 // approach: sparrow search algorithm", Systems Science & Control Engineering 8(1):22–34, 2020.
-// The 2024 compensation paper restates it as its eq. (8)–(10) (METHOD.md §2 step 4); equation
+// The 2024 compensation paper restates it as its eq. (8)–(10) (docs/method.md §2 step 4); equation
 // numbers below are Xue & Shen's: producers eq. (3), scroungers eq. (4), scouts eq. (5).
 //
 // Each iteration, with the population sorted by the fitness of each sparrow's remembered (best)

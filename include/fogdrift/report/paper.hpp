@@ -1,4 +1,4 @@
-// The paper's experiment end to end on the simulator (METHOD.md §3; issue "fogdrift paper"):
+// The paper's experiment end to end on the simulator (docs/method.md §3, docs/paper.md):
 //
 //   1. simulate the calibration campaign (§4.1), the north-finding start-ups at the paper's seven
 //      initial temperatures (§4.2) and the stable stage;

@@ -1,5 +1,5 @@
 // The paper experiment's results as people and machines read them: report.md and JSON, with the
-// paper's own numbers (METHOD.md §3) beside fogdrift's means over seeds.
+// paper's own numbers (docs/method.md §3) beside fogdrift's means over seeds.
 #pragma once
 
 #include <string>

@@ -1,4 +1,4 @@
-// Wavelet-threshold denoising of the FOG output (METHOD.md §2 step 1): decompose with wavedec,
+// Wavelet-threshold denoising of the FOG output (docs/method.md §2 step 1): decompose with wavedec,
 // shrink every detail band towards zero, keep the approximation, reconstruct with waverec.
 //
 // The noise level sigma is the median absolute detail coefficient of the finest band divided by

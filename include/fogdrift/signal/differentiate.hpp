@@ -1,4 +1,4 @@
-// Temperature rates dT/dt from quantised, noisy thermometer samples (METHOD.md §2 step 2).
+// Temperature rates dT/dt from quantised, noisy thermometer samples (docs/method.md §2 step 2).
 //
 // A first difference of 1 Hz samples is mostly quantisation noise, so both differentiators fit a
 // polynomial of degree p to a window of W samples by least squares and take its derivative

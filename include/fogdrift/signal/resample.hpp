@@ -1,5 +1,5 @@
-// Block averaging to a coarser rate for modelling (METHOD.md §2; the SVR trains on 10 s means of
-// the 1 Hz recording, which cuts the sample count tenfold and the white noise by sqrt(10)).
+// Block averaging to a coarser rate for modelling (docs/method.md §2; the SVR trains on 10 s means
+// of the 1 Hz recording, which cuts the sample count tenfold and the white noise by sqrt(10)).
 //
 // Consecutive blocks of B = block_s / dt samples are replaced by their mean; the block's time is
 // the mean of its sample times (the block centre). A trailing partial block (fewer than B samples

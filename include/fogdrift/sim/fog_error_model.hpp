@@ -1,12 +1,12 @@
 // FOG error model: thermal drift in the IEEE Std 952 form and the stochastic Allan terms
 // (docs/simulator.md §2).
 //
-//   drift = B(T̄) + D_Ṫ(T̄)·dT̄/dt + D_∇(T̄)·d(T_in − T_out)/dt            (METHOD.md eq. 3)
+//   drift = B(T̄) + D_Ṫ(T̄)·dT̄/dt + D_∇(T̄)·d(T_in − T_out)/dt            (docs/method.md eq. 3)
 //   B(T̄)  = d1·ΔT + d2·ΔT² + d3·ΔT³,  D_Ṫ = r0(1 + r1·ΔT),  D_∇ = s0(1 + s1·ΔT + s2·ΔT²)
 //
 // with T̄ the mean coil temperature and ΔT = T̄ − T_ref. The last term is the Shupe
-// non-reciprocity (METHOD.md eq. 2) of a coil heated asymmetrically from its hub. Because every
-// coefficient depends on T̄, the start-up shape differs at each initial temperature.
+// non-reciprocity (docs/method.md eq. 2) of a coil heated asymmetrically from its hub. Because
+// every coefficient depends on T̄, the start-up shape differs at each initial temperature.
 #pragma once
 
 #include <cstdint>

@@ -1,4 +1,4 @@
-// The paper's protocols as simulated campaigns (METHOD.md §3; docs/simulator.md §4).
+// The paper's protocols as simulated campaigns (docs/method.md §3; docs/simulator.md §4).
 //
 //   calibration  paper §4.1: from −40 °C to 60 °C in 10 °C steps, one-hour cycles (20 min soak,
 //                30 min powered and recorded, 10 min ramp to the next temperature), repeated 4

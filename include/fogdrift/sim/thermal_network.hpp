@@ -7,7 +7,7 @@
 //   C_k dT_k/dt = Σ_j G_kj (T_j − T_k) + G_k,air (T_air − T_k) + P_k(powered, T_housing)
 //
 // The inner/outer coil split gives the radial gradient across the coil whose rate drives the
-// Shupe term of the FOG error model (METHOD.md eq. 2–3).
+// Shupe term of the FOG error model (docs/method.md eq. 2–3).
 #pragma once
 
 #include <array>

@@ -1,4 +1,4 @@
-// Kernels, training data and kernel rows for the ε-SVR engine (METHOD.md eq. 7).
+// Kernels, training data and kernel rows for the ε-SVR engine (docs/method.md eq. 7).
 //
 // The RBF kernel is K(x, x') = exp(−‖x − x'‖² / (2σ²)) in the paper's σ, which is LIBSVM's
 // exp(−γ‖x − x'‖²) with γ = 1/(2σ²). Training evaluates it as LIBSVM does, through

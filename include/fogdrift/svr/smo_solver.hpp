@@ -1,4 +1,4 @@
-// The dual of ε-SVR (METHOD.md eq. 5) solved by sequential minimal optimisation.
+// The dual of ε-SVR (docs/method.md eq. 5) solved by sequential minimal optimisation.
 //
 // With 2l variables α = (α⁺, α⁻), signs y = (+1…, −1…), Q_ij = y_i·y_j·K(x_i mod l, x_j mod l)
 // and p = (ε − y_t, ε + y_t), the dual is

@@ -1,4 +1,4 @@
-// ε-support-vector regression (METHOD.md §2 step 3): fit, predict, save and load.
+// ε-support-vector regression (docs/method.md §2 step 3): fit, predict, save and load.
 //
 //   f(x) = Σ_i (α_i⁺ − α_i⁻)·K(x_i, x) + b,   b = −ρ                          (eq. 6)
 //
