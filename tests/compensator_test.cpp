@@ -11,6 +11,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "fogdrift/c_header.hpp"
 #include "fogdrift/random.hpp"
 #include "fogdrift/sim/scenarios.hpp"
 #include "fogdrift/train.hpp"
@@ -164,7 +165,9 @@ TEST(StreamingCompensator, GuardsNovelStartUpsAlikeInEveryPath) {
       ++zero;
       ASSERT_EQ(batch.drift_dph[i], model.y_scaler.mean[0]) << i;
     }
-    if (batch.weight[i] == 1.0) ASSERT_EQ(batch.drift_dph[i], unguarded[i]) << i;
+    if (batch.weight[i] == 1.0) {
+      ASSERT_EQ(batch.drift_dph[i], unguarded[i]) << i;
+    }
   }
   EXPECT_GT(zero, test.size() / 2) << "the soaked start-up should be novel to this model";
 

@@ -7,6 +7,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "fogdrift/c_header.hpp"
 #include "fogdrift/error.hpp"
 #include "fogdrift/model.hpp"
 #include "fogdrift/train.hpp"

@@ -7,6 +7,7 @@
 #include "cli_util.hpp"
 #include "commands.hpp"
 #include "fogdrift/atomic_file.hpp"
+#include "fogdrift/c_header.hpp"
 #include "fogdrift/error.hpp"
 #include "fogdrift/model.hpp"
 

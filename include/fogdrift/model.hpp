@@ -105,25 +105,8 @@ std::string to_json(const CompensationModel& model);
 /// missing or mistyped field, or sizes that do not agree is an InputError naming the field.
 CompensationModel compensation_model_from_json(const std::string& text, const std::string& source);
 void save(const CompensationModel& model, const std::filesystem::path& path);  ///< atomic
+/// The C99 header for firmware is in c_header.hpp.
 
-/// A self-contained C99 header for an instrument's processor: the scalers and regressor as
-/// `static const` tables (numbers printed to 17 significant digits, so the doubles are the
-/// model's) and
-///   static inline double PREFIX_predict_dph(const double features[PREFIX_N_FEATURES]);
-/// which needs only <math.h> (exp or tanh), no heap and no other state. The features are those of
-/// the model's spec, in the order listed in the header's comment and PREFIX_feature_names.
-/// `prefix` must be a C identifier (OptionError("prefix", …) otherwise).
-///
-/// With `stream_dt_s` > 0 the header also computes the features itself, causally, one sample
-/// at a time at that fixed sample interval — what StreamingCompensator does:
-///   PREFIX_state s; PREFIX_reset(&s);   at power-on
-///   drift_dph = PREFIX_update(&s, time_s, temp_fog_degc, temp_acc1_degc, temp_acc2_degc);
-/// with the causal differentiator's taps as a table and a fixed buffer in the state (no heap).
-/// It is meant for a model trained with causal rates; the header says so when the model's were
-/// centred. OptionError("stream_dt_s", …) when the differentiator window does not fit the
-/// interval.
-std::string to_c_header(const CompensationModel& model,
-                        const std::string& prefix = "fogdrift_model", double stream_dt_s = 0);
 CompensationModel load_compensation_model(const std::filesystem::path& path);
 
 }  // namespace fogdrift

@@ -1,0 +1,30 @@
+// The compensation model as C99 source for an instrument's processor (docs/compensation.md):
+// `fogdrift export-c` writes what to_c_header() returns.
+#pragma once
+
+#include <string>
+
+#include "fogdrift/model.hpp"
+
+namespace fogdrift {
+
+/// A self-contained C99 header for an instrument's processor: the scalers and regressor as
+/// `static const` tables (numbers printed to 17 significant digits, so the doubles are the
+/// model's) and
+///   static inline double PREFIX_predict_dph(const double features[PREFIX_N_FEATURES]);
+/// which needs only <math.h> (exp or tanh), no heap and no other state. The features are those of
+/// the model's spec, in the order listed in the header's comment and PREFIX_feature_names.
+/// `prefix` must be a C identifier (OptionError("prefix", …) otherwise).
+///
+/// With `stream_dt_s` > 0 the header also computes the features itself, causally, one sample
+/// at a time at that fixed sample interval — what StreamingCompensator does:
+///   PREFIX_state s; PREFIX_reset(&s);   at power-on
+///   drift_dph = PREFIX_update(&s, time_s, temp_fog_degc, temp_acc1_degc, temp_acc2_degc);
+/// with the causal differentiator's taps as a table and a fixed buffer in the state (no heap).
+/// It is meant for a model trained with causal rates; the header says so when the model's were
+/// centred. OptionError("stream_dt_s", …) when the differentiator window does not fit the
+/// interval.
+std::string to_c_header(const CompensationModel& model,
+                        const std::string& prefix = "fogdrift_model", double stream_dt_s = 0);
+
+}  // namespace fogdrift
