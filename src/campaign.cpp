@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "fogdrift/atomic_file.hpp"
+#include "fogdrift/enum_names.hpp"
 #include "fogdrift/error.hpp"
 #include "fogdrift/text_file.hpp"
 
@@ -62,20 +63,23 @@ std::string string_field(const json& object, const std::string& key, const std::
 
 }  // namespace
 
+namespace {
+
+constexpr std::array<EnumName<Scenario>, 3> kScenarioNames = {
+    {{Scenario::calibration, "calibration"},
+     {Scenario::northfind, "northfind"},
+     {Scenario::stable, "stable"}}};
+constexpr std::array<EnumName<Role>, 2> kRoleNames = {
+    {{Role::train, "train"}, {Role::test, "test"}}};
+
+}  // namespace
+
 std::string_view to_string(Scenario scenario) {
-  switch (scenario) {
-    case Scenario::calibration:
-      return "calibration";
-    case Scenario::northfind:
-      return "northfind";
-    case Scenario::stable:
-      return "stable";
-  }
-  return "?";
+  return name_in(kScenarioNames, scenario);
 }
 
 std::string_view to_string(Role role) {
-  return role == Role::train ? "train" : "test";
+  return name_in(kRoleNames, role);
 }
 
 Campaign read_campaign(const fs::path& path) {
@@ -134,22 +138,17 @@ Campaign read_campaign(const fs::path& path) {
       fail(file, path_i + ".file", fmt::format("\"{}\" is listed twice", e.file));
     }
     const std::string scenario = string_field(r, "scenario", file, path_i);
-    if (scenario == "calibration")
-      e.scenario = Scenario::calibration;
-    else if (scenario == "northfind")
-      e.scenario = Scenario::northfind;
-    else if (scenario == "stable")
-      e.scenario = Scenario::stable;
+    if (const auto v = find_in(kScenarioNames, scenario))
+      e.scenario = *v;
     else
       fail(file, path_i + ".scenario",
-           fmt::format("\"{}\" is not one of calibration, northfind, stable", scenario));
+           fmt::format("\"{}\" is not one of {}", scenario, names_in(kScenarioNames)));
     const std::string role = string_field(r, "role", file, path_i);
-    if (role == "train")
-      e.role = Role::train;
-    else if (role == "test")
-      e.role = Role::test;
+    if (const auto v = find_in(kRoleNames, role))
+      e.role = *v;
     else
-      fail(file, path_i + ".role", fmt::format("\"{}\" is not one of train, test", role));
+      fail(file, path_i + ".role",
+           fmt::format("\"{}\" is not one of {}", role, names_in(kRoleNames)));
     if (r.contains("repetition")) {
       const json& v = r["repetition"];
       if (!v.is_number_integer() || v.get<long long>() < 1 || v.get<long long>() > 1000000) {

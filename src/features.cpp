@@ -5,12 +5,22 @@
 #include <array>
 #include <cmath>
 
+#include "fogdrift/enum_names.hpp"
 #include "fogdrift/error.hpp"
 
 namespace fogdrift {
 namespace {
 
 constexpr std::array kThermometers = {Thermometer::fog, Thermometer::acc1, Thermometer::acc2};
+constexpr std::array<EnumName<Thermometer>, 3> kThermometerNames = {
+    {{Thermometer::fog, "fog"}, {Thermometer::acc1, "acc1"}, {Thermometer::acc2, "acc2"}}};
+constexpr std::array<EnumName<FeatureTerm>, 6> kTermNames = {
+    {{FeatureTerm::temp, "T"},
+     {FeatureTerm::rate, "dT"},
+     {FeatureTerm::gradient, "grad"},
+     {FeatureTerm::gradient_rate, "dgrad"},
+     {FeatureTerm::time, "t"},
+     {FeatureTerm::temp_rate_product, "TdT"}}};
 constexpr std::array kTerms = {FeatureTerm::temp,     FeatureTerm::rate,
                                FeatureTerm::gradient, FeatureTerm::gradient_rate,
                                FeatureTerm::time,     FeatureTerm::temp_rate_product};
@@ -46,33 +56,11 @@ std::vector<std::string_view> split_terms(std::string_view text) {
 }  // namespace
 
 std::string_view to_string(Thermometer thermometer) {
-  switch (thermometer) {
-    case Thermometer::fog:
-      return "fog";
-    case Thermometer::acc1:
-      return "acc1";
-    case Thermometer::acc2:
-      return "acc2";
-  }
-  return "?";
+  return name_in(kThermometerNames, thermometer);
 }
 
 std::string_view to_string(FeatureTerm term) {
-  switch (term) {
-    case FeatureTerm::temp:
-      return "T";
-    case FeatureTerm::rate:
-      return "dT";
-    case FeatureTerm::gradient:
-      return "grad";
-    case FeatureTerm::gradient_rate:
-      return "dgrad";
-    case FeatureTerm::time:
-      return "t";
-    case FeatureTerm::temp_rate_product:
-      return "TdT";
-  }
-  return "?";
+  return name_in(kTermNames, term);
 }
 
 std::string_view column_name(Thermometer thermometer) {

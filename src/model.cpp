@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "fogdrift/atomic_file.hpp"
+#include "fogdrift/enum_names.hpp"
 #include "fogdrift/error.hpp"
 #include "fogdrift/signal/differentiate.hpp"
 #include "fogdrift/text_file.hpp"
@@ -16,31 +17,23 @@ namespace fogdrift {
 
 using ojson = nlohmann::ordered_json;
 
+namespace {
+
+constexpr std::array<EnumName<Method>, 6> kMethodNames = {{{Method::ssa_svr, "ssa-svr"},
+                                                           {Method::pso_svr, "pso-svr"},
+                                                           {Method::gwo_svr, "gwo-svr"},
+                                                           {Method::svr, "svr"},
+                                                           {Method::bp, "bp"},
+                                                           {Method::poly, "poly"}}};
+
+}  // namespace
+
 std::string to_string(Method method) {
-  switch (method) {
-    case Method::ssa_svr:
-      return "ssa-svr";
-    case Method::pso_svr:
-      return "pso-svr";
-    case Method::gwo_svr:
-      return "gwo-svr";
-    case Method::svr:
-      return "svr";
-    case Method::bp:
-      return "bp";
-    case Method::poly:
-      return "poly";
-  }
-  return "?";
+  return std::string(name_in(kMethodNames, method));
 }
 
 Method parse_method(const std::string& text, const std::string& option) {
-  for (Method m :
-       {Method::ssa_svr, Method::pso_svr, Method::gwo_svr, Method::svr, Method::bp, Method::poly})
-    if (text == to_string(m)) return m;
-  throw OptionError(option, fmt::format("'{}' is not a method (ssa-svr, pso-svr, gwo-svr, svr, "
-                                        "bp, poly)",
-                                        text));
+  return parse_in(kMethodNames, text, option, "a method");
 }
 
 DriftPrediction CompensationModel::predict(std::span<const double> features,

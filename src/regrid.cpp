@@ -6,10 +6,16 @@
 #include <cmath>
 #include <optional>
 
+#include "fogdrift/enum_names.hpp"
 #include "fogdrift/error.hpp"
 
 namespace fogdrift {
 namespace {
+
+constexpr std::array<EnumName<RegridMethod>, 3> kRegridMethodNames = {
+    {{RegridMethod::automatic, "auto"},
+     {RegridMethod::mean, "mean"},
+     {RegridMethod::linear, "linear"}}};
 
 /// The numeric channels a grid carries, as pointers into one recording (nullptr when absent).
 struct Channels {
@@ -54,21 +60,11 @@ struct GridPoint {
 }  // namespace
 
 std::string_view to_string(RegridMethod method) {
-  switch (method) {
-    case RegridMethod::automatic:
-      return "auto";
-    case RegridMethod::mean:
-      return "mean";
-    case RegridMethod::linear:
-      return "linear";
-  }
-  return "?";
+  return name_in(kRegridMethodNames, method);
 }
 
 RegridMethod regrid_method_from_string(std::string_view text) {
-  for (auto m : {RegridMethod::automatic, RegridMethod::mean, RegridMethod::linear})
-    if (to_string(m) == text) return m;
-  throw OptionError("method", fmt::format("'{}' is not one of auto, mean, linear", text));
+  return parse_in(kRegridMethodNames, text, "method", "a grid method");
 }
 
 bool is_uniformly_sampled(const Recording& recording) {

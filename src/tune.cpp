@@ -13,42 +13,38 @@
 #include <numeric>
 #include <set>
 
+#include "fogdrift/enum_names.hpp"
 #include "fogdrift/error.hpp"
 #include "fogdrift/thread_pool.hpp"
 
 namespace fogdrift::tune {
 
+namespace {
+
+constexpr std::array<EnumName<Fitness>, 2> kFitnessNames = {
+    {{Fitness::cv, "cv"}, {Fitness::train, "train"}}};
+constexpr std::array<EnumName<CvScheme>, 4> kCvSchemeNames = {
+    {{CvScheme::automatic, "auto"},
+     {CvScheme::repetition, "repetition"},
+     {CvScheme::recording, "recording"},
+     {CvScheme::temperature, "temperature"}}};
+
+}  // namespace
+
 std::string to_string(Fitness fitness) {
-  return fitness == Fitness::cv ? "cv" : "train";
+  return std::string(name_in(kFitnessNames, fitness));
 }
 
 Fitness parse_fitness(const std::string& text, const std::string& option) {
-  if (text == "cv") return Fitness::cv;
-  if (text == "train") return Fitness::train;
-  throw OptionError(option, fmt::format("'{}' is not a fitness (cv, train)", text));
+  return parse_in(kFitnessNames, text, option, "a fitness");
 }
 
 std::string to_string(CvScheme scheme) {
-  switch (scheme) {
-    case CvScheme::automatic:
-      return "auto";
-    case CvScheme::repetition:
-      return "repetition";
-    case CvScheme::recording:
-      return "recording";
-    case CvScheme::temperature:
-      return "temperature";
-  }
-  return "?";
+  return std::string(name_in(kCvSchemeNames, scheme));
 }
 
 CvScheme parse_cv_scheme(const std::string& text, const std::string& option) {
-  for (CvScheme s :
-       {CvScheme::automatic, CvScheme::repetition, CvScheme::recording, CvScheme::temperature})
-    if (text == to_string(s)) return s;
-  throw OptionError(option, fmt::format("'{}' is not a cross-validation scheme (auto, repetition, "
-                                        "recording, temperature)",
-                                        text));
+  return parse_in(kCvSchemeNames, text, option, "a cross-validation scheme");
 }
 
 namespace {

@@ -4,27 +4,25 @@
 
 #include <algorithm>
 
+#include "fogdrift/enum_names.hpp"
 #include "fogdrift/error.hpp"
 #include "fogdrift/thread_pool.hpp"
 
 namespace fogdrift::opt {
 
+namespace {
+
+constexpr std::array<EnumName<Algorithm>, 3> kAlgorithmNames = {
+    {{Algorithm::ssa, "ssa"}, {Algorithm::pso, "pso"}, {Algorithm::gwo, "gwo"}}};
+
+}  // namespace
+
 std::string to_string(Algorithm algorithm) {
-  switch (algorithm) {
-    case Algorithm::ssa:
-      return "ssa";
-    case Algorithm::pso:
-      return "pso";
-    case Algorithm::gwo:
-      return "gwo";
-  }
-  return "?";
+  return std::string(name_in(kAlgorithmNames, algorithm));
 }
 
 Algorithm parse_algorithm(const std::string& text, const std::string& option) {
-  for (Algorithm a : {Algorithm::ssa, Algorithm::pso, Algorithm::gwo})
-    if (text == to_string(a)) return a;
-  throw OptionError(option, fmt::format("'{}' is not an optimizer (ssa, pso, gwo)", text));
+  return parse_in(kAlgorithmNames, text, option, "an optimizer");
 }
 
 std::string Summary::brief_report() const {

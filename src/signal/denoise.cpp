@@ -4,6 +4,7 @@
 #include <cmath>
 #include <string>
 
+#include "fogdrift/enum_names.hpp"
 #include "fogdrift/error.hpp"
 
 namespace fogdrift::signal {
@@ -12,41 +13,30 @@ namespace {
 constexpr double kMadToSigma =
     0.6745;  // the normal distribution's quartile, as in the paper's field
 
+constexpr std::array<EnumName<ThresholdRule>, 4> kThresholdRuleNames = {
+    {{ThresholdRule::universal, "universal"},
+     {ThresholdRule::level, "level"},
+     {ThresholdRule::sure, "sure"},
+     {ThresholdRule::bayes, "bayes"}}};
+constexpr std::array<EnumName<Shrinkage>, 2> kShrinkageNames = {
+    {{Shrinkage::soft, "soft"}, {Shrinkage::hard, "hard"}}};
+
 }  // namespace
 
 std::string_view to_string(ThresholdRule rule) {
-  switch (rule) {
-    case ThresholdRule::universal:
-      return "universal";
-    case ThresholdRule::level:
-      return "level";
-    case ThresholdRule::sure:
-      return "sure";
-    case ThresholdRule::bayes:
-      return "bayes";
-  }
-  return "?";
+  return name_in(kThresholdRuleNames, rule);
 }
 
 std::string_view to_string(Shrinkage shrinkage) {
-  return shrinkage == Shrinkage::soft ? "soft" : "hard";
+  return name_in(kShrinkageNames, shrinkage);
 }
 
 ThresholdRule parse_threshold_rule(std::string_view text, std::string_view option) {
-  for (auto r : {ThresholdRule::universal, ThresholdRule::level, ThresholdRule::sure,
-                 ThresholdRule::bayes}) {
-    if (text == to_string(r)) return r;
-  }
-  throw OptionError(std::string(option), "'" + std::string(text) +
-                                             "' is not a threshold rule; use universal, level, "
-                                             "sure or bayes");
+  return parse_in(kThresholdRuleNames, text, option, "a threshold rule");
 }
 
 Shrinkage parse_shrinkage(std::string_view text, std::string_view option) {
-  if (text == "soft") return Shrinkage::soft;
-  if (text == "hard") return Shrinkage::hard;
-  throw OptionError(std::string(option),
-                    "'" + std::string(text) + "' is not a shrinkage mode; use soft or hard");
+  return parse_in(kShrinkageNames, text, option, "a shrinkage mode");
 }
 
 void validate(const DenoiseOptions& options, std::size_t n_samples) {

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <string>
 
+#include "fogdrift/enum_names.hpp"
 #include "fogdrift/error.hpp"
 
 namespace fogdrift::signal {
@@ -44,15 +45,22 @@ double apply(const std::vector<double>& taps, std::span<const double> x, std::si
 
 }  // namespace
 
+namespace {
+
+constexpr std::array<EnumName<Causality>, 5> kCausalityNames = {{{Causality::centred, "centred"},
+                                                                 {Causality::causal, "causal"},
+                                                                 {Causality::centred, "centered"},
+                                                                 {Causality::centred, "offline"},
+                                                                 {Causality::causal, "online"}}};
+
+}  // namespace
+
 std::string_view to_string(Causality causality) {
-  return causality == Causality::centred ? "centred" : "causal";
+  return name_in(kCausalityNames, causality);
 }
 
 Causality parse_causality(std::string_view text, std::string_view option) {
-  if (text == "centred" || text == "centered" || text == "offline") return Causality::centred;
-  if (text == "causal" || text == "online") return Causality::causal;
-  throw OptionError(std::string(option),
-                    "'" + std::string(text) + "' is not a differentiator; use centred or causal");
+  return parse_in(kCausalityNames, text, option, "a differentiator");
 }
 
 std::size_t window_samples(const DifferentiatorOptions& options, double dt_s) {

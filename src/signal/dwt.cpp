@@ -3,6 +3,7 @@
 #include <cstdint>
 #include <string>
 
+#include "fogdrift/enum_names.hpp"
 #include "fogdrift/error.hpp"
 
 namespace fogdrift::signal {
@@ -43,29 +44,22 @@ void convolve_down(const std::vector<double>& xe, std::int64_t pad, std::int64_t
 
 }  // namespace
 
+namespace {
+
+constexpr std::array<EnumName<Extension>, 4> kExtensionNames = {
+    {{Extension::symmetric, "symmetric"},
+     {Extension::periodization, "periodization"},
+     {Extension::zero, "zero"},
+     {Extension::periodic, "periodic"}}};
+
+}  // namespace
+
 std::string_view to_string(Extension extension) {
-  switch (extension) {
-    case Extension::symmetric:
-      return "symmetric";
-    case Extension::periodization:
-      return "periodization";
-    case Extension::zero:
-      return "zero";
-    case Extension::periodic:
-      return "periodic";
-  }
-  return "?";
+  return name_in(kExtensionNames, extension);
 }
 
 Extension parse_extension(std::string_view text, std::string_view option) {
-  for (auto e :
-       {Extension::symmetric, Extension::periodization, Extension::zero, Extension::periodic}) {
-    if (text == to_string(e)) return e;
-  }
-  throw OptionError(std::string(option),
-                    "'" + std::string(text) +
-                        "' is not an extension mode; use symmetric, periodization, zero or "
-                        "periodic");
+  return parse_in(kExtensionNames, text, option, "an extension mode");
 }
 
 std::size_t dwt_coeff_length(std::size_t input_length, int filter_length, Extension extension) {

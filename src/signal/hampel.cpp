@@ -41,7 +41,7 @@ HampelResult hampel(std::span<const double> x, const HampelOptions& options) {
     const double m = median_of(window);
     deviation.clear();
     for (std::size_t j = lo; j <= hi; ++j) deviation.push_back(std::fabs(x[j] - m));
-    const double sigma = kMadToSigma * median_of(deviation);
+    const double sigma = kGaussianMadScale * median_of(deviation);
     if (std::fabs(x[i] - m) > options.n_sigma * sigma) {
       out.signal[i] = m;
       out.replaced.push_back(i);

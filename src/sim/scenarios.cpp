@@ -8,6 +8,7 @@
 
 #include "fogdrift/atomic_file.hpp"
 #include "fogdrift/csv.hpp"
+#include "fogdrift/enum_names.hpp"
 #include "fogdrift/error.hpp"
 #include "fogdrift/random.hpp"
 #include "fogdrift/sim/nfs.hpp"
@@ -154,28 +155,24 @@ std::string temperature_tag(double t) {
   return (t < 0 ? "m" : "") + body + "C";
 }
 
+namespace {
+
+// In the order of kApproaches, which messages list.
+constexpr std::array<EnumName<Approach>, 5> kApproachNames = {
+    {{Approach::calibration, "calibration"},
+     {Approach::soaked, "soaked"},
+     {Approach::warm, "warm"},
+     {Approach::ramping, "ramping"},
+     {Approach::sweep, "sweep"}}};
+
+}  // namespace
+
 std::string_view to_string(Approach approach) {
-  switch (approach) {
-    case Approach::soaked:
-      return "soaked";
-    case Approach::sweep:
-      return "sweep";
-    case Approach::calibration:
-      return "calibration";
-    case Approach::warm:
-      return "warm";
-    case Approach::ramping:
-      return "ramping";
-  }
-  return "?";
+  return name_in(kApproachNames, approach);
 }
 
 Approach approach_from_string(std::string_view name, const std::string& option) {
-  for (Approach a : kApproaches) {
-    if (name == to_string(a)) return a;
-  }
-  throw OptionError(
-      option, fmt::format("'{}' is not one of calibration, soaked, warm, ramping, sweep", name));
+  return parse_in(kApproachNames, name, option, "an approach");
 }
 
 std::vector<Approach> approaches_from_string(std::string_view list, const std::string& option) {

@@ -1,4 +1,5 @@
 #include "fogdrift/svr/kernel.hpp"
+#include "fogdrift/enum_names.hpp"
 
 #include <fmt/format.h>
 
@@ -6,6 +7,7 @@
 #include <cassert>
 #include <cmath>
 
+#include "fogdrift/enum_names.hpp"
 #include "fogdrift/error.hpp"
 #include "fogdrift/thread_pool.hpp"
 #include "svr/loops.hpp"
@@ -14,8 +16,15 @@
 
 namespace fogdrift::svr {
 
+namespace {
+
+constexpr std::array<EnumName<KernelType>, 2> kKernelTypeNames = {
+    {{KernelType::rbf, "rbf"}, {KernelType::linear, "linear"}}};
+
+}  // namespace
+
 std::string_view to_string(KernelType type) {
-  return type == KernelType::rbf ? "rbf" : "linear";
+  return name_in(kKernelTypeNames, type);
 }
 
 double Kernel::sigma() const {

@@ -137,7 +137,7 @@ check "bad level message" err_has "option --level: 'deep' is not a whole number 
 check "denoise bad wavelet" run 1 "$fd" denoise "$rec" -o "$work/x.csv" --wavelet db42
 check "bad wavelet message" err_has "option --wavelet: 'db42' is not a known wavelet"
 check "denoise bad mode" run 1 "$fd" denoise "$rec" -o "$work/x.csv" --mode medium
-check "bad mode message" err_has "option --mode: 'medium' is not a shrinkage mode; use soft or hard"
+check "bad mode message" err_has "option --mode: 'medium' is not a shrinkage mode (soft, hard)"
 check "denoise bad extension" run 1 "$fd" denoise "$rec" -o "$work/x.csv" --extension reflect
 check "bad extension message" err_has "option --extension: 'reflect' is not an extension mode"
 sed '5s/^\([^,]*\),[^,]*,/\1,NaN,/' "$rec" >"$work/nan.csv"
@@ -351,7 +351,7 @@ check "sweep is no calibration approach" run 1 "$fd" simulate calibration --out 
 check "sweep message" err_has "option --approach: sweep is not a calibration approach"
 check "no campaign on error" test ! -e "$work/nope"
 check "bad approach name" run 1 "$fd" simulate northfind --out "$work/nope" --approach lukewarm
-check "bad approach message" err_has "option --approach: 'lukewarm' is not one of calibration, soaked, warm, ramping, sweep"
+check "bad approach message" err_has "option --approach: 'lukewarm' is not an approach (calibration, soaked, warm, ramping, sweep)"
 check "bad warm-off" run 1 "$fd" simulate northfind --out "$work/nope" --approach warm --warm-off-s -5
 check "bad warm-off message" err_has "option --warm-off-s: -5 s is outside [0, 1e6]"
 check "warm restarts" run 0 "$fd" simulate northfind --out "$work/nfw" --approach warm --temps 10 --findings 1

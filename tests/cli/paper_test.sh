@@ -41,11 +41,11 @@ check "paper bad seeds message" err_has "option --seeds: 0 is outside [1, 1000]"
 check "paper bad fitness" run 1 "$fd" paper --fitness best
 check "paper bad fitness message" err_has "option --fitness"
 check "paper bad approach" run 1 "$fd" paper --approach lukewarm
-check "paper bad approach message" err_has "option --approach: 'lukewarm' is not one of calibration, soaked, warm, ramping, sweep"
+check "paper bad approach message" err_has "option --approach: 'lukewarm' is not an approach (calibration, soaked, warm, ramping, sweep)"
 check "paper sweep calibration" run 1 "$fd" paper --cal-approaches calibration,sweep
 check "paper sweep calibration message" err_has "option --cal-approaches: sweep is not a calibration approach"
 check "paper bad start-up" run 1 "$fd" paper --start-ups soaked,lukewarm
-check "paper bad start-up message" err_has "option --start-ups: 'lukewarm' is not one of calibration, soaked, warm, ramping, sweep"
+check "paper bad start-up message" err_has "option --start-ups: 'lukewarm' is not an approach (calibration, soaked, warm, ramping, sweep)"
 check "paper bad nf temps" run 1 "$fd" paper --nf-temps 10,200
 check "paper bad nf temps message" err_has "option --nf-temps: 200 °C is outside [-70, 100]"
 check "paper bad population" run 1 "$fd" paper --population 3

@@ -13,7 +13,7 @@ namespace {
 
 TEST(Hampel, KappaIsTheInverseOfTheNormalThirdQuartile) {
   // Φ(0.6744897501960817) = 0.75, so κ = 1 / 0.6744897501960817.
-  EXPECT_NEAR(kMadToSigma, 1.0 / 0.6744897501960817, 1e-15);
+  EXPECT_NEAR(kGaussianMadScale, 1.0 / 0.6744897501960817, 1e-15);
 }
 
 TEST(Hampel, ReplacesSpikesByTheirWindowMedianAndNothingElse) {

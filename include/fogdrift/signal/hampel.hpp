@@ -30,7 +30,7 @@ struct HampelOptions {
 };
 
 /// κ = 1 / Φ⁻¹(3/4): the MAD of a Gaussian times κ is its standard deviation.
-inline constexpr double kMadToSigma = 1.4826022185056018;
+inline constexpr double kGaussianMadScale = 1.4826022185056018;
 
 struct HampelResult {
   std::vector<double> signal;         ///< the input with every outlier replaced
