@@ -42,6 +42,19 @@ std::string read_text_file(const std::string& path) {
   return buffer.str();
 }
 
+OptionError as_flag(const OptionError& e, const FlagTable& flags) {
+  const auto it = flags.find(e.option());
+  return it == flags.end() ? e : OptionError(it->second, e.message());
+}
+
+void with_flags(const FlagTable& flags, const std::function<void()>& body) {
+  try {
+    body();
+  } catch (const OptionError& e) {
+    throw as_flag(e, flags);
+  }
+}
+
 void with_model_settings(const std::string& model_path, const std::function<void()>& body) {
   try {
     body();

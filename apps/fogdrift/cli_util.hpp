@@ -2,8 +2,11 @@
 #pragma once
 
 #include <functional>
+#include <map>
 #include <string>
 #include <vector>
+
+#include "fogdrift/error.hpp"
 
 namespace fogdrift::app {
 
@@ -12,6 +15,17 @@ std::vector<double> parse_number_list(const std::string& text, const std::string
 
 /// Whole file as text; throws InputError if it cannot be read.
 std::string read_text_file(const std::string& path);
+
+/// Library field paths ("calibration.temps_degc", "cv.folds") and the flags that set them in one
+/// command: the one place a command says which of its flags sets which field.
+using FlagTable = std::map<std::string, std::string>;
+
+/// `e` named by the flag that sets its field, when `flags` has one; otherwise as the library
+/// named it (a field the command has no flag for).
+OptionError as_flag(const OptionError& e, const FlagTable& flags);
+
+/// Runs `body`, naming every option error by its flag.
+void with_flags(const FlagTable& flags, const std::function<void()>& body);
 
 /// Runs `body`, a command that applies the model file `model_path`. A setting fixed in the model
 /// that the data cannot meet (the library names it: window_s, block_s, denoise, ...) is reported

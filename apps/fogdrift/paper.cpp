@@ -74,7 +74,32 @@ void add_paper_options(CLI::App* cmd, PaperArgs& a) {
   cmd->add_flag("-q,--quiet", a.quiet, "Print nothing on success");
 }
 
+namespace {
+
+// The experiment's fields and the flags of paper (and demo) that set them.
+const FlagTable kPaperFlags = {{"seeds", "--seeds"},
+                               {"population", "--population"},
+                               {"iterations", "--iterations"},
+                               {"epsilon", "--epsilon"},
+                               {"cv.folds", "--folds"},
+                               {"cv.scheme", "--cv"},
+                               {"calibration.temps_degc", "--cal-temps"},
+                               {"calibration.repetitions", "--repetitions"},
+                               {"calibration.approaches", "--cal-approaches"},
+                               {"northfind.temps_degc", "--nf-temps"},
+                               {"northfind.findings", "--findings"}};
+
+void run_paper_unnamed(const PaperArgs& a);
+
+}  // namespace
+
 void run_paper_command(const PaperArgs& a) {
+  with_flags(kPaperFlags, [&] { run_paper_unnamed(a); });
+}
+
+namespace {
+
+void run_paper_unnamed(const PaperArgs& a) {
   report::PaperOptions o;
   o.seeds = a.seeds;
   o.first_seed = a.first_seed;
@@ -152,6 +177,8 @@ void run_paper_command(const PaperArgs& a) {
   }
   for (const auto& p : figure_problems) std::cerr << "fogdrift paper: no PNG: " << p << "\n";
 }
+
+}  // namespace
 
 void add_paper(CLI::App& app) {
   auto* cmd = app.add_subcommand(

@@ -14,6 +14,27 @@
 namespace fogdrift::app {
 namespace {
 
+// The simulator's fields and the flags that set them (the three subcommands share their names).
+const FlagTable kSimulateFlags = [] {
+  FlagTable t = {{"output_rate_hz", "--rate-hz"},
+                 {"calibration.repetitions", "--repetitions"},
+                 {"calibration.test_repetitions", "--test-repetitions"},
+                 {"calibration.approaches", "--approach"}};
+  for (const char* scenario : {"calibration", "northfind", "stable"}) {
+    const std::string s = scenario;
+    t[s + ".temps_degc"] = "--temps";
+    t[s + ".output_rate_hz"] = "--rate-hz";
+    t[s + ".latitude_deg"] = "--latitude";
+    t[s + ".warm_off_s"] = "--warm-off-s";
+    t[s + ".ramp_degc_per_min"] = "--ramp-degc-per-min";
+    t[s + ".findings"] = "--findings";
+    t[s + ".position_s"] = "--position-s";
+    t[s + ".warmup_s"] = "--warmup-s";
+    t[s + ".soak_s"] = "--soak-s";
+  }
+  return t;
+}();
+
 struct SimulateArgs {
   std::string out;
   std::uint64_t seed = 1;
@@ -131,19 +152,21 @@ void add_simulate(CLI::App& app) {
   cal->add_option("--test-repetitions", args->test_repetitions, "The last N sweeps get role 'test'")
       ->capture_default_str();
   cal->callback([args] {
-    const auto start = std::chrono::steady_clock::now();
-    sim::CalibrationOptions o;
-    if (!args->temps.empty()) o.temps_degc = parse_number_list(args->temps, "--temps");
-    o.repetitions = args->repetitions;
-    o.test_repetitions = args->test_repetitions;
-    o.seed = args->seed;
-    o.output_rate_hz = args->rate_hz;
-    o.latitude_deg = args->latitude_deg;
-    o.approaches = sim::approaches_from_string(args->approach, "--approach");
-    o.warm_off_s = args->warm_off_s;
-    o.ramp_degc_per_min = args->ramp_degc_per_min;
-    finish(*args, sim::simulate_calibration(load_instrument(args->instrument_file), o), start,
-           "calibration");
+    with_flags(kSimulateFlags, [&] {
+      const auto start = std::chrono::steady_clock::now();
+      sim::CalibrationOptions o;
+      if (!args->temps.empty()) o.temps_degc = parse_number_list(args->temps, "--temps");
+      o.repetitions = args->repetitions;
+      o.test_repetitions = args->test_repetitions;
+      o.seed = args->seed;
+      o.output_rate_hz = args->rate_hz;
+      o.latitude_deg = args->latitude_deg;
+      o.approaches = sim::approaches_from_string(args->approach, "--approach");
+      o.warm_off_s = args->warm_off_s;
+      o.ramp_degc_per_min = args->ramp_degc_per_min;
+      finish(*args, sim::simulate_calibration(load_instrument(args->instrument_file), o), start,
+             "calibration");
+    });
   });
 
   auto* nf = cmd->add_subcommand(
@@ -166,20 +189,22 @@ void add_simulate(CLI::App& app) {
   nf->add_option("--soak-s", args->soak_s, "Unpowered soak before power-on, s")
       ->capture_default_str();
   nf->callback([args] {
-    const auto start = std::chrono::steady_clock::now();
-    sim::NorthfindOptions o;
-    if (!args->temps.empty()) o.temps_degc = parse_number_list(args->temps, "--temps");
-    if (args->findings != 0) o.findings = args->findings;
-    o.position_s = args->position_s;
-    o.approach = sim::approach_from_string(args->approach, "--approach");
-    o.soak_s = args->soak_s;
-    o.ramp_degc_per_min = args->ramp_degc_per_min;
-    o.warm_off_s = args->warm_off_s;
-    o.seed = args->seed;
-    o.output_rate_hz = args->rate_hz;
-    o.latitude_deg = args->latitude_deg;
-    finish(*args, sim::simulate_northfind(load_instrument(args->instrument_file), o), start,
-           "northfind");
+    with_flags(kSimulateFlags, [&] {
+      const auto start = std::chrono::steady_clock::now();
+      sim::NorthfindOptions o;
+      if (!args->temps.empty()) o.temps_degc = parse_number_list(args->temps, "--temps");
+      if (args->findings != 0) o.findings = args->findings;
+      o.position_s = args->position_s;
+      o.approach = sim::approach_from_string(args->approach, "--approach");
+      o.soak_s = args->soak_s;
+      o.ramp_degc_per_min = args->ramp_degc_per_min;
+      o.warm_off_s = args->warm_off_s;
+      o.seed = args->seed;
+      o.output_rate_hz = args->rate_hz;
+      o.latitude_deg = args->latitude_deg;
+      finish(*args, sim::simulate_northfind(load_instrument(args->instrument_file), o), start,
+             "northfind");
+    });
   });
 
   auto* st = cmd->add_subcommand(
@@ -194,16 +219,19 @@ void add_simulate(CLI::App& app) {
   st->add_option("--position-s", args->position_s, "Seconds per position, rotation included")
       ->capture_default_str();
   st->callback([args] {
-    const auto start = std::chrono::steady_clock::now();
-    sim::NorthfindOptions o = sim::stable_defaults();
-    if (!args->temps.empty()) o.temps_degc = parse_number_list(args->temps, "--temps");
-    if (args->findings != 0) o.findings = args->findings;
-    o.warmup_s = args->warmup_s;
-    o.position_s = args->position_s;
-    o.seed = args->seed;
-    o.output_rate_hz = args->rate_hz;
-    o.latitude_deg = args->latitude_deg;
-    finish(*args, sim::simulate_stable(load_instrument(args->instrument_file), o), start, "stable");
+    with_flags(kSimulateFlags, [&] {
+      const auto start = std::chrono::steady_clock::now();
+      sim::NorthfindOptions o = sim::stable_defaults();
+      if (!args->temps.empty()) o.temps_degc = parse_number_list(args->temps, "--temps");
+      if (args->findings != 0) o.findings = args->findings;
+      o.warmup_s = args->warmup_s;
+      o.position_s = args->position_s;
+      o.seed = args->seed;
+      o.output_rate_hz = args->rate_hz;
+      o.latitude_deg = args->latitude_deg;
+      finish(*args, sim::simulate_stable(load_instrument(args->instrument_file), o), start,
+             "stable");
+    });
   });
 }
 

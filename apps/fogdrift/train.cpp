@@ -49,30 +49,25 @@ struct TrainArgs {
   bool quiet = false;
 };
 
-// Library option names as the user typed them.
-OptionError as_flag(const OptionError& e) {
-  static const std::map<std::string, std::string> flags = {{"population", "--population"},
-                                                           {"iterations", "--iterations"},
-                                                           {"c_min", "--c-min"},
-                                                           {"c_max", "--c-max"},
-                                                           {"sigma_min", "--sigma-min"},
-                                                           {"sigma_max", "--sigma-max"},
-                                                           {"epsilon", "--epsilon"},
-                                                           {"epsilon_min", "--epsilon"},
-                                                           {"epsilon_max", "--epsilon"},
-                                                           {"cv", "--cv"},
-                                                           {"folds", "--folds"},
-                                                           {"hidden", "--hidden"},
-                                                           {"degree", "--max-degree"},
-                                                           {"features", "--features"},
-                                                           {"block_s", "--block-s"},
-                                                           {"window_s", "--rate-window-s"},
-                                                           {"poly_order", "--rate-window-s"},
-                                                           {"denoise", "--no-denoise"}};
-  const auto it = flags.find(e.option());
-  if (it == flags.end()) return e;
-  return OptionError(it->second, e.message());
-}
+// The library's field names and the flags that set them.
+const FlagTable kTrainFlags = {{"population", "--population"},
+                               {"iterations", "--iterations"},
+                               {"c_min", "--c-min"},
+                               {"c_max", "--c-max"},
+                               {"sigma_min", "--sigma-min"},
+                               {"sigma_max", "--sigma-max"},
+                               {"epsilon", "--epsilon"},
+                               {"epsilon_min", "--epsilon"},
+                               {"epsilon_max", "--epsilon"},
+                               {"cv", "--cv"},
+                               {"folds", "--folds"},
+                               {"hidden", "--hidden"},
+                               {"degree", "--max-degree"},
+                               {"features", "--features"},
+                               {"block_s", "--block-s"},
+                               {"window_s", "--rate-window-s"},
+                               {"poly_order", "--rate-window-s"},
+                               {"denoise", "--no-denoise"}};
 
 /// "auto" or a positive number of seconds.
 std::optional<double> seconds_or_auto(const std::string& text, const std::string& flag) {
@@ -95,7 +90,7 @@ void run(const TrainArgs& a) {
     dataset.preprocessing.rates.causality =
         signal::parse_causality(a.differentiator, "--differentiator");
   } catch (const OptionError& e) {
-    throw as_flag(e);
+    throw as_flag(e, kTrainFlags);
   }
   options.tune.cv.folds = a.folds;
   options.tune.optimizer.run.population = a.population;
@@ -176,7 +171,7 @@ void run(const TrainArgs& a) {
     result = train(data, dataset, options);
   } catch (const OptionError& e) {
     if (show_progress) std::cerr << "\n";
-    throw as_flag(e);
+    throw as_flag(e, kTrainFlags);
   }
   if (show_progress) std::cerr << "\n";
 

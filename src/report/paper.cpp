@@ -459,57 +459,39 @@ const MethodRun& SeedRun::method(std::string_view name) const {
 
 void validate(const PaperOptions& o) {
   if (o.seeds < 1 || o.seeds > 1000)
-    throw OptionError("--seeds", fmt::format("{} is outside [1, 1000]", o.seeds));
+    throw OptionError("seeds", fmt::format("{} is outside [1, 1000]", o.seeds));
   if (o.population < 5 || o.population > 10000)
-    throw OptionError("--population",
+    throw OptionError("population",
                       fmt::format("{} is outside [5, 10000] (SSA needs 5 sparrows)", o.population));
   if (!std::isfinite(o.epsilon) || o.epsilon < 0 || o.epsilon > 10)
-    throw OptionError("--epsilon", fmt::format("{} is outside [0, 10]", o.epsilon));
+    throw OptionError("epsilon", fmt::format("{} is outside [0, 10]", o.epsilon));
   if (o.iterations < 1 || o.iterations > 100000)
-    throw OptionError("--iterations", fmt::format("{} is outside [1, 100000]", o.iterations));
+    throw OptionError("iterations", fmt::format("{} is outside [1, 100000]", o.iterations));
   const std::size_t temps = o.calibration.temps_degc.size();
   const std::size_t train_reps =
       o.calibration.repetitions > o.calibration.test_repetitions
           ? static_cast<std::size_t>(o.calibration.repetitions - o.calibration.test_repetitions)
           : 0;
   sim::validate(o.instrument);
-  // The simulator names its own flags (--temps, --findings, …); here --temps is the paper's
-  // --cal-temps or --nf-temps, and other settings are named by their protocol.
-  auto renamed = [](const auto& options, const std::string& temps_flag,
-                    const std::string& protocol) {
-    try {
-      sim::validate(options);
-    } catch (const OptionError& e) {
-      std::string flag = e.option();
-      if (flag == "--temps")
-        flag = temps_flag;
-      else if (flag == "--approach" && protocol == "calibration")
-        flag = "--cal-approaches";
-      else if (flag != "--findings" || protocol != "northfind")
-        flag = protocol + " " + flag;
-      const std::string what = e.what();
-      const std::size_t colon = what.find(": ");
-      throw OptionError(flag, colon == std::string::npos ? what : what.substr(colon + 2));
-    }
-  };
-  renamed(o.calibration, "--cal-temps", "calibration");
-  renamed(o.northfind, "--nf-temps", "northfind");
-  renamed(o.stable, "stable --temps", "stable");
+  sim::validate(o.calibration);
+  sim::validate(o.northfind, "northfind");
+  sim::validate(o.stable, "stable");
   if (o.cv.scheme == tune::CvScheme::temperature && (o.cv.folds < 2 || o.cv.folds > temps))
-    throw OptionError("--folds", fmt::format("{} folds of whole temperatures need 2 to {} (the "
-                                             "calibration temperatures); set --folds, or --cv "
-                                             "repetition to leave one repetition out",
-                                             o.cv.folds, temps));
+    throw OptionError("cv.folds", fmt::format("{} folds of whole temperatures need 2 to {} (the "
+                                              "calibration temperatures); set --folds, or --cv "
+                                              "repetition to leave one repetition out",
+                                              o.cv.folds, temps));
   if (o.cv.scheme == tune::CvScheme::recording &&
       (o.cv.folds < 2 || o.cv.folds > temps * train_reps))
-    throw OptionError("--folds", fmt::format("{} folds of whole recordings need 2 to {} (the "
-                                             "training recordings)",
-                                             o.cv.folds, temps * train_reps));
+    throw OptionError("cv.folds", fmt::format("{} folds of whole recordings need 2 to {} (the "
+                                              "training recordings)",
+                                              o.cv.folds, temps * train_reps));
   if (o.cv.scheme == tune::CvScheme::repetition && train_reps < 2)
-    throw OptionError("--cv", "leave one repetition out needs two or more training repetitions");
+    throw OptionError("cv.scheme",
+                      "leave one repetition out needs two or more training repetitions");
   if (o.calibration.test_repetitions < 1 ||
       o.calibration.test_repetitions >= o.calibration.repetitions)
-    throw OptionError("--repetitions",
+    throw OptionError("calibration.repetitions",
                       "the experiment needs at least one training and one test repetition");
 }
 

@@ -41,7 +41,7 @@ int substeps(double interval_s, double fine_step_s) {
   const double ratio = interval_s / fine_step_s;
   const double whole = std::round(ratio);
   if (whole < 1.0 || std::abs(ratio - whole) > 1e-6 * ratio) {
-    throw OptionError("--rate-hz",
+    throw OptionError("output_rate_hz",
                       fmt::format("the output interval {} s is not a whole number of fine steps "
                                   "of {} s (instrument.fog.fine_step_s)",
                                   interval_s, fine_step_s));
@@ -85,7 +85,8 @@ void NfsSimulator::advance(double duration_s, const AirProfile& air, bool powere
 Recording NfsSimulator::record(const RecordSetup& setup, const AirProfile& air,
                                double power_on_time_s) {
   if (!(setup.output_rate_hz > 0.0) || !std::isfinite(setup.output_rate_hz)) {
-    throw OptionError("--rate-hz", fmt::format("{} must be a positive rate", setup.output_rate_hz));
+    throw OptionError("output_rate_hz",
+                      fmt::format("{} must be a positive rate", setup.output_rate_hz));
   }
   const double interval = 1.0 / setup.output_rate_hz;
   const int n_sub = substeps(interval, instrument_.fog.fine_step_s);

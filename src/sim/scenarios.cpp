@@ -63,25 +63,26 @@ void check_temps(const std::vector<double>& temps, const std::string& option) {
   }
 }
 
-void check_rate(double rate_hz) {
+void check_rate(double rate_hz, const std::string& field) {
   if (!std::isfinite(rate_hz) || rate_hz <= 0.0 || rate_hz > 1000.0) {
-    throw OptionError("--rate-hz", fmt::format("{} is outside (0, 1000] Hz", rate_hz));
+    throw OptionError(field, fmt::format("{} is outside (0, 1000] Hz", rate_hz));
   }
 }
 
-void check_latitude(double latitude_deg) {
+void check_latitude(double latitude_deg, const std::string& field) {
   // The four-position method needs a horizontal Earth-rate component.
   if (!std::isfinite(latitude_deg) || std::abs(latitude_deg) > 85.0) {
-    throw OptionError("--latitude", fmt::format("{}° is outside [-85, 85]", latitude_deg));
+    throw OptionError(field, fmt::format("{}° is outside [-85, 85]", latitude_deg));
   }
 }
 
-void check_start_up(double warm_off_s, double ramp_degc_per_min) {
+void check_start_up(double warm_off_s, double ramp_degc_per_min, const std::string& struct_name) {
   if (!(warm_off_s >= 0.0) || warm_off_s > 1e6) {
-    throw OptionError("--warm-off-s", fmt::format("{} s is outside [0, 1e6]", warm_off_s));
+    throw OptionError(struct_name + ".warm_off_s",
+                      fmt::format("{} s is outside [0, 1e6]", warm_off_s));
   }
   if (!(ramp_degc_per_min > 0.0) || ramp_degc_per_min > 100.0) {
-    throw OptionError("--ramp-degc-per-min",
+    throw OptionError(struct_name + ".ramp_degc_per_min",
                       fmt::format("{} is outside (0, 100] °C/min", ramp_degc_per_min));
   }
 }
@@ -203,47 +204,52 @@ NorthfindOptions stable_defaults() {
 }
 
 void validate(const CalibrationOptions& o) {
-  check_temps(o.temps_degc, "--temps");
+  check_temps(o.temps_degc, "calibration.temps_degc");
   if (o.repetitions < 1 || o.repetitions > 100) {
-    throw OptionError("--repetitions", fmt::format("{} is outside [1, 100]", o.repetitions));
+    throw OptionError("calibration.repetitions",
+                      fmt::format("{} is outside [1, 100]", o.repetitions));
   }
   if (o.test_repetitions < 0 || o.test_repetitions > o.repetitions) {
-    throw OptionError("--test-repetitions", fmt::format("{} is outside [0, repetitions = {}]",
-                                                        o.test_repetitions, o.repetitions));
+    throw OptionError(
+        "calibration.test_repetitions",
+        fmt::format("{} is outside [0, repetitions = {}]", o.test_repetitions, o.repetitions));
   }
   if (!(o.soak_s >= 0.0) || !(o.ramp_s >= 0.0) || !(o.powered_s > 0.0)) {
-    throw OptionError("cycle", "soak and ramp must be >= 0 s and the powered time > 0 s");
+    throw OptionError("calibration.soak_s",
+                      "soak and ramp must be >= 0 s and the powered time > 0 s");
   }
   if (!(o.chamber_setpoint_sd_degc >= 0.0) || o.chamber_setpoint_sd_degc > 10.0) {
-    throw OptionError("chamber_setpoint_sd_degc", "must be in [0, 10] °C");
+    throw OptionError("calibration.chamber_setpoint_sd_degc", "must be in [0, 10] °C");
   }
-  if (o.approaches.empty()) throw OptionError("--approach", "needs at least one approach");
+  if (o.approaches.empty())
+    throw OptionError("calibration.approaches", "needs at least one approach");
   for (Approach a : o.approaches) {
     if (a == Approach::sweep)
-      throw OptionError("--approach",
+      throw OptionError("calibration.approaches",
                         "sweep is not a calibration approach (the calibration approach is the "
                         "chamber's sweep)");
   }
-  check_start_up(o.warm_off_s, o.ramp_degc_per_min);
-  check_rate(o.output_rate_hz);
-  check_latitude(o.latitude_deg);
+  check_start_up(o.warm_off_s, o.ramp_degc_per_min, "calibration");
+  check_rate(o.output_rate_hz, "calibration.output_rate_hz");
+  check_latitude(o.latitude_deg, "calibration.latitude_deg");
 }
 
-void validate(const NorthfindOptions& o) {
-  check_temps(o.temps_degc, "--temps");
+void validate(const NorthfindOptions& o, const std::string& name) {
+  check_temps(o.temps_degc, name + ".temps_degc");
   if (o.findings < 1 || o.findings > 1000) {
-    throw OptionError("--findings", fmt::format("{} is outside [1, 1000]", o.findings));
+    throw OptionError(name + ".findings", fmt::format("{} is outside [1, 1000]", o.findings));
   }
   if (!(o.position_s >= 20.0) || o.position_s > 36000.0) {
-    throw OptionError("--position-s", fmt::format("{} s is outside [20, 36000]", o.position_s));
+    throw OptionError(name + ".position_s",
+                      fmt::format("{} s is outside [20, 36000]", o.position_s));
   }
-  if (!(o.warmup_s >= 0.0)) throw OptionError("--warmup-s", "must be >= 0 s");
+  if (!(o.warmup_s >= 0.0)) throw OptionError(name + ".warmup_s", "must be >= 0 s");
   if (!(o.soak_s >= 0.0) || o.soak_s > 1e6) {
-    throw OptionError("--soak-s", fmt::format("{} s is outside [0, 1e6]", o.soak_s));
+    throw OptionError(name + ".soak_s", fmt::format("{} s is outside [0, 1e6]", o.soak_s));
   }
-  check_start_up(o.warm_off_s, o.ramp_degc_per_min);
-  check_rate(o.output_rate_hz);
-  check_latitude(o.latitude_deg);
+  check_start_up(o.warm_off_s, o.ramp_degc_per_min, name);
+  check_rate(o.output_rate_hz, name + ".output_rate_hz");
+  check_latitude(o.latitude_deg, name + ".latitude_deg");
 }
 
 SimulatedCampaign simulate_calibration(const Instrument& instrument, const CalibrationOptions& o) {
@@ -325,14 +331,14 @@ namespace {
 SimulatedCampaign simulate_findings(const Instrument& instrument, const NorthfindOptions& o,
                                     Scenario scenario, std::uint64_t stream) {
   validate(instrument);
-  validate(o);
+  validate(o, std::string(to_string(scenario)));
   SimulatedCampaign out;
   out.campaign.latitude_deg = o.latitude_deg;
   out.campaign.generator_json =
       generator_json(std::string(to_string(scenario)), o.seed, o.output_rate_hz, &o);
   const double rotation_s = 90.0 / instrument.turntable.rate_deg_per_s;
   if (rotation_s + 10.0 > o.position_s) {
-    throw OptionError("--position-s",
+    throw OptionError(std::string(to_string(scenario)) + ".position_s",
                       fmt::format("{} s leaves less than 10 s of dwell after a {} s rotation",
                                   o.position_s, rotation_s));
   }

@@ -171,7 +171,8 @@ TEST(Paper, SameSeedSameResultWhateverTheThreads) {
   }
 }
 
-TEST(Paper, ImpossibleOptionsNameTheOption) {
+// The library names its fields; the CLI's table maps them to flags (tests/cli/paper_test.sh).
+TEST(Paper, ImpossibleOptionsNameTheField) {
   auto expect_option = [](PaperOptions o, const std::string& option) {
     try {
       validate(o);
@@ -182,41 +183,41 @@ TEST(Paper, ImpossibleOptionsNameTheOption) {
   };
   PaperOptions o;
   o.seeds = 0;
-  expect_option(o, "--seeds");
+  expect_option(o, "seeds");
   o = PaperOptions{};
   o.population = 3;
-  expect_option(o, "--population");
+  expect_option(o, "population");
   o = PaperOptions{};
   o.iterations = 0;
-  expect_option(o, "--iterations");
+  expect_option(o, "iterations");
   o = PaperOptions{};
   o.calibration.temps_degc = {};
-  expect_option(o, "--cal-temps");
+  expect_option(o, "calibration.temps_degc");
   o = PaperOptions{};
   o.northfind.temps_degc = {500};
-  expect_option(o, "--nf-temps");
+  expect_option(o, "northfind.temps_degc");
   o = PaperOptions{};
   o.northfind.findings = 0;
-  expect_option(o, "--findings");
+  expect_option(o, "northfind.findings");
   o = PaperOptions{};
   o.calibration.repetitions = 1;
-  expect_option(o, "--repetitions");
+  expect_option(o, "calibration.repetitions");
   o = PaperOptions{};
   o.epsilon = -0.1;
-  expect_option(o, "--epsilon");
+  expect_option(o, "epsilon");
   o = PaperOptions{};
   o.cv.scheme = tune::CvScheme::temperature;
   o.cv.folds = 12;  // eleven calibration temperatures
-  expect_option(o, "--folds");
+  expect_option(o, "cv.folds");
   o.cv.folds = 11;
   EXPECT_NO_THROW(validate(o));
   o.cv.scheme = tune::CvScheme::recording;
   o.cv.folds = 45;  // 11 temperatures × 4 training repetitions
-  expect_option(o, "--folds");
+  expect_option(o, "cv.folds");
   o = PaperOptions{};
   o.cv.scheme = tune::CvScheme::repetition;
   o.calibration.test_repetitions = 4;  // one training repetition left
-  expect_option(o, "--cv");
+  expect_option(o, "cv.scheme");
 }
 
 }  // namespace

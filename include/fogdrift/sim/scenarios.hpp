@@ -103,9 +103,11 @@ struct SimulatedCampaign {
   std::vector<Recording> recordings;  ///< same order as campaign.recordings
 };
 
-/// Throws OptionError naming the option and the rule for impossible settings.
+/// Throws OptionError naming the field and the rule for impossible settings: the field's path
+/// from the options ("calibration.temps_degc"; for north-finding, `name` is the scenario, so
+/// "northfind.findings" or "stable.warmup_s").
 void validate(const CalibrationOptions& options);
-void validate(const NorthfindOptions& options);
+void validate(const NorthfindOptions& options, const std::string& name = "northfind");
 
 SimulatedCampaign simulate_calibration(const Instrument& instrument,
                                        const CalibrationOptions& options);
