@@ -54,6 +54,16 @@ struct SimulateArgs {
   double warm_off_s = 600.0;
 };
 
+/// What northfind and stable share: temperatures, findings, timing, seed and site.
+void set_findings(sim::NorthfindOptions& o, const SimulateArgs& a) {
+  if (!a.temps.empty()) o.temps_degc = parse_number_list(a.temps, "--temps");
+  if (a.findings != 0) o.findings = a.findings;
+  o.position_s = a.position_s;
+  o.seed = a.seed;
+  o.output_rate_hz = a.rate_hz;
+  o.latitude_deg = a.latitude_deg;
+}
+
 sim::Instrument load_instrument(const std::string& file) {
   if (file.empty()) return sim::Instrument{};
   return sim::instrument_from_json(read_text_file(file), file);
@@ -192,16 +202,11 @@ void add_simulate(CLI::App& app) {
     with_flags(kSimulateFlags, [&] {
       const auto start = std::chrono::steady_clock::now();
       sim::NorthfindOptions o;
-      if (!args->temps.empty()) o.temps_degc = parse_number_list(args->temps, "--temps");
-      if (args->findings != 0) o.findings = args->findings;
-      o.position_s = args->position_s;
+      set_findings(o, *args);
       o.approach = sim::approach_from_string(args->approach, "--approach");
       o.soak_s = args->soak_s;
       o.ramp_degc_per_min = args->ramp_degc_per_min;
       o.warm_off_s = args->warm_off_s;
-      o.seed = args->seed;
-      o.output_rate_hz = args->rate_hz;
-      o.latitude_deg = args->latitude_deg;
       finish(*args, sim::simulate_northfind(load_instrument(args->instrument_file), o), start,
              "northfind");
     });
@@ -222,13 +227,8 @@ void add_simulate(CLI::App& app) {
     with_flags(kSimulateFlags, [&] {
       const auto start = std::chrono::steady_clock::now();
       sim::NorthfindOptions o = sim::stable_defaults();
-      if (!args->temps.empty()) o.temps_degc = parse_number_list(args->temps, "--temps");
-      if (args->findings != 0) o.findings = args->findings;
+      set_findings(o, *args);
       o.warmup_s = args->warmup_s;
-      o.position_s = args->position_s;
-      o.seed = args->seed;
-      o.output_rate_hz = args->rate_hz;
-      o.latitude_deg = args->latitude_deg;
       finish(*args, sim::simulate_stable(load_instrument(args->instrument_file), o), start,
              "stable");
     });
