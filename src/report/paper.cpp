@@ -16,6 +16,7 @@
 #include "fogdrift/eval/startup.hpp"
 #include "fogdrift/features.hpp"
 #include "fogdrift/train.hpp"
+#include "report/paper_figures.hpp"
 
 namespace fogdrift::report {
 namespace {
@@ -101,26 +102,6 @@ TrainOptions train_options(const PaperOptions& o, Method method, std::uint64_t s
   return to;
 }
 
-std::string temp_label(double t) {
-  return fmt::format("{}{} °C", t < 0 ? "−" : "", std::abs(t));
-}
-
-// Decimated (every `step` samples) centred moving average of a column.
-std::vector<double> smoothed(const std::vector<double>& v, std::size_t window, std::size_t step) {
-  const std::vector<double> s = eval::moving_average(v, window);
-  std::vector<double> out;
-  for (std::size_t i = 0; i < s.size(); i += step) out.push_back(s[i]);
-  return out;
-}
-
-// What the first seed keeps for the studies and the figures.
-struct FirstSeed {
-  sim::SimulatedCampaign cal, nf;
-  Dataset train, test;
-  DatasetOptions dataset;
-  std::map<std::string, CompensationModel> models;
-};
-
 struct Stages {
   const PaperOptions& o;
   double done = 0, total = 1;
@@ -171,15 +152,15 @@ SeedRun run_seed(const PaperOptions& o, std::uint64_t seed, Stages& stages, Firs
       eval::pool(eval::metrics_per_recording(test, std::vector<double>(test.rows, 0.0)))
           .std_before_dph;
 
-  for (std::string_view name : kPaperMethods) {
-    const Method method = parse_method(std::string(name));
+  for (const Method method : kPaperMethods) {
+    const std::string name = to_string(method);
     const bool tuned = method != Method::svr && method != Method::bp;
     stages.step(fmt::format("seed {}: training {}", seed, name),
                 tuned ? kTunedWeight : kOtherWeight);
     TrainResult trained =
         fogdrift::train(train, dataset, train_options(o, method, seed, o.fitness));
     MethodRun m;
-    m.method = std::string(name);
+    m.method = method;
     m.table2 = table2_of(trained.model, test);
     m.rmse_deg = northfind_rmse(nf, predicted_by(trained.model));
     m.mean_rmse_deg = mean_of(m.rmse_deg);
@@ -201,7 +182,7 @@ SeedRun run_seed(const PaperOptions& o, std::uint64_t seed, Stages& stages, Firs
     m.fitness_value = trained.summary.fitness_value;
     m.train_seconds = trained.summary.seconds;
     run.methods.push_back(std::move(m));
-    if (keep) keep->models.emplace(std::string(name), std::move(trained.model));
+    if (keep) keep->models.emplace(method, std::move(trained.model));
   }
   if (keep) {
     keep->cal = std::move(cal);
@@ -219,11 +200,11 @@ std::vector<LotoRow> loto_study(const PaperOptions& o, const SeedRun& run, const
   for (const auto& g : f.train.groups) temps.push_back(g.initial_temp_degc);
   std::sort(temps.begin(), temps.end());
   temps.erase(std::unique(temps.begin(), temps.end()), temps.end());
-  const std::string methods[] = {"ssa-svr", "bp"};
+  const Method methods[] = {Method::ssa_svr, Method::bp};
   std::vector<LotoRow> rows(temps.size() * 2);
   auto job = [&](std::size_t k) {
     const double t = temps[k / 2];
-    const std::string& name = methods[k % 2];
+    const Method method = methods[k % 2];
     std::vector<std::size_t> keep_groups, test_groups;
     for (std::size_t g = 0; g < f.train.groups.size(); ++g)
       if (f.train.groups[g].initial_temp_degc != t) keep_groups.push_back(g);
@@ -233,7 +214,7 @@ std::vector<LotoRow> loto_study(const PaperOptions& o, const SeedRun& run, const
     const Dataset test = f.test.select_groups(test_groups);
     // The pool is nested inside the study's loop here: it runs serially.
     TrainOptions to =
-        train_options(o, name == "bp" ? Method::bp : Method::svr, run.seed, o.fitness);
+        train_options(o, method == Method::bp ? Method::bp : Method::svr, run.seed, o.fitness);
     // One temperature fewer to deal into temperature folds (they only score the model here).
     if (to.tune.cv.scheme == tune::CvScheme::temperature) {
       if (temps.size() >= 3)
@@ -241,12 +222,12 @@ std::vector<LotoRow> loto_study(const PaperOptions& o, const SeedRun& run, const
       else
         to.tune.cv = tune::CvOptions{};
     }
-    if (name != "bp") to.svr_params = svr_params_of(run.method(name));
+    if (method != Method::bp) to.svr_params = svr_params_of(run.method(method));
     const TrainResult loto = fogdrift::train(train, f.dataset, to);
-    const eval::CompensationMetrics all = table2_of(f.models.at(name), test);
+    const eval::CompensationMetrics all = table2_of(f.models.at(method), test);
     const eval::CompensationMetrics left = table2_of(loto.model, test);
     rows[k] =
-        LotoRow{t,           name,        all.std_before_dph, all.std_after_dph, left.std_after_dph,
+        LotoRow{t,           method,      all.std_before_dph, all.std_after_dph, left.std_after_dph,
                 all.mae_dph, left.mae_dph};
   };
   if (o.pool)
@@ -261,9 +242,9 @@ std::vector<FitnessRow> fitness_study(const PaperOptions& o, const SeedRun& run,
   std::vector<FitnessRow> rows;
   for (tune::Fitness fitness : {tune::Fitness::cv, tune::Fitness::train}) {
     FitnessRow row;
-    row.fitness = std::string(tune::to_string(fitness));
+    row.fitness = fitness;
     if (fitness == o.fitness) {
-      const MethodRun& m = run.method("ssa-svr");
+      const MethodRun& m = run.method(Method::ssa_svr);
       row.c = m.hyperparameter("C");
       row.sigma = m.hyperparameter("sigma");
       row.fitness_value = m.fitness_value;
@@ -286,163 +267,6 @@ std::vector<FitnessRow> fitness_study(const PaperOptions& o, const SeedRun& run,
   return rows;
 }
 
-std::vector<Figure> figures_of(const PaperResult& r, const FirstSeed& f) {
-  std::vector<Figure> out;
-  const std::size_t window = 61, step = 10;
-  // Fig. 1 and 2: the test repetition's start-ups.
-  Figure fig1{"fig1_startup", "Fig. 1 — start-up output at every initial temperature", {}};
-  Figure fig2{"fig2_output_vs_temperature", "Fig. 2 — output against the FOG temperature", {}};
-  Panel p1{"calibration test repetition, 60 s moving average",
-           "time since power-on (min)",
-           "gyro output (°/h)",
-           {}};
-  Panel p2{"calibration test repetition, 60 s moving average",
-           "FOG thermometer (°C)",
-           "gyro output (°/h)",
-           {}};
-  for (std::size_t i = 0; i < f.cal.recordings.size(); ++i) {
-    const CampaignEntry& e = f.cal.campaign.recordings[i];
-    if (e.role != Role::test) continue;
-    const Recording& rec = f.cal.recordings[i];
-    std::vector<double> minutes;
-    for (std::size_t k = 0; k < rec.time_s.size(); k += step) minutes.push_back(rec.time_s[k] / 60);
-    const std::vector<double> gyro = smoothed(rec.gyro_dph, window, step);
-    p1.series.push_back({temp_label(e.initial_temp_degc), minutes, gyro});
-    p2.series.push_back({temp_label(e.initial_temp_degc),
-                         smoothed(rec.numeric_column("temp_fog_degc"), window, step), gyro});
-  }
-  fig1.panels.push_back(std::move(p1));
-  fig2.panels.push_back(std::move(p2));
-  out.push_back(std::move(fig1));
-  out.push_back(std::move(fig2));
-
-  // Fig. 3: a calibration-like start-up at 25 °C (cycles at 5 and 15 °C before it).
-  {
-    sim::CalibrationOptions co = r.options.calibration;
-    co.seed = r.seeds.front().seed;
-    co.temps_degc = {5, 15, 25};
-    co.repetitions = 1;
-    co.test_repetitions = 0;
-    const auto c = sim::simulate_calibration(r.options.instrument, co);
-    const FeatureTable table =
-        compute_features(c.recordings.back(), f.dataset.features, f.dataset.preprocessing);
-    Figure fig3{"fig3_features_25C",
-                "Fig. 3 — temperatures, rates and gradients after power-on at 25 °C",
-                {{"temperatures", "time since power-on (min)", "°C", {}},
-                 {"rates", "time since power-on (min)", "°C/s", {}},
-                 {"gradients", "time since power-on (min)", "°C", {}}}};
-    std::vector<double> minutes;
-    for (double t : table.time_s) minutes.push_back(t / 60);
-    for (std::size_t c2 = 0; c2 < table.names.size(); ++c2) {
-      const std::string& name = table.names[c2];
-      const std::size_t panel = name.starts_with("dT") ? 1 : (name.starts_with("grad") ? 2 : 0);
-      Series s{name, minutes, {}};
-      for (std::size_t k = 0; k < table.rows; ++k)
-        s.y.push_back(table.x[k * table.names.size() + c2]);
-      fig3.panels[panel].series.push_back(std::move(s));
-    }
-    out.push_back(std::move(fig3));
-  }
-
-  // Fig. 8: the test repetition before and after compensation, recordings end to end.
-  {
-    Figure fig8{"fig8_compensation",
-                "Fig. 8 — test repetition before and after compensation (each recording's mean "
-                "removed)",
-                {}};
-    Panel p{"recordings −40 … 60 °C end to end, 10 s blocks",
-            "hours of powered time",
-            "drift (°/h)",
-            {}};
-    Series denoised{"denoised", {}, {}};
-    std::vector<Series> comp;
-    std::vector<std::vector<double>> predicted;
-    for (const char* name : {"bp", "ssa-svr"}) {
-      comp.push_back({fmt::format("compensated, {}", name), {}, {}});
-      predicted.push_back(f.models.at(name).predict_dph(f.test));
-    }
-    double offset_h = 0;
-    for (std::size_t g = 0; g < f.test.groups.size(); ++g) {
-      std::vector<std::size_t> rows;
-      for (std::size_t i = 0; i < f.test.rows; ++i)
-        if (f.test.group[i] == g) rows.push_back(i);
-      if (rows.empty()) continue;
-      double my = 0;
-      std::vector<double> mc(comp.size(), 0.0);
-      for (std::size_t i : rows) {
-        my += f.test.y[i];
-        for (std::size_t m = 0; m < comp.size(); ++m) mc[m] += f.test.y[i] - predicted[m][i];
-      }
-      my /= static_cast<double>(rows.size());
-      for (double& v : mc) v /= static_cast<double>(rows.size());
-      for (std::size_t i : rows) {
-        const double h = offset_h + f.test.time_s[i] / 3600;
-        denoised.x.push_back(h);
-        denoised.y.push_back(f.test.y[i] - my);
-        for (std::size_t m = 0; m < comp.size(); ++m) {
-          comp[m].x.push_back(h);
-          comp[m].y.push_back(f.test.y[i] - predicted[m][i] - mc[m]);
-        }
-      }
-      offset_h = denoised.x.back() + 10.0 / 3600;
-    }
-    p.series.push_back(std::move(denoised));
-    for (auto& s : comp) p.series.push_back(std::move(s));
-    fig8.panels.push_back(std::move(p));
-    out.push_back(std::move(fig8));
-  }
-
-  // North-finding RMSE per initial temperature, means over the seeds.
-  {
-    Figure fig{"fig_northfind",
-               fmt::format("North-finding RMSE per initial temperature (mean of {} seed{})",
-                           r.seeds.size(), r.seeds.size() == 1 ? "" : "s"),
-               {{"five findings during the start-up at each temperature",
-                 "initial temperature (°C)",
-                 "RMSE (°)",
-                 {}}}};
-    auto& series = fig.panels[0].series;
-    const std::size_t n = r.northfind_temps_degc.size();
-    auto mean_over_seeds = [&](auto get) {
-      std::vector<double> y(n, 0.0);
-      for (const SeedRun& s : r.seeds) {
-        const std::vector<double>& v = get(s);
-        for (std::size_t k = 0; k < n; ++k) y[k] += v[k] / static_cast<double>(r.seeds.size());
-      }
-      return y;
-    };
-    series.push_back({"raw", r.northfind_temps_degc,
-                      mean_over_seeds([](const SeedRun& s) -> const std::vector<double>& {
-                        return s.raw_rmse_deg;
-                      }),
-                      true});
-    for (std::string_view name : kPaperMethods) {
-      series.push_back({std::string(name), r.northfind_temps_degc,
-                        mean_over_seeds([name](const SeedRun& s) -> const std::vector<double>& {
-                          return s.method(name).rmse_deg;
-                        }),
-                        true});
-    }
-    if (!r.seeds.front().oracle_rmse_deg.empty()) {
-      series.push_back({"true drift subtracted", r.northfind_temps_degc,
-                        mean_over_seeds([](const SeedRun& s) -> const std::vector<double>& {
-                          return s.oracle_rmse_deg;
-                        }),
-                        true});
-    }
-    std::vector<double> stable;
-    for (const SeedRun& s : r.seeds) stable.push_back(s.stable_rmse_deg);
-    const double st = mean_of(stable);
-    series.push_back({"stable stage",
-                      {r.northfind_temps_degc.front(), r.northfind_temps_degc.back()},
-                      {st, st},
-                      false,
-                      true});
-    out.push_back(std::move(fig));
-  }
-  return out;
-}
-
 }  // namespace
 
 double MethodRun::hyperparameter(std::string_view name) const {
@@ -451,10 +275,10 @@ double MethodRun::hyperparameter(std::string_view name) const {
   return std::nan("");
 }
 
-const MethodRun& SeedRun::method(std::string_view name) const {
+const MethodRun& SeedRun::method(Method method) const {
   for (const auto& m : methods)
-    if (m.method == name) return m;
-  throw std::out_of_range(fmt::format("no method {} in this run", name));
+    if (m.method == method) return m;
+  throw std::out_of_range(fmt::format("no method {} in this run", to_string(method)));
 }
 
 void validate(const PaperOptions& o) {
@@ -520,7 +344,7 @@ PaperResult run_paper(const PaperOptions& options) {
     r.fitness = fitness_study(options, r.seeds.front(), first);
   }
   stages.step("figures", 1);
-  r.figures = figures_of(r, first);
+  r.figures = paper_figures(r, first);
   r.seconds = seconds_since(start);
   if (options.progress) options.progress("done", 1.0);
   return r;

@@ -87,19 +87,22 @@ bool has_oracle(const PaperResult& r) {
 
 PaperVerdict verdict(const PaperResult& r) {
   PaperVerdict v;
-  const double ssa_std =
-      over_seeds(r, [](const SeedRun& s) { return s.method("ssa-svr").table2.std_after_dph; }).mean;
+  const double ssa_std = over_seeds(r, [](const SeedRun& s) {
+                           return s.method(Method::ssa_svr).table2.std_after_dph;
+                         }).mean;
   const double denoised = over_seeds(r, [](const SeedRun& s) { return s.denoised_std_dph; }).mean;
-  const double bp_std =
-      over_seeds(r, [](const SeedRun& s) { return s.method("bp").table2.std_after_dph; }).mean;
+  const double bp_std = over_seeds(r, [](const SeedRun& s) {
+                          return s.method(Method::bp).table2.std_after_dph;
+                        }).mean;
   v.std_ratio = ssa_std / denoised;
-  for (const char* m : {"pso-svr", "gwo-svr", "ssa-svr"}) {
-    const double std =
-        over_seeds(r, [m](const SeedRun& s) { return s.method(m).table2.std_after_dph; }).mean;
-    if (std > bp_std) v.tuned_worse_than_bp.emplace_back(m);
+  for (const Method method : {Method::pso_svr, Method::gwo_svr, Method::ssa_svr}) {
+    const double std = over_seeds(r, [method](const SeedRun& s) {
+                         return s.method(method).table2.std_after_dph;
+                       }).mean;
+    if (std > bp_std) v.tuned_worse_than_bp.emplace_back(to_string(method));
   }
   const double ssa_nf =
-      over_seeds(r, [](const SeedRun& s) { return s.method("ssa-svr").mean_rmse_deg; }).mean;
+      over_seeds(r, [](const SeedRun& s) { return s.method(Method::ssa_svr).mean_rmse_deg; }).mean;
   const double raw_nf = over_seeds(r, [](const SeedRun& s) { return s.raw_mean_rmse_deg; }).mean;
   v.northfind_ratio = ssa_nf / raw_nf;
   v.stable_ratio = ssa_nf / over_seeds(r, [](const SeedRun& s) { return s.stable_rmse_deg; }).mean;
@@ -114,13 +117,14 @@ PaperVerdict verdict(const PaperResult& r) {
         over_seeds(r, [a](const SeedRun& s) { return s.start_up_raw_rmse_deg[a]; }).mean;
     const double floor =
         over_seeds(r, [a](const SeedRun& s) { return s.start_up_floor_rmse_deg[a]; }).mean;
-    for (std::string_view name : kPaperMethods) {
-      const std::string m(name);
-      const double comp =
-          over_seeds(r, [&](const SeedRun& s) { return s.method(m).start_up_rmse_deg[a]; }).mean;
+    for (const Method method : kPaperMethods) {
+      const std::string m = to_string(method);
+      const double comp = over_seeds(r, [&](const SeedRun& s) {
+                            return s.method(method).start_up_rmse_deg[a];
+                          }).mean;
       if (comp > raw)
         v.worse_than_raw.push_back(fmt::format("{} under {}", m, sim::to_string(ups[a])));
-      if (m == "ssa-svr") v.ssa_removed.push_back(eval::share_removed(raw, comp, floor));
+      if (method == Method::ssa_svr) v.ssa_removed.push_back(eval::share_removed(raw, comp, floor));
     }
   }
   return v;
@@ -139,19 +143,20 @@ std::string paper_json(const PaperResult& r) {
   using json = nlohmann::ordered_json;
   json j;
   const MeanSd c =
-      over_seeds(r, [](const SeedRun& s) { return s.method("ssa-svr").hyperparameter("C"); });
-  const MeanSd sg =
-      over_seeds(r, [](const SeedRun& s) { return s.method("ssa-svr").hyperparameter("sigma"); });
+      over_seeds(r, [](const SeedRun& s) { return s.method(Method::ssa_svr).hyperparameter("C"); });
+  const MeanSd sg = over_seeds(
+      r, [](const SeedRun& s) { return s.method(Method::ssa_svr).hyperparameter("sigma"); });
   j["table1"] = {{"C", c.mean}, {"C_sd", c.sd}, {"sigma", sg.mean}, {"sigma_sd", sg.sd}};
 
   json t2;
   const MeanSd den = over_seeds(r, [](const SeedRun& s) { return s.denoised_std_dph; });
   t2["denoised"] = {{"std_dph", den.mean}, {"std_dph_sd", den.sd}};
-  for (std::string_view name : kPaperMethods) {
-    const std::string m(name);
-    const MeanSd mae = over_seeds(r, [&](const SeedRun& s) { return s.method(m).table2.mae_dph; });
+  for (const Method method : kPaperMethods) {
+    const std::string m = to_string(method);
+    const MeanSd mae =
+        over_seeds(r, [&](const SeedRun& s) { return s.method(method).table2.mae_dph; });
     const MeanSd sd =
-        over_seeds(r, [&](const SeedRun& s) { return s.method(m).table2.std_after_dph; });
+        over_seeds(r, [&](const SeedRun& s) { return s.method(method).table2.std_after_dph; });
     t2[m] = {
         {"mae_dph", mae.mean}, {"mae_dph_sd", mae.sd}, {"std_dph", sd.mean}, {"std_dph_sd", sd.sd}};
   }
@@ -176,11 +181,11 @@ std::string paper_json(const PaperResult& r) {
   };
   t3["raw"] = row([](const SeedRun& s) -> const std::vector<double>& { return s.raw_rmse_deg; },
                   [](const SeedRun& s) { return s.raw_mean_rmse_deg; });
-  for (std::string_view name : kPaperMethods) {
-    const std::string m(name);
-    t3[m] =
-        row([&](const SeedRun& s) -> const std::vector<double>& { return s.method(m).rmse_deg; },
-            [&](const SeedRun& s) { return s.method(m).mean_rmse_deg; });
+  for (const Method method : kPaperMethods) {
+    const std::string m = to_string(method);
+    t3[m] = row(
+        [&](const SeedRun& s) -> const std::vector<double>& { return s.method(method).rmse_deg; },
+        [&](const SeedRun& s) { return s.method(method).mean_rmse_deg; });
   }
   if (has_oracle(r))
     t3["oracle"] =
@@ -224,13 +229,14 @@ std::string paper_json(const PaperResult& r) {
         over_seeds(r, [a](const SeedRun& s) { return s.start_up_raw_rmse_deg[a]; }).mean;
     x["floor_mean_deg"] =
         number(over_seeds(r, [a](const SeedRun& s) { return s.start_up_floor_rmse_deg[a]; }).mean);
-    for (std::string_view name : kPaperMethods) {
-      const std::string m(name);
+    for (const Method method : kPaperMethods) {
+      const std::string m = to_string(method);
       x[m] = {
           {"mean_deg",
-           over_seeds(r, [&](const SeedRun& s) { return s.method(m).start_up_rmse_deg[a]; }).mean},
+           over_seeds(r, [&](const SeedRun& s) { return s.method(method).start_up_rmse_deg[a]; })
+               .mean},
           {"unguarded_mean_deg", over_seeds(r, [&](const SeedRun& s) {
-                                   return s.method(m).start_up_unguarded_rmse_deg[a];
+                                   return s.method(method).start_up_unguarded_rmse_deg[a];
                                  }).mean}};
     }
     su[std::string(sim::to_string(r.options.start_ups[a]))] = x;
@@ -241,7 +247,7 @@ std::string paper_json(const PaperResult& r) {
   studies["loto"] = json::array();
   for (const LotoRow& l : r.loto) {
     studies["loto"].push_back({{"temp_degc", l.temp_degc},
-                               {"method", l.method},
+                               {"method", to_string(l.method)},
                                {"denoised_std_dph", l.denoised_std_dph},
                                {"std_all_dph", l.std_all_dph},
                                {"std_left_out_dph", l.std_loto_dph},
@@ -250,7 +256,7 @@ std::string paper_json(const PaperResult& r) {
   }
   studies["fitness"] = json::array();
   for (const FitnessRow& f : r.fitness) {
-    studies["fitness"].push_back({{"fitness", f.fitness},
+    studies["fitness"].push_back({{"fitness", tune::to_string(f.fitness)},
                                   {"C", f.c},
                                   {"sigma", f.sigma},
                                   {"fitness_value", f.fitness_value},
@@ -284,12 +290,12 @@ std::string paper_json(const PaperResult& r) {
     for (const MethodRun& m : s.methods) {
       json h;
       for (const auto& [n, val] : m.hyperparameters) h[n] = val;
-      x["methods"][m.method] = {{"std_dph", m.table2.std_after_dph},
-                                {"mae_dph", m.table2.mae_dph},
-                                {"mean_rmse_deg", m.mean_rmse_deg},
-                                {"fitness_value", m.fitness_value},
-                                {"hyperparameters", h},
-                                {"train_s", m.train_seconds}};
+      x["methods"][to_string(m.method)] = {{"std_dph", m.table2.std_after_dph},
+                                           {"mae_dph", m.table2.mae_dph},
+                                           {"mean_rmse_deg", m.mean_rmse_deg},
+                                           {"fitness_value", m.fitness_value},
+                                           {"hyperparameters", h},
+                                           {"train_s", m.train_seconds}};
     }
     x["elapsed_s"] = s.seconds;
     per.push_back(x);
@@ -316,13 +322,14 @@ std::string paper_markdown(const PaperResult& r) {
   md << "## Table 1 — SSA-SVR's tuned parameters\n\n| | fogdrift | paper |\n|---|---|---|\n";
   md << fmt::format(
       "| C | {} | {:.4f} |\n",
-      pm(over_seeds(r, [](const SeedRun& s) { return s.method("ssa-svr").hyperparameter("C"); }),
+      pm(over_seeds(r,
+                    [](const SeedRun& s) { return s.method(Method::ssa_svr).hyperparameter("C"); }),
          2),
       kPaperC);
   md << fmt::format(
       "| σ | {} | {:.4f} |\n\n",
-      pm(over_seeds(r,
-                    [](const SeedRun& s) { return s.method("ssa-svr").hyperparameter("sigma"); }),
+      pm(over_seeds(
+             r, [](const SeedRun& s) { return s.method(Method::ssa_svr).hyperparameter("sigma"); }),
          3),
       kPaperSigma);
   md << "fogdrift's C is for the standardised target and σ for standardised features; the "
@@ -333,13 +340,13 @@ std::string paper_markdown(const PaperResult& r) {
   md << fmt::format("| denoised data | – | – | {} | {:.4f} |\n",
                     pm(over_seeds(r, [](const SeedRun& s) { return s.denoised_std_dph; })),
                     kPaperDenoisedStd);
-  for (std::string_view name : kPaperMethods) {
-    const std::string m(name);
+  for (const Method method : kPaperMethods) {
+    const std::string m = to_string(method);
     md << fmt::format(
         "| {} | {} | {} | {} | {} |\n", m,
-        pm(over_seeds(r, [&](const SeedRun& s) { return s.method(m).table2.mae_dph; })),
+        pm(over_seeds(r, [&](const SeedRun& s) { return s.method(method).table2.mae_dph; })),
         paper_or_dash(kPaperTable2, m, false),
-        pm(over_seeds(r, [&](const SeedRun& s) { return s.method(m).table2.std_after_dph; })),
+        pm(over_seeds(r, [&](const SeedRun& s) { return s.method(method).table2.std_after_dph; })),
         paper_or_dash(kPaperTable2, m, true));
   }
   md << "\n";
@@ -361,11 +368,12 @@ std::string paper_markdown(const PaperResult& r) {
   table3_row(
       "raw", [](const SeedRun& s) -> const std::vector<double>& { return s.raw_rmse_deg; },
       [](const SeedRun& s) { return s.raw_mean_rmse_deg; });
-  for (std::string_view name : kPaperMethods) {
-    const std::string m(name);
+  for (const Method method : kPaperMethods) {
+    const std::string m = to_string(method);
     table3_row(
-        m, [&](const SeedRun& s) -> const std::vector<double>& { return s.method(m).rmse_deg; },
-        [&](const SeedRun& s) { return s.method(m).mean_rmse_deg; });
+        m,
+        [&](const SeedRun& s) -> const std::vector<double>& { return s.method(method).rmse_deg; },
+        [&](const SeedRun& s) { return s.method(method).mean_rmse_deg; });
   }
   if (has_oracle(r))
     table3_row(
@@ -457,16 +465,16 @@ std::string paper_markdown(const PaperResult& r) {
     for (std::size_t a = 0; a < r.options.start_ups.size(); ++a)
       md << fmt::format(" {:.4f} |",
                         mean_at(a, [](const SeedRun& s) { return s.start_up_floor_rmse_deg; }));
-    for (std::string_view name : kPaperMethods) {
-      const std::string m(name);
+    for (const Method method : kPaperMethods) {
+      const std::string m = to_string(method);
       md << "\n| " << m << " |";
       for (std::size_t a = 0; a < r.options.start_ups.size(); ++a) {
         const double raw = mean_at(a, [](const SeedRun& s) { return s.start_up_raw_rmse_deg; });
         const double floor = mean_at(a, [](const SeedRun& s) { return s.start_up_floor_rmse_deg; });
         const double comp =
-            mean_at(a, [&](const SeedRun& s) { return s.method(m).start_up_rmse_deg; });
-        const double off =
-            mean_at(a, [&](const SeedRun& s) { return s.method(m).start_up_unguarded_rmse_deg; });
+            mean_at(a, [&](const SeedRun& s) { return s.method(method).start_up_rmse_deg; });
+        const double off = mean_at(
+            a, [&](const SeedRun& s) { return s.method(method).start_up_unguarded_rmse_deg; });
         md << fmt::format(" {:.4f} ({:.4f}), {:.0f} % |", comp, off,
                           100 * eval::share_removed(raw, comp, floor));
       }
@@ -507,8 +515,9 @@ std::string paper_markdown(const PaperResult& r) {
         "|---|---|---|---|---|---|---|\n",
         r.seeds.front().seed);
     for (const FitnessRow& f : r.fitness) {
-      md << fmt::format("| {} | {:.3g} | {:.3g} | {:.4f} | {:.4f} | {:.4f} | {:.4f} |\n", f.fitness,
-                        f.c, f.sigma, f.fitness_value, f.std_dph, f.mae_dph, f.mean_rmse_deg);
+      md << fmt::format("| {} | {:.3g} | {:.3g} | {:.4f} | {:.4f} | {:.4f} | {:.4f} |\n",
+                        tune::to_string(f.fitness), f.c, f.sigma, f.fitness_value, f.std_dph,
+                        f.mae_dph, f.mean_rmse_deg);
     }
     md << fmt::format(
         "\n`train` is the paper's fitness, the RMSE on the training rows themselves; `cv` "
@@ -521,13 +530,13 @@ std::string paper_markdown(const PaperResult& r) {
   md << "## Per seed\n\n| seed | denoised STD | SSA-SVR STD | BP STD | raw NF ° | SSA-SVR NF ° "
         "| stable ° | SSA-SVR C | σ | s |\n|---|---|---|---|---|---|---|---|---|---|\n";
   for (const SeedRun& s : r.seeds) {
-    const MethodRun& ssa = s.method("ssa-svr");
+    const MethodRun& ssa = s.method(Method::ssa_svr);
     md << fmt::format(
         "| {} | {:.4f} | {:.4f} | {:.4f} | {:.4f} | {:.4f} | {:.4f} | {:.3g} | {:.3g} | {:.0f} "
         "|\n",
-        s.seed, s.denoised_std_dph, ssa.table2.std_after_dph, s.method("bp").table2.std_after_dph,
-        s.raw_mean_rmse_deg, ssa.mean_rmse_deg, s.stable_rmse_deg, ssa.hyperparameter("C"),
-        ssa.hyperparameter("sigma"), s.seconds);
+        s.seed, s.denoised_std_dph, ssa.table2.std_after_dph,
+        s.method(Method::bp).table2.std_after_dph, s.raw_mean_rmse_deg, ssa.mean_rmse_deg,
+        s.stable_rmse_deg, ssa.hyperparameter("C"), ssa.hyperparameter("sigma"), s.seconds);
   }
   md << "\n## Figures\n\n";
   for (const Figure& f : r.figures) {

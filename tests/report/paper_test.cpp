@@ -50,11 +50,11 @@ TEST(Paper, RunsEveryMethodOnEverySeedAndReportsIt) {
     EXPECT_LT(s.oracle_mean_rmse_deg, s.raw_mean_rmse_deg);
     EXPECT_DOUBLE_EQ(s.oracle_mean_rmse_deg, (s.oracle_rmse_deg[0] + s.oracle_rmse_deg[1]) / 2);
     for (const MethodRun& m : s.methods) {
-      EXPECT_EQ(m.rmse_deg.size(), 2u) << m.method;
+      EXPECT_EQ(m.rmse_deg.size(), 2u) << to_string(m.method);
       // Every model compensates part of the drift on the test repetition.
-      EXPECT_LT(m.table2.std_after_dph, s.denoised_std_dph) << m.method;
-      EXPECT_EQ(m.table2.std_before_dph, s.denoised_std_dph) << m.method;
-      EXPECT_TRUE(std::isfinite(m.mean_rmse_deg)) << m.method;
+      EXPECT_LT(m.table2.std_after_dph, s.denoised_std_dph) << to_string(m.method);
+      EXPECT_EQ(m.table2.std_before_dph, s.denoised_std_dph) << to_string(m.method);
+      EXPECT_TRUE(std::isfinite(m.mean_rmse_deg)) << to_string(m.method);
     }
   }
   // The two seeds simulate different campaigns.
@@ -62,16 +62,16 @@ TEST(Paper, RunsEveryMethodOnEverySeedAndReportsIt) {
   // Studies on the first seed: every calibration temperature, SSA-SVR and BP.
   ASSERT_EQ(r.loto.size(), 6u);
   EXPECT_EQ(r.loto[0].temp_degc, 0.0);
-  EXPECT_EQ(r.loto[0].method, "ssa-svr");
-  EXPECT_EQ(r.loto[1].method, "bp");
+  EXPECT_EQ(r.loto[0].method, Method::ssa_svr);
+  EXPECT_EQ(r.loto[1].method, Method::bp);
   for (const LotoRow& l : r.loto) {
     EXPECT_GT(l.denoised_std_dph, 0.0);
     EXPECT_GT(l.std_loto_dph, 0.0);
   }
   ASSERT_EQ(r.fitness.size(), 2u);
-  EXPECT_EQ(r.fitness[0].fitness, "cv");
-  EXPECT_EQ(r.fitness[1].fitness, "train");
-  EXPECT_EQ(r.fitness[0].c, r.seeds[0].method("ssa-svr").hyperparameter("C"));
+  EXPECT_EQ(r.fitness[0].fitness, tune::Fitness::cv);
+  EXPECT_EQ(r.fitness[1].fitness, tune::Fitness::train);
+  EXPECT_EQ(r.fitness[0].c, r.seeds[0].method(Method::ssa_svr).hyperparameter("C"));
   EXPECT_EQ(r.figures.size(), 5u);
 
   // The JSON follows the schema.
@@ -79,8 +79,8 @@ TEST(Paper, RunsEveryMethodOnEverySeedAndReportsIt) {
   EXPECT_GT(j["table1"]["C"].get<double>(), 0.0);
   EXPECT_TRUE(j["table1"].contains("sigma_sd"));
   EXPECT_TRUE(j["table2"]["denoised"].contains("std_dph"));
-  for (std::string_view m : kPaperMethods) {
-    const std::string name(m);
+  for (const Method method : kPaperMethods) {
+    const std::string name = to_string(method);
     EXPECT_TRUE(j["table2"][name].contains("mae_dph")) << name;
     EXPECT_TRUE(j["table2"][name].contains("std_dph_sd")) << name;
     EXPECT_EQ(j["table3"][name]["rmse_deg"].size(), 2u) << name;
@@ -118,8 +118,9 @@ TEST(Paper, RunsEveryMethodOnEverySeedAndReportsIt) {
     EXPECT_NEAR(j["goals"]["ssa_removed_by_start_up"][a].get<double>(),
                 (raw * raw - comp * comp) / (raw * raw - floor * floor), 1e-12)
         << a;
-    for (std::string_view m : kPaperMethods) {
-      const bool worse_than_raw = x[std::string(m)]["mean_deg"].get<double>() > raw;
+    for (const Method method : kPaperMethods) {
+      const std::string m = to_string(method);
+      const bool worse_than_raw = x[m]["mean_deg"].get<double>() > raw;
       bool named = false;
       for (const auto& w : j["goals"]["worse_than_raw"])
         named = named || w == fmt::format("{} under {}", m, a);

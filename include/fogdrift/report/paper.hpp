@@ -12,6 +12,7 @@
 //      cross-validation.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <functional>
 #include <string>
@@ -20,6 +21,7 @@
 
 #include "fogdrift/eval/metrics.hpp"
 #include "fogdrift/mlp.hpp"
+#include "fogdrift/model.hpp"
 #include "fogdrift/report/figure.hpp"
 #include "fogdrift/sim/instrument.hpp"
 #include "fogdrift/sim/scenarios.hpp"
@@ -29,7 +31,8 @@
 namespace fogdrift::report {
 
 /// The compared methods, in the paper's order (Table 2, Table 3).
-inline constexpr std::string_view kPaperMethods[] = {"bp", "svr", "pso-svr", "gwo-svr", "ssa-svr"};
+inline constexpr std::array<Method, 5> kPaperMethods = {Method::bp, Method::svr, Method::pso_svr,
+                                                        Method::gwo_svr, Method::ssa_svr};
 
 struct PaperOptions {
   std::size_t seeds = 5;         ///< independent repetitions of the whole experiment, ≥ 1
@@ -76,7 +79,7 @@ void validate(const PaperOptions& options);
 
 /// One method on one seed.
 struct MethodRun {
-  std::string method;
+  Method method = Method::ssa_svr;
   eval::CompensationMetrics table2;  ///< on the test repetition, pooled
   std::vector<double> rmse_deg;      ///< Table 3: per north-finding temperature
   double mean_rmse_deg = 0;          ///< mean of rmse_deg, as the paper's "mean" column
@@ -105,14 +108,14 @@ struct SeedRun {
   std::vector<double> start_up_raw_rmse_deg, start_up_floor_rmse_deg;
   std::vector<MethodRun> methods;  ///< in kPaperMethods order
   double seconds = 0;
-  const MethodRun& method(std::string_view name) const;
+  const MethodRun& method(Method m) const;  ///< throws std::out_of_range if not run
 };
 
 /// Leave-one-temperature-out: trained without every recording of one calibration temperature,
 /// tested on that temperature's test recording; beside the model trained on everything.
 struct LotoRow {
   double temp_degc = 0;
-  std::string method;  ///< "ssa-svr" (its tuned C, σ refitted) or "bp"
+  Method method = Method::ssa_svr;  ///< ssa_svr (its tuned C, σ refitted) or bp
   double denoised_std_dph = 0;
   double std_all_dph = 0;   ///< compensated STD, model trained on every temperature
   double std_loto_dph = 0;  ///< compensated STD, this temperature left out
@@ -122,7 +125,7 @@ struct LotoRow {
 
 /// SSA-SVR tuned with each fitness.
 struct FitnessRow {
-  std::string fitness;  ///< "cv" or "train"
+  tune::Fitness fitness = tune::Fitness::cv;
   double c = 0, sigma = 0;
   double fitness_value = 0;  ///< its own fitness at the optimum
   double std_dph = 0;        ///< Table 2 compensated STD
