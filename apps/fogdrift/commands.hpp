@@ -5,6 +5,9 @@
 #include <CLI/CLI.hpp>
 #include <cstdint>
 #include <string>
+#include <vector>
+
+#include "fogdrift/report/paper.hpp"
 
 namespace fogdrift::app {
 
@@ -23,27 +26,32 @@ void add_northfind(CLI::App& app);
 void add_paper(CLI::App& app);
 void add_stream(CLI::App& app);
 
+/// The experiment's defaults, which paper's flags take as theirs.
+const report::PaperOptions& paper_defaults();
+/// "a,b,c" of approaches.
+std::string approach_list(const std::vector<sim::Approach>& approaches);
+
 /// fogdrift paper's options; fogdrift demo runs the same command with a smaller budget.
 struct PaperArgs {
   std::string out;
   bool force = false;
-  std::size_t seeds = 5;
-  std::uint64_t first_seed = 1;
-  std::size_t population = 10;
-  std::size_t iterations = 20;
-  std::string fitness = "cv";
-  std::string cv = "temperature";
-  std::size_t folds = 3;
-  double epsilon = 0.05;
-  bool search_epsilon = false;
-  std::string approach = "calibration";
-  std::string cal_approaches = "calibration,soaked,warm,ramping";
-  std::string start_ups = "calibration,soaked,warm,ramping";
-  int repetitions = 5;
+  std::size_t seeds = paper_defaults().seeds;
+  std::uint64_t first_seed = paper_defaults().first_seed;
+  std::size_t population = paper_defaults().population;
+  std::size_t iterations = paper_defaults().iterations;
+  std::string fitness = tune::to_string(paper_defaults().fitness);
+  std::string cv = tune::to_string(paper_defaults().cv.scheme);
+  std::size_t folds = paper_defaults().cv.folds;
+  double epsilon = paper_defaults().epsilon;
+  bool search_epsilon = paper_defaults().search_epsilon;
+  std::string approach = std::string(sim::to_string(paper_defaults().northfind.approach));
+  std::string cal_approaches = approach_list(paper_defaults().calibration.approaches);
+  std::string start_ups = approach_list(paper_defaults().start_ups);
+  int repetitions = paper_defaults().calibration.repetitions;
   std::string cal_temps;  ///< empty: the paper's −40 … 60 °C
   std::string nf_temps;   ///< empty: the paper's seven
-  int findings = 5;
-  bool no_studies = false;
+  int findings = paper_defaults().northfind.findings;
+  bool no_studies = !paper_defaults().studies;
   std::string instrument_file;
   unsigned threads = 0;
   bool json = false;

@@ -93,6 +93,18 @@ void run_paper_unnamed(const PaperArgs& a);
 
 }  // namespace
 
+const report::PaperOptions& paper_defaults() {
+  static const report::PaperOptions defaults;
+  return defaults;
+}
+
+std::string approach_list(const std::vector<sim::Approach>& approaches) {
+  std::string out;
+  for (sim::Approach a : approaches)
+    out += (out.empty() ? "" : ",") + std::string(sim::to_string(a));
+  return out;
+}
+
 void run_paper_command(const PaperArgs& a) {
   with_flags(kPaperFlags, [&] { run_paper_unnamed(a); });
 }

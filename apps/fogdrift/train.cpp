@@ -21,30 +21,34 @@
 namespace fogdrift::app {
 namespace {
 
+// The flags' defaults are the library's, so that they live in one place.
+const TrainOptions kTrain;
+const opt::RunOptions kRun;
+
 struct TrainArgs {
   std::string campaign;
   std::string output;
-  std::string method = "ssa-svr";
-  std::string fitness = "cv";
+  std::string method = to_string(kTrain.method);
+  std::string fitness = tune::to_string(kTrain.tune.fitness);
   std::string features = "auto";
-  std::string cv = "auto";
-  std::string differentiator = "centred";
+  std::string cv = tune::to_string(kTrain.tune.cv.scheme);
+  std::string differentiator =
+      std::string(signal::to_string(DatasetOptions{}.preprocessing.rates.causality));
   std::string block_s = "auto";
   std::string rate_window_s = "auto";
-  std::size_t folds = 3;
-  std::size_t population = 20;
-  std::size_t iterations = 50;
-  std::uint64_t seed = 1;
+  std::size_t folds = kTrain.tune.cv.folds;
+  std::size_t population = kRun.population;
+  std::size_t iterations = kRun.iterations;
+  std::uint64_t seed = kRun.seed;
   unsigned threads = 0;
-  // The library's defaults, so that they live in one place.
   double c_min = tune::SearchSpace{}.c_min, c_max = tune::SearchSpace{}.c_max,
          sigma_min = tune::SearchSpace{}.sigma_min, sigma_max = tune::SearchSpace{}.sigma_max,
          epsilon = tune::SearchSpace{}.epsilon;
   bool search_epsilon = false;
   bool auto_box = false;
   bool no_denoise = false;
-  std::size_t hidden = 10;
-  std::size_t max_degree = 3;
+  std::size_t hidden = kTrain.mlp.hidden;
+  std::size_t max_degree = kTrain.poly_max_degree;
   bool json = false;
   bool quiet = false;
 };
