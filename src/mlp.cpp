@@ -6,6 +6,8 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <nlohmann/json.hpp>
+#include <string>
 
 #include "fogdrift/error.hpp"
 #include "fogdrift/random.hpp"
@@ -137,6 +139,45 @@ MlpFit fit_mlp(const svr::Data& train, const svr::Data& validation, const MlpOpt
   out.summary.seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return out;
+}
+
+std::string to_json(const Mlp& m) {
+  const nlohmann::ordered_json j = {
+      {"activation", "tanh"}, {"inputs", m.inputs}, {"hidden", m.hidden}, {"w1", m.w1},
+      {"b1", m.b1},           {"w2", m.w2},         {"b2", m.b2}};
+  return j.dump();
+}
+
+Mlp mlp_from_json(const std::string& text, const std::string& source) {
+  auto fail = [&](const std::string& where, const std::string& rule) {
+    throw InputError(source, 0, 0, fmt::format("{}: {}", where, rule));
+  };
+  Mlp n;
+  std::string where = "(top level)";
+  try {
+    const auto r = nlohmann::json::parse(text);
+    where = "activation";
+    if (r.contains("activation") && r.at("activation").get<std::string>() != "tanh")
+      fail(where, "only tanh networks are written by fogdrift");
+    where = "inputs";
+    n.inputs = r.at("inputs").get<std::size_t>();
+    where = "hidden";
+    n.hidden = r.at("hidden").get<std::size_t>();
+    where = "w1";
+    n.w1 = r.at("w1").get<std::vector<double>>();
+    where = "b1";
+    n.b1 = r.at("b1").get<std::vector<double>>();
+    where = "w2";
+    n.w2 = r.at("w2").get<std::vector<double>>();
+    where = "b2";
+    n.b2 = r.at("b2").get<double>();
+  } catch (const nlohmann::json::exception& e) {
+    fail(where, fmt::format("missing or mistyped field ({})", e.what()));
+  }
+  if (n.w1.size() != n.hidden * n.inputs || n.b1.size() != n.hidden || n.w2.size() != n.hidden)
+    fail("w1",
+         fmt::format("weights do not match {} inputs and {} hidden units", n.inputs, n.hidden));
+  return n;
 }
 
 }  // namespace fogdrift

@@ -119,30 +119,18 @@ RecordingPrediction CompensationModel::predict(const Recording& recording, bool 
 
 namespace {
 
+// The regressor object of the model file: its type, then the regressor's own JSON.
 ojson regressor_json(const std::variant<svr::Model, Mlp, Poly>& regressor) {
-  if (const auto* m = std::get_if<svr::Model>(&regressor)) {
-    ojson j = ojson::parse(svr::to_json(*m));
+  auto typed = [](const char* type, const std::string& text) {
     ojson out;
-    out["type"] = "svr";
-    for (auto& [k, v] : j.items()) out[k] = v;
+    out["type"] = type;
+    const ojson own = ojson::parse(text);  // named: a temporary would die before the loop
+    for (const auto& [k, v] : own.items()) out[k] = v;
     return out;
-  }
-  if (const auto* m = std::get_if<Mlp>(&regressor)) {
-    return ojson{{"type", "mlp"},       {"activation", "tanh"}, {"inputs", m->inputs},
-                 {"hidden", m->hidden}, {"w1", m->w1},          {"b1", m->b1},
-                 {"w2", m->w2},         {"b2", m->b2}};
-  }
-  const Poly& p = std::get<Poly>(regressor);
-  ojson exps = ojson::array();
-  for (std::size_t t = 0; t < p.terms(); ++t)
-    exps.push_back(
-        std::vector<int>(p.exponents.begin() + static_cast<std::ptrdiff_t>(t * p.inputs),
-                         p.exponents.begin() + static_cast<std::ptrdiff_t>((t + 1) * p.inputs)));
-  return ojson{{"type", "poly"},
-               {"inputs", p.inputs},
-               {"degree", p.degree},
-               {"exponents", exps},
-               {"coef", p.coef}};
+  };
+  if (const auto* m = std::get_if<svr::Model>(&regressor)) return typed("svr", svr::to_json(*m));
+  if (const auto* m = std::get_if<Mlp>(&regressor)) return typed("mlp", to_json(*m));
+  return typed("poly", to_json(std::get<Poly>(regressor)));
 }
 
 }  // namespace
@@ -252,40 +240,15 @@ CompensationModel compensation_model_from_json(const std::string& text, const st
     where = "regressor";
     const ojson& r = doc.at("regressor");
     const std::string type = r.at("type").get<std::string>();
+    ojson own = r;  // the regressor's own JSON, without its type
+    own.erase("type");
+    const std::string where_regressor = source + " (regressor)";
     if (type == "svr") {
-      ojson svr_doc = r;
-      svr_doc.erase("type");
-      m.regressor = svr::model_from_json(svr_doc.dump(), source + " (regressor)");
+      m.regressor = svr::model_from_json(own.dump(), where_regressor);
     } else if (type == "mlp") {
-      Mlp n;
-      n.inputs = r.at("inputs").get<std::size_t>();
-      n.hidden = r.at("hidden").get<std::size_t>();
-      n.w1 = r.at("w1").get<std::vector<double>>();
-      n.b1 = r.at("b1").get<std::vector<double>>();
-      n.w2 = r.at("w2").get<std::vector<double>>();
-      n.b2 = r.at("b2").get<double>();
-      if (n.w1.size() != n.hidden * n.inputs || n.b1.size() != n.hidden || n.w2.size() != n.hidden)
-        fail("regressor",
-             fmt::format("weights do not match {} inputs and {} hidden units", n.inputs, n.hidden));
-      m.regressor = std::move(n);
+      m.regressor = mlp_from_json(own.dump(), where_regressor);
     } else if (type == "poly") {
-      Poly p;
-      p.inputs = r.at("inputs").get<std::size_t>();
-      p.degree = r.at("degree").get<std::size_t>();
-      p.coef = r.at("coef").get<std::vector<double>>();
-      const auto exps = r.at("exponents").get<std::vector<std::vector<int>>>();
-      if (exps.size() != p.coef.size())
-        fail("regressor.exponents", "must hold one row per coefficient");
-      for (const auto& e : exps) {
-        if (e.size() != p.inputs)
-          fail("regressor.exponents", "each row needs one exponent per input");
-        for (int v : e) {
-          if (v < 0 || v > static_cast<int>(p.degree))
-            fail("regressor.exponents", fmt::format("exponent {} is outside 0 … degree", v));
-          p.exponents.push_back(static_cast<std::uint8_t>(v));
-        }
-      }
-      m.regressor = std::move(p);
+      m.regressor = poly_from_json(own.dump(), where_regressor);
     } else {
       fail("regressor.type", fmt::format("'{}' is not svr, mlp or poly", type));
     }

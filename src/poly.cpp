@@ -3,6 +3,8 @@
 #include <fmt/format.h>
 
 #include <Eigen/Dense>
+#include <nlohmann/json.hpp>
+#include <string>
 
 #include "fogdrift/error.hpp"
 
@@ -70,6 +72,49 @@ Poly fit_poly(const svr::Data& train, std::size_t degree, double ridge) {
   for (Eigen::Index m = 1; m < normal.rows(); ++m) normal(m, m) += lambda;
   const Eigen::VectorXd c = normal.ldlt().solve(a.transpose() * y);
   p.coef.assign(c.data(), c.data() + c.size());
+  return p;
+}
+
+std::string to_json(const Poly& p) {
+  nlohmann::ordered_json exps = nlohmann::ordered_json::array();
+  for (std::size_t t = 0; t < p.terms(); ++t)
+    exps.push_back(
+        std::vector<int>(p.exponents.begin() + static_cast<std::ptrdiff_t>(t * p.inputs),
+                         p.exponents.begin() + static_cast<std::ptrdiff_t>((t + 1) * p.inputs)));
+  const nlohmann::ordered_json j = {
+      {"inputs", p.inputs}, {"degree", p.degree}, {"exponents", exps}, {"coef", p.coef}};
+  return j.dump();
+}
+
+Poly poly_from_json(const std::string& text, const std::string& source) {
+  auto fail = [&](const std::string& where, const std::string& rule) {
+    throw InputError(source, 0, 0, fmt::format("{}: {}", where, rule));
+  };
+  Poly p;
+  std::vector<std::vector<int>> exps;
+  std::string where = "(top level)";
+  try {
+    const auto r = nlohmann::json::parse(text);
+    where = "inputs";
+    p.inputs = r.at("inputs").get<std::size_t>();
+    where = "degree";
+    p.degree = r.at("degree").get<std::size_t>();
+    where = "coef";
+    p.coef = r.at("coef").get<std::vector<double>>();
+    where = "exponents";
+    exps = r.at("exponents").get<std::vector<std::vector<int>>>();
+  } catch (const nlohmann::json::exception& e) {
+    fail(where, fmt::format("missing or mistyped field ({})", e.what()));
+  }
+  if (exps.size() != p.coef.size()) fail("exponents", "must hold one row per coefficient");
+  for (const auto& e : exps) {
+    if (e.size() != p.inputs) fail("exponents", "each row needs one exponent per input");
+    for (int v : e) {
+      if (v < 0 || v > static_cast<int>(p.degree))
+        fail("exponents", fmt::format("exponent {} is outside 0 … degree", v));
+      p.exponents.push_back(static_cast<std::uint8_t>(v));
+    }
+  }
   return p;
 }
 

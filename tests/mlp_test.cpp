@@ -80,5 +80,28 @@ TEST(Mlp, RejectsImpossibleOptions) {
   EXPECT_THROW(fit_mlp(train, {}, o), OptionError);
 }
 
+TEST(Mlp, JsonRoundTripAndBadSizes) {
+  Mlp m;
+  m.inputs = 2;
+  m.hidden = 2;
+  m.w1 = {0.1, -0.2, 0.3, 0.4};
+  m.b1 = {0.01, -0.02};
+  m.w2 = {1.5, -0.5};
+  m.b2 = 0.25;
+  const Mlp back = mlp_from_json(to_json(m), "m.json");
+  const double x[2] = {0.7, -1.1};
+  EXPECT_EQ(back.predict(x), m.predict(x));  // every double written to round-trip
+  m.b1.pop_back();
+  try {
+    mlp_from_json(to_json(m), "m.json");
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.file(), "m.json");
+    EXPECT_NE(e.message().find("weights do not match 2 inputs and 2 hidden units"),
+              std::string::npos);
+  }
+  EXPECT_THROW(mlp_from_json(R"({"inputs": 2})", "m.json"), InputError);
+}
+
 }  // namespace
 }  // namespace fogdrift

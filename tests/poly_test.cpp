@@ -69,5 +69,25 @@ TEST(Poly, RejectsImpossibleDegrees) {
   EXPECT_THROW(fit_poly(data, 2), OptionError);  // 6 terms, 3 rows
 }
 
+TEST(Poly, JsonRoundTripAndBadExponents) {
+  Poly p;
+  p.inputs = 2;
+  p.degree = 2;
+  p.exponents = monomials(2, 2);
+  p.coef = {0.5, 1.0, -2.0, 0.25, 0.125, -0.75};
+  const Poly back = poly_from_json(to_json(p), "p.json");
+  const double x[2] = {0.3, -1.7};
+  EXPECT_EQ(back.predict(x), p.predict(x));
+  EXPECT_EQ(back.exponents, p.exponents);
+  p.exponents[3] = 3;  // above the degree
+  try {
+    poly_from_json(to_json(p), "p.json");
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_NE(e.message().find("exponents: exponent 3 is outside 0 … degree"), std::string::npos)
+        << e.what();
+  }
+}
+
 }  // namespace
 }  // namespace fogdrift

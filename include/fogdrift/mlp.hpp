@@ -38,6 +38,13 @@ struct Mlp {
   double predict(const double* x) const noexcept;
 };
 
+/// The network as JSON text, the regressor object of a model file without its "type":
+/// {"activation": "tanh", "inputs", "hidden", "w1", "b1", "w2", "b2"}.
+std::string to_json(const Mlp& mlp);
+/// Parses to_json's text. Throws InputError(source, 0, 0, "FIELD: rule") for a missing or
+/// mistyped field, another activation, or weights whose sizes disagree.
+Mlp mlp_from_json(const std::string& text, const std::string& source);
+
 enum class MlpStatus { early_stopped, epoch_limit };
 
 struct MlpSummary {

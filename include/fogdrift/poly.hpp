@@ -6,6 +6,7 @@
 #pragma once
 
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include "fogdrift/svr/kernel.hpp"
@@ -22,6 +23,13 @@ struct Poly {
   /// ŷ for one sample of `inputs` values; no allocation.
   double predict(const double* x) const noexcept;
 };
+
+/// The polynomial as JSON text, the regressor object of a model file without its "type":
+/// {"inputs", "degree", "exponents" (one row of exponents per term), "coef"}.
+std::string to_json(const Poly& poly);
+/// Parses to_json's text. Throws InputError(source, 0, 0, "FIELD: rule") for a missing or
+/// mistyped field, an exponent outside 0 … degree, or rows that disagree with the inputs.
+Poly poly_from_json(const std::string& text, const std::string& source);
 
 /// The monomials of total degree ≤ `degree` in `inputs` variables, in graded order
 /// (C(inputs + degree, degree) of them), as rows of exponents.
