@@ -110,6 +110,9 @@ Table parse(std::string_view text, const std::string& file, const ReadOptions& o
     pos = end + 1;
     ++line_no;
     if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
+    if (line_no <= options.skip_lines) continue;
+    if (options.comment != 0 && !trim(line).empty() && trim(line).front() == options.comment)
+      continue;
     if (trim(line).empty()) {
       if (!have_header) {
         throw InputError(file, line_no, 0, "empty line where the header row was expected");

@@ -24,7 +24,66 @@ bool is_fogdrift_column(std::string_view name) {
   return false;
 }
 
+// Days since 1970-01-01 of a proleptic Gregorian date (the civil-from-days inverse).
+long long days_from_civil(long long y, unsigned m, unsigned d) {
+  y -= m <= 2;
+  const long long era = (y >= 0 ? y : y - 399) / 400;
+  const auto yoe = static_cast<unsigned>(y - era * 400);
+  const unsigned doy = (153 * (m > 2 ? m - 3 : m + 9) + 2) / 5 + d - 1;
+  const unsigned doe = yoe * 365 + yoe / 4 - yoe / 100 + doy;
+  return era * 146097 + static_cast<long long>(doe) - 719468;
+}
+
 }  // namespace
+
+std::optional<double> parse_datetime(std::string_view t) {
+  while (!t.empty() && t.front() == ' ') t.remove_prefix(1);
+  while (!t.empty() && t.back() == ' ') t.remove_suffix(1);
+  auto digits = [&](std::size_t at, std::size_t n) -> std::optional<int> {
+    if (at + n > t.size()) return std::nullopt;
+    int v = 0;
+    for (std::size_t k = at; k < at + n; ++k) {
+      if (t[k] < '0' || t[k] > '9') return std::nullopt;
+      v = v * 10 + (t[k] - '0');
+    }
+    return v;
+  };
+  const auto y = digits(0, 4), mo = digits(5, 2), d = digits(8, 2), h = digits(11, 2),
+             mi = digits(14, 2), se = digits(17, 2);
+  if (!y || !mo || !d || !h || !mi || !se || t[4] != '-' || t[7] != '-' ||
+      (t[10] != 'T' && t[10] != ' ') || t[13] != ':' || t[16] != ':')
+    return std::nullopt;
+  if (*mo < 1 || *mo > 12 || *d < 1 || *d > 31 || *h > 23 || *mi > 59 || *se > 60)
+    return std::nullopt;
+  std::size_t pos = 19;
+  double fraction = 0;
+  if (pos < t.size() && (t[pos] == '.' || t[pos] == ',')) {
+    double scale = 0.1;
+    ++pos;
+    if (pos >= t.size() || t[pos] < '0' || t[pos] > '9') return std::nullopt;
+    while (pos < t.size() && t[pos] >= '0' && t[pos] <= '9') {
+      fraction += scale * (t[pos] - '0');
+      scale /= 10;
+      ++pos;
+    }
+  }
+  long long zone_s = 0;
+  if (pos < t.size()) {
+    if (t[pos] == 'Z' && pos + 1 == t.size()) {
+      ++pos;
+    } else if ((t[pos] == '+' || t[pos] == '-') && pos + 6 == t.size() && t[pos + 3] == ':') {
+      const auto zh = digits(pos + 1, 2), zm = digits(pos + 4, 2);
+      if (!zh || !zm) return std::nullopt;
+      zone_s = (t[pos] == '+' ? 1 : -1) * (*zh * 3600LL + *zm * 60LL);
+      pos += 6;
+    } else {
+      return std::nullopt;
+    }
+  }
+  const long long days = days_from_civil(*y, static_cast<unsigned>(*mo), static_cast<unsigned>(*d));
+  const long long whole = days * 86400LL + *h * 3600LL + *mi * 60LL + *se - zone_s;
+  return static_cast<double>(whole) + fraction;
+}
 
 LinearConversion parse_unit(std::string_view column, std::string_view unit) {
   const std::string option = fmt::format("--unit {}={}", column, unit);
@@ -33,11 +92,56 @@ LinearConversion parse_unit(std::string_view column, std::string_view unit) {
     throw OptionError(
         option, fmt::format("unknown unit '{}' for {} (accepted: {})", unit, column, accepted));
   };
+  if (!is_fogdrift_column(column))
+    throw OptionError(option, fmt::format("'{}' is not a fogdrift column", column));
+  // Raw counts and signed registers, for any column: value = raw·SCALE + OFFSET in the column's
+  // own unit (°/h, °C, g, °, s).
+  if (starts_with(unit, "counts:")) {
+    const std::string_view rest = unit.substr(7);
+    const auto colon = rest.find(':');
+    if (colon == std::string_view::npos) {
+      throw OptionError(option,
+                        "counts needs a scale and an offset: counts:SCALE:OFFSET, "
+                        "meaning value = counts·SCALE + OFFSET in the column's unit");
+    }
+    const auto scale = csv::parse_number(rest.substr(0, colon));
+    const auto offset = csv::parse_number(rest.substr(colon + 1));
+    if (!scale || !offset || *scale == 0.0) {
+      throw OptionError(option, "counts:SCALE:OFFSET needs finite numbers and a non-zero SCALE");
+    }
+    return {*scale, *offset};
+  }
+  if (starts_with(unit, "int")) {
+    const std::string_view rest = unit.substr(3);
+    const auto c1 = rest.find(':');
+    const auto c2 = c1 == std::string_view::npos ? c1 : rest.find(':', c1 + 1);
+    const std::string_view bits = rest.substr(0, c1);
+    int n = 0;
+    for (int b : {8, 12, 16, 24, 32})
+      if (bits == std::to_string(b)) n = b;
+    if (n == 0 || c2 == std::string_view::npos) {
+      throw OptionError(
+          option,
+          "a signed register is intN:SCALE:OFFSET with N = 8, 12, 16, 24 or 32, "
+          "meaning value = register·SCALE + OFFSET in the column's unit, e.g. int16:0.0078125:0");
+    }
+    const auto scale = csv::parse_number(rest.substr(c1 + 1, c2 - c1 - 1));
+    const auto offset = csv::parse_number(rest.substr(c2 + 1));
+    if (!scale || !offset || *scale == 0.0) {
+      throw OptionError(option, "intN:SCALE:OFFSET needs finite numbers and a non-zero SCALE");
+    }
+    return {*scale, *offset, n};
+  }
   if (column == "time_s") {
     if (unit == "s") return {1.0, 0.0};
     if (unit == "ms") return {1e-3, 0.0};
     if (unit == "us") return {1e-6, 0.0};
-    return unknown("s, ms, us");
+    if (unit == "iso8601") {
+      LinearConversion c;
+      c.datetime = true;
+      return c;
+    }
+    return unknown("s, ms, us, iso8601 (2024-03-01 12:00:00.125, counted from the first stamp)");
   }
   if (column == "gyro_dph") {
     if (unit == "deg/h") return {1.0, 0.0};
@@ -51,41 +155,6 @@ LinearConversion parse_unit(std::string_view column, std::string_view unit) {
     if (unit == "degC") return {1.0, 0.0};
     if (unit == "K") return {1.0, -273.15};
     if (unit == "degF") return {5.0 / 9.0, -32.0 * 5.0 / 9.0};
-    if (starts_with(unit, "counts:")) {
-      const std::string_view rest = unit.substr(7);
-      const auto colon = rest.find(':');
-      if (colon == std::string_view::npos) {
-        throw OptionError(option,
-                          "counts needs a scale and an offset: counts:SCALE:OFFSET, "
-                          "meaning °C = counts·SCALE + OFFSET");
-      }
-      const auto scale = csv::parse_number(rest.substr(0, colon));
-      const auto offset = csv::parse_number(rest.substr(colon + 1));
-      if (!scale || !offset || *scale == 0.0) {
-        throw OptionError(option, "counts:SCALE:OFFSET needs finite numbers and a non-zero SCALE");
-      }
-      return {*scale, *offset};
-    }
-    if (starts_with(unit, "int")) {
-      const std::string_view rest = unit.substr(3);
-      const auto c1 = rest.find(':');
-      const auto c2 = c1 == std::string_view::npos ? c1 : rest.find(':', c1 + 1);
-      const std::string_view bits = rest.substr(0, c1);
-      int n = 0;
-      for (int b : {8, 12, 16, 24, 32})
-        if (bits == std::to_string(b)) n = b;
-      if (n == 0 || c2 == std::string_view::npos) {
-        throw OptionError(option,
-                          "a signed register is intN:SCALE:OFFSET with N = 8, 12, 16, 24 or 32, "
-                          "meaning °C = value·SCALE + OFFSET, e.g. int16:0.0078125:0");
-      }
-      const auto scale = csv::parse_number(rest.substr(c1 + 1, c2 - c1 - 1));
-      const auto offset = csv::parse_number(rest.substr(c2 + 1));
-      if (!scale || !offset || *scale == 0.0) {
-        throw OptionError(option, "intN:SCALE:OFFSET needs finite numbers and a non-zero SCALE");
-      }
-      return {*scale, *offset, n};
-    }
     return unknown("degC, K, degF, counts:SCALE:OFFSET, intN:SCALE:OFFSET");
   }
   if (column == "accel_x_g" || column == "accel_y_g") {
@@ -122,7 +191,8 @@ std::vector<Recording> import_recordings(const std::filesystem::path& path,
     }
   }
 
-  const csv::Table table = csv::read(path.string(), {options.delimiter});
+  const csv::Table table =
+      csv::read(path.string(), {options.delimiter, options.skip_lines, options.comment});
   const std::string& file = table.file;
   std::string available;
   for (const auto& h : table.header) available += (available.empty() ? "'" : ", '") + h + "'";
@@ -149,6 +219,23 @@ std::vector<Recording> import_recordings(const std::filesystem::path& path,
     values.reserve(table.rows.size());
     for (std::size_t i = 0; i < table.rows.size(); ++i) {
       const std::string& cell = table.rows[i][c];
+      if (options.hold_empty && !values.empty() &&
+          cell.find_first_not_of(" \t") == std::string::npos) {
+        values.push_back(values.back());  // a channel logged slower than the others
+        if (report) ++report->held[target];
+        continue;
+      }
+      if (conv.datetime) {
+        const auto seconds = parse_datetime(cell);
+        if (!seconds) {
+          throw InputError(file, table.row_line[i], c + 1,
+                           fmt::format("column '{}' (for {}): '{}' is not a date and time "
+                                       "(YYYY-MM-DD HH:MM:SS[.fff], T allowed, Z or ±HH:MM)",
+                                       table.header[c], target, cell));
+        }
+        values.push_back(*seconds);
+        continue;
+      }
       const auto v = csv::parse_number(cell, options.decimal_comma);
       if (!v) {
         throw InputError(file, table.row_line[i], c + 1,
@@ -278,7 +365,9 @@ std::vector<Recording> import_recordings(const std::filesystem::path& path,
         *x = std::move(h.signal);
       }
     }
-    if (options.time_from_zero) {
+    const auto time_conv = options.conversions.find("time_s");
+    const bool stamps = time_conv != options.conversions.end() && time_conv->second.datetime;
+    if (options.time_from_zero || stamps) {  // dates and times count from the first stamp
       const double t0 = cycle.time_s.front();
       for (double& t : cycle.time_s) t -= t0;
     }

@@ -105,5 +105,62 @@ TEST(Import, BadCellNamesForeignLineAndColumn) {
   EXPECT_THROW(import_recording(dir / "l.csv", o), OptionError);
 }
 
+TEST(ParseDatetime, AgainstPythonsDatetime) {
+  // Reference values from Python's datetime(..., tzinfo=timezone.utc).timestamp().
+  EXPECT_EQ(parse_datetime("1970-01-01T00:00:00Z"), 0.0);
+  EXPECT_EQ(parse_datetime("2000-01-01 00:00:00"), 946684800.0);
+  EXPECT_EQ(parse_datetime("1969-12-31 23:59:59"), -1.0);
+  // 12:34:56.5 at +02:00 is 10:34:56.5 UTC on a leap day.
+  EXPECT_EQ(parse_datetime("2024-02-29T12:34:56.5+02:00"), 1709202896.5);
+  EXPECT_EQ(parse_datetime(" 2024-02-29 10:34:56,500 "), 1709202896.5);
+  for (const char* bad : {"2024-02-29", "2024-13-01 00:00:00", "2024-02-29 10:34", "yesterday",
+                          "2024-02-29 10:34:56.", "2024-02-29 10:34:56+2"})
+    EXPECT_FALSE(parse_datetime(bad).has_value()) << bad;
+}
+
+TEST(Import, PreambleCommentsDatesAndSlowChannels) {
+  test::TempDir dir;
+  // A logger that writes its settings first, comments between rows, date-time stamps, and a
+  // thermometer read every other sample.
+  test::write_file(dir / "log.csv",
+                   "Logger v2.1\n"
+                   "serial,4711\n"
+                   "stamp,rate,temp\n"
+                   "2024-03-01 12:00:00.000,0.5,20.0\n"
+                   "# operator opened the chamber\n"
+                   "2024-03-01 12:00:00.500,0.6,\n"
+                   "2024-03-01 12:00:01.000,0.7,20.5\n");
+  ImportOptions o;
+  o.skip_lines = 2;
+  o.comment = '#';
+  o.hold_empty = true;
+  o.columns = {{"time_s", "stamp"}, {"gyro_dph", "rate"}, {"temp_fog_degc", "temp"}};
+  o.conversions = {{"time_s", parse_unit("time_s", "iso8601")}};
+  ImportReport report;
+  const Recording r = import_recording(dir / "log.csv", o, &report);
+  EXPECT_EQ(r.time_s, (std::vector<double>{0.0, 0.5, 1.0}));  // from the first stamp
+  EXPECT_EQ(r.temp_fog_degc, (std::vector<double>{20.0, 20.0, 20.5}));
+  EXPECT_EQ(report.held.at("temp_fog_degc"), 1u);
+  EXPECT_TRUE(r.temp_acc1_degc.empty());  // the unit has one thermometer
+  // Without --hold-empty the empty cell is an error on its line.
+  o.hold_empty = false;
+  try {
+    import_recording(dir / "log.csv", o);
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.line(), 6u);
+    EXPECT_EQ(e.column(), 3u);
+  }
+}
+
+TEST(ParseUnit, CountsAndRegistersForEveryColumn) {
+  // A MEMS gyro register: 131 counts per °/s, so °/h = counts · 3600/131.
+  const auto g = parse_unit("gyro_dph", "int16:27.480916030534353:0");
+  EXPECT_EQ(g.signed_bits, 16);
+  EXPECT_DOUBLE_EQ(131.0 * g.scale, 3600.0);
+  EXPECT_DOUBLE_EQ(parse_unit("accel_x_g", "counts:0.001:0").scale, 0.001);
+  EXPECT_THROW(parse_unit("time_s", "iso"), OptionError);
+}
+
 }  // namespace
 }  // namespace fogdrift

@@ -29,6 +29,9 @@ struct ImportArgs {
   bool decimal_comma = false;
   bool time_from_zero = false;
   bool drop_extra = false;
+  std::size_t skip_lines = 0;
+  std::string comment;
+  bool hold_empty = false;
   bool split_at_reset = false;
   double rate_hz = 0;
   double step_s = 0;
@@ -62,6 +65,8 @@ fs::path segment_path(const fs::path& target, std::size_t index, std::size_t cou
 
 /// How import treated one file, for people: spikes, grid, gaps and segments.
 void report(const ImportReport& imported, const std::vector<RegridSummary>& grids) {
+  for (const auto& [column, count] : imported.held)
+    std::cout << fmt::format("  empty cells: {} in {} took the value before\n", count, column);
   for (const auto& r : imported.outliers) {
     if (r.lines.empty()) {
       std::cout << fmt::format("  spikes: none in {}\n", r.column);
@@ -136,9 +141,10 @@ void add_import(CLI::App& app) {
       "  fogdrift import run7.csv -o run7_fd.csv --map time_s=\"t [ms]\" --unit time_s=ms \\\n"
       "    --map gyro_dph=\"Rate X [rad/s]\" --unit gyro_dph=rad/s \\\n"
       "    --map temp_fog_degc=T0 --unit temp_fog_degc=counts:0.0625:-40 ...\n"
-      "Units: time_s s|ms|us; gyro_dph deg/h|deg/s|rad/s|mrad/s|arcsec/s; temperatures\n"
-      "degC|K|degF|counts:SCALE:OFFSET (°C = counts·SCALE + OFFSET); accel_*_g g|mg|m/s2;\n"
-      "table_deg deg|rad; a signed register logged as unsigned counts: intN:SCALE:OFFSET.\n"
+      "Units: time_s s|ms|us|iso8601; gyro_dph deg/h|deg/s|rad/s|mrad/s|arcsec/s; temperatures\n"
+      "degC|K|degF; accel_*_g g|mg|m/s2; table_deg deg|rad; any column counts:SCALE:OFFSET\n"
+      "(value = counts·SCALE + OFFSET) or intN:SCALE:OFFSET (a signed register, also when logged\n"
+      "as its unsigned bit pattern).\n"
       "Jittery, bursty or gappy logs: --rate-hz R puts them on a uniform grid (what train needs),\n"
       "bridging gaps up to --max-gap-s and splitting at longer ones (out.csv -> out_1.csv, ...).\n"
       "Spikes: --hampel replaces samples more than --hampel-sigma local STDs from the median of\n"
@@ -156,6 +162,14 @@ void add_import(CLI::App& app) {
   cmd->add_flag("--time-from-zero", a->time_from_zero,
                 "Subtract the first time stamp (for loggers that count from their own boot)");
   cmd->add_flag("--drop-extra", a->drop_extra, "Do not keep unmapped columns");
+  cmd->add_option("--skip-lines", a->skip_lines,
+                  "Lines before the header to skip (a logger's preamble of settings)")
+      ->capture_default_str();
+  cmd->add_option("--comment", a->comment,
+                  "Lines starting with this character are comments, skipped (e.g. '#')");
+  cmd->add_flag("--hold-empty", a->hold_empty,
+                "An empty cell takes the value of the row before (a channel logged slower than "
+                "the others); the count per column is reported");
   cmd->add_flag("--split-at-reset", a->split_at_reset,
                 "A time stamp smaller than the one before is a power cycle: write one recording "
                 "per cycle (out.csv -> out_1.csv, out_2.csv, ...)");
@@ -201,6 +215,11 @@ void add_import(CLI::App& app) {
     o.time_from_zero = a->time_from_zero;
     o.keep_extra = !a->drop_extra;
     o.split_at_reset = a->split_at_reset;
+    o.skip_lines = a->skip_lines;
+    o.hold_empty = a->hold_empty;
+    if (a->comment.size() > 1)
+      throw OptionError("--comment", fmt::format("'{}' is not a single character", a->comment));
+    if (!a->comment.empty()) o.comment = a->comment[0];
     if (a->hampel) {
       o.outliers = signal::HampelOptions{a->hampel_half_window, a->hampel_sigma};
       if (!a->outlier_columns.empty()) o.outlier_columns = split_list(a->outlier_columns);

@@ -27,6 +27,10 @@ struct Table {
 
 struct ReadOptions {
   char delimiter = ',';  ///< field separator: ',' (default), ';' or '\t'
+  /// Lines before the header that are not part of the table (a logger's preamble), skipped.
+  std::size_t skip_lines = 0;
+  /// Lines whose first non-blank character is this one are comments, skipped anywhere; 0: none.
+  char comment = 0;
 };
 
 /// Reads and tokenises `path`. Throws InputError for: a missing or unreadable file, an empty file,

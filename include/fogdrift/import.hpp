@@ -3,11 +3,12 @@
 // Real loggers name their columns their own way and log rates in rad/s or °/s, time in ms, and
 // temperatures as raw sensor counts. Every conversion here is linear, value = raw·scale + offset,
 // and is given per fogdrift column by a unit name (docs/formats.md lists them all):
-//   time_s          s | ms | us
+//   time_s          s | ms | us | iso8601 (date and time, counted from the first stamp)
 //   gyro_dph        deg/h | deg/s | rad/s | mrad/s | arcsec/s
-//   temp_*_degc, chamber_degc   degC | K | degF | counts:SCALE:OFFSET  (°C = counts·SCALE + OFFSET)
-//                               | intN:SCALE:OFFSET (N-bit two's complement register, N = 8, 12,
-//                                 16, 24, 32, logged signed or as its unsigned bit pattern)
+//   temp_*_degc, chamber_degc   degC | K | degF
+//   any column      counts:SCALE:OFFSET (value = counts·SCALE + OFFSET in the column's unit)
+//                   | intN:SCALE:OFFSET (an N-bit two's complement register, N = 8, 12, 16, 24,
+//                     32, logged signed or as its unsigned bit pattern)
 //   accel_*_g       g | mg | m/s2
 //   table_deg       deg | rad
 #pragma once
@@ -29,8 +30,13 @@ namespace fogdrift {
 struct LinearConversion {
   double scale = 1.0;
   double offset = 0.0;
-  int signed_bits = 0;  ///< 0: the raw value as it is; N: an N-bit signed register
+  int signed_bits = 0;    ///< 0: the raw value as it is; N: an N-bit signed register
+  bool datetime = false;  ///< time_s only: an ISO 8601 date and time, read as seconds
 };
+
+/// Seconds since 1970-01-01 00:00:00 UTC of "YYYY-MM-DD[T| ]HH:MM:SS[.fraction][Z|±HH:MM]"
+/// (no zone: read as UTC); nothing for any other text.
+std::optional<double> parse_datetime(std::string_view text);
 
 /// The conversion named by `unit` for fogdrift column `column` (e.g. "gyro_dph", "rad/s").
 /// Throws OptionError naming "--unit COLUMN=UNIT" and the units that column accepts.
@@ -45,7 +51,12 @@ struct ImportOptions {
   char delimiter = ',';         ///< ',' | ';' | '\t'
   bool decimal_comma = false;   ///< numbers written "1,5" (needs a delimiter other than ',')
   bool time_from_zero = false;  ///< subtract the first time stamp (loggers that count from boot)
-  bool keep_extra = true;       ///< keep unmapped foreign columns as extra columns
+  std::size_t skip_lines = 0;   ///< lines before the header to skip (a logger's preamble)
+  char comment = 0;             ///< lines starting with this character are skipped; 0: none
+  /// An empty cell in a mapped column takes the value of the row before (channels logged slower
+  /// than the others); without this it is an error.
+  bool hold_empty = false;
+  bool keep_extra = true;  ///< keep unmapped foreign columns as extra columns
   /// A time stamp smaller than the one before is a power cycle (a logger counting from its own
   /// boot) and starts a new recording, its times as logged (time_from_zero applies to each);
   /// without this it is an error. Only import_recordings() accepts it.
@@ -66,6 +77,8 @@ struct ImportReport {
     std::vector<double> was, now;    ///< their values before and after, fogdrift units
   };
   std::vector<Replaced> outliers;  ///< one entry per column looked at, in outlier_columns order
+  /// With hold_empty: per fogdrift column, the number of empty cells that took the value before.
+  std::map<std::string, std::size_t> held;
 };
 
 /// Reads the foreign file `path` and returns a validated recording. Throws InputError naming the

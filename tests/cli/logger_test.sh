@@ -116,6 +116,14 @@ check "compensate one thermometer" run 0 "$fd" compensate "$work/one.json" "$wor
 check "stream without the absent columns" bash -c "'$fd' stream '$work/one.json' '$work/one/one_2_02.csv' --rate-hz 0.016666666666666666 --no-guard >'$work/one_stream.csv'"
 check "stream has a row per sample" test "$(wc -l <"$work/one_stream.csv")" -eq 61
 
+# --- a preamble, comments, date-time stamps and a slower thermometer ----------------------------
+printf 'Logger v2.1\nserial,4711\nstamp;rate;temp\n2024-03-01 12:00:00.000;0,5;20\n# door opened\n2024-03-01 12:00:00.500;0,6;\n2024-03-01 12:00:01.000;0,7;20,5\n' >"$work/dated.csv"
+check "empty cell refused by default" run 1 "$fd" import "$work/dated.csv" -o "$work/dated_fd.csv" --skip-lines 2 --comment '#' --delimiter ';' --decimal-comma --map time_s=stamp --unit time_s=iso8601 --map gyro_dph=rate --map temp_fog_degc=temp
+check "empty cell message" err_has "dated.csv:6:3: column 'temp' (for temp_fog_degc): '' is not a finite number"
+check "import dates, preamble, comments, held cells" run 0 "$fd" import "$work/dated.csv" -o "$work/dated_fd.csv" --skip-lines 2 --comment '#' --delimiter ';' --decimal-comma --map time_s=stamp --unit time_s=iso8601 --map gyro_dph=rate --map temp_fog_degc=temp --hold-empty
+check "held cells reported" out_has "empty cells: 1 in temp_fog_degc took the value before"
+check "time from the first stamp" bash -c "cut -d, -f1 '$work/dated_fd.csv' | tr '\n' ' ' | grep -qx 'time_s 0 0.5 1 '"
+
 # --- recordings too short to denoise ------------------------------------------------------------
 mkdir -p "$work/short"
 for i in 1 2 3 4; do head -9 "$work/one_$i.csv" >"$work/short/s$i.csv"; done
