@@ -261,13 +261,26 @@ std::vector<Recording> import_recordings(const std::filesystem::path& path,
   };
 
   for (const auto& [target, source] : options.columns) column_for(target);  // mapped columns exist
+  const bool synthetic_time = options.time_from_rate_hz != 0;
+  if (synthetic_time) {
+    if (!(options.time_from_rate_hz > 0) || !std::isfinite(options.time_from_rate_hz))
+      throw OptionError("--time-from-rate-hz",
+                        fmt::format("{} Hz is not a positive rate", options.time_from_rate_hz));
+    if (options.columns.count("time_s"))
+      throw OptionError("--time-from-rate-hz", "the file's time column is mapped too; give one");
+  }
   for (const auto& target : required_columns()) {
+    if (target == "time_s" && synthetic_time) continue;
     const auto c = column_for(target);
     if (!c) {
-      throw OptionError(fmt::format("--map {}=COLUMN", target),
-                        fmt::format("{} has no column '{}'; say which column holds it (columns: "
-                                    "{})",
-                                    file, target, available));
+      throw OptionError(
+          fmt::format("--map {}=COLUMN", target),
+          fmt::format("{} has no column '{}'; say which column holds it (columns: "
+                      "{}){}",
+                      file, target, available,
+                      target == "time_s" ? "; a file without time stamps takes them from its "
+                                           "sample rate with --time-from-rate-hz R"
+                                         : ""));
     }
   }
   if (table.rows.size() < 2) {
@@ -275,7 +288,12 @@ std::vector<Recording> import_recordings(const std::filesystem::path& path,
         file, 0, 0,
         fmt::format("has {} data rows; a recording needs at least 2 samples", table.rows.size()));
   }
-  rec.time_s = convert("time_s", *column_for("time_s"));
+  if (synthetic_time) {
+    for (std::size_t i = 0; i < table.rows.size(); ++i)
+      rec.time_s.push_back(static_cast<double>(i) / options.time_from_rate_hz);
+  } else {
+    rec.time_s = convert("time_s", *column_for("time_s"));
+  }
   rec.gyro_dph = convert("gyro_dph", *column_for("gyro_dph"));
   rec.temp_fog_degc = convert("temp_fog_degc", *column_for("temp_fog_degc"));
   if (auto c = column_for("temp_acc1_degc")) rec.temp_acc1_degc = convert("temp_acc1_degc", *c);
@@ -298,7 +316,7 @@ std::vector<Recording> import_recordings(const std::filesystem::path& path,
   }
 
   // Power cycles: a time smaller than the one before starts a new recording.
-  const std::size_t time_col = *column_for("time_s") + 1;
+  const std::size_t time_col = synthetic_time ? 0 : *column_for("time_s") + 1;
   std::vector<std::size_t> starts = {0};
   for (std::size_t i = 1; i < rec.time_s.size(); ++i) {
     if (rec.time_s[i] > rec.time_s[i - 1]) continue;

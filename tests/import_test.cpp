@@ -162,5 +162,22 @@ TEST(ParseUnit, CountsAndRegistersForEveryColumn) {
   EXPECT_THROW(parse_unit("time_s", "iso"), OptionError);
 }
 
+TEST(Import, TimeFromTheSampleRateWhenTheFileHasNone) {
+  test::TempDir dir;
+  test::write_file(dir / "rate.csv", "wx,t\n1,20\n2,20\n3,21\n");
+  ImportOptions o;
+  o.columns = {{"gyro_dph", "wx"}, {"temp_fog_degc", "t"}};
+  EXPECT_THROW(import_recording(dir / "rate.csv", o), OptionError);  // no time column
+  o.time_from_rate_hz = 4;
+  EXPECT_EQ(import_recording(dir / "rate.csv", o).time_s, (std::vector<double>{0, 0.25, 0.5}));
+  o.time_from_rate_hz = -1;
+  try {
+    import_recording(dir / "rate.csv", o);
+    FAIL();
+  } catch (const OptionError& e) {
+    EXPECT_EQ(e.option(), "--time-from-rate-hz");
+  }
+}
+
 }  // namespace
 }  // namespace fogdrift

@@ -30,6 +30,7 @@ struct ImportArgs {
   bool time_from_zero = false;
   bool drop_extra = false;
   std::size_t skip_lines = 0;
+  double time_from_rate_hz = 0;
   std::string comment;
   bool hold_empty = false;
   bool split_at_reset = false;
@@ -165,6 +166,8 @@ void add_import(CLI::App& app) {
   cmd->add_option("--skip-lines", a->skip_lines,
                   "Lines before the header to skip (a logger's preamble of settings)")
       ->capture_default_str();
+  cmd->add_option("--time-from-rate-hz", a->time_from_rate_hz,
+                  "The file has no time column: time_s = row index / this rate, Hz");
   cmd->add_option("--comment", a->comment,
                   "Lines starting with this character are comments, skipped (e.g. '#')");
   cmd->add_flag("--hold-empty", a->hold_empty,
@@ -216,6 +219,7 @@ void add_import(CLI::App& app) {
     o.keep_extra = !a->drop_extra;
     o.split_at_reset = a->split_at_reset;
     o.skip_lines = a->skip_lines;
+    o.time_from_rate_hz = a->time_from_rate_hz;
     o.hold_empty = a->hold_empty;
     if (a->comment.size() > 1)
       throw OptionError("--comment", fmt::format("'{}' is not a single character", a->comment));

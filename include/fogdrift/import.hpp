@@ -52,7 +52,9 @@ struct ImportOptions {
   bool decimal_comma = false;   ///< numbers written "1,5" (needs a delimiter other than ',')
   bool time_from_zero = false;  ///< subtract the first time stamp (loggers that count from boot)
   std::size_t skip_lines = 0;   ///< lines before the header to skip (a logger's preamble)
-  char comment = 0;             ///< lines starting with this character are skipped; 0: none
+  /// A file with no time column: time_s = row index / this rate, Hz (0: the file has time_s).
+  double time_from_rate_hz = 0;
+  char comment = 0;  ///< lines starting with this character are skipped; 0: none
   /// An empty cell in a mapped column takes the value of the row before (channels logged slower
   /// than the others); without this it is an error.
   bool hold_empty = false;
