@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <limits>
 #include <nlohmann/json.hpp>
@@ -10,6 +11,7 @@
 #include "fogdrift/atomic_file.hpp"
 #include "fogdrift/enum_names.hpp"
 #include "fogdrift/error.hpp"
+#include "fogdrift/sha256.hpp"
 #include "fogdrift/signal/differentiate.hpp"
 #include "fogdrift/text_file.hpp"
 
@@ -119,6 +121,16 @@ RecordingPrediction CompensationModel::predict(const Recording& recording, bool 
 
 namespace {
 
+// SHA-256 of the text a model file's checksum covers, carriage returns left out (a file whose
+// line ends were changed to CRLF in transit is the same model).
+std::string checksum_of(std::string_view text) {
+  std::string lf;
+  lf.reserve(text.size());
+  for (char c : text)
+    if (c != '\r') lf += c;
+  return sha256_hex(lf);
+}
+
 // The regressor object of the model file: its type, then the regressor's own JSON.
 ojson regressor_json(const std::variant<svr::Model, Mlp, Poly>& regressor) {
   auto typed = [](const char* type, const std::string& text) {
@@ -180,10 +192,14 @@ std::string to_json(const CompensationModel& m) {
                      {"training_rows", p.training_rows},
                      {"files", files},
                      {"fogdrift_version", p.fogdrift_version}};
-  return j.dump(1) + "\n";
+  // The checksum covers the text before it (model.hpp): every field as written, in file order.
+  std::string text = j.dump(1);
+  text.resize(text.size() - 2);  // the closing "\n}"
+  return text + ",\n \"checksum\": \"sha256:" + checksum_of(text) + "\"\n}\n";
 }
 
-CompensationModel compensation_model_from_json(const std::string& text, const std::string& source) {
+CompensationModel compensation_model_from_json(const std::string& text, const std::string& source,
+                                               const ModelLoadOptions& options) {
   ojson doc;
   try {
     doc = ojson::parse(text);
@@ -311,6 +327,23 @@ CompensationModel compensation_model_from_json(const std::string& text, const st
   if (regressor_inputs != d)
     fail("regressor",
          fmt::format("takes {} inputs but the model has {} features", regressor_inputs, d));
+  // Version 3: the content must be what fogdrift wrote (checked last, so that a field that is
+  // wrong is named first).
+  if (version >= 3) {
+    const std::size_t key = text.rfind("\"checksum\"");
+    if (!doc.contains("checksum") || !doc["checksum"].is_string() || key == std::string::npos)
+      fail("checksum", "required field is missing (every version-3 model file carries one)");
+    std::string_view covered = std::string_view(text).substr(0, key);
+    while (!covered.empty() && std::isspace(static_cast<unsigned char>(covered.back())))
+      covered.remove_suffix(1);
+    if (!covered.empty() && covered.back() == ',') covered.remove_suffix(1);
+    const std::string written = doc["checksum"].get<std::string>();
+    if (written != "sha256:" + checksum_of(covered) && !options.allow_edited)
+      fail("checksum",
+           "the content does not match its checksum: the file was edited or corrupted after "
+           "fogdrift wrote it. Train the model again, or, if the edit was deliberate, load it "
+           "with --allow-edited");
+  }
   return m;
 }
 
@@ -318,8 +351,9 @@ void save(const CompensationModel& model, const std::filesystem::path& path) {
   write_text_atomically(path, to_json(model));
 }
 
-CompensationModel load_compensation_model(const std::filesystem::path& path) {
-  return compensation_model_from_json(read_text_file(path), path.string());
+CompensationModel load_compensation_model(const std::filesystem::path& path,
+                                          const ModelLoadOptions& options) {
+  return compensation_model_from_json(read_text_file(path), path.string(), options);
 }
 
 }  // namespace fogdrift

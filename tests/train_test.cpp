@@ -121,7 +121,19 @@ TEST(ModelFile, RejectsWhatItCannotRead) {
     change(j);
     return j.dump();
   };
-  EXPECT_NE(error_of(edit([](auto& j) { j["version"] = 3; })).find("written by a newer fogdrift"),
+  EXPECT_NE(error_of(edit([](auto& j) { j["version"] = 4; })).find("written by a newer fogdrift"),
+            std::string::npos);
+  // Version 3: content that does not match its checksum is refused, unless the user says the
+  // edit was deliberate; line ends changed to CRLF are the same content.
+  const std::string edited = edit([](auto& j) { j["scalers"]["drift_dph"]["mean"] = 0.5; });
+  EXPECT_NE(error_of(edited).find("m.json: checksum: the content does not match its checksum"),
+            std::string::npos);
+  EXPECT_EQ(compensation_model_from_json(edited, "m.json", {true}).y_scaler.mean[0], 0.5);
+  EXPECT_NO_THROW(compensation_model_from_json(good, "m.json"));
+  std::string crlf;
+  for (char c : good) crlf += c == '\n' ? std::string("\r\n") : std::string(1, c);
+  EXPECT_NO_THROW(compensation_model_from_json(crlf, "m.json"));
+  EXPECT_NE(error_of(edit([](auto& j) { j.erase("checksum"); })).find("m.json: checksum: required"),
             std::string::npos);
   EXPECT_NE(error_of(edit([](auto& j) { j["format"] = "fogdrift-svr"; })).find("m.json: format"),
             std::string::npos);

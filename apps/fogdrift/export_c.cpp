@@ -15,6 +15,7 @@ namespace fogdrift::app {
 namespace {
 
 struct ExportArgs {
+  bool allow_edited = false;
   std::string model;
   std::string output;
   std::string prefix = "fogdrift_model";
@@ -23,7 +24,7 @@ struct ExportArgs {
 };
 
 void run(const ExportArgs& a) {
-  const CompensationModel model = load_compensation_model(a.model);
+  const CompensationModel model = load_compensation_model(a.model, {a.allow_edited});
   if (!(a.stream_rate_hz >= 0) || a.stream_rate_hz > 1000)
     throw OptionError("--stream-rate-hz", fmt::format("{} is outside [0, 1000] Hz (0: no "
                                                       "streaming part)",
@@ -82,6 +83,9 @@ void add_export_c(CLI::App& app) {
       "  fogdrift export-c model.json -o unit42.h --prefix unit42   # unit42_predict_dph(...)\n"
       "  fogdrift export-c causal.json -o unit42.h --stream-rate-hz 1  # and unit42_update(...)");
   cmd->add_option("model", args->model, "Model file written by `fogdrift train`")->required();
+  cmd->add_flag("--allow-edited", args->allow_edited,
+                "Load a model file whose content no longer matches its checksum (an edit made on "
+                "purpose); its fields are still checked");
   cmd->add_option("-o,--output", args->output, "Header to write (atomically)")->required();
   cmd->add_option("--prefix", args->prefix, "C name prefix of every symbol")->capture_default_str();
   cmd->add_option("--stream-rate-hz", args->stream_rate_hz,

@@ -21,6 +21,7 @@ namespace fogdrift::app {
 namespace {
 
 struct NorthfindArgs {
+  bool allow_edited = false;
   std::string campaign;
   std::string model;
   bool json = false;
@@ -35,7 +36,7 @@ double wrap360(double deg) {
 void run(const NorthfindArgs& a) {
   const Campaign campaign = read_campaign(a.campaign);
   std::optional<CompensationModel> model;
-  if (!a.model.empty()) model = load_compensation_model(a.model);
+  if (!a.model.empty()) model = load_compensation_model(a.model, {a.allow_edited});
 
   struct Row {
     std::string file;
@@ -196,6 +197,9 @@ void add_northfind(CLI::App& app) {
       "  fogdrift simulate northfind --out nf && fogdrift northfind nf --model model.json");
   cmd->add_option("campaign", args->campaign, "Campaign folder (or its campaign.json)")->required();
   cmd->add_option("--model", args->model, "Compensation model written by `fogdrift train`");
+  cmd->add_flag("--allow-edited", args->allow_edited,
+                "Load a model file whose content no longer matches its checksum (an edit made on "
+                "purpose); its fields are still checked");
   cmd->add_flag("--json", args->json, "Print the findings and Table 3 as JSON");
   cmd->add_flag("--no-guard", args->no_guard,
                 "Apply the model's full correction even where its inputs are novel");

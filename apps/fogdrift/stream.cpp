@@ -23,6 +23,7 @@ namespace fogdrift::app {
 namespace {
 
 struct StreamArgs {
+  bool allow_edited = false;
   std::string model;
   std::string input = "-";
   double rate_hz = 0;
@@ -43,7 +44,7 @@ std::vector<std::string> split(const std::string& line) {
 void run(const StreamArgs& a) {
   if (!(a.rate_hz > 0) || a.rate_hz > 1000)
     throw OptionError("--rate-hz", fmt::format("{} is outside (0, 1000] Hz", a.rate_hz));
-  const CompensationModel model = load_compensation_model(a.model);
+  const CompensationModel model = load_compensation_model(a.model, {a.allow_edited});
   const double dt_s = 1.0 / a.rate_hz;
   StreamingCompensator compensator(model, dt_s, !a.no_guard);
 
@@ -135,6 +136,9 @@ void add_stream(CLI::App& app) {
       "  logger | fogdrift stream causal.json --rate-hz 1 > compensated.csv\n"
       "  fogdrift stream causal.json cal/cal_r4_20C.csv --rate-hz 1");
   cmd->add_option("model", args->model, "Model file written by `fogdrift train`")->required();
+  cmd->add_flag("--allow-edited", args->allow_edited,
+                "Load a model file whose content no longer matches its checksum (an edit made on "
+                "purpose); its fields are still checked");
   cmd->add_option("input", args->input, "Recording CSV, or - for standard input")
       ->capture_default_str();
   cmd->add_option("--rate-hz", args->rate_hz, "The logger's fixed sample rate, Hz")->required();

@@ -97,16 +97,30 @@ struct CompensationModel {
   std::vector<double> predict_dph(const Recording& recording, bool guarded = true) const;
 };
 
-/// Version 2 adds the novelty guard; version 1 files still load (unguarded).
-inline constexpr int kCompensationModelVersion = 2;
+/// Version 2 adds the novelty guard; version 3 a checksum of the content. Versions 1 and 2 still
+/// load (version 1 unguarded), without a checksum to verify.
+inline constexpr int kCompensationModelVersion = 3;
 
+/// The model file's text. Its last field, "checksum", is "sha256:" and the SHA-256 of the file's
+/// text before that field, up to and without the comma that ends the field before it (carriage
+/// returns left out). Any tool can check it; docs/tuning.md shows one line of Python.
 std::string to_json(const CompensationModel& model);
+
+struct ModelLoadOptions {
+  /// Load a version-3 file whose content no longer matches its checksum (an edit the user made
+  /// on purpose). The fields are still validated.
+  bool allow_edited = false;
+};
+
 /// Parses to_json's text; `source` names it in errors. A newer version, another format, a
-/// missing or mistyped field, or sizes that do not agree is an InputError naming the field.
-CompensationModel compensation_model_from_json(const std::string& text, const std::string& source);
+/// missing or mistyped field, sizes that do not agree, or (version 3) content that does not match
+/// its checksum is an InputError naming the field.
+CompensationModel compensation_model_from_json(const std::string& text, const std::string& source,
+                                               const ModelLoadOptions& options = {});
 void save(const CompensationModel& model, const std::filesystem::path& path);  ///< atomic
 /// The C99 header for firmware is in c_header.hpp.
 
-CompensationModel load_compensation_model(const std::filesystem::path& path);
+CompensationModel load_compensation_model(const std::filesystem::path& path,
+                                          const ModelLoadOptions& options = {});
 
 }  // namespace fogdrift

@@ -272,6 +272,12 @@ printf '{"format": "fogdrift-compensation-model", "version": 7}' >"$work/future_
 check "newer model version rejected" run 1 "$fd" evaluate "$work/future_model.json" "$work/small"
 check "model version message" err_has "future_model.json: version: model format version 7 is not supported"
 check "model version says upgrade" err_has "written by a newer fogdrift"
+sed 's/"block_s": 10.0/"block_s": 10.5/' "$work/svr.json" >"$work/edited.json"
+check "an edited model is refused" run 1 "$fd" evaluate "$work/edited.json" "$work/small"
+check "edited model message" err_has "edited.json: checksum: the content does not match its checksum"
+check "the edited model, on purpose" run 1 "$fd" evaluate "$work/edited.json" "$work/small" --allow-edited
+check "its fields are still checked" err_has "block_s"
+check "the model's checksum in one line of Python" python3 -c 'import hashlib,json,sys; t=open(sys.argv[1]).read(); i=t.rindex("\"checksum\""); p=t[:i].rstrip()[:-1]; assert json.loads(t)["checksum"] == "sha256:" + hashlib.sha256(p.replace("\r", "").encode()).hexdigest()' "$work/svr.json"
 check "svr model is not a compensation model" run 1 "$fd" evaluate "$work/dia.json" "$work/small"
 check "format message" err_has 'format: must be "fogdrift-compensation-model"'
 check "campaign and files mixed" run 1 "$fd" evaluate "$work/svr.json" "$work/small" "$work/small/cal_r4_20C.csv"

@@ -1,0 +1,60 @@
+// Model files of every format version fogdrift has written load, and predict what they predicted
+// when they were written, bit for bit (tests/data/models; docs/tuning.md, "The model file").
+#include <gtest/gtest.h>
+
+#include <array>
+#include <filesystem>
+
+#include "fogdrift/model.hpp"
+
+#ifndef FOGDRIFT_TEST_DATA
+#error "FOGDRIFT_TEST_DATA must name tests/data"
+#endif
+
+namespace fogdrift {
+namespace {
+
+const std::filesystem::path kModels = std::filesystem::path(FOGDRIFT_TEST_DATA) / "models";
+
+// Feature rows in the spec's order (T ×3 °C, dT ×3 °C/s, grad ×3 °C): inside and outside the
+// training region, so the guard's weight is exercised too.
+constexpr std::array<std::array<double, 9>, 4> kRows = {{
+    {0.5, 1.2, 0.9, 2e-3, 1.5e-3, 1.8e-3, -0.7, -0.4, 0.3},
+    {20.3, 21.0, 20.8, 5e-4, 4e-4, 4.5e-4, -0.7, -0.5, 0.2},
+    {41.0, 41.9, 41.5, 1e-4, 8e-5, 9e-5, -0.9, -0.5, 0.4},
+    {-30.0, -28.0, -29.0, 1e-2, 1e-2, 1e-2, -2.0, -1.0, 1.0},
+}};
+
+// Drift and guarded drift of every row, °/h, as the version that wrote the file computed them.
+using Expected = std::array<std::array<double, 2>, kRows.size()>;
+
+void expect_predictions(const CompensationModel& m, const Expected& expected) {
+  std::vector<double> work(m.inputs());
+  for (std::size_t r = 0; r < kRows.size(); ++r) {
+    const DriftPrediction p = m.predict(kRows[r], work);
+    EXPECT_EQ(p.drift_dph, expected[r][0]) << "row " << r;
+    EXPECT_EQ(m.guarded_dph(p.drift_dph, p.target_weight), expected[r][1]) << "row " << r;
+  }
+}
+
+// Written by fogdrift 0.1.0 (format version 2, no checksum): BP on a 3-temperature campaign.
+TEST(ModelGolden, Version2BpLoadsAndPredictsAsWritten) {
+  const CompensationModel m = load_compensation_model(kModels / "bp_v2.json");
+  expect_predictions(m, {{{-0.11121513549865335, -0.11121513549865335},
+                          {-0.078817792715530077, -0.078817792715530077},
+                          {-0.075606512049865987, -0.075606512049865987},
+                          {-0.12048486650446188, -0.088543084360135568}}});
+}
+
+// Written by fogdrift 0.1.0 (format version 3, with its checksum): untuned SVR on the same
+// campaign. Loading it checks the checksum.
+TEST(ModelGolden, Version3SvrLoadsAndPredictsAsWritten) {
+  const CompensationModel m = load_compensation_model(kModels / "svr_v3.json");
+  expect_predictions(m, {{{-0.068716735962559963, -0.068716735962559963},
+                          {-0.071589399346321594, -0.071589399346321594},
+                          {-0.070285368200171255, -0.071182229593399954},
+                          {-0.075945968218800924, -0.083416954658316181}}});
+}
+
+}  // namespace
+}  // namespace fogdrift
