@@ -62,7 +62,7 @@ std::vector<Recording> cut(const Recording& recording, const CutOptions& options
   const auto& t = recording.time_s;
   const std::size_t n = t.size();
 
-  // [begin, end) ranges: first at gaps, then into windows.
+  // [begin, end) ranges: first at gaps, then at the ends of plateaus, then into windows.
   std::vector<std::pair<std::size_t, std::size_t>> pieces;
   std::size_t begin = 0;
   for (std::size_t i = 1; i <= n; ++i) {
