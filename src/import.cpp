@@ -296,12 +296,8 @@ std::vector<Recording> import_recordings(const std::filesystem::path& path,
   }
   rec.gyro_dph = convert("gyro_dph", *column_for("gyro_dph"));
   rec.temp_fog_degc = convert("temp_fog_degc", *column_for("temp_fog_degc"));
-  if (auto c = column_for("temp_acc1_degc")) rec.temp_acc1_degc = convert("temp_acc1_degc", *c);
-  if (auto c = column_for("temp_acc2_degc")) rec.temp_acc2_degc = convert("temp_acc2_degc", *c);
-  if (auto c = column_for("accel_x_g")) rec.accel_x_g = convert("accel_x_g", *c);
-  if (auto c = column_for("accel_y_g")) rec.accel_y_g = convert("accel_y_g", *c);
-  if (auto c = column_for("table_deg")) rec.table_deg = convert("table_deg", *c);
-  if (auto c = column_for("chamber_degc")) rec.chamber_degc = convert("chamber_degc", *c);
+  for (const auto& name : optional_columns())  // the second and third thermometers among them
+    if (auto c = column_for(name)) *known_column(rec, name, true) = convert(name, *c);
 
   if (options.keep_extra) {
     for (std::size_t c = 0; c < table.header.size(); ++c) {
@@ -332,6 +328,8 @@ std::vector<Recording> import_recordings(const std::filesystem::path& path,
   }
   starts.push_back(rec.time_s.size());
 
+  const auto time_conv = options.conversions.find("time_s");
+  const bool stamps = time_conv != options.conversions.end() && time_conv->second.datetime;
   std::vector<Recording> cycles;
   for (std::size_t k = 0; k + 1 < starts.size(); ++k) {
     const std::size_t first = starts[k];
@@ -349,15 +347,9 @@ std::vector<Recording> import_recordings(const std::filesystem::path& path,
       }
       for (std::size_t c = 0; c < columns.size(); ++c) {
         const std::string& name = columns[c];
+        // A signal the cycle has: not the time or the turntable position.
         std::vector<double>* x =
-            name == "gyro_dph"                                          ? &cycle.gyro_dph
-            : name == "temp_fog_degc"                                   ? &cycle.temp_fog_degc
-            : name == "temp_acc1_degc" && !cycle.temp_acc1_degc.empty() ? &cycle.temp_acc1_degc
-            : name == "temp_acc2_degc" && !cycle.temp_acc2_degc.empty() ? &cycle.temp_acc2_degc
-            : name == "chamber_degc" && cycle.chamber_degc              ? &*cycle.chamber_degc
-            : name == "accel_x_g" && cycle.accel_x_g                    ? &*cycle.accel_x_g
-            : name == "accel_y_g" && cycle.accel_y_g                    ? &*cycle.accel_y_g
-                                                                        : nullptr;
+            name == "time_s" || name == "table_deg" ? nullptr : known_column(cycle, name);
         if (!x) {
           throw OptionError("--outlier-columns",
                             fmt::format("'{}' is not a signal column of {} (gyro_dph, "
@@ -368,7 +360,7 @@ std::vector<Recording> import_recordings(const std::filesystem::path& path,
         try {
           h = signal::hampel(*x, *options.outliers);
         } catch (const OptionError& e) {
-          throw OptionError(e.option() == "half_window" ? "--hampel" : "--hampel-sigma",
+          throw OptionError(e.option() == "half_window" ? "--hampel-half-window" : "--hampel-sigma",
                             e.message());
         }
         if (report) {
@@ -383,8 +375,6 @@ std::vector<Recording> import_recordings(const std::filesystem::path& path,
         *x = std::move(h.signal);
       }
     }
-    const auto time_conv = options.conversions.find("time_s");
-    const bool stamps = time_conv != options.conversions.end() && time_conv->second.datetime;
     if (options.time_from_zero || stamps) {  // dates and times count from the first stamp
       const double t0 = cycle.time_s.front();
       for (double& t : cycle.time_s) t -= t0;

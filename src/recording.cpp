@@ -13,7 +13,6 @@
 #include "fogdrift/error.hpp"
 
 namespace fogdrift {
-namespace {
 
 std::vector<double>* known_column(Recording& r, std::string_view name, bool create) {
   auto opt = [&](std::optional<std::vector<double>>& col) -> std::vector<double>* {
@@ -38,6 +37,8 @@ std::vector<double>* known_column(Recording& r, std::string_view name, bool crea
 const std::vector<double>* known_column(const Recording& r, std::string_view name) {
   return known_column(const_cast<Recording&>(r), name, false);
 }
+
+namespace {
 
 bool is_known(std::string_view name) {
   for (const auto& n : required_columns())
@@ -163,22 +164,14 @@ Recording read_recording(const std::filesystem::path& path) {
 Recording slice(const Recording& r, std::size_t begin, std::size_t end) {
   if (begin > end || end > r.size()) throw std::out_of_range("slice: range outside the recording");
   const auto b = static_cast<std::ptrdiff_t>(begin), e = static_cast<std::ptrdiff_t>(end);
-  auto cut = [&](const std::vector<double>& v) {
-    return v.empty() ? v : std::vector<double>(v.begin() + b, v.begin() + e);  // absent stays so
-  };
-  auto cut_optional = [&](const std::optional<std::vector<double>>& v) {
-    return v ? std::optional<std::vector<double>>(cut(*v)) : std::nullopt;
-  };
   Recording out;
-  out.time_s = cut(r.time_s);
-  out.gyro_dph = cut(r.gyro_dph);
-  out.temp_fog_degc = cut(r.temp_fog_degc);
-  out.temp_acc1_degc = cut(r.temp_acc1_degc);
-  out.temp_acc2_degc = cut(r.temp_acc2_degc);
-  out.accel_x_g = cut_optional(r.accel_x_g);
-  out.accel_y_g = cut_optional(r.accel_y_g);
-  out.table_deg = cut_optional(r.table_deg);
-  out.chamber_degc = cut_optional(r.chamber_degc);
+  for (const auto* names : {&required_columns(), &optional_columns()}) {
+    for (const auto& name : *names) {
+      const std::vector<double>* col = known_column(r, name);  // absent stays absent
+      if (col)
+        *known_column(out, name, true) = std::vector<double>(col->begin() + b, col->begin() + e);
+    }
+  }
   for (const auto& x : r.extra)
     out.extra.push_back(
         {x.name, std::vector<std::string>(x.cells.begin() + b, x.cells.begin() + e)});

@@ -4,7 +4,8 @@
 
 #include <algorithm>
 #include <cmath>
-#include <optional>
+#include <functional>
+#include <string>
 
 #include "fogdrift/enum_names.hpp"
 #include "fogdrift/error.hpp"
@@ -17,45 +18,54 @@ constexpr std::array<EnumName<RegridMethod>, 3> kRegridMethodNames = {
      {RegridMethod::mean, "mean"},
      {RegridMethod::linear, "linear"}}};
 
-/// The numeric channels a grid carries, as pointers into one recording (nullptr when absent).
-struct Channels {
-  std::vector<const std::vector<double>*> in;
-  std::vector<std::vector<double>*> out;
-};
-
-/// Pairs each averaged or interpolated channel of `from` with the same channel of `to`, creating
-/// the optional ones in `to` that `from` has.
-Channels channels(const Recording& from, Recording& to) {
-  Channels c;
-  auto add = [&](const std::vector<double>& a, std::vector<double>& b) {
-    c.in.push_back(&a);
-    c.out.push_back(&b);
-  };
-  add(from.gyro_dph, to.gyro_dph);
-  add(from.temp_fog_degc, to.temp_fog_degc);
-  if (!from.temp_acc1_degc.empty()) add(from.temp_acc1_degc, to.temp_acc1_degc);  // absent: stays
-  if (!from.temp_acc2_degc.empty()) add(from.temp_acc2_degc, to.temp_acc2_degc);
-  auto optional = [&](const std::optional<std::vector<double>>& a,
-                      std::optional<std::vector<double>>& b) {
-    if (!a) return;
-    b.emplace();
-    add(*a, *b);
-  };
-  optional(from.accel_x_g, to.accel_x_g);
-  optional(from.accel_y_g, to.accel_y_g);
-  optional(from.chamber_degc, to.chamber_degc);
-  return c;
+/// The columns a grid averages or interpolates: every numeric column the recording has but the
+/// time and the turntable position (which takes a sample's value, regrid.hpp).
+std::vector<std::string> signal_columns(const Recording& r) {
+  std::vector<std::string> out;
+  for (const auto* names : {&required_columns(), &optional_columns()})
+    for (const auto& name : *names)
+      if (name != "time_s" && name != "table_deg" && known_column(r, name)) out.push_back(name);
+  return out;
 }
 
-/// A grid sample under construction: its index k and either the mean of a bin (mean), or the
-/// input samples i, i + 1 and the weight of i + 1 (linear).
+/// A grid sample t_k = k·h, from the source samples i and i + 1 (input samples, or bins):
+/// exactly sample i, or v_i + w·(v_{i+1} − v_i).
 struct GridPoint {
   long long k = 0;
   std::size_t i = 0;
-  double w = 0;                      ///< weight of sample i + 1 (linear)
-  std::size_t first = 0, count = 0;  ///< the bin's samples (mean)
-  bool from_bin = false;
+  double w = 0;
+  bool exact = false;
 };
+
+/// What the grid is filled from: per signal column, one value per source sample; and the
+/// turntable position of a grid point (when the recording has one).
+struct Source {
+  std::vector<std::string> names;
+  std::vector<const std::vector<double>*> values;
+  std::function<double(const GridPoint&)> table;
+};
+
+/// One recording per segment of grid points.
+std::vector<Recording> fill(const std::vector<std::vector<GridPoint>>& segments, double h,
+                            const Source& src) {
+  std::vector<Recording> out;
+  for (const auto& seg : segments) {
+    Recording r;
+    std::vector<std::vector<double>*> cols;
+    for (const auto& name : src.names) cols.push_back(known_column(r, name, true));
+    if (src.table) r.table_deg.emplace();
+    for (const GridPoint& p : seg) {
+      r.time_s.push_back(static_cast<double>(p.k) * h);
+      for (std::size_t c = 0; c < cols.size(); ++c) {
+        const std::vector<double>& x = *src.values[c];
+        cols[c]->push_back(p.exact ? x[p.i] : x[p.i] + p.w * (x[p.i + 1] - x[p.i]));
+      }
+      if (src.table) r.table_deg->push_back(src.table(p));
+    }
+    out.push_back(std::move(r));
+  }
+  return out;
+}
 
 }  // namespace
 
@@ -113,15 +123,48 @@ RegridResult regrid(const Recording& rec, const RegridOptions& options) {
     if (!segments.back().empty()) segments.emplace_back();
   };
 
+  Source src;
+  src.names = signal_columns(rec);
+  // The mean method's bins (in time order: consecutive samples with the same k = round(t / h)),
+  // their means, and the samples that give their turntable positions.
+  struct Bin {
+    long long k = 0;
+    std::size_t first = 0, count = 0;
+  };
+  std::vector<Bin> bins;
+  std::vector<std::vector<double>> means(src.names.size());
+  std::vector<double> nearest, first_table, last_table;
+
   if (s.method == RegridMethod::mean) {
-    // Bins in time order: consecutive samples with the same k = round(t / h).
-    std::vector<GridPoint> bins;
     for (std::size_t i = 0; i < n; ++i) {
       const auto k = static_cast<long long>(std::floor(t[i] / h + 0.5));
-      if (bins.empty() || bins.back().k != k) {
-        bins.push_back({k, 0, 0, i, 0, true});
-      }
+      if (bins.empty() || bins.back().k != k) bins.push_back({k, i, 0});
       ++bins.back().count;
+    }
+    for (std::size_t c = 0; c < src.names.size(); ++c) {
+      const std::vector<double>& x = *known_column(rec, src.names[c]);
+      for (const Bin& bin : bins) {
+        double sum = 0;
+        for (std::size_t j = bin.first; j < bin.first + bin.count; ++j) sum += x[j];
+        means[c].push_back(sum / static_cast<double>(bin.count));
+      }
+      src.values.push_back(&means[c]);
+    }
+    if (rec.table_deg) {
+      const std::vector<double>& table = *rec.table_deg;
+      for (const Bin& bin : bins) {
+        // The sample nearest the bin centre; for a bridged gap, the bin's edge samples.
+        const double centre = static_cast<double>(bin.k) * h;
+        std::size_t best = bin.first;
+        for (std::size_t j = bin.first; j < bin.first + bin.count; ++j)
+          if (std::fabs(t[j] - centre) < std::fabs(t[best] - centre)) best = j;
+        nearest.push_back(table[best]);
+        first_table.push_back(table[bin.first]);
+        last_table.push_back(table[bin.first + bin.count - 1]);
+      }
+      src.table = [&](const GridPoint& p) {
+        return p.exact ? nearest[p.i] : p.w < 0.5 ? last_table[p.i] : first_table[p.i + 1];
+      };
     }
     for (std::size_t b = 0; b < bins.size(); ++b) {
       if (b > 0 && bins[b].k > bins[b - 1].k + 1) {
@@ -129,13 +172,11 @@ RegridResult regrid(const Recording& rec, const RegridOptions& options) {
         RegridGap gap{t[last], t[bins[b].first], false, 0};
         gap.bridged = gap.length_s() <= s.max_gap_s;
         if (gap.bridged) {
+          // Interpolated between the means of bins b − 1 and b.
           for (long long k = bins[b - 1].k + 1; k < bins[b].k; ++k) {
-            GridPoint p;
-            p.k = k;
-            p.i = b - 1;  // interpolated between bins b − 1 and b, filled in below
-            p.w = static_cast<double>(k - bins[b - 1].k) /
-                  static_cast<double>(bins[b].k - bins[b - 1].k);
-            segments.back().push_back(p);
+            const double w = static_cast<double>(k - bins[b - 1].k) /
+                             static_cast<double>(bins[b].k - bins[b - 1].k);
+            segments.back().push_back({k, b - 1, w, false});
             ++gap.filled;
           }
         } else {
@@ -143,48 +184,13 @@ RegridResult regrid(const Recording& rec, const RegridOptions& options) {
         }
         s.gaps.push_back(gap);
       }
-      segments.back().push_back(bins[b]);
-    }
-    // Fill: a bin's mean, or the interpolation between the means of the bins either side.
-    auto bin_mean = [&](const GridPoint& p, const std::vector<double>& x) {
-      double sum = 0;
-      for (std::size_t j = p.first; j < p.first + p.count; ++j) sum += x[j];
-      return sum / static_cast<double>(p.count);
-    };
-    for (auto& seg : segments) {
-      Recording out;
-      Channels ch = channels(rec, out);
-      if (rec.table_deg) out.table_deg.emplace();
-      for (const auto& p : seg) {
-        out.time_s.push_back(static_cast<double>(p.k) * h);
-        if (p.from_bin) {
-          for (std::size_t c = 0; c < ch.in.size(); ++c)
-            ch.out[c]->push_back(bin_mean(p, *ch.in[c]));
-          if (rec.table_deg) {
-            // The sample nearest the bin centre.
-            std::size_t best = p.first;
-            for (std::size_t j = p.first; j < p.first + p.count; ++j)
-              if (std::fabs(t[j] - out.time_s.back()) < std::fabs(t[best] - out.time_s.back()))
-                best = j;
-            out.table_deg->push_back((*rec.table_deg)[best]);
-          }
-        } else {
-          const GridPoint& left = bins[p.i];
-          const GridPoint& right = bins[p.i + 1];
-          for (std::size_t c = 0; c < ch.in.size(); ++c) {
-            const double a = bin_mean(left, *ch.in[c]), b = bin_mean(right, *ch.in[c]);
-            ch.out[c]->push_back(a + p.w * (b - a));
-          }
-          if (rec.table_deg) {
-            const std::size_t j = p.w < 0.5 ? left.first + left.count - 1 : right.first;
-            out.table_deg->push_back((*rec.table_deg)[j]);
-          }
-        }
-      }
-      result.segments.push_back(std::move(out));
+      segments.back().push_back({bins[b].k, b, 0.0, true});
     }
   } else {
     // Linear: gaps are input steps longer than 1.5 × the median step.
+    for (const auto& name : src.names) src.values.push_back(known_column(rec, name));
+    if (rec.table_deg)
+      src.table = [&](const GridPoint& p) { return (*rec.table_deg)[p.w < 0.5 ? p.i : p.i + 1]; };
     const double gap_step = 1.5 * s.input_median_step_s;
     const auto k_first = static_cast<long long>(std::ceil(t.front() / h - 1e-9));
     const auto k_last = static_cast<long long>(std::floor(t.back() / h + 1e-9));
@@ -208,27 +214,10 @@ RegridResult regrid(const Recording& rec, const RegridOptions& options) {
         if (!gap.bridged) continue;
         ++gap.filled;
       }
-      GridPoint p;
-      p.k = k;
-      p.i = i;
-      p.w = std::clamp((tk - t[i]) / step, 0.0, 1.0);
-      segments.back().push_back(p);
-    }
-    for (auto& seg : segments) {
-      Recording out;
-      Channels ch = channels(rec, out);
-      if (rec.table_deg) out.table_deg.emplace();
-      for (const auto& p : seg) {
-        out.time_s.push_back(static_cast<double>(p.k) * h);
-        for (std::size_t c = 0; c < ch.in.size(); ++c) {
-          const auto& x = *ch.in[c];
-          ch.out[c]->push_back(x[p.i] + p.w * (x[p.i + 1] - x[p.i]));
-        }
-        if (rec.table_deg) out.table_deg->push_back((*rec.table_deg)[p.w < 0.5 ? p.i : p.i + 1]);
-      }
-      result.segments.push_back(std::move(out));
+      segments.back().push_back({k, i, std::clamp((tk - t[i]) / step, 0.0, 1.0), false});
     }
   }
+  result.segments = fill(segments, h, src);
 
   // Keep the segments long enough to use; name them after the source.
   std::vector<Recording> kept;

@@ -50,6 +50,12 @@ struct Recording {
   bool has_column(std::string_view name) const;
 };
 
+/// The known numeric column `name` of `recording` (time_s, gyro_dph, a thermometer or an optional
+/// column); nullptr for any other name and for a column the recording lacks. With `create`, a
+/// missing optional column or thermometer is created empty and returned.
+std::vector<double>* known_column(Recording& recording, std::string_view name, bool create = false);
+const std::vector<double>* known_column(const Recording& recording, std::string_view name);
+
 /// The required and optional column names, in the order fogdrift writes them.
 const std::vector<std::string>& required_columns();
 const std::vector<std::string>& optional_columns();
