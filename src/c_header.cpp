@@ -19,14 +19,10 @@ namespace {
 /// The temperature arguments a model reads, e.g. "temp_fog_degc" (docs/logs.md, "Fewer
 /// thermometers").
 std::string thermometers_read(const CompensationModel& model) {
-  std::string out;
-  const auto plan = model.dataset.features.columns();
-  for (Thermometer k : {Thermometer::fog, Thermometer::acc1, Thermometer::acc2}) {
-    if (std::none_of(plan.begin(), plan.end(), [k](const FeatureColumn& c) { return c.reads(k); }))
-      continue;
-    out += (out.empty() ? "" : ", ") + std::string(column_name(k));
-  }
-  return out.empty() ? std::string("none") : out;
+  std::vector<std::string_view> read;
+  for (Thermometer k : {Thermometer::fog, Thermometer::acc1, Thermometer::acc2})
+    if (model.dataset.features.reads(k)) read.push_back(column_name(k));
+  return read.empty() ? std::string("none") : fmt::format("{}", fmt::join(read, ", "));
 }
 
 }  // namespace

@@ -192,11 +192,17 @@ FeatureSpec default_feature_spec() {
   return FeatureSpec::parse("T,dT,grad");
 }
 
+bool FeatureSpec::reads(Thermometer k) const {
+  const std::vector<FeatureColumn> plan = columns();
+  return std::any_of(plan.begin(), plan.end(), [k](const FeatureColumn& c) { return c.reads(k); });
+}
+
 FeatureSpec default_feature_spec(const std::vector<Thermometer>& present) {
   if (present.empty()) throw OptionError("features", "no thermometer to build features from");
   if (present.size() == 3) return default_feature_spec();
-  std::string list;
-  for (Thermometer k : present) list += (list.empty() ? "" : ",") + std::string(to_string(k));
+  std::vector<std::string_view> names;
+  for (Thermometer k : present) names.push_back(to_string(k));
+  const std::string list = fmt::format("{}", fmt::join(names, ","));
   return FeatureSpec::parse(present.size() == 1 ? fmt::format("T({0}),dT({0})", list)
                                                 : fmt::format("T({0}),dT({0}),grad({0})", list));
 }

@@ -78,10 +78,7 @@ TrainResult train(const Dataset& data, const DatasetOptions& dataset, const Trai
           s.box_edges = tune::box_edges(s.tuning, t.space);
           if (s.box_edges.empty() || round == options.auto_box_rounds) break;
           const tune::SearchSpace wider = tune::widened(t.space, s.box_edges);
-          if (wider.c_min == t.space.c_min && wider.c_max == t.space.c_max &&
-              wider.sigma_min == t.space.sigma_min && wider.sigma_max == t.space.sigma_max &&
-              wider.epsilon_min == t.space.epsilon_min && wider.epsilon_max == t.space.epsilon_max)
-            break;  // at the limits already
+          if (wider == t.space) break;  // at the limits already
           t.space = wider;
         }
         params = s.tuning.best;

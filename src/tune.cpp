@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <functional>
@@ -432,22 +433,34 @@ double svr_loss(const Dataset& data, const svr::Params& params, const TuneOption
 
 namespace fogdrift::tune {
 
+namespace {
+
+/// A searched parameter: its name, its bounds in SearchSpace, the limits a widened box keeps
+/// within, and its value in a candidate.
+struct Axis {
+  const char* name;
+  double SearchSpace::*low;
+  double SearchSpace::*high;
+  double floor, ceiling;
+  double (*get)(const svr::Params&);
+};
+
+const std::array<Axis, 3> kAxes = {{
+    {"C", &SearchSpace::c_min, &SearchSpace::c_max, 1e-6, 1e8,
+     [](const svr::Params& p) { return p.c; }},
+    {"sigma", &SearchSpace::sigma_min, &SearchSpace::sigma_max, 1e-4, 1e4,
+     [](const svr::Params& p) { return p.kernel.sigma(); }},
+    {"epsilon", &SearchSpace::epsilon_min, &SearchSpace::epsilon_max, 1e-6, 10.0,
+     [](const svr::Params& p) { return p.epsilon; }},
+}};
+
+}  // namespace
+
 std::vector<BoxEdge> box_edges(const TuneSummary& summary, const SearchSpace& space) {
-  struct Axis {
-    const char* name;
-    double low, high;
-    double (*get)(const svr::Params&);
-  };
-  std::vector<Axis> axes = {
-      {"C", space.c_min, space.c_max, [](const svr::Params& p) { return p.c; }},
-      {"sigma", space.sigma_min, space.sigma_max,
-       [](const svr::Params& p) { return p.kernel.sigma(); }}};
-  if (space.search_epsilon)
-    axes.push_back({"epsilon", space.epsilon_min, space.epsilon_max,
-                    [](const svr::Params& p) { return p.epsilon; }});
   std::vector<BoxEdge> edges;
-  for (const Axis& a : axes) {
-    const double lo = std::log10(a.low), hi = std::log10(a.high), span = hi - lo;
+  for (const Axis& a : kAxes) {
+    if (a.name == std::string_view("epsilon") && !space.search_epsilon) continue;
+    const double lo = std::log10(space.*a.low), hi = std::log10(space.*a.high), span = hi - lo;
     const double best = std::log10(a.get(summary.best));
     for (const bool upper : {false, true}) {
       const double edge = upper ? hi : lo;
@@ -463,8 +476,8 @@ std::vector<BoxEdge> box_edges(const TuneSummary& summary, const SearchSpace& sp
       e.parameter = a.name;
       e.upper = upper;
       e.value = a.get(summary.best);
-      e.low = a.low;
-      e.high = a.high;
+      e.low = space.*a.low;
+      e.high = space.*a.high;
       e.improvement = std::isfinite(inside) && inside > 0
                           ? std::max(0.0, (inside - summary.best_fitness) / inside)
                           : 0.0;
@@ -477,18 +490,13 @@ std::vector<BoxEdge> box_edges(const TuneSummary& summary, const SearchSpace& sp
 SearchSpace widened(const SearchSpace& space, const std::vector<BoxEdge>& edges) {
   SearchSpace w = space;
   for (const BoxEdge& e : edges) {
-    double* low = e.parameter == "C"       ? &w.c_min
-                  : e.parameter == "sigma" ? &w.sigma_min
-                                           : &w.epsilon_min;
-    double* high = e.parameter == "C"       ? &w.c_max
-                   : e.parameter == "sigma" ? &w.sigma_max
-                                            : &w.epsilon_max;
-    const double floor = e.parameter == "C" ? 1e-6 : e.parameter == "sigma" ? 1e-4 : 1e-6;
-    const double ceiling = e.parameter == "C" ? 1e8 : e.parameter == "sigma" ? 1e4 : 10.0;
-    if (e.upper)
-      *high = std::min(ceiling, *high * 10.0);
-    else
-      *low = std::max(floor, *low / 10.0);
+    for (const Axis& a : kAxes) {
+      if (e.parameter != a.name) continue;
+      if (e.upper)
+        w.*a.high = std::min(a.ceiling, w.*a.high * 10.0);
+      else
+        w.*a.low = std::max(a.floor, w.*a.low / 10.0);
+    }
   }
   return w;
 }

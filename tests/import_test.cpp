@@ -179,5 +179,52 @@ TEST(Import, TimeFromTheSampleRateWhenTheFileHasNone) {
   }
 }
 
+TEST(Import, BadRegistersStampsAndCyclesNameTheirCell) {
+  test::TempDir dir;
+  auto error_of = [&](const std::string& text, const ImportOptions& o) -> InputError {
+    test::write_file(dir / "bad.csv", text);
+    try {
+      import_recordings(dir / "bad.csv", o);
+    } catch (const InputError& e) {
+      return e;
+    }
+    ADD_FAILURE() << "accepted: " << text;
+    return InputError("", 0, 0, "");
+  };
+  ImportOptions o;
+  o.columns = {{"gyro_dph", "g"}, {"temp_fog_degc", "t"}};
+  o.time_from_rate_hz = 1;
+  o.conversions = {{"temp_fog_degc", parse_unit("temp_fog_degc", "int16:0.01:0")}};
+  const InputError reg = error_of("g,t\n0,100\n0,70000\n", o);  // above 2^16 − 1
+  EXPECT_EQ(reg.line(), 3u);
+  EXPECT_EQ(reg.column(), 2u);
+  EXPECT_NE(
+      reg.message().find("is not an int16 register value (a whole number in [-32768, 65535])"),
+      std::string::npos)
+      << reg.what();
+  EXPECT_NE(error_of("g,t\n0,100\n0,1.5\n", o).message().find("int16 register"), std::string::npos);
+
+  ImportOptions d;
+  d.columns = {{"time_s", "when"}, {"gyro_dph", "g"}, {"temp_fog_degc", "t"}};
+  d.conversions = {{"time_s", parse_unit("time_s", "iso8601")}};
+  const InputError stamp = error_of("when,g,t\n2024-03-01 12:00:00,0,20\n12:00:01,0,20\n", d);
+  EXPECT_EQ(stamp.line(), 3u);
+  EXPECT_NE(stamp.message().find("'12:00:01' is not a date and time"), std::string::npos);
+
+  ImportOptions c;
+  c.columns = {{"gyro_dph", "g"}, {"temp_fog_degc", "t"}};
+  c.split_at_reset = true;
+  const InputError cycle = error_of("time_s,g,t\n1,0,20\n2,0,20\n0,0,20\n", c);
+  EXPECT_EQ(cycle.line(), 4u);
+  EXPECT_NE(cycle.message().find("a power cycle of a single sample"), std::string::npos);
+  const InputError twice = error_of("time_s,g,t\n1,0,20\n1,0,20\n", c);
+  EXPECT_NE(twice.message().find("the same stamp twice"), std::string::npos);
+
+  // A file's own time column and a time from the rate are not both taken.
+  o.columns["time_s"] = "g";
+  test::write_file(dir / "both.csv", "g,t\n0,100\n0,100\n");
+  EXPECT_THROW(import_recording(dir / "both.csv", o), OptionError);
+}
+
 }  // namespace
 }  // namespace fogdrift

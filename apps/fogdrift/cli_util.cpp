@@ -14,13 +14,21 @@
 
 namespace fogdrift::app {
 
-std::vector<double> parse_number_list(const std::string& text, const std::string& option) {
-  std::vector<double> values;
+std::vector<std::string> split_list(const std::string& text) {
+  std::vector<std::string> out;
   std::size_t pos = 0;
   while (pos <= text.size()) {
-    const std::size_t comma = text.find(',', pos);
-    const std::string item =
-        text.substr(pos, comma == std::string::npos ? std::string::npos : comma - pos);
+    const auto comma = text.find(',', pos);
+    out.push_back(text.substr(pos, comma == std::string::npos ? std::string::npos : comma - pos));
+    if (comma == std::string::npos) break;
+    pos = comma + 1;
+  }
+  return out;
+}
+
+std::vector<double> parse_number_list(const std::string& text, const std::string& option) {
+  std::vector<double> values;
+  for (const std::string& item : split_list(text)) {
     const auto v = csv::parse_number(item);
     if (!v) {
       throw OptionError(option, fmt::format("'{}' in '{}' is not a number (give a comma-separated "
@@ -28,8 +36,6 @@ std::vector<double> parse_number_list(const std::string& text, const std::string
                                             item, text));
     }
     values.push_back(*v);
-    if (comma == std::string::npos) break;
-    pos = comma + 1;
   }
   return values;
 }

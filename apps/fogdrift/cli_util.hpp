@@ -10,6 +10,9 @@
 
 namespace fogdrift::app {
 
+/// "a,b,c" -> {"a", "b", "c"} (an empty text is one empty item).
+std::vector<std::string> split_list(const std::string& text);
+
 /// "-40,-30,25" -> {-40, -30, 25}; throws OptionError naming `option` on a bad element.
 std::vector<double> parse_number_list(const std::string& text, const std::string& option);
 

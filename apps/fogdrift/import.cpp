@@ -8,6 +8,7 @@
 #include <memory>
 #include <optional>
 
+#include "cli_util.hpp"
 #include "commands.hpp"
 #include "fogdrift/error.hpp"
 #include "fogdrift/import.hpp"
@@ -44,18 +45,6 @@ struct ImportArgs {
   std::string outlier_columns;  ///< empty: gyro_dph and every thermometer the file has
   bool quiet = false;
 };
-
-std::vector<std::string> split_list(const std::string& text) {
-  std::vector<std::string> out;
-  std::size_t pos = 0;
-  while (pos <= text.size()) {
-    const auto comma = text.find(',', pos);
-    out.push_back(text.substr(pos, comma == std::string::npos ? std::string::npos : comma - pos));
-    if (comma == std::string::npos) break;
-    pos = comma + 1;
-  }
-  return out;
-}
 
 /// out.csv -> out_1.csv, out_2.csv, ... for the segments of a split recording.
 fs::path segment_path(const fs::path& target, std::size_t index, std::size_t count) {
@@ -108,11 +97,9 @@ void report(const ImportReport& imported, const std::vector<RegridSummary>& grid
     if (g.gaps.size() > 10) std::cout << fmt::format("    ... {} more\n", g.gaps.size() - 10);
     if (g.dropped_segments)
       std::cout << fmt::format("  dropped {} segment(s) of a single sample\n", g.dropped_segments);
-    if (!g.dropped_columns.empty()) {
-      std::string list;
-      for (const auto& c : g.dropped_columns) list += (list.empty() ? "" : ", ") + c;
-      std::cout << "  not carried onto the grid (text columns): " << list << "\n";
-    }
+    if (!g.dropped_columns.empty())
+      std::cout << fmt::format("  not carried onto the grid (text columns): {}\n",
+                               fmt::join(g.dropped_columns, ", "));
   }
 }
 

@@ -99,10 +99,9 @@ const report::PaperOptions& paper_defaults() {
 }
 
 std::string approach_list(const std::vector<sim::Approach>& approaches) {
-  std::string out;
-  for (sim::Approach a : approaches)
-    out += (out.empty() ? "" : ",") + std::string(sim::to_string(a));
-  return out;
+  std::vector<std::string_view> names;
+  for (sim::Approach a : approaches) names.push_back(sim::to_string(a));
+  return fmt::format("{}", fmt::join(names, ","));
 }
 
 void run_paper_command(const PaperArgs& a) {

@@ -62,13 +62,9 @@ void run(const StreamArgs& a) {
   constexpr std::array<const char*, 5> kNeeded = {"time_s", "gyro_dph", "temp_fog_degc",
                                                   "temp_acc1_degc", "temp_acc2_degc"};
   // The accelerometers' thermometers are needed only when the model reads them.
-  const std::vector<FeatureColumn> plan = model.dataset.features.columns();
-  auto model_reads = [&](Thermometer k) {
-    return std::any_of(plan.begin(), plan.end(),
-                       [k](const FeatureColumn& c) { return c.reads(k); });
-  };
-  const std::array<bool, 5> needed = {true, true, true, model_reads(Thermometer::acc1),
-                                      model_reads(Thermometer::acc2)};
+  const FeatureSpec& spec = model.dataset.features;
+  const std::array<bool, 5> needed = {true, true, true, spec.reads(Thermometer::acc1),
+                                      spec.reads(Thermometer::acc2)};
   constexpr std::size_t kAbsent = static_cast<std::size_t>(-1);
   std::array<std::size_t, 5> column{};
   for (std::size_t k = 0; k < kNeeded.size(); ++k) {

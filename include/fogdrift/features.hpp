@@ -101,6 +101,8 @@ struct FeatureSpec {
   /// The model inputs in order, as operations on one sample: the one description of what each
   /// input is, shared by compute_features(), the streaming compensator and the C header.
   std::vector<FeatureColumn> columns() const;
+  /// Whether some input reads thermometer `k` (a unit without it cannot use the spec).
+  bool reads(Thermometer k) const;
 };
 
 /// The paper's inputs, "T,dT,grad" (9 features).

@@ -97,6 +97,8 @@ struct SearchSpace {
   /// improves down to 0.05 and no further, and the models transfer better (docs/paper.md).
   double epsilon = 0.05;
   double epsilon_min = 1e-3, epsilon_max = 1;
+
+  bool operator==(const SearchSpace&) const = default;
 };
 
 struct TuneOptions {

@@ -135,5 +135,26 @@ check "a model's setting the data cannot meet" run 1 "$fd" evaluate "$work/one.j
 check "model setting message" err_has "one.json: the model's denoise (set by train --no-denoise) does not fit this data: "
 check "train --no-denoise" run 0 "$fd" train "$work/shortc" -o "$work/s.json" --method svr --no-denoise
 
+# --- impossible options name themselves -----------------------------------------------------------
+check "grid given twice" run 1 "$fd" import "$raw" -o "$work/x.csv" "${map[@]}" --rate-hz 1 --step-s 60
+check "grid twice message" err_has "option --step-s: give --rate-hz or --step-s, not both"
+check "a comment of two characters" run 1 "$fd" import "$raw" -o "$work/x.csv" "${map[@]}" --comment '//'
+check "comment message" err_has "option --comment: '//' is not a single character"
+check "hampel settings without hampel" run 1 "$fd" import "$raw" -o "$work/x.csv" "${map[@]}" --hampel-sigma 4
+check "hampel message" err_has "option --hampel-sigma: has no effect without --hampel"
+check "a hampel window of none" run 1 "$fd" import "$raw" -o "$work/x.csv" "${map[@]}" --split-at-reset --hampel --hampel-half-window 0
+check "hampel window message" err_has "option --hampel-half-window: the Hampel window's half-width must be at least 1 sample"
+check "block neither auto nor seconds" run 1 "$fd" train "$work/one" -o "$work/x.json" --block-s ten
+check "block message" err_has "option --block-s: 'ten' is neither auto nor a positive number of seconds"
+check "rate and azimuth both" run 1 "$fd" campaign "$work/both" "$work"/one_?.csv --input-rate-dph 0 --latitude-deg 30 --true-azimuth-deg 90
+check "rate and azimuth message" err_has "option --input-rate-dph: give either the input rate or the latitude and the true azimuth, not both"
+check "a test recording that is not there" run 1 "$fd" campaign "$work/nine" "$work"/one_?.csv --input-rate-dph 0 --test 9
+check "test number message" err_has "option --test: 9 is not a recording number 1..4"
+check "every recording a test" run 1 "$fd" campaign "$work/all" "$work"/one_?.csv --input-rate-dph 0 --test 1,2,3,4
+check "nothing to train message" err_has "option --test: leaves no recording to train on"
+check "repetitions of the wrong length" run 1 "$fd" campaign "$work/reps" "$work"/one_?.csv --input-rate-dph 0 --repetitions 1,2
+check "repetitions message" err_has "option --repetitions: lists 2 numbers for 4 recordings"
+check "no half-made campaigns" bash -c "! ls -d '$work'/both '$work'/nine '$work'/all '$work'/reps 2>/dev/null | grep -q ."
+
 echo "logger: $passed passed, $failed failed"
 [ "$failed" -eq 0 ]

@@ -36,7 +36,9 @@ TEST(Hampel, ReplacesSpikesByTheirWindowMedianAndNothingElse) {
     EXPECT_DOUBLE_EQ(r.signal[i], median) << i;
   }
   for (std::size_t i = 0; i < x.size(); ++i) {
-    if (!std::binary_search(spikes.begin(), spikes.end(), i)) EXPECT_EQ(r.signal[i], x[i]);
+    if (!std::binary_search(spikes.begin(), spikes.end(), i)) {
+      EXPECT_EQ(r.signal[i], x[i]);
+    }
   }
 }
 
