@@ -38,8 +38,10 @@ double seconds_per_sample(const CompensationModel& model, const std::vector<Reco
   for (const Recording& r : tests) {
     stream.reset();
     for (std::size_t i = 0; i < r.size(); ++i)
-      sink += stream.update({r.time_s[i], r.gyro_dph[i], r.temp_fog_degc[i], r.temp_acc1_degc[i],
-                             r.temp_acc2_degc[i]});
+      sink += stream
+                  .update({r.time_s[i], r.gyro_dph[i], r.temp_fog_degc[i], r.temp_acc1_degc[i],
+                           r.temp_acc2_degc[i]})
+                  .drift_dph;
     samples += r.size();
   }
   return std::chrono::duration<double>(Clock::now() - start).count() / static_cast<double>(samples);

@@ -5,8 +5,11 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <initializer_list>
 #include <span>
 #include <string>
+#include <string_view>
+#include <utility>
 #include <variant>
 #include <vector>
 
@@ -47,9 +50,6 @@ std::string c_array(std::span<const double> values, std::size_t per_line = 4) {
 
 namespace {
 
-// The header's streaming part: the causal differentiator (taps of every start-up window length,
-// a buffer of 2W samples per thermometer) and the features in compute_features()'s order, as
-// StreamingCompensator::update() computes them.
 // The novelty guard (guard.hpp) in C: its tables, PREFIX_novelty(features) and
 // PREFIX_target_weight(nu), the same operations in the same order as NoveltyGuard.
 std::string c_guard_part(const CompensationModel& model, const std::string& prefix,
@@ -105,9 +105,303 @@ std::string c_guard_part(const CompensationModel& model, const std::string& pref
   return h;
 }
 
+// `text` with every @KEY@ replaced by its value: the C templates below read as C, without fmt's
+// doubled braces.
+std::string fill_template(std::string text,
+                          std::initializer_list<std::pair<std::string_view, std::string>> values) {
+  for (const auto& [key, value] : values)
+    for (std::size_t at = text.find(key); at != std::string::npos; at = text.find(key, at))
+      text.replace(at, key.size(), value), at += value.size();
+  return text;
+}
+
+// The header's streaming part: the causal differentiator (taps of every start-up window length,
+// a buffer of 2W samples per thermometer), the features in compute_features()'s order and the
+// fault policy (stream_faults.hpp), the same steps in the same order as
+// StreamingCompensator::update().
+constexpr std::string_view kStreamingC =
+    R"(/* Streaming: the features computed causally, one sample every @DT@ s.
+ *   @P@_state s; @P@_reset(&s);   at power-on
+ *   drift_dph = @P@_update(&s, time_s, temp_fog_degc, temp_acc1_degc, temp_acc2_degc);
+ *   gyro_compensated_dph = @P@_compensated_dph(&s, gyro_dph);
+ *   s.flags: what was wrong with the sample (@U@_FAULT_* bits, 0 for a good sample).
+ * Temperature rates: causal Savitzky-Golay derivative over the last @W@ samples (fewer
+ * during the first @W@); the taps for k + 1 samples start at k(k + 1)/2 in the table.
+ * Thermometers this model reads: @READS@; pass anything for the others.@NOTE@
+ * Sensor faults (fogdrift docs/compensation.md, "Sensor faults"): a thermometer reading that is
+ * not a number, outside [@U@_TEMP_MIN_DEGC, @U@_TEMP_MAX_DEGC] or stuck is continued along its
+ * last rate for up to @U@_BRIDGE_S, and so is a time gap; beyond that the drift is held at its
+ * last good value until the rate window has refilled, and after @U@_HOLD_S the correction stops
+ * (the mean drift). A sample whose time does not advance is skipped; time going back by more
+ * than @U@_BRIDGE_S starts again as at power-on. The drift is always a finite number. */
+#define @U@_RATE_WINDOW @W@
+@GUARD_DEFINE@#ifndef @U@_TEMP_MIN_DEGC
+#define @U@_TEMP_MIN_DEGC @TEMP_MIN@
+#endif
+#ifndef @U@_TEMP_MAX_DEGC
+#define @U@_TEMP_MAX_DEGC @TEMP_MAX@
+#endif
+#ifndef @U@_GYRO_LIMIT_DPH
+#define @U@_GYRO_LIMIT_DPH @GYRO_LIMIT@
+#endif
+#ifndef @U@_BRIDGE_S
+#define @U@_BRIDGE_S @BRIDGE@
+#endif
+#ifndef @U@_HOLD_S
+#define @U@_HOLD_S @HOLD@
+#endif
+#ifndef @U@_STUCK_S
+#define @U@_STUCK_S @STUCK@ /* 0: no stuck check */
+#endif
+#ifndef @U@_STUCK_DELTA_DEGC
+#define @U@_STUCK_DELTA_DEGC @STUCK_DELTA@
+#endif
+@FLAGS@
+static const double @P@_dt_s = @DT@;
+static const int @P@_reads[3] = {@READ_FLAGS@};
+static const double @P@_rate_taps[@NTAPS@] = {@TAPS@};
+
+typedef struct {
+  double buffer[3][2 * @U@_RATE_WINDOW]; /* fog, acc1, acc2; newest at size - 1 */
+  long size;                             /* samples in the buffer */
+  long count;                            /* samples since the rate filters started */
+  double weight;                         /* the guard's weight w, 1 at power-on */
+  int guard_started;                     /* the guard has seen a sample */
+  double last_time_s;                    /* time of the guard's previous sample */
+  double novelty;                        /* nu of the last evaluated sample (0 without a guard) */
+  unsigned flags;                        /* @U@_FAULT_* bits of the last sample */
+  /* the fault policy's state */
+  int started;
+  double previous_time_s;
+  long refill;
+  int has_good_drift;
+  double good_drift_dph, good_drift_time_s, last_drift_dph, last_comp_dph;
+  int seen_good[3], out[3], tracking[3];
+  double good_degc[3], good_time_s[3], good_rate[3], pushed_degc[3];
+  double unchanged_degc[3], unchanged_since_s[3], others_degc[3][3];
+} @P@_state;
+
+static inline void @P@_reset(@P@_state* s) {
+  int k;
+  s->size = 0;
+  s->count = 0;
+  s->weight = 1.0;
+  s->guard_started = 0;
+  s->last_time_s = 0.0;
+  s->novelty = 0.0;
+  s->flags = 0;
+  s->started = 0;
+  s->previous_time_s = 0.0;
+  s->refill = 0;
+  s->has_good_drift = 0;
+  s->good_drift_dph = s->good_drift_time_s = s->last_drift_dph = s->last_comp_dph = 0.0;
+  for (k = 0; k < 3; ++k) {
+    s->seen_good[k] = s->out[k] = s->tracking[k] = 0;
+    s->good_degc[k] = s->good_time_s[k] = s->good_rate[k] = s->pushed_degc[k] = 0.0;
+  }
+}
+
+/* Thermometer k's sample pushed into its rate filter; returns its rate, deg C/s. */
+static inline double @P@_push_(@P@_state* s, int k, double v) {
+  const double* taps;
+  const double* x;
+  double sum = 0.0;
+  long used, j;
+  if (k == 0) {
+    if (s->size == 2 * @U@_RATE_WINDOW) { /* keep the newest window - 1 at the front */
+      int m;
+      for (m = 0; m < 3; ++m)
+        for (j = 0; j < @U@_RATE_WINDOW - 1; ++j)
+          s->buffer[m][j] = s->buffer[m][@U@_RATE_WINDOW + 1 + j];
+      s->size = @U@_RATE_WINDOW - 1;
+    }
+    ++s->size;
+    ++s->count;
+  }
+  s->buffer[k][s->size - 1] = v;
+  used = s->count < @U@_RATE_WINDOW ? s->count : @U@_RATE_WINDOW;
+  taps = @P@_rate_taps + (used - 1) * used / 2;
+  x = s->buffer[k] + (s->size - used);
+  for (j = 0; j < used; ++j) sum += taps[j] * x[j];
+  return sum / @P@_dt_s;
+}
+
+static inline double @P@_clamp_degc_(double v) {
+  return v < @U@_TEMP_MIN_DEGC ? @U@_TEMP_MIN_DEGC : (v > @U@_TEMP_MAX_DEGC ? @U@_TEMP_MAX_DEGC : v);
+}
+
+/* A faulty thermometer's stand-in: its last good reading continued along its last rate. */
+static inline double @P@_substitute_(const @P@_state* s, int k, double time_s) {
+  if (!s->seen_good[k]) return @P@_clamp_degc_(0.0);
+  return @P@_clamp_degc_(s->good_degc[k] + s->good_rate[k] * (time_s - s->good_time_s[k]));
+}
+
+/* The drift where the model cannot be evaluated: held, then stopped. */
+static inline double @P@_degraded_(@P@_state* s, double time_s) {
+  if (s->has_good_drift && time_s - s->good_drift_time_s <= @U@_HOLD_S) {
+    s->flags |= @U@_FAULT_HELD;
+    return s->good_drift_dph;
+  }
+  s->flags |= @U@_FAULT_STOPPED;
+  return @P@_drift_mean_dph;
+}
+
+/* Predicted drift, deg/h, for the newest sample (every dt_s seconds since power-on). */
+static inline double @P@_update(@P@_state* s, double time_s, double temp_fog_degc,
+                                 double temp_acc1_degc, double temp_acc2_degc) {
+  const double raw[3] = {temp_fog_degc, temp_acc1_degc, temp_acc2_degc};
+  double temp[3] = {0.0, 0.0, 0.0}, rate[3] = {0.0, 0.0, 0.0}, f[@U@_N_FEATURES];
+  int good[3] = {0, 0, 0}, stuck[3] = {0, 0, 0};
+  int k, j, long_gap = 0, restart_rates, any_out = 0, any_bridged = 0, refilling;
+  long missing = 0, m;
+  double t = time_s, drift;
+  s->flags = 0;
+  if (!isfinite(t)) {
+    s->flags |= @U@_FAULT_TIME_BAD;
+    t = s->started ? s->previous_time_s + @P@_dt_s : 0.0;
+  }
+  if (s->started) {
+    const double step = t - s->previous_time_s;
+    if (step < -@U@_BRIDGE_S) {
+      @P@_reset(s);
+      s->flags |= @U@_FAULT_RESTART;
+    } else if (step < 0.5 * @P@_dt_s) {
+      s->flags |= @U@_FAULT_OUT_OF_ORDER;
+      return s->last_drift_dph;
+    } else if (step > 1.5 * @P@_dt_s) {
+      s->flags |= @U@_FAULT_GAP;
+      if (step - @P@_dt_s > @U@_BRIDGE_S)
+        long_gap = 1;
+      else
+        missing = lround(step / @P@_dt_s) - 1;
+    }
+  }
+  for (k = 0; k < 3; ++k) {
+    if (!@P@_reads[k]) continue;
+    good[k] = isfinite(raw[k]) && raw[k] >= @U@_TEMP_MIN_DEGC && raw[k] <= @U@_TEMP_MAX_DEGC;
+    if (!good[k]) s->flags |= @U@_FAULT_TEMP_BAD;
+  }
+  if (@U@_STUCK_S > 0) {
+    for (k = 0; k < 3; ++k) {
+      if (!good[k]) continue;
+      if (!s->tracking[k] || raw[k] != s->unchanged_degc[k]) {
+        s->tracking[k] = 1;
+        s->unchanged_degc[k] = raw[k];
+        s->unchanged_since_s[k] = t;
+        for (j = 0; j < 3; ++j) s->others_degc[k][j] = good[j] ? raw[j] : NAN;
+        continue;
+      }
+      for (j = 0; j < 3; ++j) {
+        if (j == k || !good[j]) continue;
+        if (isnan(s->others_degc[k][j])) s->others_degc[k][j] = raw[j];
+        if (t - s->unchanged_since_s[k] >= @U@_STUCK_S &&
+            fabs(raw[j] - s->others_degc[k][j]) >= @U@_STUCK_DELTA_DEGC)
+          stuck[k] = 1;
+      }
+    }
+    for (k = 0; k < 3; ++k)
+      if (stuck[k]) {
+        good[k] = 0;
+        s->flags |= @U@_FAULT_TEMP_STUCK;
+      }
+  }
+  restart_rates = long_gap;
+  for (k = 0; k < 3; ++k) {
+    if (!@P@_reads[k]) continue;
+    if (good[k]) {
+      if (s->out[k]) restart_rates = 1;
+      s->out[k] = 0;
+      continue;
+    }
+    if (!s->seen_good[k] || t - s->good_time_s[k] > @U@_BRIDGE_S) s->out[k] = 1;
+    if (s->out[k])
+      any_out = 1;
+    else
+      any_bridged = 1;
+  }
+  if (restart_rates) {
+    s->size = 0;
+    s->count = 0;
+    s->refill = s->has_good_drift ? @U@_RATE_WINDOW - 1 : 0;
+    missing = 0;
+  }
+  for (k = 0; k < 3; ++k)
+    temp[k] = !@P@_reads[k] ? 0.0 : (good[k] ? raw[k] : @P@_substitute_(s, k, t));
+  for (m = 1; m <= missing; ++m) {
+    const double tm = s->previous_time_s + (double)m * @P@_dt_s;
+    for (k = 0; k < 3; ++k) {
+      const double v = !@P@_reads[k] ? 0.0
+                       : good[k] ? s->pushed_degc[k] + (temp[k] - s->pushed_degc[k]) * (double)m /
+                                                           (double)(missing + 1)
+                                 : @P@_substitute_(s, k, tm);
+      (void)@P@_push_(s, k, v);
+    }
+  }
+  for (k = 0; k < 3; ++k) {
+    rate[k] = @P@_push_(s, k, temp[k]);
+    if (!@P@_reads[k]) continue;
+    s->pushed_degc[k] = temp[k];
+    if (good[k]) {
+      s->seen_good[k] = 1;
+      s->good_degc[k] = raw[k];
+      s->good_time_s[k] = t;
+      s->good_rate[k] = rate[k];
+    }
+  }
+  s->started = 1;
+  s->previous_time_s = t;
+  refilling = s->refill > 0;
+  if (refilling) --s->refill;
+  if (any_out || refilling) {
+    drift = @P@_degraded_(s, t);
+  } else {
+@FEATURES@    drift = @P@_predict_dph(f);
+    if (any_bridged) s->flags |= @U@_FAULT_BRIDGED;
+@GUARD@    if (isfinite(drift)) {
+      s->has_good_drift = 1;
+      s->good_drift_dph = drift;
+      s->good_drift_time_s = t;
+    } else {
+      drift = @P@_degraded_(s, t);
+    }
+  }
+  (void)rate;
+  s->last_drift_dph = drift;
+  return drift;
+}
+
+/* gyro_dph minus the last update's drift; the last good value where the gyro reading is not a
+ * number or beyond @U@_GYRO_LIMIT_DPH (then @U@_FAULT_GYRO_BAD is set in s->flags). */
+static inline double @P@_compensated_dph(@P@_state* s, double gyro_dph) {
+  if (isfinite(gyro_dph) && fabs(gyro_dph) <= @U@_GYRO_LIMIT_DPH)
+    return s->last_comp_dph = gyro_dph - s->last_drift_dph;
+  s->flags |= @U@_FAULT_GYRO_BAD;
+  return s->last_comp_dph;
+}
+
+)";
+
+constexpr std::string_view kGuardC = R"(#if @U@_GUARD
+    {
+      const double v = @P@_target_weight(s->novelty = @P@_novelty(f));
+      if (!any_bridged) {
+        const double dt =
+            s->guard_started ? (t - s->last_time_s > 0.0 ? t - s->last_time_s : 0.0) : 0.0;
+        const double up = s->weight + (@P@_guard_recover_s > 0 ? dt / @P@_guard_recover_s : 0.0);
+        s->weight = up < v ? up : v;
+        s->last_time_s = t;
+        s->guard_started = 1;
+      }
+      drift = s->weight == 0.0 ? @P@_drift_mean_dph
+                               : @P@_drift_mean_dph + s->weight * (drift - @P@_drift_mean_dph);
+    }
+#endif
+)";
+
 std::string c_streaming_part(const CompensationModel& model, const std::string& prefix,
-                             const std::string& upper, double dt_s) {
+                             const std::string& upper, double dt_s, const FaultPolicy& faults) {
   if (!std::isfinite(dt_s)) throw OptionError("stream_dt_s", "must be a finite interval");
+  validate(faults);
   signal::CausalDifferentiator diff(model.dataset.preprocessing.rates, dt_s);
   const std::size_t w = diff.window();
   std::vector<double> taps;
@@ -115,63 +409,14 @@ std::string c_streaming_part(const CompensationModel& model, const std::string& 
     const auto& t = diff.taps(k);
     taps.insert(taps.end(), t.begin(), t.end());
   }
-  std::string h;
-  h += fmt::format(
-      "/* Streaming: the features computed causally, one sample every {2} s.\n"
-      " *   {0}_state s; {0}_reset(&s);   at power-on\n"
-      " *   drift_dph = {0}_update(&s, time_s, temp_fog_degc, temp_acc1_degc, temp_acc2_degc);\n"
-      " * Temperature rates: causal Savitzky-Golay derivative over the last {1} samples (fewer\n"
-      " * during the first {1}); the taps for k + 1 samples start at k(k + 1)/2 in the table.\n"
-      " * Thermometers this model reads: {4}; pass 0 for the others.{3} "
-      "*/\n",
-      prefix, w, c_number(dt_s),
-      model.dataset.preprocessing.rates.causality == signal::Causality::causal
-          ? ""
-          : "\n * NOTE: this model was trained with centred rates; streaming applies causal ones, "
-            "which\n * lag. Train with --differentiator causal for firmware.",
-      thermometers_read(model));
-  h += fmt::format("#define {}_RATE_WINDOW {}\n", upper, w);
-  if (!model.guard.empty())
-    h += fmt::format(
-        "#ifndef {0}_GUARD\n#define {0}_GUARD 1 /* 0: full correction always */\n"
-        "#endif\n",
-        upper);
-  h += fmt::format("static const double {}_dt_s = {};\n", prefix, c_number(dt_s));
-  h += fmt::format("static const double {}_rate_taps[{}] = {{{}}};\n\n", prefix, taps.size(),
-                   c_array(taps));
-  h += fmt::format(
-      "typedef struct {{\n"
-      "  double buffer[3][2 * {1}_RATE_WINDOW]; /* fog, acc1, acc2; newest at size - 1 */\n"
-      "  long size;                             /* samples in the buffer */\n"
-      "  long count;                            /* samples since power-on */\n"
-      "  double weight;                         /* the guard's weight w, 1 at power-on */\n"
-      "  double last_time_s;                    /* time of the previous sample */\n"
-      "  double novelty;                        /* nu of the last sample (0 without a guard) */\n"
-      "}} {0}_state;\n\n"
-      "static inline void {0}_reset({0}_state* s) {{\n  s->size = 0;\n  s->count = 0;\n"
-      "  s->weight = 1.0;\n  s->last_time_s = 0.0;\n  s->novelty = 0.0;\n}}\n\n",
-      prefix, upper);
-  // With a guard, the weight's recursion (GuardFilter); define PREFIX_GUARD 0 to switch it off.
-  std::string guard;
-  if (!model.guard.empty())
-    guard = fmt::format(
-        "#if {1}_GUARD\n"
-        "  {{\n"
-        "    const double drift = {0}_predict_dph(f);\n"
-        "    const double dt = s->count > 1 ? (time_s - s->last_time_s > 0.0 ? time_s - "
-        "s->last_time_s : 0.0) : 0.0;\n"
-        "    const double v = {0}_target_weight(s->novelty = {0}_novelty(f));\n"
-        "    const double up =\n"
-        "        s->weight + ({0}_guard_recover_s > 0 ? dt / {0}_guard_recover_s : 0.0);\n"
-        "    s->weight = up < v ? up : v;\n"
-        "    s->last_time_s = time_s;\n"
-        "    if (s->weight == 0.0) return {0}_drift_mean_dph;\n"
-        "    return {0}_drift_mean_dph + s->weight * (drift - {0}_drift_mean_dph);\n"
-        "  }}\n"
-        "#endif\n",
-        prefix, upper);
+  std::string flags;
+  for (std::size_t k = 0; k < fault::count; ++k) {
+    std::string name(fault::names()[k]);
+    for (char& c : name) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+    flags += fmt::format("#define {}_FAULT_{} {}u\n", upper, name, 1u << k);
+  }
   // Feature assignments: FeatureColumn::value() written out in C.
-  std::string f;
+  std::string features;
   const std::vector<FeatureColumn> columns = model.dataset.features.columns();
   for (std::size_t c = 0; c < columns.size(); ++c) {
     const auto a = static_cast<std::size_t>(columns[c].a);
@@ -191,54 +436,55 @@ std::string c_streaming_part(const CompensationModel& model, const std::string& 
         value = fmt::format("rate[{}] - rate[{}]", a, b);
         break;
       case FeatureTerm::time:
-        value = "time_s";
+        value = "t";
         break;
       case FeatureTerm::temp_rate_product:
         value = fmt::format("temp[{}] * rate[{}]", a, a);
         break;
     }
-    f += fmt::format("  f[{}] = {};\n", c, value);
+    features += fmt::format("    f[{}] = {};\n", c, value);
   }
-  h += fmt::format(
-      "/* Predicted drift, deg/h, for the newest sample (every dt_s seconds since power-on). */\n"
-      "static inline double {0}_update({0}_state* s, double time_s, double temp_fog_degc,\n"
-      "                                 double temp_acc1_degc, double temp_acc2_degc) {{\n"
-      "  const double temp[3] = {{temp_fog_degc, temp_acc1_degc, temp_acc2_degc}};\n"
-      "  double rate[3], f[{1}_N_FEATURES];\n"
-      "  const double* taps;\n"
-      "  long used, j;\n"
-      "  int k;\n"
-      "  if (s->size == 2 * {1}_RATE_WINDOW) {{ /* keep the newest window - 1 at the front */\n"
-      "    for (k = 0; k < 3; ++k)\n"
-      "      for (j = 0; j < {1}_RATE_WINDOW - 1; ++j)\n"
-      "        s->buffer[k][j] = s->buffer[k][{1}_RATE_WINDOW + 1 + j];\n"
-      "    s->size = {1}_RATE_WINDOW - 1;\n"
-      "  }}\n"
-      "  for (k = 0; k < 3; ++k) s->buffer[k][s->size] = temp[k];\n"
-      "  ++s->size;\n"
-      "  ++s->count;\n"
-      "  used = s->count < {1}_RATE_WINDOW ? s->count : {1}_RATE_WINDOW;\n"
-      "  taps = {0}_rate_taps + (used - 1) * used / 2;\n"
-      "  for (k = 0; k < 3; ++k) {{\n"
-      "    const double* x = s->buffer[k] + (s->size - used);\n"
-      "    double sum = 0.0;\n"
-      "    for (j = 0; j < used; ++j) sum += taps[j] * x[j];\n"
-      "    rate[k] = sum / {0}_dt_s;\n"
-      "  }}\n"
-      "{2}"
-      "{3}"
-      "  (void)time_s;\n"
-      "  (void)rate;\n"
-      "  return {0}_predict_dph(f);\n"
-      "}}\n\n",
-      prefix, upper, f, guard);
-  return h;
+  std::string read_flags;
+  for (Thermometer k : {Thermometer::fog, Thermometer::acc1, Thermometer::acc2})
+    read_flags += fmt::format("{}{}", read_flags.empty() ? "" : ", ",
+                              model.dataset.features.reads(k) ? 1 : 0);
+  const bool guarded = !model.guard.empty();
+  return fill_template(
+      std::string(kStreamingC),
+      {{"@GUARD@", guarded ? std::string(kGuardC) : std::string()},
+       {"@GUARD_DEFINE@", guarded ? fmt::format("#ifndef {0}_GUARD\n#define {0}_GUARD 1 /* 0: full "
+                                                "correction always */\n#endif\n",
+                                                upper)
+                                  : std::string()},
+       {"@NOTE@",
+        model.dataset.preprocessing.rates.causality == signal::Causality::causal
+            ? ""
+            : "\n * NOTE: this model was trained with centred rates; streaming applies causal "
+              "ones, which\n * lag. Train with --differentiator causal for firmware."},
+       {"@FEATURES@", features},
+       {"@FLAGS@", flags},
+       {"@READS@", thermometers_read(model)},
+       {"@READ_FLAGS@", read_flags},
+       {"@TAPS@", c_array(taps)},
+       {"@NTAPS@", std::to_string(taps.size())},
+       {"@TEMP_MIN@", c_number(faults.temp_min_degc)},
+       {"@TEMP_MAX@", c_number(faults.temp_max_degc)},
+       {"@GYRO_LIMIT@", c_number(faults.gyro_limit_dph)},
+       {"@BRIDGE@", c_number(faults.bridge_s)},
+       {"@HOLD@", c_number(faults.hold_s)},
+       {"@STUCK@", c_number(faults.stuck_s)},
+       {"@STUCK_DELTA@", c_number(faults.stuck_delta_degc)},
+       {"@DT@", c_number(dt_s)},
+       {"@W@", std::to_string(w)},
+       // Last: the values above may contain the prefix's own placeholders.
+       {"@P@", prefix},
+       {"@U@", upper}});
 }
 
 }  // namespace
 
 std::string to_c_header(const CompensationModel& model, const std::string& prefix,
-                        double stream_dt_s) {
+                        double stream_dt_s, const FaultPolicy& faults) {
   const bool identifier = !prefix.empty() && !std::isdigit(static_cast<unsigned char>(prefix[0])) &&
                           std::all_of(prefix.begin(), prefix.end(), [](char c) {
                             return std::isalnum(static_cast<unsigned char>(c)) || c == '_';
@@ -359,7 +605,7 @@ std::string to_c_header(const CompensationModel& model, const std::string& prefi
       "}}\n\n",
       prefix, upper, body);
   h += c_guard_part(model, prefix, upper);
-  if (stream_dt_s > 0) h += c_streaming_part(model, prefix, upper, stream_dt_s);
+  if (stream_dt_s > 0) h += c_streaming_part(model, prefix, upper, stream_dt_s, faults);
   h += fmt::format("#endif /* {}_H */\n", upper);
   return h;
 }

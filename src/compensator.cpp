@@ -1,34 +1,210 @@
 #include "fogdrift/compensator.hpp"
 
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
 namespace fogdrift {
 
 StreamingCompensator::StreamingCompensator(const CompensationModel& model, double dt_s,
-                                           bool guarded)
+                                           const StreamOptions& options)
     : model_(model),
+      dt_s_(dt_s),
+      faults_(options.faults),
       rates_{signal::CausalDifferentiator(model.dataset.preprocessing.rates, dt_s),
              signal::CausalDifferentiator(model.dataset.preprocessing.rates, dt_s),
              signal::CausalDifferentiator(model.dataset.preprocessing.rates, dt_s)},
       columns_(model.dataset.features.columns()),
       features_(model.inputs()),
       work_(model.inputs()),
-      guarded_(guarded && !model.guard.empty()) {}
+      guarded_(options.guarded && !model.guard.empty()) {
+  validate(faults_);
+  for (std::size_t k = 0; k < 3; ++k)
+    thermometers_[k].read = model.dataset.features.reads(static_cast<Thermometer>(k));
+}
 
 void StreamingCompensator::reset() noexcept {
   for (auto& r : rates_) r.reset();
   filter_.reset();
   weight_ = 1.0;
+  for (ThermometerState& th : thermometers_) th = ThermometerState{th.read};
+  started_ = false;
+  refill_ = 0;
+  has_good_drift_ = false;
+  last_drift_dph_ = last_comp_dph_ = 0;
 }
 
-double StreamingCompensator::update(const Sample& s) noexcept {
-  const std::array<double, 3> temp = {s.temp_fog_degc, s.temp_acc1_degc, s.temp_acc2_degc};
-  std::array<double, 3> rate{};
-  for (std::size_t k = 0; k < 3; ++k) rate[k] = rates_[k].push(temp[k]);
-  for (std::size_t c = 0; c < columns_.size(); ++c)
-    features_[c] = columns_[c].value(temp, rate, s.time_s);
-  last_ = model_.predict(features_, work_);
-  if (!guarded_) return last_.drift_dph;
-  weight_ = filter_.update(s.time_s, last_.target_weight, model_.guard.settings.recover_s);
-  return model_.guarded_dph(last_.drift_dph, weight_);
+// Which thermometers the model reads give a good reading at this sample: a number inside the
+// policy's range, and not stuck (stream_faults.hpp). Raises temp_bad and temp_stuck.
+std::array<bool, 3> StreamingCompensator::check_thermometers(const std::array<double, 3>& raw,
+                                                             double time_s,
+                                                             std::uint32_t& flags) noexcept {
+  std::array<bool, 3> good{};
+  for (std::size_t k = 0; k < 3; ++k) {
+    if (!thermometers_[k].read) continue;
+    good[k] =
+        std::isfinite(raw[k]) && raw[k] >= faults_.temp_min_degc && raw[k] <= faults_.temp_max_degc;
+    if (!good[k]) flags |= fault::temp_bad;
+  }
+  if (faults_.stuck_s <= 0) return good;
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  std::array<bool, 3> stuck{};
+  for (std::size_t k = 0; k < 3; ++k) {
+    ThermometerState& th = thermometers_[k];
+    if (!good[k]) continue;
+    if (!th.tracking || raw[k] != th.unchanged_degc) {
+      th.tracking = true;
+      th.unchanged_degc = raw[k];
+      th.unchanged_since_s = time_s;
+      for (std::size_t j = 0; j < 3; ++j) th.others_degc[j] = good[j] ? raw[j] : nan;
+      continue;
+    }
+    for (std::size_t j = 0; j < 3; ++j) {
+      if (j == k || !good[j]) continue;
+      if (std::isnan(th.others_degc[j])) th.others_degc[j] = raw[j];  // known from now on
+      if (time_s - th.unchanged_since_s >= faults_.stuck_s &&
+          std::abs(raw[j] - th.others_degc[j]) >= faults_.stuck_delta_degc)
+        stuck[k] = true;
+    }
+  }
+  for (std::size_t k = 0; k < 3; ++k)
+    if (stuck[k]) {
+      good[k] = false;
+      flags |= fault::temp_stuck;
+    }
+  return good;
+}
+
+// A faulty thermometer's stand-in: its last good reading continued along its last good rate,
+// kept inside the policy's range.
+double StreamingCompensator::substitute(std::size_t k, double time_s) const noexcept {
+  const ThermometerState& th = thermometers_[k];
+  if (!th.seen_good) return std::clamp(0.0, faults_.temp_min_degc, faults_.temp_max_degc);
+  const double v = th.good_degc + th.good_rate * (time_s - th.good_time_s);
+  return std::clamp(v, faults_.temp_min_degc, faults_.temp_max_degc);
+}
+
+// The drift where the model cannot be evaluated: the last good drift for up to hold_s after it,
+// then the model's mean drift (the correction stopped, as the guard at weight 0).
+double StreamingCompensator::degraded(double time_s, std::uint32_t& flags) const noexcept {
+  if (has_good_drift_ && time_s - good_drift_time_s_ <= faults_.hold_s) {
+    flags |= fault::held;
+    return good_drift_dph_;
+  }
+  flags |= fault::stopped;
+  return model_.guarded_dph(0.0, 0.0);
+}
+
+StreamOutput StreamingCompensator::finish(const Sample& s, double drift_dph,
+                                          std::uint32_t flags) noexcept {
+  StreamOutput out{drift_dph, last_comp_dph_, flags};
+  if (std::isfinite(s.gyro_dph) && std::abs(s.gyro_dph) <= faults_.gyro_limit_dph)
+    out.gyro_comp_dph = last_comp_dph_ = s.gyro_dph - drift_dph;
+  else
+    out.flags |= fault::gyro_bad;
+  return out;
+}
+
+StreamOutput StreamingCompensator::update(const Sample& s) noexcept {
+  std::uint32_t flags = 0;
+  double t = s.time_s;
+  if (!std::isfinite(t)) {
+    flags |= fault::time_bad;
+    t = started_ ? previous_time_s_ + dt_s_ : 0.0;
+  }
+  // Time: a restart, a sample that does not advance, or a gap before this sample.
+  std::size_t missing = 0;
+  bool long_gap = false;
+  if (started_) {
+    const double step = t - previous_time_s_;
+    if (step < -faults_.bridge_s) {
+      reset();
+      flags |= fault::restart;
+    } else if (step < 0.5 * dt_s_) {
+      return finish(s, last_drift_dph_, flags | fault::out_of_order);
+    } else if (step > 1.5 * dt_s_) {
+      flags |= fault::gap;
+      if (step - dt_s_ > faults_.bridge_s)
+        long_gap = true;
+      else
+        missing = static_cast<std::size_t>(std::lround(step / dt_s_)) - 1;
+    }
+  }
+  const std::array<double, 3> raw = {s.temp_fog_degc, s.temp_acc1_degc, s.temp_acc2_degc};
+  const std::array<bool, 3> good = check_thermometers(raw, t, flags);
+  // Outages: bridged up to bridge_s, out beyond; a thermometer back from being out, or a gap
+  // too long to bridge, starts the rate filters again.
+  bool restart_rates = long_gap, any_out = false, any_bridged = false;
+  for (std::size_t k = 0; k < 3; ++k) {
+    ThermometerState& th = thermometers_[k];
+    if (!th.read) continue;
+    if (good[k]) {
+      restart_rates |= th.out;
+      th.out = false;
+      continue;
+    }
+    if (!th.seen_good || t - th.good_time_s > faults_.bridge_s) th.out = true;
+    (th.out ? any_out : any_bridged) = true;
+  }
+  if (restart_rates) {
+    for (auto& r : rates_) r.reset();
+    // At power-on (no drift given yet) the short windows are those the model was trained with.
+    refill_ = has_good_drift_ ? rates_[0].window() - 1 : 0;
+    missing = 0;
+  }
+  std::array<double, 3> temp{}, rate{};
+  for (std::size_t k = 0; k < 3; ++k) {
+    ThermometerState& th = thermometers_[k];
+    if (!th.read) continue;
+    temp[k] = good[k] ? raw[k] : substitute(k, t);
+    // The missing samples of a bridged gap, on the interval: interpolated towards this sample.
+    for (std::size_t m = 1; m <= missing; ++m) {
+      const double tm = previous_time_s_ + static_cast<double>(m) * dt_s_;
+      const double v = good[k]
+                           ? th.pushed_degc + (temp[k] - th.pushed_degc) * static_cast<double>(m) /
+                                                  static_cast<double>(missing + 1)
+                           : substitute(k, tm);
+      rates_[k].push(v);
+    }
+    rate[k] = rates_[k].push(temp[k]);
+    th.pushed_degc = temp[k];
+    if (good[k]) {
+      th.seen_good = true;
+      th.good_degc = raw[k];
+      th.good_time_s = t;
+      th.good_rate = rate[k];
+    }
+  }
+  started_ = true;
+  previous_time_s_ = t;
+  const bool refilling = refill_ > 0;
+  if (refilling) --refill_;
+
+  double drift = 0;
+  if (any_out || refilling) {
+    drift = degraded(t, flags);
+  } else {
+    for (std::size_t c = 0; c < columns_.size(); ++c)
+      features_[c] = columns_[c].value(temp, rate, t);
+    last_ = model_.predict(features_, work_);
+    drift = last_.drift_dph;
+    if (any_bridged) flags |= fault::bridged;
+    if (guarded_) {
+      // Substituted temperatures say nothing about novelty: the weight waits for real ones.
+      if (!any_bridged)
+        weight_ = filter_.update(t, last_.target_weight, model_.guard.settings.recover_s);
+      drift = model_.guarded_dph(drift, weight_);
+    }
+    if (std::isfinite(drift)) {
+      has_good_drift_ = true;
+      good_drift_dph_ = drift;
+      good_drift_time_s_ = t;
+    } else {
+      drift = degraded(t, flags);
+    }
+  }
+  last_drift_dph_ = drift;
+  return finish(s, drift, flags);
 }
 
 }  // namespace fogdrift

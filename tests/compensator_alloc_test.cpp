@@ -76,7 +76,18 @@ TEST(StreamingCompensator, AllocatesNothingPerSample) {
     g_counting = true;
     for (std::size_t i = 0; i < data.rows; ++i) {
       const auto r = data.row(i);
-      sum += stream.update({static_cast<double>(i), 0.0, r[0], r[1], r[2]});
+      sum += stream.update({static_cast<double>(i), 0.0, r[0], r[1], r[2]}).drift_dph;
+    }
+    // The fault policy's paths allocate nothing either: NaN readings, a stuck-free outage long
+    // enough to stop the correction, bridged and long gaps, a sample out of order, a restart.
+    const double nan = std::nan("");
+    double t = 0;
+    for (std::size_t i = 0; i < data.rows; ++i) {
+      const auto r = data.row(i);
+      t += i % 97 == 5 ? 4.0 : (i % 193 == 7 ? 30.0 : (i % 211 == 9 ? -0.5 : 1.0));
+      if (i == data.rows / 2) t = 0;
+      const bool out = i % 300 > 200 && i % 300 < 280;
+      sum += stream.update({t, i % 13 == 0 ? nan : 0.0, out ? nan : r[0], r[1], r[2]}).drift_dph;
     }
     g_counting = false;
     EXPECT_EQ(g_allocations, 0) << to_string(method);

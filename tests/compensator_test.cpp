@@ -6,8 +6,6 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <cstdlib>
-#include <fstream>
 #include <sstream>
 #include <stdexcept>
 
@@ -58,15 +56,7 @@ int main(void) {
   for (std::size_t i = 0; i < rec.size(); ++i)
     samples << rec.time_s[i] << ' ' << rec.temp_fog_degc[i] << ' ' << rec.temp_acc1_degc[i] << ' '
             << rec.temp_acc2_degc[i] << '\n';
-  test::write_file(dir / "samples.txt", samples.str());
-  const std::string build = std::string(FOGDRIFT_C_COMPILER) +
-                            " -std=c99 -Wall -Wextra -pedantic -Werror -O2 -o " +
-                            (dir / "driver").string() + " " + (dir / "driver.c").string() + " -lm";
-  if (std::system(build.c_str()) != 0) throw std::runtime_error("C compile failed: " + build);
-  const std::string run = (dir / "driver").string() + " < " + (dir / "samples.txt").string() +
-                          " > " + (dir / "out.txt").string();
-  if (std::system(run.c_str()) != 0) throw std::runtime_error("driver failed");
-  std::ifstream in(dir / "out.txt");
+  std::istringstream in(test::compile_and_run_c(dir, samples.str()));
   std::vector<double> out;
   for (double v; in >> v;) out.push_back(v);
   return out;
@@ -107,14 +97,18 @@ TEST(StreamingCompensator, EqualsTheBatchPath) {
     StreamingCompensator stream(model, 1.0);
     std::vector<double> streamed(test.size());
     for (std::size_t i = 0; i < test.size(); ++i)
-      streamed[i] = stream.update({test.time_s[i], test.gyro_dph[i], test.temp_fog_degc[i],
-                                   test.temp_acc1_degc[i], test.temp_acc2_degc[i]});
+      streamed[i] = stream
+                        .update({test.time_s[i], test.gyro_dph[i], test.temp_fog_degc[i],
+                                 test.temp_acc1_degc[i], test.temp_acc2_degc[i]})
+                        .drift_dph;
     ASSERT_EQ(batch.size(), streamed.size());
     for (std::size_t i = 0; i < batch.size(); ++i)
       ASSERT_EQ(streamed[i], batch[i]) << to_string(method) << " sample " << i;
     stream.reset();
-    EXPECT_EQ(stream.update({test.time_s[0], test.gyro_dph[0], test.temp_fog_degc[0],
-                             test.temp_acc1_degc[0], test.temp_acc2_degc[0]}),
+    EXPECT_EQ(stream
+                  .update({test.time_s[0], test.gyro_dph[0], test.temp_fog_degc[0],
+                           test.temp_acc1_degc[0], test.temp_acc2_degc[0]})
+                  .drift_dph,
               batch[0]);
 
     const std::vector<double> in_c = c_header_stream(model, test);
@@ -173,8 +167,10 @@ TEST(StreamingCompensator, GuardsNovelStartUpsAlikeInEveryPath) {
 
   StreamingCompensator stream(model, 1.0);
   for (std::size_t i = 0; i < test.size(); ++i) {
-    ASSERT_EQ(stream.update({test.time_s[i], test.gyro_dph[i], test.temp_fog_degc[i],
-                             test.temp_acc1_degc[i], test.temp_acc2_degc[i]}),
+    ASSERT_EQ(stream
+                  .update({test.time_s[i], test.gyro_dph[i], test.temp_fog_degc[i],
+                           test.temp_acc1_degc[i], test.temp_acc2_degc[i]})
+                  .drift_dph,
               batch.drift_dph[i])
         << i;
     ASSERT_EQ(stream.novelty(), batch.novelty[i]) << i;

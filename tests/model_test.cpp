@@ -3,8 +3,6 @@
 #include <gtest/gtest.h>
 
 #include <cstdio>
-#include <cstdlib>
-#include <fstream>
 #include <sstream>
 
 #include "fogdrift/c_header.hpp"
@@ -49,15 +47,7 @@ TEST(CHeader, CompilesAndPredictsAsTheLibrary) {
       for (double v : d.row(i)) rows << v << ' ';
       rows << '\n';
     }
-    test::write_file(dir / "rows.txt", rows.str());
-    const std::string build =
-        std::string(FOGDRIFT_C_COMPILER) + " -std=c99 -Wall -Wextra -pedantic -Werror -O2 -o " +
-        (dir / "driver").string() + " " + (dir / "driver.c").string() + " -lm";
-    ASSERT_EQ(std::system(build.c_str()), 0) << build;
-    const std::string run = (dir / "driver").string() + " < " + (dir / "rows.txt").string() +
-                            " > " + (dir / "out.txt").string();
-    ASSERT_EQ(std::system(run.c_str()), 0);
-    std::ifstream out(dir / "out.txt");
+    std::istringstream out(test::compile_and_run_c(dir, rows.str()));
     const std::vector<double> expected = model.predict_dph(d);
     double worst = 0, scale = 0;
     std::size_t n = 0;

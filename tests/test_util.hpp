@@ -1,10 +1,12 @@
 // Helpers shared by the tests: temporary folders and file contents.
 #pragma once
 
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <random>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 
 namespace fogdrift::test {
@@ -41,6 +43,21 @@ inline std::string read_file(const std::filesystem::path& path) {
   std::stringstream s;
   s << in.rdbuf();
   return s.str();
+}
+
+/// Compiles dir/driver.c as strict C99 (warnings are errors) with the system's C compiler, runs
+/// it with `input` on standard input and returns its standard output. Throws std::runtime_error
+/// naming the command that failed.
+inline std::string compile_and_run_c(const TempDir& dir, const std::string& input) {
+  write_file(dir / "input.txt", input);
+  const std::string build = std::string(FOGDRIFT_C_COMPILER) +
+                            " -std=c99 -Wall -Wextra -pedantic -Werror -O2 -o " +
+                            (dir / "driver").string() + " " + (dir / "driver.c").string() + " -lm";
+  if (std::system(build.c_str()) != 0) throw std::runtime_error("C compile failed: " + build);
+  const std::string run = (dir / "driver").string() + " < " + (dir / "input.txt").string() + " > " +
+                          (dir / "output.txt").string();
+  if (std::system(run.c_str()) != 0) throw std::runtime_error("C driver failed: " + run);
+  return read_file(dir / "output.txt");
 }
 
 inline std::string data_path(const std::string& relative) {

@@ -6,6 +6,7 @@
 
 #include "cli_util.hpp"
 #include "commands.hpp"
+#include "fault_options.hpp"
 #include "fogdrift/atomic_file.hpp"
 #include "fogdrift/c_header.hpp"
 #include "fogdrift/error.hpp"
@@ -21,6 +22,7 @@ struct ExportArgs {
   std::string prefix = "fogdrift_model";
   double stream_rate_hz = 0;
   bool quiet = false;
+  FaultPolicy faults;
 };
 
 void run(const ExportArgs& a) {
@@ -29,9 +31,11 @@ void run(const ExportArgs& a) {
     throw OptionError("--stream-rate-hz", fmt::format("{} is outside [0, 1000] Hz (0: no "
                                                       "streaming part)",
                                                       a.stream_rate_hz));
+  with_flags(fault_flags(), [&] { validate(a.faults); });
   std::string header;
   try {
-    header = to_c_header(model, a.prefix, a.stream_rate_hz > 0 ? 1.0 / a.stream_rate_hz : 0.0);
+    header =
+        to_c_header(model, a.prefix, a.stream_rate_hz > 0 ? 1.0 / a.stream_rate_hz : 0.0, a.faults);
   } catch (const OptionError& e) {
     if (e.option() == "prefix")
       throw OptionError("--prefix", fmt::format("'{}' is not a C identifier (letters, digits and "
@@ -48,12 +52,13 @@ void run(const ExportArgs& a) {
     if (a.stream_rate_hz > 0)
       std::cout << fmt::format(
           "  and {0}_update(&state, time_s, temp_fog, temp_acc1, temp_acc2) "
-          "at {1} Hz, causal{2}\n",
+          "at {1} Hz, causal{2}, with the sensor-fault policy (--bridge-s {3}, --hold-s {4})\n",
           a.prefix, a.stream_rate_hz,
           model.dataset.preprocessing.rates.causality == signal::Causality::causal
               ? ""
               : " (the model was trained with centred rates: train with "
-                "--differentiator causal for firmware)");
+                "--differentiator causal for firmware)",
+          a.faults.bridge_s, a.faults.hold_s);
     if (!model.guard.empty())
       std::cout << fmt::format(
           "  and {}_novelty(features): {} guard prototypes, correction "
@@ -75,7 +80,9 @@ void add_export_c(CLI::App& app) {
       "in order with their units; compute them as fogdrift does (docs/signal.md).\n"
       "With --stream-rate-hz the header also computes the features itself, causally, from one\n"
       "sample (time, three temperatures) at a time: PREFIX_update(&state, ...), the streaming\n"
-      "compensator in C; train the model with --differentiator causal for it.\n"
+      "compensator in C; train the model with --differentiator causal for it. It runs the\n"
+      "sensor-fault policy of fogdrift stream (docs/compensation.md), with the settings below as\n"
+      "macros the firmware may redefine; PREFIX_compensated_dph(&state, gyro) and state.flags.\n"
       "A model with a novelty guard (docs/field.md) also gets PREFIX_novelty(features) and\n"
       "PREFIX_target_weight(nu); PREFIX_update then reduces the correction where the inputs are\n"
       "novel, as fogdrift stream does (#define PREFIX_GUARD 0 before the #include: full).\n"
@@ -92,6 +99,7 @@ void add_export_c(CLI::App& app) {
                   "Also write PREFIX_update() for samples at this fixed rate, Hz (0: none)")
       ->capture_default_str();
   cmd->add_flag("-q,--quiet", args->quiet, "Print nothing on success");
+  add_fault_options(cmd, args->faults);
   cmd->callback([args] { with_model_settings(args->model, [&] { run(*args); }); });
 }
 

@@ -12,12 +12,14 @@
 
 #include "cli_util.hpp"
 #include "commands.hpp"
+#include "fault_options.hpp"
 #include "fogdrift/compensator.hpp"
 #include "fogdrift/csv.hpp"
 #include "fogdrift/error.hpp"
 #include "fogdrift/features.hpp"
 #include "fogdrift/model.hpp"
 #include "fogdrift/recording.hpp"
+#include "fogdrift/stream_faults.hpp"
 
 namespace fogdrift::app {
 namespace {
@@ -28,6 +30,8 @@ struct StreamArgs {
   std::string input = "-";
   double rate_hz = 0;
   bool no_guard = false;
+  bool strict = false;
+  FaultPolicy faults;
 };
 
 std::vector<std::string> split(const std::string& line) {
@@ -41,12 +45,41 @@ std::vector<std::string> split(const std::string& line) {
   return out;
 }
 
+// With --strict, the first faulty sample stops the stream with its file, line and column, as a
+// file for training would; the fault policy's flags say which rule it broke.
+void stop_at_fault(const std::string& name, std::size_t line_no, std::uint32_t flags,
+                   const std::array<std::size_t, 5>& column, const std::array<double, 5>& v,
+                   double previous_time, double dt_s, double rate_hz) {
+  constexpr std::array<const char*, 5> kNames = {"time_s", "gyro_dph", "temp_fog_degc",
+                                                 "temp_acc1_degc", "temp_acc2_degc"};
+  auto at = [&](std::size_t k) {
+    return column[k] == static_cast<std::size_t>(-1) ? 0 : column[k] + 1;
+  };
+  if (flags & (fault::gap | fault::out_of_order | fault::restart))
+    throw InputError(name, line_no, at(0),
+                     fmt::format("time_s steps by {} s, not the {} s of --rate-hz {} ({})",
+                                 v[0] - previous_time, dt_s, rate_hz, fault::describe(flags)));
+  for (std::size_t k = 0; k < 5; ++k) {
+    const bool bad = k == 0   ? (flags & fault::time_bad) != 0
+                     : k == 1 ? (flags & fault::gyro_bad) != 0
+                              : (flags & (fault::temp_bad | fault::temp_stuck)) != 0;
+    if (bad && (!std::isfinite(v[k]) || k >= 2))
+      throw InputError(name, line_no, at(k),
+                       fmt::format("{} {} is a fault ({}); --strict stops at the first", kNames[k],
+                                   csv::format_number(v[k]), fault::describe(flags)));
+  }
+  throw InputError(
+      name, line_no, 0,
+      fmt::format("is a faulty sample ({}); --strict stops at the first", fault::describe(flags)));
+}
+
 void run(const StreamArgs& a) {
   if (!(a.rate_hz > 0) || a.rate_hz > 1000)
     throw OptionError("--rate-hz", fmt::format("{} is outside (0, 1000] Hz", a.rate_hz));
+  with_flags(fault_flags(), [&] { validate(a.faults); });
   const CompensationModel model = load_compensation_model(a.model, {a.allow_edited});
   const double dt_s = 1.0 / a.rate_hz;
-  StreamingCompensator compensator(model, dt_s, !a.no_guard);
+  StreamingCompensator compensator(model, dt_s, {!a.no_guard, a.faults});
 
   std::ifstream file;
   if (a.input != "-") {
@@ -73,64 +106,98 @@ void run(const StreamArgs& a) {
       throw InputError(name, 1, 0, fmt::format("has no {} column", kNeeded[k]));
     column[k] = it == header.end() ? kAbsent : static_cast<std::size_t>(it - header.begin());
   }
-  for (const char* added : {"drift_dph", "gyro_comp_dph", "novelty", "guard_weight"})
+  for (const char* added : {"drift_dph", "gyro_comp_dph", "novelty", "guard_weight", "fault_flags"})
     if (std::find(header.begin(), header.end(), added) != header.end())
       throw InputError(
           name, 1, 0, fmt::format("already has a {} column; stream the original recording", added));
-  std::cout << line << ",drift_dph,gyro_comp_dph,novelty,guard_weight\n" << std::flush;
+  std::cout << line << ",drift_dph,gyro_comp_dph,novelty,guard_weight,fault_flags\n" << std::flush;
 
-  std::size_t line_no = 1;
+  std::size_t line_no = 1, samples = 0, flagged = 0, skipped = 0;
+  std::array<std::size_t, fault::count> per_flag{};
   double previous_time = std::nan("");
   while (std::getline(in, line)) {
     ++line_no;
     if (line.empty() || line == "\r") continue;
     const std::vector<std::string> fields = split(line);
-    if (fields.size() != header.size())
-      throw InputError(name, line_no, 0,
-                       fmt::format("has {} fields, the header {}", fields.size(), header.size()));
-    std::array<double, 5> v{};  // a thermometer the model does not read, and the file lacks: 0
+    if (fields.size() != header.size()) {
+      // A torn line cannot carry its outputs; the next sample sees the gap it leaves.
+      const std::string what =
+          fmt::format("has {} fields, the header {}", fields.size(), header.size());
+      if (a.strict) throw InputError(name, line_no, 0, what);
+      std::cerr << fmt::format("{}:{}: skipped: {}\n", name, line_no, what);
+      ++skipped;
+      continue;
+    }
+    // A field that is not a number is a faulty reading, as a NaN is; an absent thermometer the
+    // model does not read is 0.
+    std::array<double, 5> v{};
     for (std::size_t k = 0; k < kNeeded.size(); ++k) {
       if (column[k] == kAbsent) continue;
       const auto value = csv::parse_number(fields[column[k]]);
-      if (!value || !std::isfinite(*value))
+      if (a.strict && (!value || !std::isfinite(*value)))
         throw InputError(
             name, line_no, column[k] + 1,
             fmt::format("{} '{}' is not a finite number", kNeeded[k], fields[column[k]]));
-      v[k] = *value;
+      v[k] = value ? *value : std::nan("");
     }
-    // The compensator's rates assume the fixed interval: a sample off it by more than 1 % is
-    // a gap or a wrong --rate-hz, and would bend every rate after it.
-    if (std::isfinite(previous_time) && std::abs(v[0] - previous_time - dt_s) > 0.01 * dt_s)
+    // --strict keeps the fixed interval to 1 %: a sample off it would bend every rate after it.
+    if (a.strict && std::isfinite(previous_time) &&
+        std::abs(v[0] - previous_time - dt_s) > 0.01 * dt_s)
       throw InputError(name, line_no, column[0] + 1,
                        fmt::format("time_s steps by {} s, not the {} s of --rate-hz {}",
                                    v[0] - previous_time, dt_s, a.rate_hz));
+    const StreamOutput out = compensator.update({v[0], v[1], v[2], v[3], v[4]});
+    if (a.strict && out.flags != 0)
+      stop_at_fault(name, line_no, out.flags, column, v, previous_time, dt_s, a.rate_hz);
     previous_time = v[0];
-    const double drift = compensator.update({v[0], v[1], v[2], v[3], v[4]});
-    std::cout << line << ',' << csv::format_number(drift) << ',' << csv::format_number(v[1] - drift)
-              << ',' << csv::format_number(compensator.novelty()) << ','
-              << csv::format_number(compensator.weight()) << '\n'
+    ++samples;
+    if (out.flags != 0) ++flagged;
+    for (std::size_t k = 0; k < fault::count; ++k)
+      if (out.flags & (1u << k)) ++per_flag[k];
+    std::cout << line << ',' << csv::format_number(out.drift_dph) << ','
+              << csv::format_number(out.gyro_comp_dph) << ','
+              << csv::format_number(compensator.novelty()) << ','
+              << csv::format_number(compensator.weight()) << ',' << out.flags << '\n'
               << std::flush;
   }
+  if (flagged == 0 && skipped == 0) return;
+  std::vector<std::string> counts;
+  for (std::size_t k = 0; k < fault::count; ++k)
+    if (per_flag[k] > 0) counts.push_back(fmt::format("{} {}", fault::names()[k], per_flag[k]));
+  std::cerr << fmt::format("stream: {} of {} samples flagged ({}){}\n", flagged, samples,
+                           counts.empty() ? "none" : fmt::format("{}", fmt::join(counts, ", ")),
+                           skipped ? fmt::format("; {} torn lines skipped", skipped) : "");
 }
 
 }  // namespace
 
 void add_stream(CLI::App& app) {
   auto args = std::make_shared<StreamArgs>();
+  std::string bits;  // "temp_bad 1, temp_stuck 2, …", five to a line
+  for (std::size_t k = 0; k < fault::count; ++k)
+    bits += fmt::format("{}{} {}", k == 0 ? "" : (k % 5 == 0 ? ",\n  " : ", "), fault::names()[k],
+                        1u << k);
   auto* cmd = app.add_subcommand(
       "stream",
-      "Compensate samples as they arrive: read a recording's CSV line by line from a file or\n"
-      "standard input, and write each line to standard output at once with drift_dph,\n"
-      "gyro_comp_dph, novelty and guard_weight appended (as fogdrift compensate writes them). The\n"
-      "features are computed causally, sample by sample, as the firmware of export-c\n"
-      "--stream-rate-hz does; train the model with --differentiator causal. Where the inputs are\n"
-      "novel to the model the correction is reduced (docs/field.md); --no-guard switches that "
-      "off.\n"
-      "A sample whose time step is off the fixed interval stops the stream with its line.\n"
-      "temp_acc1_degc and temp_acc2_degc are needed only when the model reads them.\n"
-      "Examples:\n"
-      "  logger | fogdrift stream causal.json --rate-hz 1 > compensated.csv\n"
-      "  fogdrift stream causal.json cal/cal_r4_20C.csv --rate-hz 1");
+      fmt::format(
+          "Compensate samples as they arrive: read a recording's CSV line by line from a file or\n"
+          "standard input, and write each line to standard output at once with drift_dph,\n"
+          "gyro_comp_dph, novelty and guard_weight appended (as fogdrift compensate writes "
+          "them),\n"
+          "and fault_flags. The features are computed causally, sample by sample, as the firmware\n"
+          "of export-c --stream-rate-hz does; train the model with --differentiator causal. Where\n"
+          "the inputs are novel to the model the correction is reduced (docs/field.md);\n"
+          "--no-guard switches that off.\n"
+          "A faulty sample (a reading that is not a number or out of range, a stuck thermometer,\n"
+          "a time gap, time not advancing) does not stop the stream: the sensor-fault policy of\n"
+          "docs/compensation.md bridges, holds or stops the correction, and fault_flags says\n"
+          "what happened, as the sum of these bits:\n  {}.\n"
+          "--strict stops at the first faulty sample instead.\n"
+          "temp_acc1_degc and temp_acc2_degc are needed only when the model reads them.\n"
+          "Examples:\n"
+          "  logger | fogdrift stream causal.json --rate-hz 1 > compensated.csv\n"
+          "  fogdrift stream causal.json cal/cal_r4_20C.csv --rate-hz 1",
+          bits));
   cmd->add_option("model", args->model, "Model file written by `fogdrift train`")->required();
   cmd->add_flag("--allow-edited", args->allow_edited,
                 "Load a model file whose content no longer matches its checksum (an edit made on "
@@ -140,6 +207,10 @@ void add_stream(CLI::App& app) {
   cmd->add_option("--rate-hz", args->rate_hz, "The logger's fixed sample rate, Hz")->required();
   cmd->add_flag("--no-guard", args->no_guard,
                 "Apply the model's full correction even where its inputs are novel");
+  cmd->add_flag("--strict", args->strict,
+                "Stop at the first faulty sample or torn line, naming its line and column, instead "
+                "of compensating through it");
+  add_fault_options(cmd, args->faults);
   cmd->callback([args] { with_model_settings(args->model, [&] { run(*args); }); });
 }
 

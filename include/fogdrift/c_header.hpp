@@ -5,6 +5,7 @@
 #include <string>
 
 #include "fogdrift/model.hpp"
+#include "fogdrift/stream_faults.hpp"
 
 namespace fogdrift {
 
@@ -20,11 +21,15 @@ namespace fogdrift {
 /// at a time at that fixed sample interval — what StreamingCompensator does:
 ///   PREFIX_state s; PREFIX_reset(&s);   at power-on
 ///   drift_dph = PREFIX_update(&s, time_s, temp_fog_degc, temp_acc1_degc, temp_acc2_degc);
-/// with the causal differentiator's taps as a table and a fixed buffer in the state (no heap).
+///   gyro_compensated_dph = PREFIX_compensated_dph(&s, gyro_dph);
+/// with the causal differentiator's taps as a table and a fixed buffer in the state (no heap),
+/// and the fault policy `faults` (stream_faults.hpp) with its settings as macros the firmware may
+/// override; s.flags holds each sample's fault flags as PREFIX_FAULT_* bits.
 /// It is meant for a model trained with causal rates; the header says so when the model's were
 /// centred. OptionError("stream_dt_s", …) when the differentiator window does not fit the
-/// interval.
+/// interval, and the FaultPolicy's own for invalid settings.
 std::string to_c_header(const CompensationModel& model,
-                        const std::string& prefix = "fogdrift_model", double stream_dt_s = 0);
+                        const std::string& prefix = "fogdrift_model", double stream_dt_s = 0,
+                        const FaultPolicy& faults = {});
 
 }  // namespace fogdrift

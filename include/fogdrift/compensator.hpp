@@ -11,13 +11,19 @@
 // A model trained on centred (offline) features can be streamed too, but its rate features then
 // differ from those it was trained on (a causal fit lags or is noisier); docs/compensation.md
 // measures what that costs.
+//
+// Faulty samples (a thermometer or gyro that is not a number, out of range or stuck, a time gap,
+// time that does not advance or goes back) are handled by the policy of stream_faults.hpp: the
+// output is always finite, each affected sample is flagged, and without faults nothing changes.
 #pragma once
 
 #include <array>
+#include <cstdint>
 #include <vector>
 
 #include "fogdrift/model.hpp"
 #include "fogdrift/signal/differentiate.hpp"
+#include "fogdrift/stream_faults.hpp"
 
 namespace fogdrift {
 
@@ -29,22 +35,52 @@ struct Sample {
   double temp_acc2_degc = 0;
 };
 
+struct StreamOptions {
+  /// Reduce the correction where the inputs are novel to the model (guard.hpp); ignored for a
+  /// model without a guard.
+  bool guarded = true;
+  FaultPolicy faults;
+};
+
+struct StreamOutput {
+  double drift_dph = 0;      ///< predicted drift, °/h; always finite
+  double gyro_comp_dph = 0;  ///< gyro − drift; the last good value where the gyro is faulty
+  std::uint32_t flags = 0;   ///< fault:: flags of this sample, 0 for a good one
+};
+
 class StreamingCompensator {
  public:
-  /// `dt_s` is the logger's sample interval (the differentiator's taps depend on it).
-  StreamingCompensator(const CompensationModel& model, double dt_s, bool guarded = true);
+  /// `dt_s` is the logger's sample interval (the differentiator's taps depend on it). Throws
+  /// OptionError for an invalid FaultPolicy.
+  StreamingCompensator(const CompensationModel& model, double dt_s,
+                       const StreamOptions& options = {});
 
-  /// The predicted drift at this sample, °/h, guarded unless the constructor said otherwise
-  /// (guard.hpp); compensated output = s.gyro_dph − drift.
-  double update(const Sample& s) noexcept;
+  /// The drift and compensated gyro at this sample, guarded unless the options said otherwise.
+  StreamOutput update(const Sample& s) noexcept;
   /// Starts again, as at power-on.
   void reset() noexcept;
-  /// ν and w of the last update (NaN and 1 without a guard in the model).
+  /// ν and w of the last sample the model was evaluated on (NaN and 1 without a guard).
   double novelty() const noexcept { return last_.novelty; }
   double weight() const noexcept { return weight_; }
 
  private:
+  // What the fault policy keeps of one thermometer the model reads.
+  struct ThermometerState {
+    bool read = false;
+    bool seen_good = false;  // a good reading since power-on
+    bool out = false;        // its outage has lasted longer than bridge_s
+    double good_degc = 0, good_time_s = 0, good_rate = 0;  // the last good reading
+    double pushed_degc = 0;  // the last value given to its differentiator
+    // The stuck check: the reading, since when it has not changed, and the other thermometers'
+    // readings then (NaN: not known).
+    bool tracking = false;
+    double unchanged_degc = 0, unchanged_since_s = 0;
+    std::array<double, 3> others_degc{};
+  };
+
   const CompensationModel& model_;
+  double dt_s_;
+  FaultPolicy faults_;
   std::array<signal::CausalDifferentiator, 3> rates_;
   std::vector<FeatureColumn> columns_;  // the model's inputs (FeatureSpec::columns())
   std::vector<double> features_, work_;
@@ -52,6 +88,20 @@ class StreamingCompensator {
   GuardFilter filter_;
   DriftPrediction last_;
   double weight_ = 1.0;
+  // Fault policy state (see stream_faults.hpp).
+  std::array<ThermometerState, 3> thermometers_;
+  bool started_ = false;
+  double previous_time_s_ = 0;
+  std::size_t refill_ = 0;  // samples until the rate filters have a full window again
+  bool has_good_drift_ = false;
+  double good_drift_dph_ = 0, good_drift_time_s_ = 0;
+  double last_drift_dph_ = 0, last_comp_dph_ = 0;
+
+  std::array<bool, 3> check_thermometers(const std::array<double, 3>& raw, double time_s,
+                                         std::uint32_t& flags) noexcept;
+  double substitute(std::size_t k, double time_s) const noexcept;
+  double degraded(double time_s, std::uint32_t& flags) const noexcept;
+  StreamOutput finish(const Sample& s, double drift_dph, std::uint32_t flags) noexcept;
 };
 
 }  // namespace fogdrift

@@ -305,22 +305,45 @@ check "short message names the file" err_has "short.csv"
 rec20="$work/small/cal_r4_20C.csv"
 check "compensate with the causal model" run 0 "$fd" compensate "$work/causal.json" "$rec20" -o "$work/comp_causal.csv" -q
 check "stream from stdin" bash -c "'$fd' stream '$work/causal.json' --rate-hz 1 <'$rec20' >'$work/streamed.csv'"
-check "stream equals compensate" cmp -s "$work/streamed.csv" "$work/comp_causal.csv"
+# The first 14 columns are compensate's; fault_flags is 0 on every line of a clean recording.
+check "stream equals compensate" bash -c "cut -d, -f1-14 '$work/streamed.csv' | cmp -s - '$work/comp_causal.csv'"
+check "stream flags column" bash -c "head -1 '$work/streamed.csv' | grep -q ',guard_weight,fault_flags\$'"
+check "stream clean recording unflagged" bash -c "awk -F, 'NR>1 && \$15!=0{bad=1} END{exit bad}' '$work/streamed.csv'"
 check "stream from a file" run 0 "$fd" stream "$work/causal.json" "$rec20" --rate-hz 1
-check "stream file output equals compensate" cmp -s "$work/out" "$work/comp_causal.csv"
-check "stream wrong rate" run 1 "$fd" stream "$work/causal.json" "$rec20" --rate-hz 2
+check "stream file output equals stdin's" cmp -s "$work/out" "$work/streamed.csv"
+check "stream clean: nothing on stderr" test ! -s "$work/err"
+# A wrong rate makes every step a gap: bridged and flagged, or with --strict an error.
+check "stream wrong rate" run 0 "$fd" stream "$work/causal.json" "$rec20" --rate-hz 2
+check "stream wrong rate summary" err_has "samples flagged (gap"
+check "stream wrong rate strict" run 1 "$fd" stream "$work/causal.json" "$rec20" --rate-hz 2 --strict
 check "stream wrong rate message" err_has "cal_r4_20C.csv:3:1: time_s steps by 1 s, not the 0.5 s of --rate-hz 2"
-awk -F, 'BEGIN{OFS=","} NR==6{$3="warm"} {print}' "$rec20" >"$work/bad_temp.csv"
-check "stream bad temperature" run 1 "$fd" stream "$work/causal.json" "$work/bad_temp.csv" --rate-hz 1
+awk -F, 'BEGIN{OFS=","} NR==6{$3="warm"} NR==9{$2="nan"} {print}' "$rec20" >"$work/bad_temp.csv"
+check "stream bad temperature" run 0 "$fd" stream "$work/causal.json" "$work/bad_temp.csv" --rate-hz 1
+check "stream bad temperature bridged (temp_bad|bridged)" bash -c "sed -n 6p '$work/out' | grep -q ',129\$'"
+check "stream bad gyro kept finite (gyro_bad)" bash -c "sed -n 9p '$work/out' | grep -q ',4\$'"
+check "stream no non-finite output" bash -c "cut -d, -f11-15 '$work/out' | grep -qv nan"
+check "stream every line out" test "$(wc -l <"$work/out")" -eq "$(wc -l <"$rec20")"
+check "stream fault summary" err_has "stream: 2 of $(($(wc -l <"$rec20") - 1)) samples flagged (temp_bad 1, gyro_bad 1, bridged 1)"
+check "stream bad temperature strict" run 1 "$fd" stream "$work/causal.json" "$work/bad_temp.csv" --rate-hz 1 --strict
 check "stream bad temperature message" err_has "bad_temp.csv:6:3: temp_fog_degc 'warm' is not a finite number"
 check "stream wrote the good lines before it" test "$(wc -l <"$work/out")" -eq 5
+awk -F, 'BEGIN{OFS=","} NR==8{$3="300"} {print}' "$rec20" >"$work/hot.csv"
+check "stream out of range strict" run 1 "$fd" stream "$work/causal.json" "$work/hot.csv" --rate-hz 1 --strict
+check "stream out of range message" err_has "hot.csv:8:3: temp_fog_degc 300 is a fault (temp_bad|bridged)"
+check "stream range option" run 0 "$fd" stream "$work/causal.json" "$work/hot.csv" --rate-hz 1 --temp-max-degc 400
+check "stream range option: nothing flagged" test ! -s "$work/err"
+check "stream bad policy" run 1 "$fd" stream "$work/causal.json" "$rec20" --rate-hz 1 --hold-s 2
+check "stream bad policy message" err_has "option --hold-s: 2 s must be finite and no shorter than the bridge (5 s)"
 cut -d, -f1,2,3,4 "$rec20" >"$work/no_acc2.csv"
 check "stream missing column" run 1 "$fd" stream "$work/causal.json" "$work/no_acc2.csv" --rate-hz 1
 check "stream missing column message" err_has "no_acc2.csv:1: has no temp_acc2_degc column"
 check "stream a compensated file" run 1 "$fd" stream "$work/causal.json" "$work/comp_causal.csv" --rate-hz 1
 check "stream compensated message" err_has "already has a drift_dph column"
 awk 'NR==4{print $0 ",extra"; next} {print}' "$rec20" >"$work/ragged.csv"
-check "stream ragged line" run 1 "$fd" stream "$work/causal.json" "$work/ragged.csv" --rate-hz 1
+check "stream ragged line skipped" run 0 "$fd" stream "$work/causal.json" "$work/ragged.csv" --rate-hz 1
+check "stream ragged note" err_has "ragged.csv:4: skipped: has 11 fields, the header 10"
+check "stream ragged gap flagged" bash -c "sed -n 4p '$work/out' | grep -q ',16\$'"
+check "stream ragged strict" run 1 "$fd" stream "$work/causal.json" "$work/ragged.csv" --rate-hz 1 --strict
 check "stream ragged message" err_has "ragged.csv:4: has 11 fields, the header 10"
 : >"$work/empty_stdin"  # not /dev/null: on some CI machines it is a plain file that fills up
 check "stream empty input" run 1 "$fd" stream "$work/causal.json" - --rate-hz 1 <"$work/empty_stdin"
@@ -340,6 +363,11 @@ check "streaming header has the update" grep -qF "static inline double u_update(
 if command -v cc >/dev/null; then
   check "streaming header compiles as C99" cc -std=c99 -Wall -Wextra -pedantic -Werror -fsyntax-only -x c "$work/unit_stream.h"
 fi
+check "streaming header has the fault policy" grep -qF "#define U_BRIDGE_S 5" "$work/unit_stream.h"
+check "export-c fault settings" run 0 "$fd" export-c "$work/bp.json" -o "$work/unit_hot.h" --prefix u --stream-rate-hz 1 --temp-max-degc 90
+check "export-c fault settings in the header" grep -qF "#define U_TEMP_MAX_DEGC 90" "$work/unit_hot.h"
+check "export-c bad fault setting" run 1 "$fd" export-c "$work/bp.json" -o "$work/bad.h" --stream-rate-hz 1 --bridge-s -1
+check "export-c bad fault setting message" err_has "option --bridge-s: -1 s must be finite and ≥ 0"
 check "export-c bad stream rate" run 1 "$fd" export-c "$work/bp.json" -o "$work/bad.h" --stream-rate-hz -1
 check "export-c bad stream rate message" err_has "option --stream-rate-hz: -1 is outside [0, 1000] Hz"
 check "export-c window too short for the rate" run 1 "$fd" export-c "$work/bp.json" -o "$work/bad.h" --stream-rate-hz 0.001

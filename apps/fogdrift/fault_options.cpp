@@ -1,0 +1,51 @@
+#include "fault_options.hpp"
+
+namespace fogdrift::app {
+
+void add_fault_options(CLI::App* cmd, FaultPolicy& p) {
+  const char* group = "Sensor faults (docs/compensation.md)";
+  cmd->add_option("--temp-min-degc", p.temp_min_degc,
+                  "Thermometer readings below this are faults, °C")
+      ->capture_default_str()
+      ->group(group);
+  cmd->add_option("--temp-max-degc", p.temp_max_degc,
+                  "Thermometer readings above this are faults, °C")
+      ->capture_default_str()
+      ->group(group);
+  cmd->add_option("--gyro-limit-dph", p.gyro_limit_dph,
+                  "Gyro readings beyond ± this are faults, °/h")
+      ->capture_default_str()
+      ->group(group);
+  cmd->add_option("--bridge-s", p.bridge_s,
+                  "Thermometer outages and time gaps up to this long are bridged with substituted "
+                  "samples; time going back further is a restart, s")
+      ->capture_default_str()
+      ->group(group);
+  cmd->add_option("--hold-s", p.hold_s,
+                  "Beyond --bridge-s the drift is held at its last good value up to this long, "
+                  "then the correction stops, s")
+      ->capture_default_str()
+      ->group(group);
+  cmd->add_option("--stuck-s", p.stuck_s,
+                  "A thermometer unchanged this long while another moved by --stuck-delta-degc is "
+                  "stuck, s (0: no check)")
+      ->capture_default_str()
+      ->group(group);
+  cmd->add_option("--stuck-delta-degc", p.stuck_delta_degc,
+                  "How far another thermometer must move for --stuck-s to apply, °C")
+      ->capture_default_str()
+      ->group(group);
+}
+
+const FlagTable& fault_flags() {
+  static const FlagTable kFlags = {{"faults.temp_min_degc", "--temp-min-degc"},
+                                   {"faults.temp_max_degc", "--temp-max-degc"},
+                                   {"faults.gyro_limit_dph", "--gyro-limit-dph"},
+                                   {"faults.bridge_s", "--bridge-s"},
+                                   {"faults.hold_s", "--hold-s"},
+                                   {"faults.stuck_s", "--stuck-s"},
+                                   {"faults.stuck_delta_degc", "--stuck-delta-degc"}};
+  return kFlags;
+}
+
+}  // namespace fogdrift::app

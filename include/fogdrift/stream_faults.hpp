@@ -1,0 +1,74 @@
+// What the streaming compensator does when the sensor stream is faulty (docs/compensation.md,
+// "Sensor faults"): the policy's settings, the per-sample flags it raises, and their names.
+//
+// An instrument cannot stop compensating because one sample was bad, nor pass a NaN on to the
+// north-finder. The policy in brief (the docs give the full rule; StreamingCompensator and the C
+// header of `export-c --stream-rate-hz` run the same one):
+//  * a thermometer reading that is not a number, lies outside [temp_min_degc, temp_max_degc] or
+//    is stuck is replaced by its last good value continued along its last rate ("bridged"), for
+//    up to bridge_s; a time gap up to bridge_s is bridged by interpolating the missing samples;
+//  * beyond bridge_s the thermometer (or the gap) is "out": the rate filters start again, and the
+//    drift is held at its last good value until a full rate window of good samples has come in
+//    ("held"), and if that takes longer than hold_s after the last good drift, the correction
+//    stops (the drift is the model's mean drift, as the novelty guard at weight 0: "stopped");
+//  * a sample whose time does not advance is skipped (its output repeats the last one); time going
+//    back by more than bridge_s is a restart: the compensator starts again as at power-on;
+//  * a gyro reading that is not a number or beyond gyro_limit_dph gets the last good compensated
+//    value.
+// The drift is always a finite number, and without faults the output is unchanged, bit for bit.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <string>
+#include <string_view>
+
+namespace fogdrift {
+
+struct FaultPolicy {
+  /// Thermometer readings outside [temp_min_degc, temp_max_degc] are faults, °C. The defaults
+  /// hold the −40 … 60 °C ambient range with the instrument's self-heating and a margin.
+  double temp_min_degc = -60;
+  double temp_max_degc = 125;
+  /// A gyro reading whose magnitude exceeds this is a fault, °/h (3.6e6 °/h = 1000 °/s).
+  double gyro_limit_dph = 3.6e6;
+  /// The longest thermometer outage or time gap bridged by substituted samples, s, ≥ 0; time
+  /// going back by more than this is a restart, by less a sample out of order.
+  double bridge_s = 5;
+  /// The longest the drift is held at its last good value before the correction stops, s,
+  /// ≥ bridge_s. The default outlasts the refill of a 121 s rate window after an outage: a start-up
+  /// drift moves by hundredths of °/h in minutes, while stopping the correction is a step of
+  /// the whole drift.
+  double hold_s = 300;
+  /// A thermometer whose reading has not changed for stuck_s while another thermometer the model
+  /// reads moved by stuck_delta_degc or more is stuck, s; 0 switches the check off. A quantised
+  /// thermometer in a steady instrument reads the same value for minutes, so the check needs
+  /// another thermometer to show the instrument is not steady; with one thermometer it never
+  /// fires.
+  double stuck_s = 300;
+  double stuck_delta_degc = 2;
+};
+
+/// Throws OptionError naming the field (faults.temp_min_degc, faults.bridge_s, …) and the rule.
+void validate(const FaultPolicy& policy);
+
+/// Per-sample flags of the streaming compensator, OR-ed together.
+namespace fault {
+constexpr std::uint32_t temp_bad = 1u << 0;      ///< a thermometer not a number or out of range
+constexpr std::uint32_t temp_stuck = 1u << 1;    ///< a thermometer stuck
+constexpr std::uint32_t gyro_bad = 1u << 2;      ///< the gyro not a number or out of range
+constexpr std::uint32_t time_bad = 1u << 3;      ///< time not a number; taken as one step on
+constexpr std::uint32_t gap = 1u << 4;           ///< samples missing before this one
+constexpr std::uint32_t out_of_order = 1u << 5;  ///< time did not advance; sample skipped
+constexpr std::uint32_t restart = 1u << 6;       ///< time went back: started again
+constexpr std::uint32_t bridged = 1u << 7;       ///< the drift uses substituted temperatures
+constexpr std::uint32_t held = 1u << 8;          ///< the drift is the last good one, held
+constexpr std::uint32_t stopped = 1u << 9;       ///< the correction stopped: the mean drift
+constexpr std::size_t count = 10;
+/// The flags' names, bit k at index k: "temp_bad", "temp_stuck", …
+const std::array<std::string_view, count>& names();
+/// "temp_bad|bridged", or "" for no flags.
+std::string describe(std::uint32_t flags);
+}  // namespace fault
+
+}  // namespace fogdrift

@@ -1,0 +1,54 @@
+#include "fogdrift/stream_faults.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+
+#include "fogdrift/error.hpp"
+
+namespace fogdrift {
+
+void validate(const FaultPolicy& p) {
+  auto finite = [](double v) { return std::isfinite(v); };
+  if (!finite(p.temp_min_degc) || !finite(p.temp_max_degc) || !(p.temp_min_degc < p.temp_max_degc))
+    throw OptionError("faults.temp_max_degc",
+                      fmt::format("[{}, {}] °C is not a range: both finite, min < max",
+                                  p.temp_min_degc, p.temp_max_degc));
+  if (!(p.gyro_limit_dph > 0) || !finite(p.gyro_limit_dph))
+    throw OptionError("faults.gyro_limit_dph",
+                      fmt::format("{} °/h must be finite and > 0", p.gyro_limit_dph));
+  if (!(p.bridge_s >= 0) || !finite(p.bridge_s))
+    throw OptionError("faults.bridge_s", fmt::format("{} s must be finite and ≥ 0", p.bridge_s));
+  if (!(p.hold_s >= p.bridge_s) || !finite(p.hold_s))
+    throw OptionError("faults.hold_s",
+                      fmt::format("{} s must be finite and no shorter than the bridge ({} s)",
+                                  p.hold_s, p.bridge_s));
+  if (!(p.stuck_s >= 0) || !finite(p.stuck_s))
+    throw OptionError("faults.stuck_s",
+                      fmt::format("{} s must be finite and ≥ 0 (0: no stuck check)", p.stuck_s));
+  if (!(p.stuck_delta_degc > 0) || !finite(p.stuck_delta_degc))
+    throw OptionError("faults.stuck_delta_degc",
+                      fmt::format("{} °C must be finite and > 0", p.stuck_delta_degc));
+}
+
+namespace fault {
+
+const std::array<std::string_view, count>& names() {
+  static const std::array<std::string_view, count> kNames = {
+      "temp_bad",     "temp_stuck", "gyro_bad", "time_bad", "gap",
+      "out_of_order", "restart",    "bridged",  "held",     "stopped"};
+  return kNames;
+}
+
+std::string describe(std::uint32_t flags) {
+  std::string out;
+  for (std::size_t k = 0; k < count; ++k) {
+    if ((flags & (1u << k)) == 0) continue;
+    if (!out.empty()) out += '|';
+    out += names()[k];
+  }
+  return out;
+}
+
+}  // namespace fault
+}  // namespace fogdrift
