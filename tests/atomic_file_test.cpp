@@ -30,6 +30,40 @@ TEST(AtomicFile, FailedWriteLeavesTheOldFileAndNoTemporary) {
   EXPECT_EQ(entries(dir.path()), 1u);
 }
 
+// A killed writer's hidden temporary (".NAME.tmp-PID-…", PID no longer running) is removed by the
+// next write of NAME; a running writer's (PID 1 runs), or another output's, is left alone.
+TEST(AtomicFile, TheNextWriteClearsAKilledWritersTemporary) {
+  test::TempDir dir;
+  const fs::path target = dir / "out.csv";
+  const fs::path dead = dir / ".out.csv.tmp-4194303-00000000abcd";  // above any live PID
+  const fs::path live = dir / ".out.csv.tmp-1-00000000abcd";
+  const fs::path other = dir / ".other.csv.tmp-4194303-00000000abcd";
+  for (const fs::path& p : {dead, live, other}) test::write_file(p, "half");
+  write_text_atomically(target, "new\n");
+  EXPECT_EQ(test::read_file(target), "new\n");
+  EXPECT_FALSE(fs::exists(dead));
+  EXPECT_TRUE(fs::exists(live));
+  EXPECT_TRUE(fs::exists(other));
+  fs::create_directory(dir / ".campaign.tmp-4194303-00000000abcd");
+  fill_directory_atomically(dir / "campaign", false,
+                            [](const fs::path& tmp) { test::write_file(tmp / "a.csv", "x"); });
+  EXPECT_FALSE(fs::exists(dir / ".campaign.tmp-4194303-00000000abcd"));
+}
+
+// A device is written in place, never renamed over: /dev/full gives the system's reason.
+TEST(AtomicFile, AFullDeviceIsAClearErrorAndStaysADevice) {
+  if (!fs::is_character_file("/dev/full")) GTEST_SKIP() << "/dev/full is not a device here";
+  try {
+    write_text_atomically("/dev/full", std::string(1 << 16, 'x'));
+    ADD_FAILURE() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("/dev/full: write failed (No space left on device)"),
+              std::string::npos)
+        << e.what();
+  }
+  EXPECT_TRUE(fs::is_character_file("/dev/full"));
+}
+
 TEST(AtomicFile, UnwritableFolderIsAnInputError) {
   EXPECT_THROW(write_text_atomically("/nonexistent-folder/x.csv", "x"), InputError);
 }
