@@ -46,28 +46,25 @@ std::vector<std::string> split(const std::string& line) {
 }
 
 // With --strict, the first faulty sample stops the stream with its file, line and column, as a
-// file for training would; the fault policy's flags say which rule it broke.
+// file for training would. Values that are not numbers and steps off the interval are caught
+// before the compensator sees them; this names the rule of the fault policy the sample broke.
 void stop_at_fault(const std::string& name, std::size_t line_no, std::uint32_t flags,
                    const std::array<std::size_t, 5>& column, const std::array<double, 5>& v,
-                   double previous_time, double dt_s, double rate_hz) {
+                   const FaultPolicy& policy) {
   constexpr std::array<const char*, 5> kNames = {"time_s", "gyro_dph", "temp_fog_degc",
                                                  "temp_acc1_degc", "temp_acc2_degc"};
-  auto at = [&](std::size_t k) {
-    return column[k] == static_cast<std::size_t>(-1) ? 0 : column[k] + 1;
-  };
-  if (flags & (fault::gap | fault::out_of_order | fault::restart))
-    throw InputError(name, line_no, at(0),
-                     fmt::format("time_s steps by {} s, not the {} s of --rate-hz {} ({})",
-                                 v[0] - previous_time, dt_s, rate_hz, fault::describe(flags)));
-  for (std::size_t k = 0; k < 5; ++k) {
-    const bool bad = k == 0   ? (flags & fault::time_bad) != 0
-                     : k == 1 ? (flags & fault::gyro_bad) != 0
-                              : (flags & (fault::temp_bad | fault::temp_stuck)) != 0;
-    if (bad && (!std::isfinite(v[k]) || k >= 2))
-      throw InputError(name, line_no, at(k),
-                       fmt::format("{} {} is a fault ({}); --strict stops at the first", kNames[k],
-                                   csv::format_number(v[k]), fault::describe(flags)));
-  }
+  constexpr std::size_t kAbsent = static_cast<std::size_t>(-1);
+  if (flags & fault::gyro_bad)
+    throw InputError(name, line_no, column[1] + 1,
+                     fmt::format("gyro_dph {} is beyond ±{} °/h (--gyro-limit-dph)",
+                                 csv::format_number(v[1]), policy.gyro_limit_dph));
+  for (std::size_t k = 2; k < 5 && (flags & fault::temp_bad); ++k)
+    if (column[k] != kAbsent && (v[k] < policy.temp_min_degc || v[k] > policy.temp_max_degc))
+      throw InputError(name, line_no, column[k] + 1,
+                       fmt::format("{} {} is outside [{}, {}] °C (--temp-min-degc, "
+                                   "--temp-max-degc)",
+                                   kNames[k], csv::format_number(v[k]), policy.temp_min_degc,
+                                   policy.temp_max_degc));
   throw InputError(
       name, line_no, 0,
       fmt::format("is a faulty sample ({}); --strict stops at the first", fault::describe(flags)));
@@ -147,8 +144,7 @@ void run(const StreamArgs& a) {
                        fmt::format("time_s steps by {} s, not the {} s of --rate-hz {}",
                                    v[0] - previous_time, dt_s, a.rate_hz));
     const StreamOutput out = compensator.update({v[0], v[1], v[2], v[3], v[4]});
-    if (a.strict && out.flags != 0)
-      stop_at_fault(name, line_no, out.flags, column, v, previous_time, dt_s, a.rate_hz);
+    if (a.strict && out.flags != 0) stop_at_fault(name, line_no, out.flags, column, v, a.faults);
     previous_time = v[0];
     ++samples;
     if (out.flags != 0) ++flagged;
