@@ -99,6 +99,8 @@ Campaign read_campaign(const fs::path& path) {
     doc = json::parse(text);
   } catch (const json::parse_error& e) {
     throw_json_syntax_error(file, text, e.byte, e.what());
+  } catch (const json::out_of_range& e) {
+    throw_json_number_error(file, text, e.what());
   }
   if (!doc.is_object()) fail(file, "(top level)", "must be a JSON object");
   check_keys(doc, {"format", "latitude_deg", "recordings", "generator", "notes"}, file, "");

@@ -205,6 +205,8 @@ CompensationModel compensation_model_from_json(const std::string& text, const st
     doc = ojson::parse(text);
   } catch (const ojson::parse_error& e) {
     throw_json_syntax_error(source, text, e.byte, e.what());
+  } catch (const ojson::out_of_range& e) {
+    throw_json_number_error(source, text, e.what());
   }
   auto fail = [&](const std::string& where, const std::string& rule) {
     throw InputError(source, 0, 0, fmt::format("{}: {}", where, rule));

@@ -41,4 +41,18 @@ void throw_json_syntax_error(const std::string& file, const std::string& text, s
                    "invalid JSON: " + (cut == std::string::npos ? what : what.substr(cut)));
 }
 
+void throw_json_number_error(const std::string& file, const std::string& text,
+                             const std::string& what) {
+  const auto open = what.find('\'');
+  const auto close = open == std::string::npos ? open : what.find('\'', open + 1);
+  const std::string number =
+      close == std::string::npos ? std::string() : what.substr(open + 1, close - open - 1);
+  const std::size_t at = number.empty() ? std::string::npos : text.find(number);
+  const auto [line, column] = at == std::string::npos ? std::pair<std::size_t, std::size_t>{0, 0}
+                                                      : line_column_of(text, at);
+  throw InputError(file, line, column,
+                   fmt::format("invalid JSON: the number {} is beyond the range of a double",
+                               number.empty() ? std::string("here") : number));
+}
+
 }  // namespace fogdrift

@@ -17,4 +17,10 @@ std::pair<std::size_t, std::size_t> line_column_of(const std::string& text, std:
 [[noreturn]] void throw_json_syntax_error(const std::string& file, const std::string& text,
                                           std::size_t byte, const std::string& what);
 
+/// A JSON number beyond a double's range, which the JSON parser reports as out of range with
+/// `what` ("… number overflow parsing '6e524'"): an InputError naming the file and, where the
+/// number is found in `text`, its line and column.
+[[noreturn]] void throw_json_number_error(const std::string& file, const std::string& text,
+                                          const std::string& what);
+
 }  // namespace fogdrift

@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 
 #include "fogdrift/error.hpp"
+#include "fogdrift/text_file.hpp"
 
 namespace fogdrift::sim {
 namespace {
@@ -153,7 +154,9 @@ Instrument instrument_from_json(const std::string& text, const std::string& file
   try {
     doc = nlohmann::json::parse(text);
   } catch (const nlohmann::json::parse_error& e) {
-    throw InputError(file, 0, 0, fmt::format("invalid JSON at byte {}: {}", e.byte, e.what()));
+    throw_json_syntax_error(file, text, e.byte, e.what());
+  } catch (const nlohmann::json::out_of_range& e) {
+    throw_json_number_error(file, text, e.what());
   }
   if (!doc.is_object()) throw InputError(file, 0, 0, "(top level): must be a JSON object");
   if (doc.contains("format") &&

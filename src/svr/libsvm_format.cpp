@@ -20,6 +20,11 @@ bool is_blank(char c) {
   return c == ' ' || c == '\t' || c == '\r';
 }
 
+// fogdrift holds features densely (rows × features doubles), so a sparse file with a huge index
+// would ask for more memory than any machine has. These limits make it an error first.
+constexpr std::size_t kMaxFeatures = 100000;
+constexpr std::size_t kMaxValues = std::size_t{1} << 27;  // 1 GiB of doubles
+
 // Walks one line token by token, remembering the column for error messages.
 class LineReader {
  public:
@@ -58,6 +63,11 @@ class LineReader {
     const auto [end, ec] = std::from_chars(idx.data(), idx.data() + idx.size(), index);
     if (ec != std::errc() || end != idx.data() + idx.size() || idx.empty() || index == 0)
       fail(fmt::format("feature index '{}' is not a positive integer", idx));
+    if (index > kMaxFeatures)
+      fail(
+          fmt::format("feature index {} is above the {} features fogdrift reads (it holds "
+                      "features densely)",
+                      index, kMaxFeatures));
     if (index <= previous)
       fail(
           fmt::format("feature index {} is not above the previous index {} (indices must "
@@ -98,8 +108,15 @@ void for_each_line(const std::string& text, F&& f) {
   }
 }
 
-// Densifies rows of (index, value) into a row-major matrix of `dims` columns.
-std::vector<double> densify(const std::vector<SparseRow>& rows, std::size_t dims) {
+// Densifies rows of (index, value) into a row-major matrix of `dims` columns; an InputError naming
+// `source` when that is more than kMaxValues.
+std::vector<double> densify(const std::vector<SparseRow>& rows, std::size_t dims,
+                            const std::string& source) {
+  if (dims > 0 && rows.size() > kMaxValues / dims)
+    throw InputError(source, 0, 0,
+                     fmt::format("{} rows × {} features is more than the {} values (1 GiB) "
+                                 "fogdrift holds in memory",
+                                 rows.size(), dims, kMaxValues));
   std::vector<double> x(rows.size() * dims, 0.0);
   for (std::size_t i = 0; i < rows.size(); ++i)
     for (const auto& [index, value] : rows[i]) x[i * dims + index - 1] = value;
@@ -134,7 +151,7 @@ Data parse_libsvm_data(const std::string& text, const std::string& source, std::
   if (rows.empty()) throw InputError(source, 0, 0, "no samples (the file is empty)");
   data.rows = rows.size();
   data.cols = dims;
-  data.x = densify(rows, dims);
+  data.x = densify(rows, dims, source);
   return data;
 }
 
@@ -195,7 +212,10 @@ Model parse_libsvm_model(const std::string& text, const std::string& source) {
       m.rho = r.number(r.token(), "rho");
       have_rho = true;
     } else if (key == "total_sv") {
-      total_sv = static_cast<long>(r.number(r.token(), "total_sv"));
+      const double v = r.number(r.token(), "total_sv");
+      if (!(v >= 0 && v <= 1e12 && v == std::floor(v)))
+        r.fail("total_sv must be a whole number ≥ 0");
+      total_sv = static_cast<long>(v);
     } else if (key == "nr_class") {
       if (r.number(r.token(), "nr_class") != 2) r.fail("nr_class must be 2 for regression");
     } else if (key == "degree" || key == "coef0") {
@@ -220,7 +240,7 @@ Model parse_libsvm_model(const std::string& text, const std::string& source) {
         source, last_line, 0,
         fmt::format("total_sv is {} but {} support vectors follow", total_sv, m.coef.size()));
   m.dims = dims;
-  m.support_vectors = densify(rows, dims);
+  m.support_vectors = densify(rows, dims, source);
   return m;
 }
 

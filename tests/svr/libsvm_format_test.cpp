@@ -42,6 +42,10 @@ TEST(LibsvmData, ErrorsNameLineColumnAndRule) {
   EXPECT_EQ(data_error("1 0:1\n"), "d.txt:1:3: feature index '0' is not a positive integer");
   EXPECT_EQ(data_error("1 1 2\n"), "d.txt:1:3: '1' is not INDEX:VALUE");
   EXPECT_EQ(data_error("1,5 1:2\n"), "d.txt:1:1: target '1,5' is not a number");
+  // Found by fuzzing: an index that would make the dense matrix larger than memory.
+  EXPECT_EQ(data_error("1 9999999999:1\n"),
+            "d.txt:1:3: feature index 9999999999 is above the 100000 features fogdrift reads (it "
+            "holds features densely)");
 }
 
 TEST(LibsvmModel, ReadsLibsvmsOwnOutputAndRejectsOtherModels) {
@@ -70,6 +74,9 @@ TEST(LibsvmModel, ReadsLibsvmsOwnOutputAndRejectsOtherModels) {
             "m.model: model header lacks 'gamma'");
   EXPECT_EQ(error("svm_type epsilon_svr\nkernel_type linear\ntotal_sv 3\nrho 0\nSV\n1 1:1\n"),
             "m.model:6: total_sv is 3 but 1 support vectors follow");
+  // Found by fuzzing: a count beyond any integer type was cast unchecked.
+  EXPECT_EQ(error("svm_type epsilon_svr\ntotal_sv 8e24\n"),
+            "m.model:2:10: total_sv must be a whole number ≥ 0");
 }
 
 }  // namespace
