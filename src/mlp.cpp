@@ -11,6 +11,7 @@
 
 #include "fogdrift/error.hpp"
 #include "fogdrift/random.hpp"
+#include "json_number.hpp"
 
 namespace fogdrift {
 
@@ -160,9 +161,9 @@ Mlp mlp_from_json(const std::string& text, const std::string& source) {
     if (r.contains("activation") && r.at("activation").get<std::string>() != "tanh")
       fail(where, "only tanh networks are written by fogdrift");
     where = "inputs";
-    n.inputs = r.at("inputs").get<std::size_t>();
+    n.inputs = fogdrift::detail::whole_number<std::size_t>(r.at("inputs"));
     where = "hidden";
-    n.hidden = r.at("hidden").get<std::size_t>();
+    n.hidden = fogdrift::detail::whole_number<std::size_t>(r.at("hidden"));
     where = "w1";
     n.w1 = r.at("w1").get<std::vector<double>>();
     where = "b1";

@@ -14,6 +14,7 @@
 #include "fogdrift/sha256.hpp"
 #include "fogdrift/signal/differentiate.hpp"
 #include "fogdrift/text_file.hpp"
+#include "json_number.hpp"
 
 namespace fogdrift {
 
@@ -218,7 +219,12 @@ CompensationModel compensation_model_from_json(const std::string& text, const st
          "`fogdrift train`?)");
   if (!doc.contains("version") || !doc["version"].is_number_integer())
     fail("version", "required integer field is missing");
-  const int version = doc["version"].get<int>();
+  int version = 0;
+  try {
+    version = fogdrift::detail::whole_number<int>(doc["version"]);
+  } catch (const ojson::exception&) {
+    fail("version", fmt::format("{} is not a format version", doc["version"].dump()));
+  }
   if (version < 1 || version > kCompensationModelVersion)
     fail("version", fmt::format("model format version {} is not supported (this fogdrift reads "
                                 "versions 1 to {}{})",
@@ -234,7 +240,8 @@ CompensationModel compensation_model_from_json(const std::string& text, const st
     m.feature_names = f.at("names").get<std::vector<std::string>>();
     const ojson& dif = f.at("differentiator");
     m.dataset.preprocessing.rates.window_s = dif.at("window_s").get<double>();
-    m.dataset.preprocessing.rates.poly_order = dif.at("poly_order").get<int>();
+    m.dataset.preprocessing.rates.poly_order =
+        fogdrift::detail::whole_number<int>(dif.at("poly_order"));
     m.dataset.preprocessing.rates.causality =
         signal::parse_causality(dif.at("causality").get<std::string>(), "causality");
     m.dataset.preprocessing.block.block_s = f.at("block_s").get<double>();
@@ -242,7 +249,8 @@ CompensationModel compensation_model_from_json(const std::string& text, const st
     const ojson& t = doc.at("target");
     m.dataset.denoise_target = t.at("denoise").get<bool>();
     m.dataset.denoise.wavelet = t.at("wavelet").get<std::string>();
-    if (t.at("level").is_number_integer()) m.dataset.denoise.level = t.at("level").get<int>();
+    if (t.at("level").is_number_integer())
+      m.dataset.denoise.level = fogdrift::detail::whole_number<int>(t.at("level"));
     m.dataset.denoise.threshold =
         signal::parse_threshold_rule(t.at("threshold").get<std::string>());
     m.dataset.denoise.shrinkage = signal::parse_shrinkage(t.at("mode").get<std::string>());
@@ -276,7 +284,7 @@ CompensationModel compensation_model_from_json(const std::string& text, const st
       m.guard.settings.full_at = g.at("full_at").get<double>();
       m.guard.settings.zero_at = g.at("zero_at").get<double>();
       m.guard.settings.recover_s = g.at("recover_s").get<double>();
-      m.guard.settings.prototypes = g.at("prototypes").get<std::size_t>();
+      m.guard.settings.prototypes = fogdrift::detail::whole_number<std::size_t>(g.at("prototypes"));
       m.guard.radius = g.at("radius").get<double>();
       m.guard.prototypes = g.at("points").get<std::vector<double>>();
       m.guard.dims = m.feature_names.size();
@@ -290,10 +298,10 @@ CompensationModel compensation_model_from_json(const std::string& text, const st
     m.provenance.cv = p.at("cv").get<std::string>();
     for (const auto& [k, v] : p.at("hyperparameters").items())
       m.provenance.hyperparameters.emplace_back(k, v.get<double>());
-    m.provenance.seed = p.at("seed").get<std::uint64_t>();
-    m.provenance.population = p.at("population").get<std::size_t>();
-    m.provenance.iterations = p.at("iterations").get<std::size_t>();
-    m.provenance.training_rows = p.at("training_rows").get<std::size_t>();
+    m.provenance.seed = fogdrift::detail::whole_number<std::uint64_t>(p.at("seed"));
+    m.provenance.population = fogdrift::detail::whole_number<std::size_t>(p.at("population"));
+    m.provenance.iterations = fogdrift::detail::whole_number<std::size_t>(p.at("iterations"));
+    m.provenance.training_rows = fogdrift::detail::whole_number<std::size_t>(p.at("training_rows"));
     for (const auto& f : p.at("files"))
       m.provenance.files.push_back(
           {f.at("path").get<std::string>(), f.at("sha256").get<std::string>()});

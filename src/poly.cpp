@@ -7,6 +7,7 @@
 #include <string>
 
 #include "fogdrift/error.hpp"
+#include "json_number.hpp"
 
 namespace fogdrift {
 
@@ -96,9 +97,9 @@ Poly poly_from_json(const std::string& text, const std::string& source) {
   try {
     const auto r = nlohmann::json::parse(text);
     where = "inputs";
-    p.inputs = r.at("inputs").get<std::size_t>();
+    p.inputs = fogdrift::detail::whole_number<std::size_t>(r.at("inputs"));
     where = "degree";
-    p.degree = r.at("degree").get<std::size_t>();
+    p.degree = fogdrift::detail::whole_number<std::size_t>(r.at("degree"));
     where = "coef";
     p.coef = r.at("coef").get<std::vector<double>>();
     where = "exponents";

@@ -5,7 +5,9 @@
 #include <array>
 #include <filesystem>
 
+#include "fogdrift/error.hpp"
 #include "fogdrift/model.hpp"
+#include "test_util.hpp"
 
 #ifndef FOGDRIFT_TEST_DATA
 #error "FOGDRIFT_TEST_DATA must name tests/data"
@@ -54,6 +56,24 @@ TEST(ModelGolden, Version3SvrLoadsAndPredictsAsWritten) {
                           {-0.071589399346321594, -0.071589399346321594},
                           {-0.070285368200171255, -0.071182229593399954},
                           {-0.075945968218800924, -0.083416954658316181}}});
+}
+
+// Found by fuzzing: a count written as a float (7.7e80 prototypes) was converted to an integer
+// type unchecked, which is undefined behaviour. It is now an error naming the field.
+TEST(ModelGolden, ACountThatIsNotAWholeNumberIsRejected) {
+  std::string text = test::read_file(kModels / "svr_v3.json");
+  const std::string key = "\"prototypes\": ";
+  const auto at = text.find(key);
+  ASSERT_NE(at, std::string::npos);
+  const auto end = text.find_first_of(",\n}", at + key.size());
+  text.replace(at + key.size(), end - at - key.size(), "7.7e80");
+  try {
+    compensation_model_from_json(text, "edited.json", {true});
+    ADD_FAILURE() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("edited.json: guard"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("must be a whole number"), std::string::npos) << e.what();
+  }
 }
 
 }  // namespace

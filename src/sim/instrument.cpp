@@ -170,7 +170,7 @@ Instrument instrument_from_json(const std::string& text, const std::string& file
   // Every leaf in the document must be a known field.
   const nlohmann::json flat = doc.flatten();
   for (const auto& [pointer, value] : flat.items()) {
-    if (pointer == "/format") continue;
+    if (pointer == "/format" || pointer.empty()) continue;  // "": the empty document, {}
     std::string path = pointer.substr(1);
     for (char& c : path)
       if (c == '/') c = '.';

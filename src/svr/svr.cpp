@@ -13,6 +13,7 @@
 #include "fogdrift/error.hpp"
 #include "fogdrift/text_file.hpp"
 #include "fogdrift/thread_pool.hpp"
+#include "json_number.hpp"
 
 namespace fogdrift::svr {
 namespace {
@@ -218,7 +219,12 @@ Model model_from_json(const std::string& text, const std::string& source) {
     fail("format", "must be \"fogdrift-svr\" (is this an SVR model written by fogdrift?)");
   if (!doc.contains("version") || !doc["version"].is_number_integer())
     fail("version", "required integer field is missing");
-  const int version = doc["version"].get<int>();
+  int version = 0;
+  try {
+    version = fogdrift::detail::whole_number<int>(doc["version"]);
+  } catch (const ojson::exception&) {
+    fail("version", fmt::format("{} is not a format version", doc["version"].dump()));
+  }
   if (version != kModelFormatVersion)
     fail("version",
          fmt::format("model format version {} is not supported (this fogdrift reads "
@@ -240,7 +246,7 @@ Model model_from_json(const std::string& text, const std::string& source) {
     } else {
       fail("kernel", "must be \"rbf\" or \"linear\"");
     }
-    m.dims = doc.at("dims").get<std::size_t>();
+    m.dims = fogdrift::detail::whole_number<std::size_t>(doc.at("dims"));
     m.rho = doc.at("rho").get<double>();
     m.coef = doc.at("coef").get<std::vector<double>>();
     const auto& svs = doc.at("support_vectors");

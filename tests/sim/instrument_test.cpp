@@ -42,6 +42,18 @@ TEST(Instrument, BadFilesNameTheParameterAndTheRule) {
             std::string::npos);
   EXPECT_NE(message_of(R"({"format": "other/2"})").find("format"), std::string::npos);
   EXPECT_NE(message_of("{ nope").find("invalid JSON"), std::string::npos);
+  // Found by fuzzing: a number beyond a double escaped as the JSON library's exception.
+  EXPECT_NE(
+      message_of(R"({"fog": {"bias_dph": 1e999}})")
+          .find("unit.json:1:22: invalid JSON: the number 1e999 is beyond the range of a double"),
+      std::string::npos)
+      << message_of(R"({"fog": {"bias_dph": 1e999}})");
+}
+
+// Found by fuzzing: the empty document is every default (it used to fail on an empty path).
+TEST(Instrument, EmptyDocumentIsTheDefaults) {
+  const Instrument in = instrument_from_json("{}", "x.json");
+  EXPECT_EQ(in.fog.bias_dph, Instrument{}.fog.bias_dph);
 }
 
 TEST(Instrument, ParameterTableListsEveryField) {
