@@ -11,6 +11,9 @@
 
 namespace fogdrift::app {
 
+/// The whole command set on `app`: description, --version and every subcommand below.
+void add_commands(CLI::App& app);
+
 void add_simulate(CLI::App& app);
 void add_inspect(CLI::App& app);
 void add_import(CLI::App& app);
