@@ -136,25 +136,25 @@ constexpr std::string_view kStreamingC =
  * than @U@_BRIDGE_S starts again as at power-on. The drift is always a finite number. */
 #define @U@_RATE_WINDOW @W@
 @GUARD_DEFINE@#ifndef @U@_TEMP_MIN_DEGC
-#define @U@_TEMP_MIN_DEGC @TEMP_MIN@
+#define @U@_TEMP_MIN_DEGC (@TEMP_MIN@)
 #endif
 #ifndef @U@_TEMP_MAX_DEGC
-#define @U@_TEMP_MAX_DEGC @TEMP_MAX@
+#define @U@_TEMP_MAX_DEGC (@TEMP_MAX@)
 #endif
 #ifndef @U@_GYRO_LIMIT_DPH
-#define @U@_GYRO_LIMIT_DPH @GYRO_LIMIT@
+#define @U@_GYRO_LIMIT_DPH (@GYRO_LIMIT@)
 #endif
 #ifndef @U@_BRIDGE_S
-#define @U@_BRIDGE_S @BRIDGE@
+#define @U@_BRIDGE_S (@BRIDGE@)
 #endif
 #ifndef @U@_HOLD_S
-#define @U@_HOLD_S @HOLD@
+#define @U@_HOLD_S (@HOLD@)
 #endif
 #ifndef @U@_STUCK_S
-#define @U@_STUCK_S @STUCK@ /* 0: no stuck check */
+#define @U@_STUCK_S (@STUCK@) /* 0: no stuck check */
 #endif
 #ifndef @U@_STUCK_DELTA_DEGC
-#define @U@_STUCK_DELTA_DEGC @STUCK_DELTA@
+#define @U@_STUCK_DELTA_DEGC (@STUCK_DELTA@)
 #endif
 @FLAGS@
 static const double @P@_dt_s = @DT@;

@@ -363,9 +363,9 @@ check "streaming header has the update" grep -qF "static inline double u_update(
 if command -v cc >/dev/null; then
   check "streaming header compiles as C99" cc -std=c99 -Wall -Wextra -pedantic -Werror -fsyntax-only -x c "$work/unit_stream.h"
 fi
-check "streaming header has the fault policy" grep -qF "#define U_BRIDGE_S 5" "$work/unit_stream.h"
+check "streaming header has the fault policy" grep -qF "#define U_BRIDGE_S (5)" "$work/unit_stream.h"
 check "export-c fault settings" run 0 "$fd" export-c "$work/bp.json" -o "$work/unit_hot.h" --prefix u --stream-rate-hz 1 --temp-max-degc 90
-check "export-c fault settings in the header" grep -qF "#define U_TEMP_MAX_DEGC 90" "$work/unit_hot.h"
+check "export-c fault settings in the header" grep -qF "#define U_TEMP_MAX_DEGC (90)" "$work/unit_hot.h"
 check "export-c bad fault setting" run 1 "$fd" export-c "$work/bp.json" -o "$work/bad.h" --stream-rate-hz 1 --bridge-s -1
 check "export-c bad fault setting message" err_has "option --bridge-s: -1 s must be finite and ≥ 0"
 check "export-c bad stream rate" run 1 "$fd" export-c "$work/bp.json" -o "$work/bad.h" --stream-rate-hz -1
