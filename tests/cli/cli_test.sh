@@ -208,6 +208,9 @@ check "train names the folds" out_has "whole initial temperatures (3 folds)"
 check "train again on two threads" run 0 "$fd" train "$work/small" --population 5 --iterations 2 \
   --c-max 10 --threads 2 -q -o "$work/m2.json"
 check "one seed, one model file" cmp "$work/m1.json" "$work/m2.json"
+check "train again on eight threads" run 0 "$fd" train "$work/small" --population 5 --iterations 2 \
+  --c-max 10 --threads 8 -q -o "$work/m8.json"
+check "eight threads, the same model file" cmp "$work/m1.json" "$work/m8.json"
 check "another seed" run 0 "$fd" train "$work/small" --population 5 --iterations 2 --c-max 10 \
   --seed 2 -q -o "$work/m3.json"
 check "another seed, another search" bash -c "! cmp -s '$work/m1.json' '$work/m3.json'"
