@@ -40,6 +40,7 @@ status=0
   -max_len="$max_len" -timeout=10 -rss_limit_mb=2048 -print_final_stats=1 \
   -artifact_prefix="$artifacts/" "${parallel[@]}") || status=$?
 # Keep only the inputs that add coverage to the committed corpus.
-"$build/tests/fuzz/fuzz_$target" -merge=1 -max_len="$max_len" "$corpus" "$found" 2>&1 |
+(cd "$build" && "$build/tests/fuzz/fuzz_$target" -merge=1 -max_len="$max_len" \
+  -artifact_prefix="$artifacts/" "$corpus" "$found" 2>&1) |
   grep -E "MERGE-OUTER: [0-9]+ new files" || true
 exit "$status"
