@@ -453,6 +453,7 @@ Selection conjugate_portable(double* f, const double* up, const float* k_i, cons
   return none_if_offsets_only(out);
 }
 
+#if FOGDRIFT_HAVE_AVX2_GATHER
 // Merging per-lane results of the vectorised loops (arrays of `lanes` values; index −1: none):
 // the last maximiser, and the best gain num/den (cross-multiplied, the larger index on ties).
 void merge_max(const double* value, const double* index, int lanes, Selection& out) {
@@ -477,6 +478,7 @@ void merge_gain(const double* num, const double* den, const double* index, const
     }
   }
 }
+#endif
 
 // select_low over [begin, len), continuing from `out` and the best gain so far num/den; the
 // portable version, and the tail of the vectorised one.
@@ -999,7 +1001,7 @@ Selection conjugate_update_and_select_up(double* f, const double* up, const floa
   return conjugate_update_and_select_up_with(best_isa(), f, up, k_i, k_j, kd, lambda, t, len);
 }
 
-Selection conjugate_update_and_select_up_with(Isa isa, double* f, const double* up,
+Selection conjugate_update_and_select_up_with([[maybe_unused]] Isa isa, double* f, const double* up,
                                               const float* k_i, const float* k_j, double* kd,
                                               double lambda, double t, std::size_t len) {
 #if FOGDRIFT_HAVE_AVX2_GATHER
@@ -1036,8 +1038,9 @@ bool available(Isa isa) {
   return isa == Isa::portable;
 }
 
-Selection update_and_select_up_with(Isa isa, double* f, const double* up, const float* k_i,
-                                    const float* k_j, double b_i, double b_j, std::size_t len) {
+Selection update_and_select_up_with([[maybe_unused]] Isa isa, double* f, const double* up,
+                                    const float* k_i, const float* k_j, double b_i, double b_j,
+                                    std::size_t len) {
 #if FOGDRIFT_HAVE_AVX2_GATHER
   if (isa == Isa::avx512 && kHasAvx512)
     return update_and_select_up_avx512<true>(f, up, k_i, k_j, b_i, b_j, len);
@@ -1047,9 +1050,9 @@ Selection update_and_select_up_with(Isa isa, double* f, const double* up, const 
   return update_and_select_up_portable<true>(f, up, k_i, k_j, b_i, b_j, len);
 }
 
-SelectionJ select_low_with(Isa isa, const double* f, const double* low, const float* k_i,
-                           const double* qd, double qd_i, double g_max, double tau,
-                           std::size_t len) {
+SelectionJ select_low_with([[maybe_unused]] Isa isa, const double* f, const double* low,
+                           const float* k_i, const double* qd, double qd_i, double g_max,
+                           double tau, std::size_t len) {
 #if FOGDRIFT_HAVE_AVX2_GATHER
   if (isa == Isa::avx512 && kHasAvx512)
     return select_low_avx512(f, low, k_i, qd, qd_i, g_max, tau, len);
