@@ -24,9 +24,9 @@ fs::path parent_of(const fs::path& path) {
   return path.has_parent_path() ? path.parent_path() : fs::path(".");
 }
 
-// ".NAME.tmp-PID-": the start of every temporary sibling of `path` this process makes.
-std::string temporary_prefix(const fs::path& path, long pid) {
-  return fmt::format(".{}.tmp-{}-", path.filename().string(), pid);
+// ".NAME.tmp-": the start of every temporary sibling of `path`; the writer's PID follows.
+std::string temporary_head(const fs::path& path) {
+  return fmt::format(".{}.tmp-", path.filename().string());
 }
 
 // A temporary sibling name unique enough for concurrent writers in one folder, carrying the
@@ -34,8 +34,8 @@ std::string temporary_prefix(const fs::path& path, long pid) {
 fs::path temporary_sibling(const fs::path& path) {
   static thread_local std::mt19937_64 engine{std::random_device{}() ^
                                              (static_cast<std::uint64_t>(::getpid()) << 32)};
-  return parent_of(path) /
-         fmt::format("{}{:012x}", temporary_prefix(path, ::getpid()), engine() & 0xffffffffffffULL);
+  return parent_of(path) / fmt::format("{}{}-{:012x}", temporary_head(path), ::getpid(),
+                                       engine() & 0xffffffffffffULL);
 }
 
 void remove_quietly(const fs::path& p) {
@@ -46,7 +46,7 @@ void remove_quietly(const fs::path& p) {
 // Removes the temporary siblings of `path` left by writers that no longer run (a killed run):
 // ".NAME.tmp-PID-…" whose PID names no live process. A live writer's are left alone.
 void remove_stale_temporaries(const fs::path& path) {
-  const std::string head = fmt::format(".{}.tmp-", path.filename().string());
+  const std::string head = temporary_head(path);
   std::error_code ec;
   for (fs::directory_iterator it(parent_of(path), ec), end; !ec && it != end; it.increment(ec)) {
     const std::string name = it->path().filename().string();

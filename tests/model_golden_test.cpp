@@ -76,5 +76,17 @@ TEST(ModelGolden, ACountThatIsNotAWholeNumberIsRejected) {
   }
 }
 
+// Found by fuzzing: a number beyond a double is an error with its line and column.
+TEST(ModelGolden, ANumberBeyondADoubleIsRejected) {
+  try {
+    compensation_model_from_json(
+        "{\"format\": \"fogdrift-compensation-model\",\n\"version\": 3e999}", "m.json");
+    ADD_FAILURE() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()),
+              "m.json:2:12: invalid JSON: the number 3e999 is beyond the range of a double");
+  }
+}
+
 }  // namespace
 }  // namespace fogdrift

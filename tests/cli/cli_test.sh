@@ -333,6 +333,9 @@ check "stream wrote the good lines before it" test "$(wc -l <"$work/out")" -eq 5
 awk -F, 'BEGIN{OFS=","} NR==8{$3="300"} {print}' "$rec20" >"$work/hot.csv"
 check "stream out of range strict" run 1 "$fd" stream "$work/causal.json" "$work/hot.csv" --rate-hz 1 --strict
 check "stream out of range message" err_has "hot.csv:8:3: temp_fog_degc 300 is outside [-60, 125] °C (--temp-min-degc, --temp-max-degc)"
+awk -F, 'BEGIN{OFS=","} NR==7{$2="1e9"} {print}' "$rec20" >"$work/spin.csv"
+check "stream gyro beyond its limit strict" run 1 "$fd" stream "$work/causal.json" "$work/spin.csv" --rate-hz 1 --strict
+check "stream gyro limit message" err_has "spin.csv:7:2: gyro_dph 1e+09 is beyond ±3600000 °/h (--gyro-limit-dph)"
 check "stream range option" run 0 "$fd" stream "$work/causal.json" "$work/hot.csv" --rate-hz 1 --temp-max-degc 400
 check "stream range option: nothing flagged" test ! -s "$work/err"
 check "stream bad policy" run 1 "$fd" stream "$work/causal.json" "$rec20" --rate-hz 1 --hold-s 2

@@ -8,7 +8,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const std::string text = fogdrift::fuzz::text_of(data, size);
   fogdrift::fuzz::expect_clean_errors([&] {
     const fogdrift::svr::Model model = fogdrift::svr::parse_libsvm_model(text, "fuzz");
-    const std::vector<double> x(model.dims + 1, 0.25);
+    const std::vector<double> x(model.dims, 0.25);
     model.predict(x.data());
   });
   return 0;

@@ -46,6 +46,12 @@ TEST(LibsvmData, ErrorsNameLineColumnAndRule) {
   EXPECT_EQ(data_error("1 9999999999:1\n"),
             "d.txt:1:3: feature index 9999999999 is above the 100000 features fogdrift reads (it "
             "holds features densely)");
+  // More values in all than fogdrift holds: an error before the dense matrix is allocated.
+  std::string big;
+  for (int i = 0; i < 1343; ++i) big += "1 100000:1\n";
+  EXPECT_EQ(data_error(big),
+            "d.txt: 1343 rows × 100000 features is more than the 134217728 values (1 GiB) "
+            "fogdrift holds in memory");
 }
 
 TEST(LibsvmModel, ReadsLibsvmsOwnOutputAndRejectsOtherModels) {
