@@ -14,7 +14,9 @@ void add_commands(CLI::App& app) {
       "instrument's own thermometers (wavelet denoising, temperature features, ε-SVR tuned by\n"
       "sparrow search). Start with 'fogdrift demo', or 'fogdrift SUBCOMMAND --help'.\n\n"
       "Exit status: 0 success; 1 bad input file or option value (the message names the file,\n"
-      "line and column, or the option, and the rule broken); 105-115 command-line usage errors.");
+      "line and column, or the option, and the rule broken); 105-115 command-line usage errors.\n\n"
+      "Environment: FOGDRIFT_ISA=portable|avx2|avx512 runs the SVR engine on that instruction\n"
+      "set instead of the fastest the processor has; every one gives the same model, bit for bit.");
   app.set_version_flag("--version", std::string("fogdrift ") + kVersion);
   app.require_subcommand(1);
   app.fallthrough(false);

@@ -7,10 +7,13 @@
 
 #include "commands.hpp"
 #include "fogdrift/error.hpp"
+#include "fogdrift/svr/svr.hpp"
 
 int main(int argc, char** argv) {
   CLI::App app;
   fogdrift::app::add_commands(app);
+  // A bad FOGDRIFT_ISA is reported before any command starts work, and --help still works.
+  app.parse_complete_callback([] { fogdrift::svr::instruction_set(); });
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -1,5 +1,4 @@
 #include "fogdrift/svr/kernel.hpp"
-#include "fogdrift/enum_names.hpp"
 
 #include <fmt/format.h>
 
@@ -103,8 +102,8 @@ TrainingSet::TrainingSet(Data data, const Options& options) : data_(std::move(da
       matrix_mb <= options.distance_budget_mb) {
     distances_.resize(n * n);
     auto fill = [&](std::size_t i) {
-      detail::distance_row(data_.row(i), squared_norms_[i], feature_major_.data(),
-                           squared_norms_.data(), n, d, distances_.data() + i * n);
+      detail::loops().distance_row(data_.row(i), squared_norms_[i], feature_major_.data(),
+                                   squared_norms_.data(), n, d, distances_.data() + i * n);
     };
     if (options.pool != nullptr) {
       options.pool->parallel_for(n, fill);
@@ -123,12 +122,12 @@ std::size_t TrainingSet::bytes() const {
 void TrainingSet::kernel_row(const Kernel& kernel, std::size_t i, float* out) const {
   const std::size_t n = data_.rows, d = data_.cols;
   if (kernel.type == KernelType::linear) {
-    detail::linear_row(data_.row(i), feature_major_.data(), n, n, d, out);
+    detail::loops().linear_row(data_.row(i), feature_major_.data(), n, n, d, out);
   } else if (!distances_.empty()) {
-    detail::rbf_row_from_distances(distances_.data() + i * n, n, kernel.gamma, out);
+    detail::loops().rbf_row_from_distances(distances_.data() + i * n, n, kernel.gamma, out);
   } else {
-    detail::rbf_row(data_.row(i), squared_norms_[i], feature_major_.data(), n,
-                    squared_norms_.data(), n, d, kernel.gamma, out);
+    detail::loops().rbf_row(data_.row(i), squared_norms_[i], feature_major_.data(), n,
+                            squared_norms_.data(), n, d, kernel.gamma, out);
   }
 }
 

@@ -111,8 +111,8 @@ class PairSmo {
       const double bound = (a_[k] >= c_ ? c_ : 0.0) - (b_[k] >= c_ ? c_ : 0.0);
       if (beta == 0 && bound == 0) continue;
       const float* row = rows_.row(index_[k], n_);
-      if (beta != 0) add_row(f_.data(), row, beta, 0, n_);
-      if (bound != 0) add_row(gbar_.data(), row, bound, 0, n_);
+      if (beta != 0) loops_.add_row(f_.data(), row, beta, 0, n_);
+      if (bound != 0) loops_.add_row(gbar_.data(), row, bound, 0, n_);
     }
   }
 
@@ -134,13 +134,13 @@ class PairSmo {
           up_current = false;
         }
       }
-      if (!up_current) up = select_up(f_.data(), up_.data(), active_);
+      if (!up_current) up = loops_.select_up(f_.data(), up_.data(), active_);
       const float* k_i = nullptr;
       if (!select_working_set(up, i, j, k_i)) {
         forget_direction();
         reconstruct_gradient();
         active_ = n_;
-        up = select_up(f_.data(), up_.data(), active_);
+        up = loops_.select_up(f_.data(), up_.data(), active_);
         if (!select_working_set(up, i, j, k_i)) break;
         counter = 1;  // shrink at the next iteration
       }
@@ -197,6 +197,7 @@ class PairSmo {
   }
 
  private:
+  const Loops& loops_ = loops();  // the inner loops, one instruction set (loops.hpp)
   std::size_t n_;
   double c_, epsilon_, tolerance_;
   bool shrinking_;
@@ -256,7 +257,7 @@ class PairSmo {
     i = static_cast<std::size_t>(up.index);
     k_i = rows_.row(index_[i], active_);
     const SelectionJ low =
-        select_low(f_.data(), low_.data(), k_i, qd_.data(), qd_[i], up.value, kTau, active_);
+        loops_.select_low(f_.data(), low_.data(), k_i, qd_.data(), qd_[i], up.value, kTau, active_);
     if (up.value + low.g_max2 < tolerance_ || low.index < 0) return false;
     j = static_cast<std::size_t>(low.index);
     return true;
@@ -288,12 +289,14 @@ class PairSmo {
     refresh(i);
     refresh(j);
     if (upper_i != (alpha_i >= c_))  // row i grows in place to n entries
-      add_row(gbar_.data(), rows_.row(index_[i], n_), (upper_i ? -c_ : c_) * y_i, 0, n_);
+      loops_.add_row(gbar_.data(), rows_.row(index_[i], n_), (upper_i ? -c_ : c_) * y_i, 0, n_);
     if (upper_j != (alpha_j >= c_))
-      add_row(gbar_.data(), rows_.row(index_[j], n_), (upper_j ? -c_ : c_) * y_j, 0, n_);
-    if (i == j) return update_and_select_up(f_.data(), up_.data(), k_i, k_i, d_i + d_j, 0, active_);
+      loops_.add_row(gbar_.data(), rows_.row(index_[j], n_), (upper_j ? -c_ : c_) * y_j, 0, n_);
+    if (i == j)
+      return loops_.update_and_select_up(f_.data(), up_.data(), k_i, k_i, d_i + d_j, 0, active_);
     const float* k_j = rows_.row(index_[j], active_);  // evicts the oldest row, never k_i
-    const Selection next = update_and_select_up(f_.data(), up_.data(), k_i, k_j, d_i, d_j, active_);
+    const Selection next =
+        loops_.update_and_select_up(f_.data(), up_.data(), k_i, k_j, d_i, d_j, active_);
     // Clipping sets a variable to a bound, so two free variables mean the step reached the line
     // minimum, and the next direction can be made conjugate to this one (u_β = e_i − e_j).
     if (conjugate_ && quad > 0 && alpha_i > 0 && alpha_i < c_ && alpha_j > 0 && alpha_j < c_) {
@@ -301,8 +304,8 @@ class PairSmo {
       add_to_support(j);
       (minus_i ? db_ : da_)[i] = y_i;
       (plus_j ? da_ : db_)[j] = -y_j;
-      conjugate_update_and_select_up(f_.data(), up_.data(), k_i, k_j, kd_.data(), 0.0, 0.0,
-                                     active_);
+      loops_.conjugate_update_and_select_up(f_.data(), up_.data(), k_i, k_j, kd_.data(), 0.0, 0.0,
+                                            active_);
       dkd_ = quad;
     }
     return next;
@@ -342,8 +345,8 @@ class PairSmo {
     }
     if (rows_asked) k_i = rows_.row(index_[i], active_);  // it may have evicted row i
     const float* k_j = rows_.row(index_[j], active_);
-    next = conjugate_update_and_select_up(f_.data(), up_.data(), k_i, k_j, kd_.data(), lambda, t,
-                                          active_);
+    next = loops_.conjugate_update_and_select_up(f_.data(), up_.data(), k_i, k_j, kd_.data(),
+                                                 lambda, t, active_);
     dkd_ = dkd;
     ++conjugate_steps_;
     if (support_.size() > kMaxSupport) forget_direction();
@@ -362,7 +365,7 @@ class PairSmo {
     const bool upper = alpha >= c_;
     alpha = std::clamp(alpha + delta, 0.0, c_);
     if (upper == (alpha >= c_)) return false;
-    add_row(gbar_.data(), rows_.row(index_[k], n_), (upper ? -c_ : c_) * y, 0, n_);
+    loops_.add_row(gbar_.data(), rows_.row(index_[k], n_), (upper ? -c_ : c_) * y, 0, n_);
     return true;
   }
 
@@ -458,7 +461,7 @@ class PairSmo {
     } else {
       for (std::size_t q = 0; q < active_; ++q) {
         const double phi = free_part(q);
-        if (phi != 0) add_row(f_.data(), rows_.row(index_[q], n_), phi, active_, n_);
+        if (phi != 0) loops_.add_row(f_.data(), rows_.row(index_[q], n_), phi, active_, n_);
       }
     }
   }

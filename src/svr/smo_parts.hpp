@@ -98,13 +98,14 @@ class DataInOrder {
   void row(std::size_t r, std::size_t begin, std::size_t end, float* out) const {
     const double* x = set_.data().row(r);
     if (kernel_.type == KernelType::linear)
-      linear_row(x, xt_.data() + begin, n_, end - begin, d_, out + begin);
+      loops_.linear_row(x, xt_.data() + begin, n_, end - begin, d_, out + begin);
     else
-      rbf_row(x, set_.squared_norm(r), xt_.data() + begin, n_, sq_.data() + begin, end - begin, d_,
-              kernel_.gamma, out + begin);
+      loops_.rbf_row(x, set_.squared_norm(r), xt_.data() + begin, n_, sq_.data() + begin,
+                     end - begin, d_, kernel_.gamma, out + begin);
   }
 
  private:
+  const Loops& loops_ = loops();
   const TrainingSet& set_;
   Kernel kernel_;
   std::size_t n_, d_;

@@ -81,9 +81,9 @@ class Smo {
     for (std::size_t i = 0; i < len_; ++i) {
       if (status_[i] == kLowerBound) continue;
       const float* row = row_in_order(i, len_);
-      detail::add_scaled(g_.data(), y_.data(), row, alpha_[i] * y_[i], 0, len_);
+      loops_.add_scaled(g_.data(), y_.data(), row, alpha_[i] * y_[i], 0, len_);
       if (status_[i] == kUpperBound)
-        detail::add_scaled(g_bar_.data(), y_.data(), row, c_ * y_[i], 0, len_);
+        loops_.add_scaled(g_bar_.data(), y_.data(), row, c_ * y_[i], 0, len_);
     }
   }
 
@@ -138,6 +138,7 @@ class Smo {
   }
 
  private:
+  const detail::Loops& loops_ = detail::loops();  // the inner loops of one instruction set
   std::size_t n_, len_;
   double c_;
   double tolerance_;
@@ -179,12 +180,12 @@ class Smo {
 
   // WSS 2 of Fan, Chen & Lin (2005) over the active set; false when optimal within tolerance.
   bool select_working_set(std::int64_t& out_i, std::int64_t& out_j) {
-    const auto si = detail::select_i(g_.data(), y_.data(), status_.data(), active_);
+    const auto si = loops_.select_i(g_.data(), y_.data(), status_.data(), active_);
     if (si.index < 0) return false;
     const std::size_t i = static_cast<std::size_t>(si.index);
     const float* k_i = row_in_order(i, active_);
-    const auto sj = detail::select_j(g_.data(), y_.data(), status_.data(), k_i, qd_.data(), qd_[i],
-                                     si.value, kTau, active_);
+    const auto sj = loops_.select_j(g_.data(), y_.data(), status_.data(), k_i, qd_.data(), qd_[i],
+                                    si.value, kTau, active_);
     if (si.value + sj.g_max2 < tolerance_ || sj.index < 0) return false;
     out_i = si.index;
     out_j = sj.index;
@@ -211,7 +212,7 @@ class Smo {
     detail::two_variable_step(alpha_[i], alpha_[j], y_[i], y_[j], g_[i], g_[j],
                               qd_[i] + qd_[j] - 2 * k_i[j], c_);
     const double d_i = alpha_[i] - old_i, d_j = alpha_[j] - old_j;
-    detail::update_gradient(g_.data(), y_.data(), k_i, k_j, y_[i] * d_i, y_[j] * d_j, active_);
+    loops_.update_gradient(g_.data(), y_.data(), k_i, k_j, y_[i] * d_i, y_[j] * d_j, active_);
 
     const bool upper_i = is_upper(i), upper_j = is_upper(j);
     update_status(i);
@@ -222,7 +223,7 @@ class Smo {
 
   void update_g_bar(std::size_t k, double scale) {
     const float* row = row_in_order(k, len_);
-    detail::add_scaled(g_bar_.data(), y_.data(), row, scale * y_[k], 0, len_);
+    loops_.add_scaled(g_bar_.data(), y_.data(), row, scale * y_[k], 0, len_);
   }
 
   // G of the shrunk variables from Ḡ and the free variables (LIBSVM's reconstruct_gradient).
@@ -247,7 +248,7 @@ class Smo {
       for (std::size_t i = 0; i < active_; ++i) {
         if (!is_free(i)) continue;
         const float* row = row_in_order(i, len_);
-        detail::add_scaled(g_.data(), y_.data(), row, alpha_[i] * y_[i], active_, len_);
+        loops_.add_scaled(g_.data(), y_.data(), row, alpha_[i] * y_[i], active_, len_);
       }
     }
   }

@@ -211,6 +211,24 @@ check "one seed, one model file" cmp "$work/m1.json" "$work/m2.json"
 check "train again on eight threads" run 0 "$fd" train "$work/small" --population 5 --iterations 2 \
   --c-max 10 --threads 8 -q -o "$work/m8.json"
 check "eight threads, the same model file" cmp "$work/m1.json" "$work/m8.json"
+# Every instruction set gives the same model, byte for byte (FOGDRIFT_ISA, docs/reliability.md):
+# the tuned SVR above on the pair solver, and LIBSVM's own working sets at a large C.
+for isa in portable avx2 avx512; do
+  if ! FOGDRIFT_ISA=$isa "$fd" svr train -q -c 1 "$dia" "$work/isa.model" 2>"$work/err"; then
+    check "FOGDRIFT_ISA=$isa missing on this processor, said so" err_has "this processor cannot run '$isa'"
+    continue
+  fi
+  check "train with FOGDRIFT_ISA=$isa" env FOGDRIFT_ISA=$isa "$fd" train "$work/small" --population 5 \
+    --iterations 2 --c-max 10 --threads 2 -q -o "$work/m_$isa.json"
+  check "FOGDRIFT_ISA=$isa, the same model file" cmp "$work/m1.json" "$work/m_$isa.json"
+  check "svr train --solver libsvm with FOGDRIFT_ISA=$isa" env FOGDRIFT_ISA=$isa "$fd" svr train -q \
+    -c 100 -g 0.5 --solver libsvm "$dia" "$work/libsvm_$isa.model"
+  check "FOGDRIFT_ISA=$isa, the same LIBSVM-path model" cmp "$work/libsvm_portable.model" \
+    "$work/libsvm_$isa.model"
+done
+check "unknown FOGDRIFT_ISA" run 1 env FOGDRIFT_ISA=sse4 "$fd" train "$work/small" -o "$work/x.json"
+check "FOGDRIFT_ISA message" err_has "option FOGDRIFT_ISA: 'sse4' is not an instruction set (portable, avx2, avx512)"
+check "help works whatever FOGDRIFT_ISA says" run 0 env FOGDRIFT_ISA=sse4 "$fd" train --help
 check "another seed" run 0 "$fd" train "$work/small" --population 5 --iterations 2 --c-max 10 \
   --seed 2 -q -o "$work/m3.json"
 check "another seed, another search" bash -c "! cmp -s '$work/m1.json' '$work/m3.json'"

@@ -12,6 +12,7 @@
 #include <filesystem>
 #include <span>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "fogdrift/svr/kernel.hpp"
@@ -92,6 +93,14 @@ std::vector<FitResult> fit_batch(const TrainingSet& set, std::span<const Params>
 /// one, sharing one kernel cache. Results in the order of `c_values`.
 std::vector<FitResult> fit_c_path(const TrainingSet& set, const Params& base,
                                   std::span<const double> c_values);
+
+/// The instruction set the engine's inner loops run with: "avx512", "avx2" or "portable". The
+/// fastest this processor has, or the one the environment variable FOGDRIFT_ISA names
+/// (portable, avx2, avx512; unset, empty or auto for the fastest). Every one gives the same
+/// kernel rows and the same steps through the dual, so the same model, bit for bit
+/// (docs/reliability.md). Chosen at the first fit or call; throws OptionError naming
+/// FOGDRIFT_ISA when it names an unknown set or one this processor lacks.
+std::string_view instruction_set();
 
 /// The model as JSON text: {"format": "fogdrift-svr", "version": 1, "kernel": …, "gamma": …,
 /// "dims": …, "rho": …, "coef": […], "support_vectors": [[…], …]}. Numbers are printed with

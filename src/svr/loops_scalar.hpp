@@ -1,0 +1,355 @@
+// The portable bodies of the SVR engine's inner loops (loops.hpp), as inline functions. The
+// portable table (loops_portable.cpp) is these functions; the AVX2 and AVX-512 files reuse them
+// for the elementwise loops, which the compiler vectorises when they are inlined into a function
+// built for that instruction set, and for the tails of their hand-vectorised loops.
+//
+// Only the loops_*.cpp files include this header, and they are all compiled with the same flags
+// (src/CMakeLists.txt), so every out-of-line copy of these functions is the same code. None of
+// them may use an instruction set beyond the baseline on its own: an ISA is only ever switched on
+// by a `target` attribute on the caller. Internal header: not installed.
+#pragma once
+
+#include <algorithm>
+#include <bit>
+#include <cfloat>
+#include <cstddef>
+#include <cstdint>
+#include <type_traits>
+
+#include "svr/loops.hpp"
+
+namespace fogdrift::svr::detail::scalar {
+
+#define FOGDRIFT_INLINE inline __attribute__((always_inline))
+
+constexpr double kLog2e = 1.4426950408889634074;
+// ln 2 split so that n·kLn2Hi is exact for |n| < 2^20 (Cody & Waite range reduction).
+constexpr double kLn2Hi = 6.93147180369123816490e-01;
+constexpr double kLn2Lo = 1.90821492927058770002e-10;
+constexpr double kShifter = 6755399441055744.0;  // 1.5·2^52: adding it rounds to an integer
+
+/// The Taylor coefficients of e^r, 1/13! down to 1/0!, for Horner's rule.
+constexpr double kExpCoefficients[] = {1.0 / 6227020800.0,
+                                       1.0 / 479001600.0,
+                                       1.0 / 39916800.0,
+                                       1.0 / 3628800.0,
+                                       1.0 / 362880.0,
+                                       1.0 / 40320.0,
+                                       1.0 / 5040.0,
+                                       1.0 / 720.0,
+                                       1.0 / 120.0,
+                                       1.0 / 24.0,
+                                       1.0 / 6.0,
+                                       0.5,
+                                       1.0,
+                                       1.0};
+
+/// e^x through e^x = 2^n·e^r, n = round(x/ln 2), |r| ≤ ln 2 / 2, and the Taylor series of e^r to
+/// degree 13 (truncation error r^14/14! < 5e-18). Branch-free so that loops around it vectorise;
+/// the vector versions compute the same operations lane by lane.
+FOGDRIFT_INLINE double exp_core(double x) {
+  x = x < -700.0 ? -700.0 : x;  // e^-700 is 0 in float; keeps 2^n a normal double
+  x = x > 700.0 ? 700.0 : x;
+  const double t = x * kLog2e + kShifter;
+  const double n = t - kShifter;
+  const double r = (x - n * kLn2Hi) - n * kLn2Lo;
+  double p = kExpCoefficients[0];
+  for (std::size_t c = 1; c < std::size(kExpCoefficients); ++c) p = p * r + kExpCoefficients[c];
+  const std::int64_t k = std::bit_cast<std::int64_t>(t) - std::bit_cast<std::int64_t>(kShifter);
+  const double scale = std::bit_cast<double>(static_cast<std::uint64_t>(k + 1023) << 52);
+  return p * scale;
+}
+
+constexpr std::size_t kBlock = 256;  // columns per block: the accumulators stay in L1
+
+/// acc[j] = x_i·x_{j0+j} for j < m, summed over features in order (LIBSVM's order), from the
+/// feature-major copy `xt` (feature f of column j at xt[f·stride + j]).
+FOGDRIFT_INLINE void dot_block(const double* xi, const double* xt, std::size_t stride,
+                               std::size_t d, std::size_t j0, std::size_t m, double* acc) {
+  for (std::size_t j = 0; j < m; ++j) acc[j] = 0.0;
+  for (std::size_t f = 0; f < d; ++f) {
+    const double xf = xi[f];
+    const double* col = xt + f * stride + j0;
+    for (std::size_t j = 0; j < m; ++j) acc[j] += xf * col[j];
+  }
+}
+
+// --- kernel rows ---------------------------------------------------------------------------------
+
+FOGDRIFT_INLINE void rbf_row(const double* xi, double sq_i, const double* xt, std::size_t stride,
+                             const double* sq, std::size_t n, std::size_t d, double gamma,
+                             float* out) {
+  double acc[kBlock];
+  for (std::size_t j0 = 0; j0 < n; j0 += kBlock) {
+    const std::size_t m = std::min(kBlock, n - j0);
+    dot_block(xi, xt, stride, d, j0, m, acc);
+    for (std::size_t j = 0; j < m; ++j) {
+      const double dist = (sq_i + sq[j0 + j]) - 2.0 * acc[j];
+      out[j0 + j] = static_cast<float>(exp_core(-gamma * dist));
+    }
+  }
+}
+
+FOGDRIFT_INLINE void linear_row(const double* xi, const double* xt, std::size_t stride,
+                                std::size_t n, std::size_t d, float* out) {
+  double acc[kBlock];
+  for (std::size_t j0 = 0; j0 < n; j0 += kBlock) {
+    const std::size_t m = std::min(kBlock, n - j0);
+    dot_block(xi, xt, stride, d, j0, m, acc);
+    for (std::size_t j = 0; j < m; ++j) out[j0 + j] = static_cast<float>(acc[j]);
+  }
+}
+
+FOGDRIFT_INLINE void distance_row(const double* xi, double sq_i, const double* xt, const double* sq,
+                                  std::size_t n, std::size_t d, float* out) {
+  double acc[kBlock];
+  for (std::size_t j0 = 0; j0 < n; j0 += kBlock) {
+    const std::size_t m = std::min(kBlock, n - j0);
+    dot_block(xi, xt, n, d, j0, m, acc);
+    for (std::size_t j = 0; j < m; ++j)
+      out[j0 + j] = static_cast<float>((sq_i + sq[j0 + j]) - 2.0 * acc[j]);
+  }
+}
+
+FOGDRIFT_INLINE void rbf_row_from_distances(const float* dist, std::size_t n, double gamma,
+                                            float* out) {
+  for (std::size_t j = 0; j < n; ++j)
+    out[j] = static_cast<float>(exp_core(-gamma * static_cast<double>(dist[j])));
+}
+
+// --- gradient updates ----------------------------------------------------------------------------
+
+FOGDRIFT_INLINE void update_gradient(double* g, const std::int8_t* y, const float* k_i,
+                                     const float* k_j, double a_i, double a_j, std::size_t len) {
+  for (std::size_t k = 0; k < len; ++k)
+    g[k] += static_cast<double>(y[k]) *
+            (static_cast<double>(k_i[k]) * a_i + static_cast<double>(k_j[k]) * a_j);
+}
+
+FOGDRIFT_INLINE void add_scaled(double* g, const std::int8_t* y, const float* k_row, double a,
+                                std::size_t begin, std::size_t end) {
+  for (std::size_t k = begin; k < end; ++k)
+    g[k] += static_cast<double>(y[k]) * (a * static_cast<double>(k_row[k]));
+}
+
+FOGDRIFT_INLINE void add_row(double* g, const float* k_row, double a, std::size_t begin,
+                             std::size_t end) {
+  for (std::size_t k = begin; k < end; ++k) g[k] += a * static_cast<double>(k_row[k]);
+}
+
+// --- LIBSVM's working-set selection (2l variables) -----------------------------------------------
+
+/// t ∈ I_up: α_t may grow along y_t (LIBSVM: y=+1 not at the upper bound, y=−1 not at the lower).
+/// Written with & and | rather than ?: or && so that the loops have no branches.
+inline bool in_up(std::int8_t y, std::uint8_t s) {
+  return ((y > 0) & (s != kUpperBound)) | ((y < 0) & (s != kLowerBound));
+}
+inline bool in_low(std::int8_t y, std::uint8_t s) {
+  return ((y > 0) & (s != kLowerBound)) | ((y < 0) & (s != kUpperBound));
+}
+
+/// The curvature of the two-variable subproblem, τ when not positive (LIBSVM's quad_coef).
+inline double curvature(double qd_i, double qd_j, float k_ij, double tau) {
+  const double quad = (qd_i + qd_j) - 2.0 * static_cast<double>(k_ij);
+  return quad > 0 ? quad : tau;
+}
+
+inline double objective_decrease(double grad_diff, double qd_i, double qd_j, float k_ij,
+                                 double tau) {
+  return -(grad_diff * grad_diff) / curvature(qd_i, qd_j, k_ij, tau);
+}
+
+inline Selection select_i(const double* g, const std::int8_t* y, const std::uint8_t* status,
+                          std::size_t len) {
+  double best = -DBL_MAX;
+  for (std::size_t t = 0; t < len; ++t) {
+    const double v = -static_cast<double>(y[t]) * g[t];
+    const double c = in_up(y[t], status[t]) ? v : -DBL_MAX;
+    best = c > best ? c : best;
+  }
+  // LIBSVM keeps the last maximiser (its test is >=); find it from the end.
+  for (std::size_t t = len; t-- > 0;) {
+    if (in_up(y[t], status[t]) && -static_cast<double>(y[t]) * g[t] == best)
+      return {best, static_cast<std::int64_t>(t)};
+  }
+  return {-DBL_MAX, -1};
+}
+
+/// select_i over [begin, len), continuing from `out`: the tail of a vectorised select_i.
+inline void select_i_tail(const double* g, const std::int8_t* y, const std::uint8_t* status,
+                          std::size_t begin, std::size_t len, Selection& out) {
+  for (std::size_t t = begin; t < len; ++t) {
+    if (!in_up(y[t], status[t])) continue;
+    const double v = -static_cast<double>(y[t]) * g[t];
+    if (v >= out.value) out = {v, static_cast<std::int64_t>(t)};
+  }
+}
+
+inline SelectionJ select_j(const double* g, const std::int8_t* y, const std::uint8_t* status,
+                           const float* k_i, const double* qd, double qd_i, double g_max,
+                           double tau, std::size_t len) {
+  double g_max2 = -DBL_MAX;
+  double obj_min = DBL_MAX;
+  for (std::size_t j = 0; j < len; ++j) {
+    const bool low = in_low(y[j], status[j]);
+    const double yg = static_cast<double>(y[j]) * g[j];
+    const double c2 = low ? yg : -DBL_MAX;
+    g_max2 = c2 > g_max2 ? c2 : g_max2;
+    const double grad_diff = g_max + yg;
+    const double obj = objective_decrease(grad_diff, qd_i, qd[j], k_i[j], tau);
+    const double c = (low & (grad_diff > 0)) ? obj : DBL_MAX;
+    obj_min = c < obj_min ? c : obj_min;
+  }
+  SelectionJ out;
+  out.g_max2 = g_max2;
+  if (obj_min == DBL_MAX) return out;
+  // LIBSVM keeps the last minimiser (its test is <=).
+  for (std::size_t j = len; j-- > 0;) {
+    if (!in_low(y[j], status[j])) continue;
+    const double grad_diff = g_max + static_cast<double>(y[j]) * g[j];
+    if (!(grad_diff > 0)) continue;
+    if (objective_decrease(grad_diff, qd_i, qd[j], k_i[j], tau) == obj_min) {
+      out.index = static_cast<std::int64_t>(j);
+      break;
+    }
+  }
+  return out;
+}
+
+/// select_j over [begin, len), continuing from `out` and the smallest objective so far.
+inline void select_j_tail(const double* g, const std::int8_t* y, const std::uint8_t* status,
+                          const float* k_i, const double* qd, double qd_i, double g_max, double tau,
+                          std::size_t begin, std::size_t len, SelectionJ& out, double& obj_min) {
+  for (std::size_t j = begin; j < len; ++j) {
+    if (!in_low(y[j], status[j])) continue;
+    const double yg = static_cast<double>(y[j]) * g[j];
+    out.g_max2 = std::max(out.g_max2, yg);
+    const double grad_diff = g_max + yg;
+    if (!(grad_diff > 0)) continue;
+    const double obj = objective_decrease(grad_diff, qd_i, qd[j], k_i[j], tau);
+    if (obj <= obj_min) {
+      obj_min = obj;
+      out.index = static_cast<std::int64_t>(j);
+    }
+  }
+}
+
+// --- the pair solver's loops (one gradient per sample) -------------------------------------------
+
+/// The gradient array of update_and_select_up: written when it updates, only read when not.
+template <bool kUpdate>
+using Gradient = std::conditional_t<kUpdate, double*, const double*>;
+
+/// update_and_select_up over [begin, len), continuing from `out`; the portable version, and the
+/// tail of the vectorised ones.
+template <bool kUpdate>
+inline void update_and_select_up_tail(Gradient<kUpdate> f, const double* up, const float* k_i,
+                                      const float* k_j, double b_i, double b_j, std::size_t begin,
+                                      std::size_t len, Selection& out) {
+  for (std::size_t k = begin; k < len; ++k) {
+    if constexpr (kUpdate)
+      f[k] += static_cast<double>(k_i[k]) * b_i + static_cast<double>(k_j[k]) * b_j;
+    const double v = up[k] - f[k];
+    if (v >= out.value) out = {v, static_cast<std::int64_t>(k)};
+  }
+}
+
+/// No sample offers a variable when the best value is a kNoVariable offset.
+inline Selection none_if_offsets_only(const Selection& s) {
+  return s.value < kNoVariable / 2 ? Selection{-DBL_MAX, -1} : s;
+}
+
+inline Selection update_and_select_up(double* f, const double* up, const float* k_i,
+                                      const float* k_j, double b_i, double b_j, std::size_t len) {
+  Selection out{-DBL_MAX, -1};
+  update_and_select_up_tail<true>(f, up, k_i, k_j, b_i, b_j, 0, len, out);
+  return none_if_offsets_only(out);
+}
+
+inline Selection select_up(const double* f, const double* up, std::size_t len) {
+  Selection out{-DBL_MAX, -1};
+  update_and_select_up_tail<false>(f, up, nullptr, nullptr, 0.0, 0.0, 0, len, out);
+  return none_if_offsets_only(out);
+}
+
+/// conjugate_update_and_select_up over [begin, len), continuing from `out`.
+inline void conjugate_tail(double* f, const double* up, const float* k_i, const float* k_j,
+                           double* kd, double lambda, double t, std::size_t begin, std::size_t len,
+                           Selection& out) {
+  for (std::size_t k = begin; k < len; ++k) {
+    const double q = (static_cast<double>(k_i[k]) - static_cast<double>(k_j[k])) + lambda * kd[k];
+    kd[k] = q;
+    f[k] += t * q;
+    const double v = up[k] - f[k];
+    if (v >= out.value) out = {v, static_cast<std::int64_t>(k)};
+  }
+}
+
+inline Selection conjugate_update_and_select_up(double* f, const double* up, const float* k_i,
+                                                const float* k_j, double* kd, double lambda,
+                                                double t, std::size_t len) {
+  Selection out{-DBL_MAX, -1};
+  conjugate_tail(f, up, k_i, k_j, kd, lambda, t, 0, len, out);
+  return none_if_offsets_only(out);
+}
+
+/// select_low over [begin, len), continuing from `out` and the best gain so far num/den; the
+/// portable version, and the tail of the vectorised ones.
+inline void select_low_tail(const double* f, const double* low, const float* k_i, const double* qd,
+                            double qd_i, double g_max, double tau, std::size_t begin,
+                            std::size_t len, SelectionJ& out, double& best_num, double& best_den) {
+  for (std::size_t k = begin; k < len; ++k) {
+    const double yg = f[k] + low[k];
+    out.g_max2 = yg > out.g_max2 ? yg : out.g_max2;
+    const double grad_diff = g_max + yg;
+    if (!(grad_diff > 0)) continue;
+    const double num = grad_diff * grad_diff, den = curvature(qd_i, qd[k], k_i[k], tau);
+    if (num * best_den >= best_num * den) {
+      best_num = num;
+      best_den = den;
+      out.index = static_cast<std::int64_t>(k);
+    }
+  }
+}
+
+inline SelectionJ select_low(const double* f, const double* low, const float* k_i, const double* qd,
+                             double qd_i, double g_max, double tau, std::size_t len) {
+  SelectionJ out;
+  out.g_max2 = -DBL_MAX;
+  double best_num = 0, best_den = 1;  // the best gain so far, (G_max + y·G)² / curvature
+  select_low_tail(f, low, k_i, qd, qd_i, g_max, tau, 0, len, out, best_num, best_den);
+  return out;
+}
+
+// --- merging the lanes of a vectorised loop ------------------------------------------------------
+
+/// The last maximiser over `lanes` lanes, each holding its own (index −1: none), into `out`.
+inline void merge_max(const double* value, const double* index, int lanes, Selection& out) {
+  for (int t = 0; t < lanes; ++t) {
+    if (index[t] < 0) continue;
+    const auto idx = static_cast<std::int64_t>(index[t]);
+    if (value[t] > out.value || (value[t] == out.value && idx > out.index)) out = {value[t], idx};
+  }
+}
+
+/// The best gain num/den over `lanes` lanes (cross-multiplied, the larger index on ties), and the
+/// largest g_max2.
+inline void merge_gain(const double* num, const double* den, const double* index,
+                       const double* g_max2, int lanes, SelectionJ& out, double& num_max,
+                       double& den_max) {
+  for (int t = 0; t < lanes; ++t) {
+    out.g_max2 = std::max(out.g_max2, g_max2[t]);
+    if (index[t] < 0) continue;
+    const auto idx = static_cast<std::int64_t>(index[t]);
+    const double lhs = num[t] * den_max, rhs = num_max * den[t];
+    if (lhs > rhs || (lhs == rhs && idx > out.index)) {
+      num_max = num[t];
+      den_max = den[t];
+      out.index = idx;
+    }
+  }
+}
+
+#undef FOGDRIFT_INLINE
+
+}  // namespace fogdrift::svr::detail::scalar
