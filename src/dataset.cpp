@@ -2,11 +2,13 @@
 
 #include <fmt/format.h>
 #include <cmath>
+#include <filesystem>
 #include <numbers>
 #include <numeric>
 
 #include "fogdrift/earth.hpp"
 #include "fogdrift/error.hpp"
+#include "fogdrift/memory.hpp"
 
 namespace fogdrift {
 namespace {
@@ -118,11 +120,29 @@ RecordingInput recording_input(const Campaign& campaign, const CampaignEntry& en
 
 std::vector<RecordingInput> read_inputs(const Campaign& campaign, std::optional<Role> role,
                                         Scenario scenario) {
-  std::vector<RecordingInput> inputs;
+  std::vector<const CampaignEntry*> chosen;
+  std::uint64_t file_bytes = 0;
   for (const auto& entry : campaign.recordings) {
     if (entry.scenario != scenario || (role && entry.role != *role)) continue;
-    inputs.push_back(recording_input(campaign, entry, read_recording(campaign.path_of(entry))));
+    chosen.push_back(&entry);
+    std::error_code ec;
+    const auto size = std::filesystem::file_size(campaign.path_of(entry), ec);
+    if (!ec) file_bytes += size;
   }
+  // Checked before the first recording is read, so that a campaign too large for this machine
+  // fails at once instead of after minutes of reading (docs/reliability.md, "Size limits").
+  const std::uint64_t need = kMemoryPerCsvByte * file_bytes;
+  if (need > (std::uint64_t{64} << 20))
+    require_memory(
+        need,
+        fmt::format("{}: {} {} recording{} ({} of CSV)", (campaign.dir / "campaign.json").string(),
+                    chosen.size(), to_string(scenario), chosen.size() == 1 ? "" : "s",
+                    format_bytes(file_bytes)),
+        "Fewer recordings (a campaign.json that lists a subset), or recordings resampled to a "
+        "lower rate (import --rate-hz), would fit.");
+  std::vector<RecordingInput> inputs;
+  for (const CampaignEntry* entry : chosen)
+    inputs.push_back(recording_input(campaign, *entry, read_recording(campaign.path_of(*entry))));
   if (inputs.empty()) {
     throw InputError((campaign.dir / "campaign.json").string(), 0, 0,
                      fmt::format("no {} recordings{} in the campaign", to_string(scenario),

@@ -234,6 +234,14 @@ class SvrObjective {
       folds_.push_back(
           {std::make_unique<svr::TrainingSet>(std::move(s.train)), std::move(s.test), {}});
     }
+    // Every thread may run a fit of the largest fold at once: checked once, here, so that a
+    // search too large for this machine fails before its first batch.
+    const auto largest = std::max_element(folds_.begin(), folds_.end(), [](auto& a, auto& b) {
+      return a.set->size() < b.set->size();
+    });
+    svr::Params p;
+    p.cache_mb = options.cache_mb;
+    svr::require_fit_memory(*largest->set, p, options.pool ? options.pool->size() : 1);
   }
 
   const std::vector<std::string>& fold_names() const { return fold_names_; }

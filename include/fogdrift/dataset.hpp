@@ -13,6 +13,7 @@
 // (Standardizer); a feature that is constant over the training data is an error.
 #pragma once
 
+#include <cstdint>
 #include <optional>
 #include <span>
 #include <string>
@@ -82,8 +83,15 @@ Dataset build_dataset(const std::vector<RecordingInput>& inputs,
 RecordingInput recording_input(const Campaign& campaign, const CampaignEntry& entry,
                                Recording recording);
 
+/// Memory a command that reads recordings and builds a dataset from them takes, per byte of
+/// recording CSV, at its peak: measured on simulated campaigns of 7.5 to 60 MB
+/// (docs/reliability.md, "Size limits"), with headroom.
+inline constexpr std::uint64_t kMemoryPerCsvByte = 4;
+
 /// Reads the campaign's recordings of `scenario` (and of `role`, if given); read errors name the
 /// recording file, and a campaign without such recordings is an InputError naming campaign.json.
+/// Before reading, throws ResourceError (memory.hpp) when kMemoryPerCsvByte times the size of
+/// those files exceeds the memory available.
 std::vector<RecordingInput> read_inputs(const Campaign& campaign, std::optional<Role> role,
                                         Scenario scenario = Scenario::calibration);
 

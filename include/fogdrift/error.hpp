@@ -3,7 +3,8 @@
 // Three kinds of failure, three mechanisms (see docs): bad input or configuration throws one of
 // these exceptions, whose message names the file, line and column (or the JSON path, or the
 // option) and the rule broken; a broken internal invariant is an assertion; a solver that does not
-// converge reports it in its summary.
+// converge reports it in its summary. A job too large for the machine is a ResourceError
+// (memory.hpp), raised before the job starts.
 #pragma once
 
 #include <cstddef>

@@ -8,6 +8,7 @@
 
 #include "fogdrift/enum_names.hpp"
 #include "fogdrift/error.hpp"
+#include "fogdrift/memory.hpp"
 #include "fogdrift/thread_pool.hpp"
 #include "svr/loops.hpp"
 #include "svr/row_arena.hpp"
@@ -86,6 +87,20 @@ TrainingSet::TrainingSet(Data data) : TrainingSet(std::move(data), Options{}) {}
 TrainingSet::TrainingSet(Data data, const Options& options) : data_(std::move(data)) {
   validate(data_);
   const std::size_t n = data_.rows, d = data_.cols;
+  if (n > kMaxRows)
+    throw ResourceError(fmt::format(
+        "a training set of {} rows: the SVR engine takes at most 2^30 = {} (its solvers index "
+        "2·rows variables with 32-bit integers)",
+        n, kMaxRows));
+  const double matrix_mb = static_cast<double>(n) * static_cast<double>(n) * 4.0 / (1 << 20);
+  const bool distances = d >= options.distance_min_features && options.distance_budget_mb > 0 &&
+                         matrix_mb <= options.distance_budget_mb;
+  // The feature-major copy and the norms, and the distance matrix when it is kept.
+  const std::uint64_t need = 8 * static_cast<std::uint64_t>(n) * (d + 1) +
+                             (distances ? 4 * static_cast<std::uint64_t>(n) * n : 0);
+  if (need > (std::uint64_t{64} << 20))
+    require_memory(need, fmt::format("a training set of {} rows × {} features", n, d),
+                   "Fewer rows or features would fit.");
   feature_major_.resize(n * d);
   squared_norms_.resize(n);
   for (std::size_t i = 0; i < n; ++i) {
@@ -97,9 +112,7 @@ TrainingSet::TrainingSet(Data data, const Options& options) : data_(std::move(da
     }
     squared_norms_[i] = sq;
   }
-  const double matrix_mb = static_cast<double>(n) * static_cast<double>(n) * 4.0 / (1 << 20);
-  if (d >= options.distance_min_features && options.distance_budget_mb > 0 &&
-      matrix_mb <= options.distance_budget_mb) {
+  if (distances) {
     distances_.resize(n * n);
     auto fill = [&](std::size_t i) {
       detail::loops().distance_row(data_.row(i), squared_norms_[i], feature_major_.data(),

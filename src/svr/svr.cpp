@@ -11,6 +11,7 @@
 
 #include "fogdrift/atomic_file.hpp"
 #include "fogdrift/error.hpp"
+#include "fogdrift/memory.hpp"
 #include "fogdrift/text_file.hpp"
 #include "fogdrift/thread_pool.hpp"
 #include "json_number.hpp"
@@ -84,7 +85,46 @@ FitResult fit_with(const TrainingSet& set, KernelCache& cache, const Params& par
   return finish(set, params, std::move(dual), s, seconds);
 }
 
+FitResult fit_unchecked(const TrainingSet& set, const Params& params, const DualSolution* warm) {
+  const auto start = std::chrono::steady_clock::now();
+  const double share = computed_rows_share(set, params);
+  KernelCache cache(set, params.kernel, params.cache_mb * share);
+  FitResult r = fit_with(set, cache, params, share, warm);
+  r.summary.seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return r;
+}
+
+// Below this, a check of the available memory is not worth reading /proc for.
+constexpr std::uint64_t kCheckAboveBytes = std::uint64_t{64} << 20;
+
 }  // namespace
+
+void require_fit_memory(const TrainingSet& set, const Params& params, std::size_t concurrent) {
+  const std::uint64_t need = fit_bytes(set.size(), set.dims(), params) * concurrent;
+  if (need < kCheckAboveBytes) return;
+  require_memory(
+      need,
+      fmt::format("{} of {} rows with a {} MB kernel cache{}",
+                  concurrent == 1 ? "an SVR fit" : fmt::format("{} SVR fits at once", concurrent),
+                  set.size(), params.cache_mb, concurrent == 1 ? "" : " each"),
+      "A smaller kernel cache, fewer threads or fewer rows would fit.");
+}
+
+std::uint64_t fit_bytes(std::size_t rows, std::size_t dims, const Params& params) {
+  const auto n = static_cast<std::uint64_t>(rows);
+  const auto row_floats = params.libsvm_path ? 2 * n : n;  // the longest row the solver keeps
+  // Every row a fit can cache: the whole matrix, or the budget; at least two rows per store.
+  const double whole_matrix =
+      4.0 * static_cast<double>(row_floats) * static_cast<double>(row_floats);
+  const double budget = std::max(0.0, params.cache_mb) * double(1 << 20);
+  const auto rows_bytes =
+      static_cast<std::uint64_t>(std::min(whole_matrix, budget)) + 16 * row_floats;
+  // Per sample: the features in the solver's order and in the model (2·8·(d+1)), and the
+  // solver's arrays (the pair solver's thirteen doubles and its dual; the LIBSVM path's
+  // 2l-long arrays), 256 bytes at most.
+  return rows_bytes + n * (16 * (static_cast<std::uint64_t>(dims) + 1) + 256);
+}
 
 void validate(const Params& p, const ParamNames& names) {
   require(std::isfinite(p.c) && p.c > 0, names.c, p.c, "a finite number > 0");
@@ -138,13 +178,8 @@ std::vector<double> Model::predict(const Data& data, ThreadPool* pool) const {
 
 FitResult fit(const TrainingSet& set, const Params& params, const DualSolution* warm) {
   validate(params);
-  const auto start = std::chrono::steady_clock::now();
-  const double share = computed_rows_share(set, params);
-  KernelCache cache(set, params.kernel, params.cache_mb * share);
-  FitResult r = fit_with(set, cache, params, share, warm);
-  r.summary.seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  return r;
+  require_fit_memory(set, params, 1);
+  return fit_unchecked(set, params, warm);
 }
 
 std::vector<FitResult> fit_batch(const TrainingSet& set, std::span<const Params> params,
@@ -159,15 +194,23 @@ std::vector<FitResult> fit_batch(const TrainingSet& set, std::span<const Params>
     if (params[a].c != params[b].c) return params[a].c > params[b].c;
     return params[a].kernel.gamma > params[b].kernel.gamma;
   });
+  if (!params.empty()) {
+    // The largest cache at once on every thread (all fits of a search share one budget).
+    const auto largest = std::max_element(params.begin(), params.end(),
+                                          [](auto& a, auto& b) { return a.cache_mb < b.cache_mb; });
+    require_fit_memory(set, *largest, std::min<std::size_t>(pool.size(), params.size()));
+  }
   std::vector<FitResult> out(params.size());
-  pool.parallel_for(params.size(),
-                    [&](std::size_t k) { out[order[k]] = fit(set, params[order[k]]); });
+  pool.parallel_for(params.size(), [&](std::size_t k) {
+    out[order[k]] = fit_unchecked(set, params[order[k]], nullptr);
+  });
   return out;
 }
 
 std::vector<FitResult> fit_c_path(const TrainingSet& set, const Params& base,
                                   std::span<const double> c_values) {
   validate(base);
+  require_fit_memory(set, base, 1);
   std::vector<FitResult> out;
   out.reserve(c_values.size());
   const double share = computed_rows_share(set, base);

@@ -196,6 +196,28 @@ printf '{"format": "fogdrift-svr", "version": 9}' >"$work/future.json"
 check "newer model version rejected" run 1 "$fd" svr predict "$dia" "$work/future.json" "$work/p.txt"
 check "version message" err_has "model format version 9 is not supported"
 
+# --- size limits ------------------------------------------------------------------------------
+# A job larger than the memory left is refused before it starts, naming the need and the limit
+# (docs/reliability.md, "Size limits"). Builds that cannot run under ulimit -v at all (the
+# sanitizers reserve terabytes of address space) skip it.
+awk 'BEGIN { srand(1); for (i = 0; i < 6000; i++) { printf "%.6f", rand();
+  for (j = 1; j <= 9; j++) printf " %d:%.6f", j, rand(); print "" } }' >"$work/big.txt"
+if (ulimit -v 1000000 && "$fd" --version) >/dev/null 2>&1; then
+  check "a fit larger than ulimit -v refused" run 1 bash -c \
+    "ulimit -v 150000 && '$fd' svr train -m 2000 '$work/big.txt' '$work/big.model'"
+  check "memory message" err_has "an SVR fit of 6000 rows with a 2000 MB kernel cache needs about"
+  check "memory message names the limit" err_has "the address-space limit (ulimit -v) leaves"
+  check "nothing written" test ! -e "$work/big.model"
+  # A campaign is checked from its file sizes before a recording is read (a sparse 60 MB file).
+  "$fd" simulate calibration --out "$work/huge" --temps 20 --repetitions 2 >/dev/null
+  truncate -s 60M "$work/huge/cal_r1_20C.csv"
+  check "a campaign larger than ulimit -v refused" run 1 bash -c \
+    "ulimit -v 150000 && '$fd' train '$work/huge' --method svr -o '$work/huge.json'"
+  check "campaign memory message" err_has "campaign.json: 1 calibration recording (60 MiB of CSV) needs about 240 MiB of memory"
+else
+  echo "note: size-limit checks skipped (this build cannot run under ulimit -v)"
+fi
+
 # --- train ------------------------------------------------------------------------------------
 # A small campaign (3 temperatures × 4 repetitions) keeps these runs short under the sanitizers.
 check "small campaign" run 0 "$fd" simulate calibration --out "$work/small" --temps -20,20,60 --seed 3

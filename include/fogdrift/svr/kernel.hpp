@@ -75,6 +75,12 @@ class TrainingSet {
     ThreadPool* pool = nullptr;  ///< builds the distance matrix in parallel when given
   };
 
+  /// The most rows a training set may have: the solvers index 2·rows variables with 32-bit
+  /// integers.
+  static constexpr std::size_t kMaxRows = std::size_t{1} << 30;
+
+  /// Validates `data` (InputError) and checks that its copies fit in memory (ResourceError,
+  /// memory.hpp; also for more than kMaxRows rows).
   explicit TrainingSet(Data data);
   TrainingSet(Data data, const Options& options);
 

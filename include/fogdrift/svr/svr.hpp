@@ -81,6 +81,17 @@ struct FitResult {
   DualSolution dual;  ///< for warm starts of later fits of the same data
 };
 
+/// An upper bound on the memory one fit of `rows` samples × `dims` features holds beyond its
+/// TrainingSet, in bytes: the kernel rows it may cache (params.cache_mb, at most the whole
+/// kernel matrix) and its per-sample arrays. fit, fit_batch (times the fits running at once) and
+/// fit_c_path compare it with available_memory() (memory.hpp) before they start, and throw
+/// ResourceError when it does not fit. docs/svr.md, "Memory", compares it with measured peaks.
+std::uint64_t fit_bytes(std::size_t rows, std::size_t dims, const Params& params);
+
+/// Throws ResourceError when `concurrent` fits of `params` on `set` (fit_bytes each) do not fit
+/// in available_memory(). A search calls it once before its first batch.
+void require_fit_memory(const TrainingSet& set, const Params& params, std::size_t concurrent);
+
 /// Fits one model. `warm` (optional) is a previous fit of the same TrainingSet.
 FitResult fit(const TrainingSet& set, const Params& params, const DualSolution* warm = nullptr);
 
