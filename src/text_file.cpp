@@ -15,6 +15,21 @@ std::string read_text_file(const std::filesystem::path& path) {
   std::ifstream in(path, std::ios::binary);
   if (!in)
     throw InputError(path.string(), 0, 0, fmt::format("cannot open ({})", std::strerror(errno)));
+  // A regular file is read straight into a string of its size: one buffer, no copy.
+  std::error_code ec;
+  if (std::filesystem::is_regular_file(path, ec)) {
+    const auto size = std::filesystem::file_size(path, ec);
+    if (!ec) {
+      std::string text(static_cast<std::size_t>(size), '\0');
+      in.read(text.data(), static_cast<std::streamsize>(size));
+      text.resize(static_cast<std::size_t>(in.gcount()));
+      if (in.peek() == std::char_traits<char>::eof()) return text;
+      // The file grew while it was read: read the rest too.
+      std::ostringstream rest;
+      rest << in.rdbuf();
+      return text + rest.str();
+    }
+  }
   std::ostringstream buffer;
   buffer << in.rdbuf();
   return buffer.str();

@@ -14,7 +14,13 @@
 namespace fogdrift::svr {
 namespace {
 
-using SparseRow = std::vector<std::pair<std::size_t, double>>;
+// Sparse rows of a file, all in one array: row r is entries[start[r], start[r + 1]). One array
+// instead of a vector per row: reading 6000 rows took a malloc and a fresh page or two per row.
+struct SparseRows {
+  std::vector<std::size_t> start{0};
+  std::vector<std::pair<std::size_t, double>> entries;
+  std::size_t size() const { return start.size() - 1; }
+};
 
 bool is_blank(char c) {
   return c == ' ' || c == '\t' || c == '\r';
@@ -75,16 +81,16 @@ class LineReader {
                       index, previous));
     return {index, number(tok.substr(colon + 1), "feature value")};
   }
-  // The rest of the line as INDEX:VALUE pairs; raises `dims` to the largest index.
-  SparseRow features(std::size_t& dims) {
-    SparseRow row;
+  // The rest of the line as INDEX:VALUE pairs, appended to `rows` as its next row; raises
+  // `dims` to the largest index.
+  void features(SparseRows& rows, std::size_t& dims) {
     std::size_t previous = 0;
     while (!at_end()) {
-      row.push_back(feature(token(), previous));
-      previous = row.back().first;
+      rows.entries.push_back(feature(token(), previous));
+      previous = rows.entries.back().first;
     }
+    rows.start.push_back(rows.entries.size());
     dims = std::max(dims, previous);
-    return row;
   }
 
  private:
@@ -110,8 +116,7 @@ void for_each_line(const std::string& text, F&& f) {
 
 // Densifies rows of (index, value) into a row-major matrix of `dims` columns; an InputError naming
 // `source` when that is more than kMaxValues.
-std::vector<double> densify(const std::vector<SparseRow>& rows, std::size_t dims,
-                            const std::string& source) {
+std::vector<double> densify(const SparseRows& rows, std::size_t dims, const std::string& source) {
   if (dims > 0 && rows.size() > kMaxValues / dims)
     throw InputError(source, 0, 0,
                      fmt::format("{} rows × {} features is more than the {} values (1 GiB) "
@@ -119,7 +124,8 @@ std::vector<double> densify(const std::vector<SparseRow>& rows, std::size_t dims
                                  rows.size(), dims, kMaxValues));
   std::vector<double> x(rows.size() * dims, 0.0);
   for (std::size_t i = 0; i < rows.size(); ++i)
-    for (const auto& [index, value] : rows[i]) x[i * dims + index - 1] = value;
+    for (std::size_t e = rows.start[i]; e < rows.start[i + 1]; ++e)
+      x[i * dims + rows.entries[e].first - 1] = rows.entries[e].second;
   return x;
 }
 
@@ -135,9 +141,20 @@ std::string sparse_line(double lead, const double* row, std::size_t dims) {
 
 }  // namespace
 
+// Room for the rows of `text` (one a line) and their entries (one per colon), so that reading
+// grows no array.
+SparseRows reserved_for(const std::string& text) {
+  SparseRows rows;
+  const auto lines = static_cast<std::size_t>(std::count(text.begin(), text.end(), '\n')) + 1;
+  rows.start.reserve(lines + 1);
+  rows.entries.reserve(static_cast<std::size_t>(std::count(text.begin(), text.end(), ':')));
+  return rows;
+}
+
 Data parse_libsvm_data(const std::string& text, const std::string& source, std::size_t min_dims) {
-  std::vector<SparseRow> rows;
+  SparseRows rows = reserved_for(text);
   Data data;
+  data.y.reserve(rows.start.capacity());
   std::size_t dims = min_dims;
   for_each_line(text, [&](std::string_view line, std::size_t line_no) {
     LineReader r(line, source, line_no);
@@ -146,9 +163,9 @@ Data parse_libsvm_data(const std::string& text, const std::string& source, std::
                        "empty line (each line is TARGET INDEX:VALUE …; remove blank lines)");
     }
     data.y.push_back(r.number(r.token(), "target"));
-    rows.push_back(r.features(dims));
+    r.features(rows, dims);
   });
-  if (rows.empty()) throw InputError(source, 0, 0, "no samples (the file is empty)");
+  if (rows.size() == 0) throw InputError(source, 0, 0, "no samples (the file is empty)");
   data.rows = rows.size();
   data.cols = dims;
   data.x = densify(rows, dims, source);
@@ -174,7 +191,7 @@ Model parse_libsvm_model(const std::string& text, const std::string& source) {
   bool in_sv = false, have_kernel = false, have_rho = false, have_type = false;
   bool have_gamma = false;
   long total_sv = -1;
-  std::vector<SparseRow> rows;
+  SparseRows rows;
   std::size_t dims = 0;
   std::size_t last_line = 0;
   for_each_line(text, [&](std::string_view line, std::size_t line_no) {
@@ -183,7 +200,7 @@ Model parse_libsvm_model(const std::string& text, const std::string& source) {
     if (r.at_end()) return;
     if (in_sv) {
       m.coef.push_back(r.number(r.token(), "coefficient"));
-      rows.push_back(r.features(dims));
+      r.features(rows, dims);
       return;
     }
     const std::string key(r.token());
