@@ -1,7 +1,8 @@
 // fogdrift's ε-SVR engine against LIBSVM, in one process on the same data (issue: SVR engine).
 //
 //   svr_vs_libsvm [--sizes 2000,6000] [--repeats 3] [--sweep-n 6000] [--no-sweep] [--no-threads]
-//                 [--libsvm-path]
+//                 [--libsvm-path] [--no-conjugate]
+//   svr_vs_libsvm --write-data N FILE   (the data as a LIBSVM file, for whole commands)
 //
 // Data: tests/svr/datasets.hpp startup_like(N), d = 9, standardised features and target.
 // Grid: C ∈ {1, 10, 100}, σ ∈ {0.5, 1, 2} (γ = 1/(2σ²)), ε = 0.1, tolerance 1e-3, shrinking on,
@@ -19,6 +20,7 @@
 #include <thread>
 #include <vector>
 
+#include "fogdrift/svr/libsvm_format.hpp"
 #include "fogdrift/svr/svr.hpp"
 #include "fogdrift/thread_pool.hpp"
 #include "libsvm_data.hpp"
@@ -110,10 +112,16 @@ int main(int argc, char** argv) {
       g_libsvm_path = true;
     else if (a == "--no-conjugate")
       g_conjugate = false;
-    else {
+    else if (a == "--write-data" && i + 2 < argc) {
+      // The bench's data as a LIBSVM file, for whole-command timings
+      // (bench/svr_command_vs_svm_train.sh).
+      const std::size_t n = std::strtoul(argv[++i], nullptr, 10);
+      fogdrift::svr::write_libsvm_data(fogdrift::svr::testing::startup_like(n), argv[++i]);
+      return 0;
+    } else {
       std::fprintf(stderr,
                    "usage: %s [--sizes N,N] [--repeats R] [--sweep-n N] [--no-sweep] "
-                   "[--no-threads] [--libsvm-path] [--no-conjugate]\n",
+                   "[--no-threads] [--libsvm-path] [--no-conjugate] | --write-data N FILE\n",
                    argv[0]);
       return 2;
     }
