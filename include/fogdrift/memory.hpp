@@ -29,7 +29,7 @@ struct MemoryLimit {
 /// cgroup's limit less its usage (cgroup v2 memory.max − memory.current, or v1's
 /// memory.limit_in_bytes − memory.usage_in_bytes, in the process's cgroup or at the mount's
 /// root); the address-space limit (ulimit -v) less this process's virtual size. Parts that
-/// cannot be read are left out. About 50 µs: it reads a few small files.
+/// cannot be read are left out. About 0.2 ms: it reads a few small files.
 MemoryLimit available_memory();
 
 /// Throws ResourceError when `need_bytes` exceeds available_memory(): "WHAT needs about N GiB;

@@ -195,9 +195,10 @@ std::vector<FitResult> fit_batch(const TrainingSet& set, std::span<const Params>
     return params[a].kernel.gamma > params[b].kernel.gamma;
   });
   if (!params.empty()) {
-    // The largest cache at once on every thread (all fits of a search share one budget).
-    const auto largest = std::max_element(params.begin(), params.end(),
-                                          [](auto& a, auto& b) { return a.cache_mb < b.cache_mb; });
+    // Every thread may be running the largest fit at once.
+    const auto largest = std::max_element(params.begin(), params.end(), [&](auto& a, auto& b) {
+      return fit_bytes(set.size(), set.dims(), a) < fit_bytes(set.size(), set.dims(), b);
+    });
     require_fit_memory(set, *largest, std::min<std::size_t>(pool.size(), params.size()));
   }
   std::vector<FitResult> out(params.size());
