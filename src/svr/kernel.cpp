@@ -11,8 +11,7 @@
 #include "fogdrift/memory.hpp"
 #include "fogdrift/thread_pool.hpp"
 #include "svr/loops.hpp"
-#include "svr/row_arena.hpp"
-#include "svr/smo_parts.hpp"
+#include "svr/rows.hpp"
 
 namespace fogdrift::svr {
 

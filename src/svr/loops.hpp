@@ -156,7 +156,7 @@ const Loops* avx512_loops();
 
 /// out[j] = row[index[j]] for begin ≤ j < end. A plain indexed copy on every processor: AVX2's
 /// gather instruction is no faster than scalar loads on the processors this was measured on,
-/// and rows are gathered rarely (smo_parts.hpp, RowsInSolverOrder).
+/// and rows are gathered rarely (rows.hpp, OrderedRows).
 inline void gather(const float* row, const std::int32_t* index, std::size_t begin, std::size_t end,
                    float* out) {
   for (std::size_t j = begin; j < end; ++j) out[j] = row[index[j]];

@@ -1,0 +1,90 @@
+// The row stores of src/svr/rows.hpp: rows in a solver's order against the kernel rows they
+// stand for, through rounds of swaps and evictions, and the row memory kept per thread.
+#include "svr/rows.hpp"
+
+#include <gtest/gtest.h>
+
+#include <thread>
+#include <vector>
+
+#include "fogdrift/random.hpp"
+#include "svr/datasets.hpp"
+
+namespace fogdrift::svr {
+namespace {
+
+TEST(OrderedRows, RowsCatchUpWithEveryRoundOfSwaps) {
+  // Rows in solver order are brought up to date only when asked for, by replaying the swaps of
+  // the rounds they missed or by gathering (computing) again; either way they must equal the
+  // kernel row read through the current order, bit for bit, whether they are gathered from the
+  // KernelCache or computed in order from features that follow the swaps. Small budgets make
+  // both caches evict, rounds of up to 400 swaps make rows replay, start again, and outlive the
+  // bounded swap log.
+  const Data d = testing::smooth(300, 4, 0.1, 5);
+  const TrainingSet set(d);
+  for (const Kernel k : {Kernel::rbf_sigma(0.7), Kernel::linear()}) {
+    for (const bool direct : {false, true}) {
+      SCOPED_TRACE(direct ? "computed in order" : "gathered");
+      KernelCache q(set, k, 0.02);
+      const std::size_t n = d.rows;
+      std::vector<std::int32_t> index(n);
+      for (std::size_t t = 0; t < n; ++t) index[t] = static_cast<std::int32_t>(t);
+      detail::OrderedRows rows(q, index.data(), n, n, 0.03, direct);
+      std::vector<float> expected(n);
+      Rng rng(8);
+      for (int round = 0; round < 60; ++round) {
+        const int swaps = static_cast<int>(rng.uniform(0, round % 7 == 6 ? 400 : 20));
+        for (int s = 0; s < swaps; ++s) {
+          const auto a = static_cast<std::size_t>(rng.uniform(0, static_cast<double>(n)));
+          const auto b = static_cast<std::size_t>(rng.uniform(0, static_cast<double>(n)));
+          if (a == b) continue;
+          std::swap(index[a], index[b]);
+          rows.swapped(a, b);
+        }
+        rows.apply_swaps();
+        for (int r = 0; r < 30; ++r) {
+          const auto row = static_cast<std::int32_t>(rng.uniform(0, 40));  // a few, reused
+          const auto len = static_cast<std::size_t>(rng.uniform(1, static_cast<double>(n) + 1));
+          const float* got = rows.row(row, len);
+          set.kernel_row(k, static_cast<std::size_t>(row), expected.data());
+          for (std::size_t t = 0; t < len; ++t)
+            ASSERT_EQ(got[t], expected[static_cast<std::size_t>(index[t])])
+                << "round " << round << " row " << row << " position " << t;
+        }
+      }
+      EXPECT_EQ(rows.rows_computed() > 0, direct);
+    }
+  }
+}
+
+TEST(RowArena, AThreadReusesTheMemoryOfItsLastFitAndANewThreadDoesNot) {
+  // On a thread of its own, which starts with nothing kept.
+  std::thread([] {
+    float* first = nullptr;
+    {
+      detail::RowArena a(8, 1000);
+      first = a.row(0);
+      for (std::size_t r = 0; r < 8; ++r) a.row(r)[999] = static_cast<float>(r);  // writable
+      EXPECT_EQ(a.row(7)[999], 7.0f);
+      EXPECT_EQ(a.row(1) - a.row(0), 1000);
+    }
+    {
+      detail::RowArena again(4, 1000);  // smaller: the kept block serves it
+      EXPECT_EQ(again.row(0), first);
+    }
+    float* other = nullptr;
+    std::thread([&] {
+      detail::RowArena a(8, 1000);
+      other = a.row(0);
+      a.row(7)[999] = 1.0f;
+    }).join();
+    EXPECT_NE(other, first);
+    detail::RowArena mine(8, 1000);
+    EXPECT_EQ(mine.row(0), first);
+    detail::RowArena empty(0, 1000);  // nothing reserved
+    EXPECT_EQ(empty.rows(), 0u);
+  }).join();
+}
+
+}  // namespace
+}  // namespace fogdrift::svr
