@@ -21,8 +21,8 @@
 //    Q-conjugate to the last one, which halves the iterations at large C.
 //  * SolverOptions::libsvm_path selects the solver that follows LIBSVM step for step over the 2l
 //    variables: on the same data it visits the same working sets, so its model, iteration count
-//    and support vectors are LIBSVM's to rounding. `fogdrift svr train` uses it by default, for
-//    users who compare with svm-train.
+//    and support vectors are LIBSVM's to rounding. `fogdrift svr train --solver libsvm` uses it,
+//    for users who audit a model against svm-train; every other caller uses the pair solver.
 //
 // Both add speed (vectorised loops, fast kernel rows, see kernel.hpp) and warm starts: a previous
 // solution of the same data is scaled by C/C_previous, which keeps it feasible and keeps every
