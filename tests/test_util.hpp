@@ -61,7 +61,12 @@ inline std::string compile_and_run_c(const TempDir& dir, const std::string& inpu
 }
 
 inline std::string data_path(const std::string& relative) {
-  return std::string(FOGDRIFT_TEST_DATA) + "/" + relative;
+  // Appended step by step: GCC 12 warns falsely (-Warray-bounds) on string(…) + "/" + relative
+  // once it is inlined into a unity batch.
+  std::string path = FOGDRIFT_TEST_DATA;
+  path += '/';
+  path += relative;
+  return path;
 }
 
 }  // namespace fogdrift::test

@@ -20,7 +20,7 @@ namespace fs = std::filesystem;
 namespace fogdrift::app {
 namespace {
 
-struct TrainArgs {
+struct SvrTrainArgs {
   int svm_type = 3;
   int kernel_type = 2;
   double gamma = 0;  // 0: 1/number of features, as svm-train
@@ -47,7 +47,7 @@ bool ends_with(const std::string& s, const std::string& suffix) {
          s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
 }
 
-void run_train(const TrainArgs& a) {
+void run_train(const SvrTrainArgs& a) {
   if (a.svm_type != 3)
     throw OptionError("-s", fmt::format("svm_type {} is not supported; fogdrift fits ε-SVR "
                                         "(-s 3) only",
@@ -174,7 +174,7 @@ void add_svr(CLI::App& app) {
       "with the same models (to rounding) in a fraction of the time.");
   svr->require_subcommand(1);
 
-  auto ta = std::make_shared<TrainArgs>();
+  auto ta = std::make_shared<SvrTrainArgs>();
   auto* train = svr->add_subcommand(
       "train",
       "Fit ε-SVR to LIBSVM-format data (svm-train's flags and defaults; -s 3 and -t 2 or 0).\n"
