@@ -132,14 +132,13 @@ std::vector<RecordingInput> read_inputs(const Campaign& campaign, std::optional<
   // Checked before the first recording is read, so that a campaign too large for this machine
   // fails at once instead of after minutes of reading (docs/reliability.md, "Size limits").
   const std::uint64_t need = kMemoryPerCsvByte * file_bytes;
-  if (need > (std::uint64_t{64} << 20))
-    require_memory(
-        need,
-        fmt::format("{}: {} {} recording{} ({} of CSV)", (campaign.dir / "campaign.json").string(),
-                    chosen.size(), to_string(scenario), chosen.size() == 1 ? "" : "s",
-                    format_bytes(file_bytes)),
-        "Fewer recordings (a campaign.json that lists a subset), or recordings resampled to a "
-        "lower rate (import --rate-hz), would fit.");
+  require_memory(
+      need,
+      fmt::format("{}: {} {} recording{} ({} of CSV)", (campaign.dir / "campaign.json").string(),
+                  chosen.size(), to_string(scenario), chosen.size() == 1 ? "" : "s",
+                  format_bytes(file_bytes)),
+      "Fewer recordings (a campaign.json that lists a subset), or recordings resampled to a "
+      "lower rate (import --rate-hz), would fit.");
   std::vector<RecordingInput> inputs;
   for (const CampaignEntry* entry : chosen)
     inputs.push_back(recording_input(campaign, *entry, read_recording(campaign.path_of(*entry))));

@@ -129,6 +129,7 @@ std::string format_bytes(std::uint64_t bytes) {
 }
 
 void require_memory(std::uint64_t need_bytes, std::string_view what, std::string_view advice) {
+  if (need_bytes < kMemoryCheckFromBytes) return;
   const MemoryLimit limit = available_memory();
   if (need_bytes <= limit.bytes) return;
   throw ResourceError(fmt::format("{} needs about {} of memory; {} leaves {}. {}", what,

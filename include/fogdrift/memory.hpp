@@ -32,8 +32,12 @@ struct MemoryLimit {
 /// cannot be read are left out. About 0.2 ms: it reads a few small files.
 MemoryLimit available_memory();
 
+/// Below this a job is not checked: reading the limits (about 0.2 ms) would cost more than the
+/// check is worth.
+inline constexpr std::uint64_t kMemoryCheckFromBytes = std::uint64_t{64} << 20;
+
 /// Throws ResourceError when `need_bytes` exceeds available_memory(): "WHAT needs about N GiB;
-/// SOURCE leaves M GiB. ADVICE".
+/// SOURCE leaves M GiB. ADVICE". Needs below kMemoryCheckFromBytes pass unchecked.
 void require_memory(std::uint64_t need_bytes, std::string_view what, std::string_view advice);
 
 /// "512 KiB", "3.2 MiB", "1.5 GiB": bytes for messages, three significant digits.

@@ -97,9 +97,8 @@ TrainingSet::TrainingSet(Data data, const Options& options) : data_(std::move(da
   // The feature-major copy and the norms, and the distance matrix when it is kept.
   const std::uint64_t need = 8 * static_cast<std::uint64_t>(n) * (d + 1) +
                              (distances ? 4 * static_cast<std::uint64_t>(n) * n : 0);
-  if (need > (std::uint64_t{64} << 20))
-    require_memory(need, fmt::format("a training set of {} rows × {} features", n, d),
-                   "Fewer rows or features would fit.");
+  require_memory(need, fmt::format("a training set of {} rows × {} features", n, d),
+                 "Fewer rows or features would fit.");
   feature_major_.resize(n * d);
   squared_norms_.resize(n);
   for (std::size_t i = 0; i < n; ++i) {

@@ -95,14 +95,10 @@ FitResult fit_unchecked(const TrainingSet& set, const Params& params, const Dual
   return r;
 }
 
-// Below this, a check of the available memory is not worth reading /proc for.
-constexpr std::uint64_t kCheckAboveBytes = std::uint64_t{64} << 20;
-
 }  // namespace
 
 void require_fit_memory(const TrainingSet& set, const Params& params, std::size_t concurrent) {
   const std::uint64_t need = fit_bytes(set.size(), set.dims(), params) * concurrent;
-  if (need < kCheckAboveBytes) return;
   require_memory(
       need,
       fmt::format("{} of {} rows with a {} MB kernel cache{}",
