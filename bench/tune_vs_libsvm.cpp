@@ -108,6 +108,7 @@ int main(int argc, char** argv) {
   const std::size_t n = s.history.size();
   sample = std::min(sample, n);
   double t_lib = 0, t_ours = 0, worst_rel = 0;
+  svr::Workspace workspace;  // the memory reuse the tuner's fits have too
   for (std::size_t k = 0; k < sample; ++k) {
     const tune::Candidate& c = s.history[k * n / sample];
     double sse_lib = 0, sse_ours = 0;
@@ -117,7 +118,7 @@ int main(int argc, char** argv) {
       sse_lib += libsvm_fold(lib_train[f], lib_test[f], c.params, options.cache_mb);
       t_lib += seconds_since(t0);
       t0 = Clock::now();
-      const svr::FitResult fit = svr::fit(*sets[f], c.params);
+      const svr::FitResult fit = svr::fit(*sets[f], c.params, nullptr, &workspace);
       for (std::size_t r = 0; r < splits[f].test.rows; ++r) {
         const double e = fit.model.predict(splits[f].test.row(r)) - splits[f].test.y[r];
         sse_ours += e * e;

@@ -288,7 +288,8 @@ class SvrObjective {
       const svr::Params params = to_params_(fresh[c]);
       const svr::DualSolution* start = nullptr;
       if (options_.warm_start) start = same_kernel_nearest(fold, fresh[c]);
-      svr::FitResult fit = svr::fit(*fold.set, params, start);
+      const svr::WorkspacePool::Lease workspace = workspaces_.borrow();
+      svr::FitResult fit = svr::fit(*fold.set, params, start, workspace.get());
       warm[t] = start != nullptr;
       const svr::Data& test = fold.test;
       double s = 0;
@@ -389,6 +390,9 @@ class SvrObjective {
   const TuneOptions& options_;
   ToParams to_params_;
   std::vector<FoldState> folds_;
+  // One workspace per fit running at once, kept for the whole search: each fit reuses the
+  // memory of an earlier one instead of new pages.
+  svr::WorkspacePool workspaces_;
   std::vector<std::string> fold_names_;
   std::map<std::vector<double>, double> memo_;
 };

@@ -12,6 +12,7 @@
 #include "fogdrift/thread_pool.hpp"
 #include "svr/loops.hpp"
 #include "svr/rows.hpp"
+#include "svr/workspace_state.hpp"
 
 namespace fogdrift::svr {
 
@@ -148,8 +149,13 @@ double TrainingSet::kernel_diagonal(const Kernel& kernel, std::size_t i) const {
   return std::exp(-kernel.gamma * ((sq + sq) - 2.0 * sq));
 }
 
-KernelCache::KernelCache(const TrainingSet& set, const Kernel& kernel, double cache_mb)
-    : set_(set), kernel_(kernel), n_(set.size()) {
+KernelCache::KernelCache(const TrainingSet& set, const Kernel& kernel, double cache_mb,
+                         Workspace* workspace)
+    : set_(set),
+      kernel_(kernel),
+      n_(set.size()),
+      own_workspace_(workspace != nullptr ? nullptr : std::make_unique<Workspace>()),
+      workspace_(workspace != nullptr ? workspace : own_workspace_.get()) {
   const double row_bytes = static_cast<double>(n_) * sizeof(float);
   const double rows = std::floor(std::max(0.0, cache_mb) * (1 << 20) / row_bytes);
   // At least two rows (the solver holds two at once), at most every row.
@@ -160,10 +166,12 @@ KernelCache::KernelCache(const TrainingSet& set, const Kernel& kernel, double ca
   row_of_slot_.reserve(capacity_);
   prev_.reserve(capacity_);
   next_.reserve(capacity_);
-  slots_ = std::make_unique<detail::RowArena>(capacity_, n_);
+  slots_ = std::make_unique<detail::RowArena>(capacity_, n_, &workspace_->state().blocks);
 }
 
-KernelCache::~KernelCache() = default;
+KernelCache::~KernelCache() {
+  workspace_->state().forget(*this);  // the order's rows may have come from this cache
+}
 
 void KernelCache::unlink(std::int32_t s) {
   if (prev_[s] >= 0)

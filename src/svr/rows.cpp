@@ -1,4 +1,4 @@
-// The row stores of rows.hpp: RowArena's blocks, kept per thread between fits.
+// The row stores of rows.hpp: RowArena's blocks, and the blocks a workspace keeps between fits.
 #include "svr/rows.hpp"
 
 #include <sys/mman.h>
@@ -13,22 +13,6 @@
 namespace fogdrift::svr::detail {
 namespace {
 constexpr std::size_t kHugePage = std::size_t{2} << 20;
-constexpr std::size_t kKeptPerThread = 2;  // a fit holds two arenas (kernel rows, solver order)
-
-struct Mapping {
-  void* map = nullptr;
-  std::size_t bytes = 0;
-};
-
-// Mappings released by this thread's last fits, reused by its next ones: their pages are already
-// committed, so a search of many fits pays the page faults once per thread, not once per fit.
-struct Kept {
-  std::vector<Mapping> maps;
-  ~Kept() {
-    for (const auto& m : maps) munmap(m.map, m.bytes);
-  }
-};
-thread_local Kept kept;
 
 // The start of the rows inside a mapping: its first huge-page boundary.
 float* rows_start(void* map) {
@@ -37,23 +21,53 @@ float* rows_start(void* map) {
 }
 }  // namespace
 
-RowArena::RowArena(std::size_t rows, std::size_t row_floats)
-    : rows_(rows), row_floats_(row_floats) {
+KeptBlocks::Block KeptBlocks::take(std::size_t bytes) {
+  auto best = blocks_.end();
+  for (auto b = blocks_.begin(); b != blocks_.end(); ++b)
+    if (b->bytes >= bytes && (best == blocks_.end() || b->bytes < best->bytes)) best = b;
+  if (best == blocks_.end()) return {};
+  const Block out = *best;
+  blocks_.erase(best);
+  return out;
+}
+
+void KeptBlocks::give(Block block) noexcept {
+  if (blocks_.size() < kMost) {
+    blocks_.push_back(block);  // within the capacity reserved: no allocation
+    return;
+  }
+  auto smallest =
+      std::min_element(blocks_.begin(), blocks_.end(),
+                       [](const Block& a, const Block& b) { return a.bytes < b.bytes; });
+  if (smallest->bytes < block.bytes) std::swap(*smallest, block);
+  munmap(block.map, block.bytes);
+}
+
+std::size_t KeptBlocks::bytes() const {
+  std::size_t sum = 0;
+  for (const Block& b : blocks_) sum += b.bytes;
+  return sum;
+}
+
+void KeptBlocks::clear() noexcept {
+  for (const Block& b : blocks_) munmap(b.map, b.bytes);
+  blocks_.clear();
+}
+
+RowArena::RowArena(std::size_t rows, std::size_t row_floats, KeptBlocks* kept)
+    : kept_(kept), rows_(rows), row_floats_(row_floats) {
   const std::size_t bytes = rows * row_floats * sizeof(float);
   if (bytes == 0) return;
   // One huge page more than needed, so that the rows can start on a huge-page boundary.
   const std::size_t need = bytes + kHugePage;
-  std::size_t best = kept.maps.size();
-  for (std::size_t k = 0; k < kept.maps.size(); ++k)
-    if (kept.maps[k].bytes >= need &&
-        (best == kept.maps.size() || kept.maps[k].bytes < kept.maps[best].bytes))
-      best = k;
-  if (best < kept.maps.size()) {
-    map_ = kept.maps[best].map;
-    map_bytes_ = kept.maps[best].bytes;
-    kept.maps.erase(kept.maps.begin() + static_cast<std::ptrdiff_t>(best));
-    base_ = rows_start(map_);
-    return;
+  if (kept_ != nullptr) {
+    const KeptBlocks::Block block = kept_->take(need);
+    if (block.map != nullptr) {
+      map_ = block.map;
+      map_bytes_ = block.bytes;
+      base_ = rows_start(map_);
+      return;
+    }
   }
   map_bytes_ = need;
   map_ = mmap(nullptr, map_bytes_, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
@@ -73,17 +87,10 @@ RowArena::~RowArena() {
 
 void RowArena::release() noexcept {
   if (map_ != nullptr) {
-    // Keep the largest mappings for the next fit of this thread; unmap the rest.
-    Mapping m{map_, map_bytes_};
-    if (kept.maps.size() < kKeptPerThread) {
-      kept.maps.push_back(m);
-    } else {
-      auto smallest =
-          std::min_element(kept.maps.begin(), kept.maps.end(),
-                           [](const Mapping& a, const Mapping& b) { return a.bytes < b.bytes; });
-      if (smallest->bytes < m.bytes) std::swap(*smallest, m);
-      munmap(m.map, m.bytes);
-    }
+    if (kept_ != nullptr)
+      kept_->give({map_, map_bytes_});
+    else
+      munmap(map_, map_bytes_);
   }
   map_ = nullptr;
   base_ = nullptr;
@@ -96,6 +103,7 @@ RowArena::RowArena(RowArena&& other) noexcept {
 RowArena& RowArena::operator=(RowArena&& other) noexcept {
   if (this != &other) {
     release();
+    kept_ = std::exchange(other.kept_, nullptr);
     map_ = std::exchange(other.map_, nullptr);
     map_bytes_ = std::exchange(other.map_bytes_, 0);
     base_ = std::exchange(other.base_, nullptr);

@@ -1,5 +1,6 @@
 // Every store of kernel rows the solvers use, in one unit (docs/svr.md, "Memory"):
 //  * RowArena — the memory: one block per store, reserved up front, in transparent huge pages;
+//  * KeptBlocks — blocks a Workspace (workspace.hpp) keeps from one fit for the next;
 //  * DataInOrder — the features in a solver's sample order, to compute rows straight into it;
 //  * OrderedRows — kernel rows in a solver's variable order, least recently used evicted;
 //  * SampleOrder — a pair solver's order and its rows, kept from one fit to the next.
@@ -20,17 +21,48 @@
 
 namespace fogdrift::svr::detail {
 
+/// Mapped blocks of row memory that outlived their RowArena, for the next one: their pages are
+/// already committed, so a fit that takes one pays no page faults for it. At most two are kept,
+/// the largest, since a fit holds two arenas (the kernel rows and the solver's order).
+class KeptBlocks {
+ public:
+  struct Block {
+    void* map = nullptr;
+    std::size_t bytes = 0;
+  };
+
+  KeptBlocks() { blocks_.reserve(kMost); }
+  ~KeptBlocks() { clear(); }
+  KeptBlocks(const KeptBlocks&) = delete;
+  KeptBlocks& operator=(const KeptBlocks&) = delete;
+
+  /// The smallest kept block of at least `bytes`, no longer kept; a null block when none is.
+  Block take(std::size_t bytes);
+  /// Keeps `block`; when two are kept already, unmaps the smallest of the three.
+  void give(Block block) noexcept;
+  /// Bytes mapped by the kept blocks.
+  std::size_t bytes() const;
+  /// Unmaps every kept block.
+  void clear() noexcept;
+
+ private:
+  static constexpr std::size_t kMost = 2;
+  std::vector<Block> blocks_;
+};
+
 /// One block of row memory, reserved up front and backed by the kernel's transparent huge pages
 /// where it allows them. A fit touches up to hundreds of megabytes of fresh row memory, and on
 /// the virtual machines this was measured on, the page faults of 4 KiB pages were a third of a
 /// cold fit's time; pages of 2 MiB take 512 times fewer faults. Pages are committed when a row
-/// is first written, so an unused budget costs no memory. Each thread keeps the blocks of its
-/// last fit (at most two) for its next one.
+/// is first written, so an unused budget costs no memory. The block comes from, and goes back
+/// to, the KeptBlocks given, so that the next fit of a workspace reuses its committed pages.
 class RowArena {
  public:
   RowArena() = default;
-  /// Room for `rows` rows of `row_floats` floats each. Throws std::bad_alloc.
-  RowArena(std::size_t rows, std::size_t row_floats);
+  /// Room for `rows` rows of `row_floats` floats each, from `kept` when it holds a large enough
+  /// block (and back to it at the end), or freshly mapped; `kept` may be null (no reuse) and
+  /// must outlive the arena. Throws std::bad_alloc.
+  RowArena(std::size_t rows, std::size_t row_floats, KeptBlocks* kept);
   ~RowArena();
   RowArena(RowArena&& other) noexcept;
   RowArena& operator=(RowArena&& other) noexcept;
@@ -41,6 +73,7 @@ class RowArena {
   std::size_t rows() const { return rows_; }
 
  private:
+  KeptBlocks* kept_ = nullptr;
   void* map_ = nullptr;
   std::size_t map_bytes_ = 0;
   float* base_ = nullptr;
@@ -105,15 +138,16 @@ class OrderedRows {
   /// Rows of `length` entries over `kernel_rows` distinct kernel rows; `index` maps a solver
   /// position to a kernel row and must outlive this object. `direct` (only when positions are
   /// samples, length = kernel_rows, and the data keeps no distance matrix): compute rows in order.
+  /// The row memory comes from, and goes back to, `kept` (may be null: no reuse).
   OrderedRows(KernelCache& q, const std::int32_t* index, std::size_t length,
-              std::size_t kernel_rows, double cache_mb, bool direct = false)
+              std::size_t kernel_rows, double cache_mb, KeptBlocks* kept, bool direct = false)
       : q_(q), index_(index), length_(length), slot_of_row_(kernel_rows, -1) {
     if (direct) direct_ = std::make_unique<DataInOrder>(q.training_set(), q.kernel());
     const double slot_bytes = static_cast<double>(length) * sizeof(float);
     capacity_ = static_cast<std::size_t>(std::max(
         2.0,
         std::min(std::floor(cache_mb * (1 << 20) / slot_bytes), static_cast<double>(kernel_rows))));
-    arena_ = RowArena(capacity_, length);
+    arena_ = RowArena(capacity_, length, kept);
   }
 
   /// Kernel row r in solver order, entries [0, len) current at least. Valid until the next call
@@ -231,9 +265,9 @@ class OrderedRows {
   float* data(std::int32_t s) const { return arena_.row(static_cast<std::size_t>(s)); }
 };
 
-/// A pair solver's sample order and its rows in that order. The KernelCache keeps it from one fit
-/// to the next (fit_c_path), which starts in this order with the rows still valid instead of
-/// building them again from the identity order.
+/// A pair solver's sample order and its rows in that order. The workspace of a KernelCache keeps
+/// it from one fit on that cache to the next (fit_c_path), which starts in this order with the
+/// rows still valid instead of building them again from the identity order.
 struct SampleOrder {
   std::vector<std::int32_t> index;  // position → training sample
   std::unique_ptr<OrderedRows> rows;

@@ -85,10 +85,11 @@ FitResult fit_with(const TrainingSet& set, KernelCache& cache, const Params& par
   return finish(set, params, std::move(dual), s, seconds);
 }
 
-FitResult fit_unchecked(const TrainingSet& set, const Params& params, const DualSolution* warm) {
+FitResult fit_unchecked(const TrainingSet& set, const Params& params, const DualSolution* warm,
+                        Workspace* workspace) {
   const auto start = std::chrono::steady_clock::now();
   const double share = computed_rows_share(set, params);
-  KernelCache cache(set, params.kernel, params.cache_mb * share);
+  KernelCache cache(set, params.kernel, params.cache_mb * share, workspace);
   FitResult r = fit_with(set, cache, params, share, warm);
   r.summary.seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -172,10 +173,11 @@ std::vector<double> Model::predict(const Data& data, ThreadPool* pool) const {
   return out;
 }
 
-FitResult fit(const TrainingSet& set, const Params& params, const DualSolution* warm) {
+FitResult fit(const TrainingSet& set, const Params& params, const DualSolution* warm,
+              Workspace* workspace) {
   validate(params);
   require_fit_memory(set, params, 1);
-  return fit_unchecked(set, params, warm);
+  return fit_unchecked(set, params, warm, workspace);
 }
 
 std::vector<FitResult> fit_batch(const TrainingSet& set, std::span<const Params> params,
@@ -198,20 +200,24 @@ std::vector<FitResult> fit_batch(const TrainingSet& set, std::span<const Params>
     require_fit_memory(set, *largest, std::min<std::size_t>(pool.size(), params.size()));
   }
   std::vector<FitResult> out(params.size());
+  WorkspacePool workspaces;  // one per fit running at once
   pool.parallel_for(params.size(), [&](std::size_t k) {
-    out[order[k]] = fit_unchecked(set, params[order[k]], nullptr);
+    const WorkspacePool::Lease workspace = workspaces.borrow();
+    out[order[k]] = fit_unchecked(set, params[order[k]], nullptr, workspace.get());
   });
   return out;
 }
 
 std::vector<FitResult> fit_c_path(const TrainingSet& set, const Params& base,
-                                  std::span<const double> c_values) {
+                                  std::span<const double> c_values, Workspace* workspace) {
   validate(base);
   require_fit_memory(set, base, 1);
   std::vector<FitResult> out;
   out.reserve(c_values.size());
   const double share = computed_rows_share(set, base);
-  KernelCache cache(set, base.kernel, base.cache_mb * share);
+  // One cache for the path: each fit leaves its sample order and rows in the cache's workspace
+  // for the next.
+  KernelCache cache(set, base.kernel, base.cache_mb * share, workspace);
   for (double c : c_values) {
     Params p = base;
     p.c = c;

@@ -1,10 +1,10 @@
 // The row stores of src/svr/rows.hpp: rows in a solver's order against the kernel rows they
-// stand for, through rounds of swaps and evictions, and the row memory kept per thread.
+// stand for, through rounds of swaps and evictions, and the row memory kept between fits.
 #include "svr/rows.hpp"
 
 #include <gtest/gtest.h>
 
-#include <thread>
+#include <utility>
 #include <vector>
 
 #include "fogdrift/random.hpp"
@@ -29,7 +29,7 @@ TEST(OrderedRows, RowsCatchUpWithEveryRoundOfSwaps) {
       const std::size_t n = d.rows;
       std::vector<std::int32_t> index(n);
       for (std::size_t t = 0; t < n; ++t) index[t] = static_cast<std::int32_t>(t);
-      detail::OrderedRows rows(q, index.data(), n, n, 0.03, direct);
+      detail::OrderedRows rows(q, index.data(), n, n, 0.03, nullptr, direct);
       std::vector<float> expected(n);
       Rng rng(8);
       for (int round = 0; round < 60; ++round) {
@@ -57,33 +57,50 @@ TEST(OrderedRows, RowsCatchUpWithEveryRoundOfSwaps) {
   }
 }
 
-TEST(RowArena, AThreadReusesTheMemoryOfItsLastFitAndANewThreadDoesNot) {
-  // On a thread of its own, which starts with nothing kept.
-  std::thread([] {
-    float* first = nullptr;
-    {
-      detail::RowArena a(8, 1000);
-      first = a.row(0);
-      for (std::size_t r = 0; r < 8; ++r) a.row(r)[999] = static_cast<float>(r);  // writable
-      EXPECT_EQ(a.row(7)[999], 7.0f);
-      EXPECT_EQ(a.row(1) - a.row(0), 1000);
-    }
-    {
-      detail::RowArena again(4, 1000);  // smaller: the kept block serves it
-      EXPECT_EQ(again.row(0), first);
-    }
-    float* other = nullptr;
-    std::thread([&] {
-      detail::RowArena a(8, 1000);
-      other = a.row(0);
-      a.row(7)[999] = 1.0f;
-    }).join();
-    EXPECT_NE(other, first);
-    detail::RowArena mine(8, 1000);
-    EXPECT_EQ(mine.row(0), first);
-    detail::RowArena empty(0, 1000);  // nothing reserved
-    EXPECT_EQ(empty.rows(), 0u);
-  }).join();
+TEST(RowArena, ReusesTheBlocksKeptForItAndKeepsAtMostTheTwoLargest) {
+  detail::KeptBlocks kept;
+  float* first = nullptr;
+  {
+    detail::RowArena a(8, 1000, &kept);
+    first = a.row(0);
+    for (std::size_t r = 0; r < 8; ++r) a.row(r)[999] = static_cast<float>(r);  // writable
+    EXPECT_EQ(a.row(7)[999], 7.0f);
+    EXPECT_EQ(a.row(1) - a.row(0), 1000);
+    EXPECT_EQ(kept.bytes(), 0u);
+  }
+  const std::size_t one = kept.bytes();
+  EXPECT_GE(one, 8u * 1000 * sizeof(float));
+  {
+    detail::RowArena again(4, 1000, &kept);  // smaller: the kept block serves it
+    EXPECT_EQ(again.row(0), first);
+    EXPECT_EQ(again.row(3)[999], 3.0f);  // the same committed pages
+    EXPECT_EQ(kept.bytes(), 0u);
+    detail::RowArena alone(8, 1000, nullptr);  // no reuse: a block of its own, never kept
+    EXPECT_NE(alone.row(0), first);
+  }
+  EXPECT_EQ(kept.bytes(), one);
+  {
+    detail::RowArena larger(1 << 20, 1, &kept);  // too large for the kept block: a new one
+    EXPECT_NE(larger.row(0), first);
+    detail::RowArena second(8, 1000, &kept);  // the kept block is taken again
+    EXPECT_EQ(second.row(0), first);
+    detail::RowArena third(2, 1000, &kept);  // nothing kept is left
+    EXPECT_NE(third.row(0), first);
+    detail::RowArena moved = std::move(third);  // a moved arena still gives its block back
+  }
+  // Three blocks came back; the two largest are kept: `larger` (its rows and the huge page of
+  // alignment room) and `second`'s.
+  const std::size_t larger_bytes = (std::size_t{4} << 20) + (std::size_t{2} << 20);
+  EXPECT_EQ(kept.bytes(), larger_bytes + one);
+  const detail::KeptBlocks::Block big = kept.take(std::size_t{4} << 20);
+  ASSERT_NE(big.map, nullptr);
+  EXPECT_EQ(kept.bytes(), one);
+  kept.give(big);
+  kept.clear();
+  EXPECT_EQ(kept.bytes(), 0u);
+  EXPECT_EQ(kept.take(1).map, nullptr);
+  detail::RowArena empty(0, 1000, &kept);  // nothing reserved
+  EXPECT_EQ(empty.rows(), 0u);
 }
 
 }  // namespace

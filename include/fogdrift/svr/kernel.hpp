@@ -13,6 +13,8 @@
 #include <string_view>
 #include <vector>
 
+#include "fogdrift/svr/workspace.hpp"
+
 namespace fogdrift {
 class ThreadPool;
 }
@@ -20,7 +22,6 @@ class ThreadPool;
 namespace fogdrift::svr {
 namespace detail {
 class RowArena;
-struct SampleOrder;
 }  // namespace detail
 
 enum class KernelType { linear, rbf };
@@ -105,12 +106,15 @@ class TrainingSet {
   std::vector<float> distances_;  // rows × rows, when kept
 };
 
-/// Kernel rows for one fit, with a least-recently-used cache bounded in bytes (LIBSVM's -m).
-/// Not thread-safe: each fit owns one.
+/// Kernel rows for one fit, or for a sequence of fits of one kernel (fit_c_path), with a
+/// least-recently-used cache bounded in bytes (LIBSVM's -m). Not thread-safe: each fit owns one.
 class KernelCache {
  public:
-  /// `cache_mb` bounds the cached rows; at least two rows are always kept.
-  KernelCache(const TrainingSet& set, const Kernel& kernel, double cache_mb);
+  /// `cache_mb` bounds the cached rows; at least two rows are always kept. The rows' memory, and
+  /// everything the solvers keep between fits on this cache, live in `workspace` when one is
+  /// given (it must outlive the cache), or in a workspace of the cache's own.
+  KernelCache(const TrainingSet& set, const Kernel& kernel, double cache_mb,
+              Workspace* workspace = nullptr);
   ~KernelCache();
   KernelCache(const KernelCache&) = delete;
   KernelCache& operator=(const KernelCache&) = delete;
@@ -118,9 +122,9 @@ class KernelCache {
   std::size_t size() const { return n_; }
   const Kernel& kernel() const { return kernel_; }
   const TrainingSet& training_set() const { return set_; }
-  /// The pair solver's sample order and rows, left here by the last fit on this cache for the
-  /// next one (fit_c_path); null before the first. Internal to the solver.
-  std::unique_ptr<detail::SampleOrder>& kept_order() { return kept_order_; }
+  /// The workspace of the fits on this cache: the pair solver takes its arrays from it and leaves
+  /// its sample order there for the next fit on this cache.
+  Workspace& workspace() const { return *workspace_; }
   /// Row i (size() floats). Valid until the next call to row().
   const float* row(std::size_t i);
   double diagonal(std::size_t i) const { return diagonal_[i]; }
@@ -137,10 +141,11 @@ class KernelCache {
   std::vector<std::int32_t> row_of_slot_;
   std::vector<std::int32_t> prev_, next_;  // LRU list of slots; head_ most recent
   std::int32_t head_ = -1, tail_ = -1;
+  std::unique_ptr<Workspace> own_workspace_;  // when none was given; outlives slots_
+  Workspace* workspace_;
   std::unique_ptr<detail::RowArena> slots_;  // capacity_ rows, reserved, committed when written
   std::size_t used_ = 0;                     // slots handed out so far
   std::int64_t rows_computed_ = 0;
-  std::unique_ptr<detail::SampleOrder> kept_order_;
 
   void touch(std::int32_t slot);
   void unlink(std::int32_t slot);

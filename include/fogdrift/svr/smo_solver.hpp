@@ -48,13 +48,13 @@ struct SolverOptions {
   /// pair solver, 2l for the LIBSVM path; at least two rows). fit() and fit_c_path give it all of
   /// Params::cache_mb when the pair solver computes its rows in order (below), 90 % when it reads
   /// them from a distance matrix, and half for the LIBSVM path. The memory is reserved,
-  /// committed as rows are written, and kept by the thread for its next fit (see
-  /// Params::cache_mb).
+  /// committed as rows are written, and kept by the KernelCache's workspace for the next fit
+  /// (see Params::cache_mb).
   double solver_order_cache_mb = 100;
   /// Pair solver only: compute kernel rows straight into the solver's order from the features,
   /// and only as far as the active set reaches; false: copy them out of the KernelCache. Ignored
   /// (false) when the TrainingSet keeps a distance matrix. Either way the pair solver leaves its
-  /// sample order and these rows in the KernelCache, and the next fit on that cache
+  /// sample order and these rows in the KernelCache's workspace, and the next fit on that cache
   /// (fit_c_path's next C) starts from them.
   bool rows_in_order = true;
   /// true: the per-variable solver that visits LIBSVM's working sets one for one (the same

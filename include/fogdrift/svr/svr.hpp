@@ -17,6 +17,7 @@
 
 #include "fogdrift/svr/kernel.hpp"
 #include "fogdrift/svr/smo_solver.hpp"
+#include "fogdrift/svr/workspace.hpp"
 
 namespace fogdrift {
 class ThreadPool;
@@ -33,8 +34,9 @@ struct Params {
   /// Kernel rows per fit, MB (-m): all of it for rows computed in the pair solver's order (90 %
   /// when they come from a distance matrix, 10 % for rows as computed; the LIBSVM path: half and
   /// half; fit_c_path's fits hand their rows on to the next, see SolverOptions). Rows live in
-  /// blocks of transparent huge pages; each thread keeps the blocks of its last fit for its next
-  /// one (at most two, so at most about this much per thread stays committed between fits).
+  /// blocks of transparent huge pages; a Workspace keeps the blocks of its last fit for the
+  /// next one (at most two, so at most about this much per workspace stays committed between
+  /// fits).
   double cache_mb = 200;
   std::int64_t max_iterations = 0;  ///< 0: LIBSVM's max(10⁷, 200·l)
   bool libsvm_path = false;  ///< SolverOptions::libsvm_path: LIBSVM's working sets one for one
@@ -92,18 +94,24 @@ std::uint64_t fit_bytes(std::size_t rows, std::size_t dims, const Params& params
 /// in available_memory(). A search calls it once before its first batch.
 void require_fit_memory(const TrainingSet& set, const Params& params, std::size_t concurrent);
 
-/// Fits one model. `warm` (optional) is a previous fit of the same TrainingSet.
-FitResult fit(const TrainingSet& set, const Params& params, const DualSolution* warm = nullptr);
+/// Fits one model. `warm` (optional) is a previous fit of the same TrainingSet. `workspace`
+/// (optional, workspace.hpp) lends this fit the memory of the caller's earlier fits and keeps
+/// this one's for the next; null: the fit's memory is its own and freed at the end. The result
+/// is the same either way.
+FitResult fit(const TrainingSet& set, const Params& params, const DualSolution* warm = nullptr,
+              Workspace* workspace = nullptr);
 
 /// Fits every parameter set, spread over the pool's threads (one fit per thread at a time, cache
-/// budgets as given per fit, the largest C first). Results in the order of `params`.
+/// budgets as given per fit, the largest C first), each running fit with a workspace of the
+/// batch's own. Results in the order of `params`.
 std::vector<FitResult> fit_batch(const TrainingSet& set, std::span<const Params> params,
                                  ThreadPool& pool);
 
 /// Fits `base` at each C of `c_values` in the order given, each warm-started from the previous
-/// one, sharing one kernel cache. Results in the order of `c_values`.
+/// one, sharing one kernel cache and one workspace: `workspace` when given (as for fit), or one
+/// of the path's own. Results in the order of `c_values`.
 std::vector<FitResult> fit_c_path(const TrainingSet& set, const Params& base,
-                                  std::span<const double> c_values);
+                                  std::span<const double> c_values, Workspace* workspace = nullptr);
 
 /// The instruction set the engine's inner loops run with: "avx512", "avx2" or "portable". The
 /// fastest this processor has, or the one the environment variable FOGDRIFT_ISA names

@@ -1,0 +1,53 @@
+#include "fogdrift/svr/workspace.hpp"
+
+#include <cstdint>
+#include <utility>
+#include <vector>
+
+#include "svr/workspace_state.hpp"
+
+namespace fogdrift::svr {
+
+Workspace::Workspace() : state_(std::make_unique<detail::WorkspaceState>()) {}
+Workspace::~Workspace() = default;
+Workspace::Workspace(Workspace&&) noexcept = default;
+Workspace& Workspace::operator=(Workspace&&) noexcept = default;
+
+std::size_t Workspace::bytes() const {
+  return state_->blocks.bytes() + state_->values.capacity() * sizeof(double) +
+         state_->flags.capacity();
+}
+
+void Workspace::clear() {
+  state_->order.reset();
+  state_->order_cache = nullptr;
+  state_->blocks.clear();
+  std::vector<double>().swap(state_->values);  // assignment would keep the capacity
+  std::vector<std::uint8_t>().swap(state_->flags);
+}
+
+WorkspacePool::Lease::~Lease() {
+  if (!workspace_) return;
+  const std::lock_guard lock(pool_.mutex_);
+  pool_.idle_.push_back(std::move(workspace_));
+}
+
+WorkspacePool::Lease WorkspacePool::borrow() {
+  const std::lock_guard lock(mutex_);
+  if (idle_.empty()) {
+    auto w = std::make_unique<Workspace>();
+    idle_.reserve(made_ + 1);  // room for every lease to come back without allocating
+    ++made_;
+    return Lease(*this, std::move(w));
+  }
+  std::unique_ptr<Workspace> w = std::move(idle_.back());
+  idle_.pop_back();
+  return Lease(*this, std::move(w));
+}
+
+std::size_t WorkspacePool::size() const {
+  const std::lock_guard lock(mutex_);
+  return made_;
+}
+
+}  // namespace fogdrift::svr

@@ -1,0 +1,173 @@
+// Workspaces (fogdrift/svr/workspace.hpp): memory reused from fit to fit, results unchanged.
+#include "fogdrift/svr/workspace.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cstring>
+#include <set>
+#include <thread>
+#include <vector>
+
+#include "fogdrift/svr/svr.hpp"
+#include "fogdrift/thread_pool.hpp"
+#include "svr/datasets.hpp"
+
+namespace fogdrift::svr {
+namespace {
+
+// Two models are the same when every number is the same bit pattern.
+void expect_same(const Model& a, const Model& b, const char* what) {
+  SCOPED_TRACE(what);
+  ASSERT_EQ(a.size(), b.size());
+  EXPECT_EQ(std::memcmp(&a.rho, &b.rho, sizeof a.rho), 0);
+  EXPECT_EQ(a.coef, b.coef);
+  EXPECT_EQ(a.support_vectors, b.support_vectors);
+}
+
+TEST(Workspace, FitsOfEverySizeAndSolverGiveTheModelsTheyGiveAlone) {
+  // One workspace through fits that grow, shrink and change solver, kernel and data: whatever
+  // the last fit left in it (rows, arrays, a sample order) must not change the next one.
+  const Data big = testing::startup_like(900, 2), small = testing::smooth(250, 3, 0.1, 4);
+  const TrainingSet big_set(big), small_set(small);
+  Workspace workspace;
+  EXPECT_EQ(workspace.bytes(), 0u);
+  struct Case {
+    const TrainingSet* set;
+    double c;
+    Kernel kernel;
+    bool libsvm_path, conjugate;
+  };
+  const Case cases[] = {
+      {&small_set, 1, Kernel::rbf_sigma(1.0), false, true},
+      {&big_set, 10, Kernel::rbf_sigma(0.7), false, true},
+      {&small_set, 100, Kernel::rbf_sigma(1.0), false, false},
+      {&big_set, 1, Kernel::rbf_sigma(1.0), true, true},
+      {&big_set, 3, Kernel::linear(), false, true},
+      {&small_set, 10, Kernel::rbf_sigma(2.0), true, true},
+      {&big_set, 10, Kernel::rbf_sigma(0.7), false, true},
+  };
+  for (const Case& k : cases) {
+    Params p;
+    p.c = k.c;
+    p.kernel = k.kernel;
+    p.libsvm_path = k.libsvm_path;
+    p.conjugate = k.conjugate;
+    p.cache_mb = 1;  // small enough that rows are evicted and recomputed
+    const FitResult alone = fit(*k.set, p);
+    const FitResult shared = fit(*k.set, p, nullptr, &workspace);
+    expect_same(shared.model, alone.model, k.libsvm_path ? "LIBSVM path" : "pair solver");
+    EXPECT_EQ(shared.summary.solver.iterations, alone.summary.solver.iterations);
+    EXPECT_GT(workspace.bytes(), 0u);
+  }
+  // The pair solver's arrays for 900 samples (11 doubles each) and at least one row block.
+  EXPECT_GE(workspace.bytes(), 900u * 11 * sizeof(double) + 900u * sizeof(float));
+  workspace.clear();
+  EXPECT_EQ(workspace.bytes(), 0u);
+}
+
+TEST(Workspace, AFitReusesTheMemoryOfTheLastOneInsteadOfGrowing) {
+  const Data d = testing::startup_like(600, 3);
+  const TrainingSet set(d);
+  Workspace workspace;
+  Params p;
+  p.kernel = Kernel::rbf_sigma(1.0);
+  fit(set, p, nullptr, &workspace);
+  const std::size_t after_one = workspace.bytes();
+  for (const double c : {0.5, 2.0, 8.0}) {
+    p.c = c;
+    fit(set, p, nullptr, &workspace);
+    EXPECT_EQ(workspace.bytes(), after_one) << "C=" << c;
+  }
+}
+
+TEST(Workspace, ACPathGivesTheSameModelsWithTheCallersWorkspaceOrItsOwn) {
+  const Data d = testing::startup_like(500, 6);
+  const TrainingSet set(d);
+  Params base;
+  base.kernel = Kernel::rbf_sigma(1.0);
+  const std::vector<double> cs{0.3, 3, 30};
+  Workspace workspace;
+  fit(set, base, nullptr, &workspace);  // leaves rows and arrays behind
+  const auto own = fit_c_path(set, base, cs);
+  const auto given = fit_c_path(set, base, cs, &workspace);
+  const auto again = fit_c_path(set, base, cs, &workspace);
+  for (std::size_t k = 0; k < cs.size(); ++k) {
+    expect_same(given[k].model, own[k].model, "given");
+    expect_same(again[k].model, own[k].model, "given again");
+  }
+}
+
+TEST(Workspace, AnOrderLeftOnACacheEndsWithThatCache) {
+  // The pair solver leaves its order and rows in the workspace for the next fit on the same
+  // cache; a new cache, even at the same address, must start from the identity order. Under
+  // AddressSanitizer a row kept past its cache would also be a use after free.
+  const Data a = testing::smooth(300, 3, 0.1, 1), b = testing::smooth(300, 3, 0.1, 2);
+  const TrainingSet set_a(a), set_b(b);
+  Workspace workspace;
+  const Kernel kernel = Kernel::rbf_sigma(1.0);
+  SolverOptions options;
+  std::vector<double> alpha_alone;
+  {
+    KernelCache q(set_b, kernel, 0);
+    DualSolution out;
+    solve_epsilon_svr(q, b.y, 10, 0.1, options, out);
+    alpha_alone = out.alpha;
+  }
+  {
+    KernelCache q(set_a, kernel, 0, &workspace);
+    DualSolution out;
+    solve_epsilon_svr(q, a.y, 10, 0.1, options, out);
+  }
+  KernelCache q(set_b, kernel, 0, &workspace);
+  DualSolution out;
+  solve_epsilon_svr(q, b.y, 10, 0.1, options, out);
+  EXPECT_EQ(out.alpha, alpha_alone);
+}
+
+TEST(WorkspacePool, LendsOneWorkspaceToEachTaskRunningAtOnce) {
+  WorkspacePool pool;
+  Workspace* first = nullptr;
+  {
+    const auto a = pool.borrow();
+    const auto b = pool.borrow();
+    EXPECT_NE(a.get(), b.get());
+    first = a.get();  // `a` goes back last
+    EXPECT_EQ(pool.size(), 2u);
+  }
+  {
+    const auto c = pool.borrow();  // the one returned last
+    EXPECT_EQ(c.get(), first);
+  }
+  EXPECT_EQ(pool.size(), 2u);
+
+  // From threads: never more workspaces than tasks held at once, never one in two hands.
+  ThreadPool threads(2);
+  std::vector<Workspace*> used(64);
+  threads.parallel_for(used.size(), [&](std::size_t k) {
+    const auto w = pool.borrow();
+    used[k] = w.get();
+    std::this_thread::yield();
+  });
+  EXPECT_EQ(pool.size(), 2u);  // two threads, and two were made already
+  EXPECT_LE(std::set<Workspace*>(used.begin(), used.end()).size(), 2u);
+}
+
+TEST(WorkspacePool, ABatchGivesTheSameModelsAsFitsAlone) {
+  const Data d = testing::startup_like(400, 7);
+  const TrainingSet set(d);
+  std::vector<Params> grid;
+  for (const double c : {1.0, 10.0, 100.0})
+    for (const double sigma : {0.7, 1.4}) {
+      Params p;
+      p.c = c;
+      p.kernel = Kernel::rbf_sigma(sigma);
+      grid.push_back(p);
+    }
+  ThreadPool threads(2);
+  const auto batch = fit_batch(set, grid, threads);
+  for (std::size_t k = 0; k < grid.size(); ++k)
+    expect_same(batch[k].model, fit(set, grid[k]).model, "batch");
+}
+
+}  // namespace
+}  // namespace fogdrift::svr
