@@ -63,7 +63,7 @@ TEST(Poly, RecoversAKnownPolynomial) {
 }
 
 TEST(Poly, RejectsImpossibleDegrees) {
-  svr::Data data{3, 2, {0, 1, 1, 0, 1, 1}, {1, 2, 3}};
+  svr::Data data{3, 2, {0, 1, 1, 0, 1, 1}, {1, 2, 3}, {}};
   EXPECT_THROW(fit_poly(data, 0), OptionError);
   EXPECT_THROW(fit_poly(data, 7), OptionError);
   EXPECT_THROW(fit_poly(data, 2), OptionError);  // 6 terms, 3 rows

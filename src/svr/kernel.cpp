@@ -53,10 +53,12 @@ Data Data::subset(std::span<const std::size_t> indices) const {
   out.cols = cols;
   out.x.reserve(indices.size() * cols);
   out.y.reserve(indices.size());
+  if (!weight.empty()) out.weight.reserve(indices.size());
   for (std::size_t i : indices) {
     assert(i < rows);
     out.x.insert(out.x.end(), row(i), row(i) + cols);
     out.y.push_back(y[i]);
+    if (!weight.empty()) out.weight.push_back(weight[i]);
   }
   return out;
 }
@@ -70,7 +72,16 @@ void validate(const Data& data, std::string_view what) {
                                  "got {} and {}",
                                  data.rows, data.cols, data.rows * data.cols, data.rows,
                                  data.x.size(), data.y.size()));
+  if (!data.weight.empty() && data.weight.size() != data.rows)
+    throw InputError(file, 0, 0,
+                     fmt::format("{} samples need {} weights (or none), got {}", data.rows,
+                                 data.rows, data.weight.size()));
   for (std::size_t i = 0; i < data.rows; ++i) {
+    if (!data.weight.empty() && !(std::isfinite(data.weight[i]) && data.weight[i] > 0))
+      throw InputError(file, i + 1, 0,
+                       fmt::format("sample {}: weight is {}; weights must be finite and > 0 "
+                                   "(leave out samples of weight 0)",
+                                   i + 1, data.weight[i]));
     if (!std::isfinite(data.y[i]))
       throw InputError(file, i + 1, 0, fmt::format("sample {}: target is {}", i + 1, data.y[i]));
     for (std::size_t k = 0; k < data.cols; ++k) {
@@ -126,7 +137,8 @@ TrainingSet::TrainingSet(Data data, const Options& options) : data_(std::move(da
 }
 
 std::size_t TrainingSet::bytes() const {
-  return (data_.x.size() + data_.y.size() + feature_major_.size() + squared_norms_.size()) *
+  return (data_.x.size() + data_.y.size() + data_.weight.size() + feature_major_.size() +
+          squared_norms_.size()) *
              sizeof(double) +
          distances_.size() * sizeof(float);
 }

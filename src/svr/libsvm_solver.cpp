@@ -37,7 +37,10 @@ class LibsvmLayout {
     p_.resize(len_);
     active_set_.resize(len_);
     qd_.resize(len_);
+    cap_.resize(len_);
+    const Data& data = q.training_set().data();
     for (std::size_t k = 0; k < n_; ++k) {
+      cap_[k] = cap_[k + n_] = c * data.weight_of(k);
       y_[k] = 1;
       y_[k + n_] = -1;
       p_[k] = epsilon - target[k];
@@ -55,9 +58,9 @@ class LibsvmLayout {
   // Starts from a previous solution of the same data scaled to this C (warm_alpha). With the same
   // kernel the gradient is rescaled too; p differs from the previous fit's only through ε:
   // p_prev = p + (ε_prev − ε).
-  void warm_start(const DualSolution& w, bool same_kernel) {
-    for (std::size_t k = 0; k < len_; ++k) {
-      alpha_[k] = warm_alpha(w.alpha[k], w.c, c_);
+  void warm_start(const DualSolution& w, const Data& data, bool same_kernel) {
+    for (std::size_t k = 0; k < len_; ++k) {  // no shrinking yet: variable k is LIBSVM's k
+      alpha_[k] = warm_alpha(w.alpha[k], w.c * data.weight_of(k % n_), cap_[k]);
       update_status(k);
     }
     if (same_kernel && w.gradient.size() == len_ && w.gradient_bar.size() == len_) {
@@ -76,7 +79,7 @@ class LibsvmLayout {
       const float* row = row_in_order(i, len_);
       loops_.add_scaled(g_.data(), y_.data(), row, alpha_[i] * y_[i], 0, len_);
       if (status_[i] == kUpperBound)
-        loops_.add_scaled(g_bar_.data(), y_.data(), row, c_ * y_[i], 0, len_);
+        loops_.add_scaled(g_bar_.data(), y_.data(), row, cap_[i] * y_[i], 0, len_);
     }
   }
 
@@ -119,15 +122,15 @@ class LibsvmLayout {
     const double old_i = alpha_[i], old_j = alpha_[j];
     // LIBSVM's curvature Q_ii + Q_jj ∓ 2Q_ij is K_ii + K_jj − 2K_ij in both branches.
     two_variable_step(alpha_[i], alpha_[j], y_[i], y_[j], g_[i], g_[j],
-                      qd_[i] + qd_[j] - 2 * k_i[j], c_);
+                      qd_[i] + qd_[j] - 2 * k_i[j], cap_[i], cap_[j]);
     const double d_i = alpha_[i] - old_i, d_j = alpha_[j] - old_j;
     loops_.update_gradient(g_.data(), y_.data(), k_i, k_j, y_[i] * d_i, y_[j] * d_j, active);
 
     const bool upper_i = is_upper(i), upper_j = is_upper(j);
     update_status(i);
     update_status(j);
-    if (upper_i != is_upper(i)) update_g_bar(i, upper_i ? -c_ : c_);
-    if (upper_j != is_upper(j)) update_g_bar(j, upper_j ? -c_ : c_);
+    if (upper_i != is_upper(i)) update_g_bar(i, upper_i ? -cap_[i] : cap_[i]);
+    if (upper_j != is_upper(j)) update_g_bar(j, upper_j ? -cap_[j] : cap_[j]);
   }
 
   void active_set_changing() {}
@@ -154,6 +157,7 @@ class LibsvmLayout {
     std::swap(y_[a], y_[b]);
     std::swap(index_[a], index_[b]);
     std::swap(qd_[a], qd_[b]);
+    std::swap(cap_[a], cap_[b]);
     std::swap(g_[a], g_[b]);
     std::swap(status_[a], status_[b]);
     std::swap(alpha_[a], alpha_[b]);
@@ -202,6 +206,7 @@ class LibsvmLayout {
   bool gradient_reused_ = false;
   std::vector<std::int8_t> y_;
   std::vector<double> p_, alpha_, g_, g_bar_, qd_;
+  std::vector<double> cap_;           // C·weight of the variable's sample: its upper bound
   std::vector<std::uint8_t> status_;  // kLowerBound, kUpperBound or kFree (loops.hpp)
   std::vector<std::int32_t> index_, active_set_;
   OrderedRows rows_;
@@ -210,7 +215,7 @@ class LibsvmLayout {
   bool is_lower(std::size_t k) const { return status_[k] == kLowerBound; }
   bool is_free(std::size_t k) const { return status_[k] == kFree; }
   void update_status(std::size_t k) {
-    status_[k] = alpha_[k] >= c_ ? kUpperBound : (alpha_[k] <= 0 ? kLowerBound : kFree);
+    status_[k] = alpha_[k] >= cap_[k] ? kUpperBound : (alpha_[k] <= 0 ? kLowerBound : kFree);
   }
 
   // The kernel row of variable k in solver order, first `len` entries at least; unsigned
@@ -229,7 +234,8 @@ SolverSummary solve_libsvm_path(KernelCache& q, std::span<const double> target, 
                                 double epsilon, const SolverOptions& options, DualSolution& out,
                                 const DualSolution* warm) {
   LibsvmLayout layout(q, target, c, epsilon, options);
-  if (warm != nullptr) layout.warm_start(*warm, warm->kernel == q.kernel());
+  if (warm != nullptr)
+    layout.warm_start(*warm, q.training_set().data(), warm->kernel == q.kernel());
   SolverSummary summary = Smo<LibsvmLayout>(layout, options, q.size()).run();
   layout.export_solution(out);
   summary.gradient_reused = layout.gradient_reused();

@@ -61,10 +61,12 @@ class PairLayout {
         rows_(*order_->rows),
         rows_before_(rows_.rows_computed()) {
     take_arrays();
+    const Data& data = q.training_set().data();
     for (std::size_t k = 0; k < n_; ++k) {
       const auto sample = static_cast<std::size_t>(index_[k]);
       z_[k] = target[sample];
       qd_[k] = q.diagonal(sample);
+      cap_[k] = c * data.weight_of(sample);
     }
     std::fill(a_.begin(), a_.end(), 0.0);
     std::fill(b_.begin(), b_.end(), 0.0);
@@ -81,11 +83,12 @@ class PairLayout {
 
   // Starts from a previous solution of the same data scaled to this C (warm_alpha), as the LIBSVM
   // layout does.
-  void warm_start(const DualSolution& w, bool same_kernel) {
+  void warm_start(const DualSolution& w, const Data& data, bool same_kernel) {
     for (std::size_t k = 0; k < n_; ++k) {  // position k holds sample index_[k]
       const auto sample = static_cast<std::size_t>(index_[k]);
-      a_[k] = warm_alpha(w.alpha[sample], w.c, c_);
-      b_[k] = warm_alpha(w.alpha[sample + n_], w.c, c_);
+      const double cap_prev = w.c * data.weight_of(sample);
+      a_[k] = warm_alpha(w.alpha[sample], cap_prev, cap_[k]);
+      b_[k] = warm_alpha(w.alpha[sample + n_], cap_prev, cap_[k]);
       refresh(k);
     }
     if (same_kernel && w.gradient.size() == 2 * n_ && w.gradient_bar.size() == 2 * n_) {
@@ -101,7 +104,7 @@ class PairLayout {
     }
     for (std::size_t k = 0; k < n_; ++k) {
       const double beta = a_[k] - b_[k];
-      const double bound = (a_[k] >= c_ ? c_ : 0.0) - (b_[k] >= c_ ? c_ : 0.0);
+      const double bound = (a_[k] >= cap_[k] ? cap_[k] : 0.0) - (b_[k] >= cap_[k] ? cap_[k] : 0.0);
       if (beta == 0 && bound == 0) continue;
       const float* row = rows_.row(index_[k], n_);
       if (beta != 0) loops_.add_row(f_.data(), row, beta, 0, n_);
@@ -175,9 +178,9 @@ class PairLayout {
   // LIBSVM's be_shrunk for both variables of sample k.
   bool be_shrunk(std::size_t k, const Extremes& e) const {
     const double g_plus = f_[k] + epsilon_, g_minus = epsilon_ - f_[k];
-    const bool plus = a_[k] >= c_ ? -g_plus > e.up : (a_[k] <= 0 ? g_plus > e.low : false);
+    const bool plus = a_[k] >= cap_[k] ? -g_plus > e.up : (a_[k] <= 0 ? g_plus > e.low : false);
     if (!plus) return false;
-    return b_[k] >= c_ ? -g_minus > e.low : (b_[k] <= 0 ? g_minus > e.up : false);
+    return b_[k] >= cap_[k] ? -g_minus > e.low : (b_[k] <= 0 ? g_minus > e.up : false);
   }
 
   void swap(std::size_t p, std::size_t q) {
@@ -185,6 +188,7 @@ class PairLayout {
     rows_.swapped(p, q);
     std::swap(z_[p], z_[q]);
     std::swap(qd_[p], qd_[q]);
+    std::swap(cap_[p], cap_[q]);
     std::swap(a_[p], a_[q]);
     std::swap(b_[p], b_[q]);
     std::swap(f_[p], f_[q]);
@@ -222,8 +226,8 @@ class PairLayout {
 
   // Both variables of sample k: α⁺ (y = +1, y·G⁺ = f + ε) and α⁻ (y = −1, y·G⁻ = f − ε).
   void add_rho_terms(std::size_t k, RhoBounds& bounds) const {
-    bounds.add(f_[k] + epsilon_, true, where(a_[k], c_));
-    bounds.add(f_[k] - epsilon_, false, where(b_[k], c_));
+    bounds.add(f_[k] + epsilon_, true, where(a_[k], cap_[k]));
+    bounds.add(f_[k] - epsilon_, false, where(b_[k], cap_[k]));
   }
 
   // α⁺(G⁺ + p⁺) + α⁻(G⁻ + p⁻), with G⁺ + p⁺ = f − z + 2ε and G⁻ + p⁻ = z − f + 2ε.
@@ -253,7 +257,9 @@ class PairLayout {
   OrderedRows& rows_;
   std::int64_t rows_before_;  // rows_.rows_computed() when this fit began
   // The per-sample arrays are views of the workspace's (take_arrays).
-  std::span<double> z_, qd_, a_, b_;
+  std::span<double> z_, qd_;
+  std::span<double> cap_;  // C·weight of the sample: the bound of both its variables
+  std::span<double> a_, b_;
   std::span<double> f_;     // (Kβ)_k − z_k
   std::span<double> gbar_;  // Σ over variables at the upper bound of C·y·K: LIBSVM's Ḡ⁺
   std::span<double> up_, low_;
@@ -287,8 +293,9 @@ class PairLayout {
   // of the heap to the system), and page faults are slow on virtual machines: 426 faults for
   // each C path of the bench's 20 fits.
   void take_arrays() {
-    std::span<double>* arrays[] = {&z_, &qd_, &a_, &b_, &f_, &gbar_, &up_, &low_, &da_, &db_, &kd_};
-    const std::size_t count = conjugate_ ? 11 : 8;  // da_, db_, kd_ only for conjugate steps
+    std::span<double>* arrays[] = {&z_,    &qd_, &cap_, &a_,  &b_,  &f_,
+                                   &gbar_, &up_, &low_, &da_, &db_, &kd_};
+    const std::size_t count = conjugate_ ? 12 : 9;  // da_, db_, kd_ only for conjugate steps
     if (workspace_.values.size() < count * n_) workspace_.values.resize(count * n_);
     for (std::size_t a = 0; a < count; ++a)
       *arrays[a] = std::span<double>(workspace_.values.data() + a * n_, n_);
@@ -301,8 +308,8 @@ class PairLayout {
   // The offsets of loops.hpp: I_up offers α⁻ (−y·G = ε − f) when it can fall, else α⁺ (−ε − f)
   // when it can grow; I_low offers α⁺ (f + ε) when it can fall, else α⁻ (f − ε) when it can grow.
   void refresh(std::size_t k) {
-    up_[k] = b_[k] > 0 ? epsilon_ : (a_[k] < c_ ? -epsilon_ : kNoVariable);
-    low_[k] = a_[k] > 0 ? epsilon_ : (b_[k] < c_ ? -epsilon_ : kNoVariable);
+    up_[k] = b_[k] > 0 ? epsilon_ : (a_[k] < cap_[k] ? -epsilon_ : kNoVariable);
+    low_[k] = a_[k] > 0 ? epsilon_ : (b_[k] < cap_[k] ? -epsilon_ : kNoVariable);
   }
 
   // One SMO step on the variable sample i offers to I_up and the one sample j offers to I_low
@@ -326,15 +333,16 @@ class PairLayout {
       forget_direction();
     }
     const double old_i = alpha_i, old_j = alpha_j;
-    const bool upper_i = old_i >= c_, upper_j = old_j >= c_;
-    two_variable_step(alpha_i, alpha_j, y_i, y_j, g_i, g_j, quad, c_);
+    const double c_i = cap_[i], c_j = cap_[j];
+    const bool upper_i = old_i >= c_i, upper_j = old_j >= c_j;
+    two_variable_step(alpha_i, alpha_j, y_i, y_j, g_i, g_j, quad, c_i, c_j);
     const double d_i = y_i * (alpha_i - old_i), d_j = y_j * (alpha_j - old_j);  // Δβ
     refresh(i);
     refresh(j);
-    if (upper_i != (alpha_i >= c_))  // row i grows in place to n entries
-      loops_.add_row(gbar_.data(), rows_.row(index_[i], n_), (upper_i ? -c_ : c_) * y_i, 0, n_);
-    if (upper_j != (alpha_j >= c_))
-      loops_.add_row(gbar_.data(), rows_.row(index_[j], n_), (upper_j ? -c_ : c_) * y_j, 0, n_);
+    if (upper_i != (alpha_i >= c_i))  // row i grows in place to n entries
+      loops_.add_row(gbar_.data(), rows_.row(index_[i], n_), (upper_i ? -c_i : c_i) * y_i, 0, n_);
+    if (upper_j != (alpha_j >= c_j))
+      loops_.add_row(gbar_.data(), rows_.row(index_[j], n_), (upper_j ? -c_j : c_j) * y_j, 0, n_);
     if (i == j)
       return loops_.update_and_select_up(f_.data(), up_.data(), k_i, k_i, d_i + d_j, 0, active);
     const float* k_j = rows_.row(index_[j], active);  // evicts the oldest row, never k_i
@@ -342,7 +350,7 @@ class PairLayout {
         loops_.update_and_select_up(f_.data(), up_.data(), k_i, k_j, d_i, d_j, active);
     // Clipping sets a variable to a bound, so two free variables mean the step reached the line
     // minimum, and the next direction can be made conjugate to this one (u_β = e_i − e_j).
-    if (conjugate_ && quad > 0 && alpha_i > 0 && alpha_i < c_ && alpha_j > 0 && alpha_j < c_) {
+    if (conjugate_ && quad > 0 && alpha_i > 0 && alpha_i < c_i && alpha_j > 0 && alpha_j < c_j) {
       add_to_support(i);
       add_to_support(j);
       (minus_i ? db_ : da_)[i] = y_i;
@@ -379,7 +387,7 @@ class PairLayout {
     (minus_i ? db_[i] : da_[i]) += minus_i ? -1.0 : 1.0;  // y_i
     (plus_j ? da_[j] : db_[j]) -= plus_j ? 1.0 : -1.0;    // −y_j
     for (const std::size_t k : support_)
-      if (!inside(a_[k], t * da_[k]) || !inside(b_[k], t * db_[k])) return false;
+      if (!inside(a_[k], t * da_[k], k) || !inside(b_[k], t * db_[k], k)) return false;
     bool rows_asked = false;  // a variable left its upper bound, and Ḡ took its row
     for (const std::size_t k : support_) {
       rows_asked |= move(a_[k], t * da_[k], 1.0, k);
@@ -396,19 +404,21 @@ class PairLayout {
     return true;
   }
 
-  // Whether a variable at v moved by delta stays strictly inside [0, C] (or does not move).
-  bool inside(double v, double delta) const {
-    return delta > 0 ? v + delta < c_ : (delta < 0 ? v + delta > 0 : true);
+  // Whether a variable of sample k at v moved by delta stays strictly inside [0, C_k] (or does
+  // not move).
+  bool inside(double v, double delta, std::size_t k) const {
+    return delta > 0 ? v + delta < cap_[k] : (delta < 0 ? v + delta > 0 : true);
   }
 
   // Moves one variable of sample k (sign y) by delta, keeping it in the box and Ḡ current;
   // true when that needed row k.
   bool move(double& alpha, double delta, double y, std::size_t k) {
     if (delta == 0) return false;
-    const bool upper = alpha >= c_;
-    alpha = std::clamp(alpha + delta, 0.0, c_);
-    if (upper == (alpha >= c_)) return false;
-    loops_.add_row(gbar_.data(), rows_.row(index_[k], n_), (upper ? -c_ : c_) * y, 0, n_);
+    const double c_k = cap_[k];
+    const bool upper = alpha >= c_k;
+    alpha = std::clamp(alpha + delta, 0.0, c_k);
+    if (upper == (alpha >= c_k)) return false;
+    loops_.add_row(gbar_.data(), rows_.row(index_[k], n_), (upper ? -c_k : c_k) * y, 0, n_);
     return true;
   }
 
@@ -429,7 +439,8 @@ class PairLayout {
 
   // The part of β_k from variables strictly inside the box; the rest is in Ḡ.
   double free_part(std::size_t k) const {
-    return (a_[k] > 0 && a_[k] < c_ ? a_[k] : 0.0) - (b_[k] > 0 && b_[k] < c_ ? b_[k] : 0.0);
+    return (a_[k] > 0 && a_[k] < cap_[k] ? a_[k] : 0.0) -
+           (b_[k] > 0 && b_[k] < cap_[k] ? b_[k] : 0.0);
   }
 
   static Bound where(double alpha, double c) {
@@ -443,7 +454,8 @@ SolverSummary solve_pairs(KernelCache& q, std::span<const double> target, double
                           const SolverOptions& options, DualSolution& out,
                           const DualSolution* warm) {
   PairLayout layout(q, target, c, epsilon, options);
-  if (warm != nullptr) layout.warm_start(*warm, warm->kernel == q.kernel());
+  if (warm != nullptr)
+    layout.warm_start(*warm, q.training_set().data(), warm->kernel == q.kernel());
   SolverSummary summary = Smo<PairLayout>(layout, options, q.size()).run();
   layout.export_solution(out);
   layout.keep_order(q);

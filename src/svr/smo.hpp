@@ -37,10 +37,10 @@ namespace fogdrift::svr::detail {
 constexpr double kTau = 1e-12;  // LIBSVM's TAU: the curvature used when Q is not positive
 
 /// LIBSVM's analytic solution of the two-variable subproblem in α_i, α_j (signs y_i, y_j,
-/// gradients G_i, G_j, curvature `quad` = K_ii + K_jj − 2K_ij), clipped to the box [0, C]² and
-/// keeping y_i·α_i + y_j·α_j fixed.
+/// gradients G_i, G_j, curvature `quad` = K_ii + K_jj − 2K_ij), clipped to the box
+/// [0, C_i] × [0, C_j] and keeping y_i·α_i + y_j·α_j fixed.
 inline void two_variable_step(double& a_i, double& a_j, int y_i, int y_j, double g_i, double g_j,
-                              double quad, double c) {
+                              double quad, double c_i, double c_j) {
   if (quad <= 0) quad = kTau;
   if (y_i != y_j) {
     const double delta = (-g_i - g_j) / quad;
@@ -56,33 +56,33 @@ inline void two_variable_step(double& a_i, double& a_j, int y_i, int y_j, double
       a_i = 0;
       a_j = -diff;
     }
-    if (diff > 0) {  // LIBSVM: diff > C_i − C_j, and C_i = C_j here
-      if (a_i > c) {
-        a_i = c;
-        a_j = c - diff;
+    if (diff > c_i - c_j) {
+      if (a_i > c_i) {
+        a_i = c_i;
+        a_j = c_i - diff;
       }
-    } else if (a_j > c) {
-      a_j = c;
-      a_i = c + diff;
+    } else if (a_j > c_j) {
+      a_j = c_j;
+      a_i = c_j + diff;
     }
   } else {
     const double delta = (g_i - g_j) / quad;
     const double sum = a_i + a_j;
     a_i -= delta;
     a_j += delta;
-    if (sum > c) {
-      if (a_i > c) {
-        a_i = c;
-        a_j = sum - c;
+    if (sum > c_i) {
+      if (a_i > c_i) {
+        a_i = c_i;
+        a_j = sum - c_i;
       }
     } else if (a_j < 0) {
       a_j = 0;
       a_i = sum;
     }
-    if (sum > c) {
-      if (a_j > c) {
-        a_j = c;
-        a_i = sum - c;
+    if (sum > c_j) {
+      if (a_j > c_j) {
+        a_j = c_j;
+        a_i = sum - c_j;
       }
     } else if (a_i < 0) {
       a_i = 0;
@@ -91,8 +91,9 @@ inline void two_variable_step(double& a_i, double& a_j, int y_i, int y_j, double
   }
 }
 
-/// A warm start's variable: α of a solution at C_prev scaled to C by C/C_prev, which keeps the
-/// dual feasible (yᵀα = 0 scales) and every bound variable at its bound.
+/// A warm start's variable: α of a solution whose bound was C_prev scaled to the bound C by
+/// C/C_prev, which keeps the dual feasible (yᵀα = 0 scales) and every bound variable at its
+/// bound. With sample weights both bounds carry the variable's weight.
 inline double warm_alpha(double alpha, double c_prev, double c) {
   const double s = c / c_prev;
   return alpha >= c_prev ? c : (alpha <= 0 ? 0.0 : std::min(c, s * alpha));

@@ -33,19 +33,21 @@ FitResult finish(const TrainingSet& set, const Params& params, DualSolution dual
   r.model.kernel = params.kernel;
   r.model.dims = d;
   r.model.rho = solver.rho;
-  double sum_abs = 0;
+  double sum_abs = 0, sum_weights = 0;
   for (std::size_t i = 0; i < n; ++i) {
     const double a = dual.alpha[i] - dual.alpha[i + n];
+    const double weight = set.data().weight_of(i);
     sum_abs += std::fabs(a);
+    sum_weights += weight;
     if (std::fabs(a) > 0) {
       r.model.coef.push_back(a);
       const double* row = set.data().row(i);
       r.model.support_vectors.insert(r.model.support_vectors.end(), row, row + d);
-      if (std::fabs(a) >= params.c) ++r.summary.n_bsv;
+      if (std::fabs(a) >= params.c * weight) ++r.summary.n_bsv;
     }
   }
   r.summary.n_sv = r.model.coef.size();
-  r.summary.nu = sum_abs / (params.c * static_cast<double>(n));
+  r.summary.nu = sum_abs / (params.c * sum_weights);
   r.summary.solver = solver;
   r.summary.seconds = seconds;
   r.dual = std::move(dual);
@@ -118,7 +120,7 @@ std::uint64_t fit_bytes(std::size_t rows, std::size_t dims, const Params& params
   const auto rows_bytes =
       static_cast<std::uint64_t>(std::min(whole_matrix, budget)) + 16 * row_floats;
   // Per sample: the features in the solver's order and in the model (2·8·(d+1)), and the
-  // solver's arrays (the pair solver's thirteen doubles and its dual; the LIBSVM path's
+  // solver's arrays (the pair solver's fourteen doubles and its dual; the LIBSVM path's
   // 2l-long arrays), 256 bytes at most.
   return rows_bytes + n * (16 * (static_cast<std::uint64_t>(dims) + 1) + 256);
 }

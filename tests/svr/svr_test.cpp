@@ -6,9 +6,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <string>
+#include <vector>
 
 #include "fogdrift/error.hpp"
+#include "fogdrift/random.hpp"
 #include "fogdrift/svr/libsvm_format.hpp"
 #include "fogdrift/thread_pool.hpp"
 #include "svr/datasets.hpp"
@@ -175,7 +178,7 @@ TEST(SvrVsLibsvm, EdgeCases) {
   Params p;
   p.kernel = Kernel::rbf_sigma(1.0);
   {  // one sample: no pair to optimise, α = 0, ρ from the bounds
-    Data d{1, 2, {0.5, -0.5}, {0.3}};
+    Data d{1, 2, {0.5, -0.5}, {0.3}, {}};
     compare_with_libsvm(d, p, "one sample");
   }
   {  // every target inside the tube: no support vectors
@@ -426,7 +429,7 @@ TEST(SvrParams, ValidationNamesTheOption) {
 }
 
 TEST(SvrData, RejectsNonFiniteValuesNamingTheSample) {
-  Data d{2, 2, {1, 2, 3, std::numeric_limits<double>::infinity()}, {0, 1}};
+  Data d{2, 2, {1, 2, 3, std::numeric_limits<double>::infinity()}, {0, 1}, {}};
   try {
     TrainingSet set(d);
     FAIL() << "no error";
@@ -434,6 +437,118 @@ TEST(SvrData, RejectsNonFiniteValuesNamingTheSample) {
     EXPECT_EQ(std::string(e.what()), "training data:2: sample 2: feature 2 is inf");
   }
   EXPECT_THROW(TrainingSet(Data{}), InputError);
+}
+
+TEST(SvrData, RejectsWeightsThatAreNotPositiveOrNotOnePerSample) {
+  auto message = [](std::vector<double> weight) {
+    Data d = testing::smooth(3, 2, 0.1, 1);
+    d.weight = std::move(weight);
+    try {
+      TrainingSet set(d);
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  EXPECT_EQ(message({1, 0, 1}),
+            "training data:2: sample 2: weight is 0; weights must be finite and > 0 (leave out "
+            "samples of weight 0)");
+  EXPECT_EQ(message({1, 1, -2}),
+            "training data:3: sample 3: weight is -2; weights must be finite and > 0 (leave out "
+            "samples of weight 0)");
+  EXPECT_EQ(message({std::nan(""), 1, 1}),
+            "training data:1: sample 1: weight is nan; weights must be finite and > 0 (leave out "
+            "samples of weight 0)");
+  EXPECT_EQ(message({1, 1}), "training data: 3 samples need 3 weights (or none), got 2");
+  EXPECT_EQ(message({}), "no error");
+}
+
+// Sample weights bound sample i's variables by C·weight_i (LIBSVM's and scikit-learn's weights).
+TEST(SvrWeights, EqualWeightsAreALargerC) {
+  const Data d = testing::startup_like(400, 3);
+  Data weighted = d;
+  weighted.weight.assign(d.rows, 4.0);
+  const TrainingSet plain_set(d), weighted_set(weighted);
+  for (const bool libsvm_path : {false, true}) {
+    Params p;
+    p.kernel = Kernel::rbf_sigma(1.0);
+    p.libsvm_path = libsvm_path;
+    p.c = 2.5;
+    const FitResult w = fit(weighted_set, p);
+    p.c = 10;  // 2.5 · 4, exactly
+    const FitResult c = fit(plain_set, p);
+    EXPECT_EQ(w.model.coef, c.model.coef) << (libsvm_path ? "LIBSVM path" : "pairs");
+    EXPECT_EQ(w.model.rho, c.model.rho);
+    EXPECT_EQ(w.summary.n_bsv, c.summary.n_bsv);
+    EXPECT_DOUBLE_EQ(w.summary.nu, c.summary.nu);  // ν is relative to C·Σweight
+  }
+}
+
+TEST(SvrWeights, AWeightOfTwoActsAsTheSampleTwice) {
+  // Two copies of a sample have two pairs of variables bounded by C, one sample of weight 2 one
+  // pair bounded by 2C: the same set of feasible β, so the same optimum. Both solvers, a tight
+  // tolerance, C large enough that many weighted samples reach their bound.
+  const Data d = testing::smooth(240, 3, 0.2, 6);
+  Data twice = d, weighted = d;
+  weighted.weight.assign(d.rows, 1.0);
+  for (std::size_t i = 0; i < d.rows; i += 3) {
+    weighted.weight[i] = 2.0;
+    twice.x.insert(twice.x.end(), d.row(i), d.row(i) + d.cols);
+    twice.y.push_back(d.y[i]);
+    ++twice.rows;
+  }
+  const TrainingSet twice_set(twice), weighted_set(weighted);
+  for (const bool libsvm_path : {false, true}) {
+    Params p;
+    p.kernel = Kernel::rbf_sigma(0.8);
+    p.c = 3;
+    p.epsilon = 0.05;
+    p.tolerance = 1e-7;
+    p.libsvm_path = libsvm_path;
+    const FitResult a = fit(twice_set, p), b = fit(weighted_set, p);
+    EXPECT_NEAR(a.summary.solver.objective, b.summary.solver.objective,
+                1e-6 * std::fabs(a.summary.solver.objective));
+    EXPECT_GT(b.summary.n_bsv, 10u);
+    for (std::size_t i = 0; i < d.rows; ++i)
+      ASSERT_NEAR(a.model.predict(d.row(i)), b.model.predict(d.row(i)), 1e-5)
+          << (libsvm_path ? "LIBSVM path" : "pairs") << ", sample " << i;
+  }
+}
+
+TEST(SvrWeights, BothSolversAndWarmStartsReachTheSameWeightedOptimum) {
+  const Data base = testing::startup_like(500, 8);
+  Data d = base;
+  Rng rng(4);
+  for (std::size_t i = 0; i < d.rows; ++i) d.weight.push_back(rng.uniform(0.1, 5));
+  const TrainingSet set(d);
+  Params p;
+  p.kernel = Kernel::rbf_sigma(1.0);
+  p.tolerance = 1e-6;
+  p.c = 8;
+  const FitResult pairs = fit(set, p);
+  p.libsvm_path = true;
+  const FitResult libsvm = fit(set, p);
+  p.libsvm_path = false;
+  const auto path = fit_c_path(set, p, std::vector<double>{0.5, 8});
+  const double obj = pairs.summary.solver.objective;
+  EXPECT_NEAR(libsvm.summary.solver.objective, obj, 1e-7 * std::fabs(obj));
+  EXPECT_NEAR(path[1].summary.solver.objective, obj, 1e-7 * std::fabs(obj));
+  EXPECT_TRUE(path[1].summary.solver.warm_started);
+  for (std::size_t i = 0; i < d.rows; i += 5) {
+    EXPECT_NEAR(libsvm.model.predict(d.row(i)), pairs.model.predict(d.row(i)), 1e-4);
+    EXPECT_NEAR(path[1].model.predict(d.row(i)), pairs.model.predict(d.row(i)), 1e-4);
+  }
+  // Each variable stays in its own box, and some reach it.
+  std::size_t at_bound = 0;
+  for (std::size_t i = 0; i < d.rows; ++i) {
+    const double beta = pairs.dual.alpha[i] - pairs.dual.alpha[i + d.rows];
+    ASSERT_LE(std::fabs(beta), p.c * d.weight[i] * (1 + 1e-12));
+    if (std::fabs(beta) >= p.c * d.weight[i]) ++at_bound;
+  }
+  EXPECT_EQ(at_bound, pairs.summary.n_bsv);
+  EXPECT_GT(at_bound, 0u);
+  // Unweighted, the same data gives another model.
+  EXPECT_NE(fit(TrainingSet(base), p).model.rho, pairs.model.rho);
 }
 
 }  // namespace

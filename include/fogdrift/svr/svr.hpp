@@ -72,9 +72,9 @@ struct Model {
 struct FitSummary {
   SolverSummary solver;
   std::size_t n_sv = 0;   ///< support vectors, α⁺ ≠ α⁻
-  std::size_t n_bsv = 0;  ///< of which at the bound |α⁺ − α⁻| = C
-  double nu = 0;          ///< Σ|α⁺ − α⁻| / (C·l), LIBSVM's printed "nu"
-  double seconds = 0;     ///< wall time of the fit, kernel cache set-up included
+  std::size_t n_bsv = 0;  ///< of which at the bound |α⁺ − α⁻| = C·weight
+  double nu = 0;  ///< Σ|α⁺ − α⁻| / (C·Σweight), LIBSVM's printed "nu" (C·l without weights)
+  double seconds = 0;  ///< wall time of the fit, kernel cache set-up included
 };
 
 struct FitResult {
@@ -94,7 +94,8 @@ std::uint64_t fit_bytes(std::size_t rows, std::size_t dims, const Params& params
 /// in available_memory(). A search calls it once before its first batch.
 void require_fit_memory(const TrainingSet& set, const Params& params, std::size_t concurrent);
 
-/// Fits one model. `warm` (optional) is a previous fit of the same TrainingSet. `workspace`
+/// Fits one model; Data::weight, when given, bounds sample i's variables by C·weight_i. `warm`
+/// (optional) is a previous fit of the same TrainingSet. `workspace`
 /// (optional, workspace.hpp) lends this fit the memory of the caller's earlier fits and keeps
 /// this one's for the next; null: the fit's memory is its own and freed at the end. The result
 /// is the same either way.

@@ -20,7 +20,7 @@ struct WorkspaceState;
 }  // namespace detail
 
 /// Memory held between fits: at most two blocks of kernel rows (each at most the fit's
-/// Params::cache_mb), the pair solver's per-sample arrays (about 90 bytes a sample), and the
+/// Params::cache_mb), the pair solver's per-sample arrays (about 100 bytes a sample), and the
 /// sample order and rows a fit leaves for the next fit on the same KernelCache. Used by one fit
 /// at a time; it must outlive every KernelCache that uses it. A moved-from workspace may only be
 /// assigned to or destroyed.
