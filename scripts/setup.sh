@@ -10,6 +10,8 @@ packages=(
   libsvm-dev libsvm-tools              # LIBSVM: the reference the SVR engine is tested and benchmarked against
   python3 python3-numpy python3-pywt python3-scipy   # PyWavelets and SciPy: references for the signal tests
   gnuplot-nox                          # fogdrift paper's figures (PNG)
+  pybind11-dev python3-dev             # the Python package (python/)
+  python3-sklearn python3-pytest       # its tests: scikit-learn's estimator checks and SVR as reference
 )
 
 missing=()

@@ -50,4 +50,21 @@ std::size_t WorkspacePool::size() const {
   return made_;
 }
 
+std::size_t WorkspacePool::bytes() const {
+  const std::lock_guard lock(mutex_);
+  std::size_t sum = 0;
+  for (const auto& w : idle_) sum += w->bytes();
+  return sum;
+}
+
+std::size_t WorkspacePool::clear() {
+  const std::lock_guard lock(mutex_);
+  std::size_t freed = 0;
+  for (const auto& w : idle_) {
+    freed += w->bytes();
+    w->clear();
+  }
+  return freed;
+}
+
 }  // namespace fogdrift::svr

@@ -139,6 +139,16 @@ TEST(WorkspacePool, LendsOneWorkspaceToEachTaskRunningAtOnce) {
     EXPECT_EQ(c.get(), first);
   }
   EXPECT_EQ(pool.size(), 2u);
+  EXPECT_EQ(pool.bytes(), 0u);
+  {
+    const auto w = pool.borrow();
+    const TrainingSet set(testing::smooth(200, 3, 0.1, 2));
+    fit(set, Params{}, nullptr, w.get());
+  }
+  const std::size_t held = pool.bytes();
+  EXPECT_GT(held, 0u);
+  EXPECT_EQ(pool.clear(), held);
+  EXPECT_EQ(pool.bytes(), 0u);
 
   // From threads: never more workspaces than tasks held at once, never one in two hands.
   ThreadPool threads(2);

@@ -70,6 +70,10 @@ class WorkspacePool {
   Lease borrow();
   /// Workspaces made so far (the most tasks that held one at once).
   std::size_t size() const;
+  /// Bytes the idle workspaces hold (Workspace::bytes).
+  std::size_t bytes() const;
+  /// Frees the idle workspaces' memory; returns the bytes freed. Leased ones keep theirs.
+  std::size_t clear();
 
  private:
   mutable std::mutex mutex_;

@@ -1,0 +1,11 @@
+// One function per part of the library bound into _fogdrift (module.cpp).
+#pragma once
+
+#include <pybind11/pybind11.h>
+
+namespace fogdrift::python {
+
+/// The ε-SVR engine: fit, fit_path, predict (python/fogdrift/svr.py wraps them).
+void bind_svr(pybind11::module_& m);
+
+}  // namespace fogdrift::python

@@ -1,0 +1,240 @@
+// The ε-SVR engine for fogdrift.SVR (python/fogdrift/svr.py): arrays in, arrays out, the GIL
+// released while the engine works. Inputs may be float64 arrays in either memory order; each
+// is copied once, into the engine's own row-major data.
+#include <fmt/format.h>
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include <cmath>
+#include <cstdint>
+#include <optional>
+#include <span>
+#include <stdexcept>
+#include <string>
+#include <variant>
+#include <vector>
+
+#include "bindings.hpp"
+#include "fogdrift/error.hpp"
+#include "fogdrift/svr/svr.hpp"
+#include "fogdrift/thread_pool.hpp"
+
+namespace py = pybind11;
+
+namespace fogdrift::python {
+namespace {
+
+using Array = py::array_t<double, py::array::forcecast>;
+
+// X (n × d, any strides) and y, w (n) as the engine's data, in one copy.
+svr::Data to_data(const Array& x, const Array& y, const std::optional<Array>& weight) {
+  if (x.ndim() != 2) throw std::invalid_argument("X must be a 2-D array");
+  if (y.ndim() != 1 || y.shape(0) != x.shape(0))
+    throw std::invalid_argument("y must be a 1-D array with one value per row of X");
+  svr::Data d;
+  d.rows = static_cast<std::size_t>(x.shape(0));
+  d.cols = static_cast<std::size_t>(x.shape(1));
+  d.x.resize(d.rows * d.cols);
+  const auto xv = x.unchecked<2>();
+  for (py::ssize_t i = 0; i < x.shape(0); ++i)
+    for (py::ssize_t k = 0; k < x.shape(1); ++k)
+      d.x[static_cast<std::size_t>(i) * d.cols + static_cast<std::size_t>(k)] = xv(i, k);
+  const auto yv = y.unchecked<1>();
+  d.y.resize(d.rows);
+  for (py::ssize_t i = 0; i < y.shape(0); ++i) d.y[static_cast<std::size_t>(i)] = yv(i);
+  if (weight) {
+    if (weight->ndim() != 1 || weight->shape(0) != x.shape(0))
+      throw std::invalid_argument("sample_weight must be a 1-D array with one value per row of X");
+    const auto wv = weight->unchecked<1>();
+    d.weight.resize(d.rows);
+    for (py::ssize_t i = 0; i < weight->shape(0); ++i)
+      d.weight[static_cast<std::size_t>(i)] = wv(i);
+  }
+  return d;
+}
+
+// γ as given, or scikit-learn's 'scale' (1/(d·Var X), 1 when X is constant) or 'auto' (1/d),
+// computed from the row-major copy so that C- and F-ordered X give the same γ to the bit.
+using Gamma = std::variant<double, std::string>;
+double gamma_of(const Gamma& gamma, const svr::Data& d) {
+  if (const double* g = std::get_if<double>(&gamma)) return *g;
+  const std::string& name = std::get<std::string>(gamma);
+  const auto cols = static_cast<double>(d.cols);
+  if (name == "auto") return 1.0 / cols;
+  if (name != "scale")
+    throw OptionError("gamma", "must be 'scale', 'auto' or a number > 0 (got '" + name + "')");
+  double mean = 0;
+  for (const double v : d.x) mean += v;
+  mean /= static_cast<double>(d.x.size());
+  double var = 0;
+  for (const double v : d.x) var += (v - mean) * (v - mean);
+  var /= static_cast<double>(d.x.size());
+  return var != 0 ? 1.0 / (cols * var) : 1.0;
+}
+
+svr::Params to_params(const std::string& kernel, double gamma, double c, double epsilon, double tol,
+                      double cache_mb, std::int64_t max_iter, bool shrinking,
+                      const std::string& solver) {
+  svr::Params p;
+  if (kernel == "rbf")
+    p.kernel = svr::Kernel::rbf_gamma(gamma);
+  else if (kernel == "linear")
+    p.kernel = svr::Kernel::linear();
+  else
+    throw OptionError("kernel", "must be 'rbf' or 'linear' (got '" + kernel + "')");
+  p.c = c;
+  p.epsilon = epsilon;
+  p.tolerance = tol;
+  p.cache_mb = cache_mb;
+  p.max_iterations = max_iter;
+  p.shrinking = shrinking;
+  if (solver == "libsvm")
+    p.libsvm_path = true;
+  else if (solver != "pairs")
+    throw OptionError("solver", "must be 'pairs' or 'libsvm' (got '" + solver + "')");
+  // scikit-learn's parameter names, so that errors name what the user wrote.
+  svr::validate(p, svr::ParamNames{"C", "gamma", "epsilon", "tol", "cache_size", "max_iter"});
+  return p;
+}
+
+// A fit as the Python estimator stores it: the support vectors' indices into the training rows,
+// their coefficients α⁺ − α⁻ and rows, ρ, and the solver's summary.
+py::dict to_dict(const svr::FitResult& r, const svr::Data& data) {
+  const std::size_t n = data.rows, d = data.cols, m = r.model.size();
+  py::array_t<std::int32_t> support(static_cast<py::ssize_t>(m));
+  auto sv = support.mutable_unchecked<1>();
+  py::ssize_t k = 0;
+  for (std::size_t i = 0; i < n; ++i)  // the rows fit() kept, in its order
+    if (r.dual.alpha[i] - r.dual.alpha[i + n] != 0) sv(k++) = static_cast<std::int32_t>(i);
+  if (static_cast<std::size_t>(k) != m) throw std::logic_error("support vectors miscounted");
+  py::array_t<double> coef(static_cast<py::ssize_t>(m));
+  std::copy(r.model.coef.begin(), r.model.coef.end(), coef.mutable_data());
+  py::array_t<double> vectors({static_cast<py::ssize_t>(m), static_cast<py::ssize_t>(d)});
+  std::copy(r.model.support_vectors.begin(), r.model.support_vectors.end(), vectors.mutable_data());
+  py::dict out;
+  out["support"] = support;
+  out["dual_coef"] = coef;
+  out["support_vectors"] = vectors;
+  out["rho"] = r.model.rho;
+  out["n_iter"] = r.summary.solver.iterations;
+  out["converged"] = r.summary.solver.status == svr::SolverStatus::optimal;
+  out["objective"] = r.summary.solver.objective;
+  out["n_bsv"] = r.summary.n_bsv;
+  out["seconds"] = r.summary.seconds;
+  return out;
+}
+
+// The memory of earlier fits, for the next ones: a Python process that fits many models (a
+// search, a cross-validation) pays for fresh pages once per thread that fits, not once per fit
+// (docs/svr.md, "Memory"). release_memory() gives it back.
+svr::WorkspacePool& workspaces() {
+  static svr::WorkspacePool pool;
+  return pool;
+}
+
+py::dict fit(const Array& x, const Array& y, const std::optional<Array>& weight,
+             const std::string& kernel, const Gamma& gamma, double c, double epsilon, double tol,
+             double cache_mb, std::int64_t max_iter, bool shrinking, const std::string& solver) {
+  svr::Data data = to_data(x, y, weight);
+  const double g = gamma_of(gamma, data);
+  const svr::Params p =
+      to_params(kernel, g, c, epsilon, tol, cache_mb, max_iter, shrinking, solver);
+  std::optional<svr::FitResult> r;
+  std::optional<svr::TrainingSet> set;
+  {
+    py::gil_scoped_release release;
+    set.emplace(std::move(data));
+    const svr::WorkspacePool::Lease workspace = workspaces().borrow();
+    r.emplace(svr::fit(*set, p, nullptr, workspace.get()));
+  }
+  py::dict out = to_dict(*r, set->data());
+  out["gamma"] = g;
+  return out;
+}
+
+py::list fit_path(const Array& x, const Array& y, const std::optional<Array>& weight,
+                  const std::vector<double>& c_values, const std::string& kernel,
+                  const Gamma& gamma, double epsilon, double tol, double cache_mb,
+                  std::int64_t max_iter, bool shrinking, const std::string& solver) {
+  if (c_values.empty()) throw OptionError("C", "needs at least one value");
+  svr::Data data = to_data(x, y, weight);
+  const double g = gamma_of(gamma, data);
+  const svr::Params p =
+      to_params(kernel, g, c_values.front(), epsilon, tol, cache_mb, max_iter, shrinking, solver);
+  for (const double c : c_values)
+    if (!(std::isfinite(c) && c > 0))
+      throw OptionError("C", fmt::format("every value must be a finite number > 0 (got {})", c));
+  std::optional<svr::TrainingSet> set;
+  std::vector<svr::FitResult> path;
+  {
+    py::gil_scoped_release release;
+    set.emplace(std::move(data));
+    const svr::WorkspacePool::Lease workspace = workspaces().borrow();
+    path = svr::fit_c_path(*set, p, c_values, workspace.get());
+  }
+  py::list out;
+  for (const auto& r : path) {
+    py::dict d = to_dict(r, set->data());
+    d["gamma"] = g;
+    out.append(d);
+  }
+  return out;
+}
+
+py::array_t<double> predict(const Array& vectors, const Array& coef, double rho,
+                            const std::string& kernel, double gamma, const Array& x, int n_jobs) {
+  svr::Model m;
+  m.kernel = kernel == "linear" ? svr::Kernel::linear() : svr::Kernel::rbf_gamma(gamma);
+  if (x.ndim() != 2 || vectors.ndim() != 2 || coef.ndim() != 1 || coef.shape(0) != vectors.shape(0))
+    throw std::invalid_argument("predict: inconsistent model or data shapes");
+  if (x.shape(1) != vectors.shape(1) && vectors.shape(0) > 0)
+    throw std::invalid_argument("predict: X has another number of features than the model");
+  m.dims = static_cast<std::size_t>(x.shape(1));
+  m.rho = rho;
+  m.coef.assign(coef.data(), coef.data() + coef.shape(0));
+  const auto vv = vectors.unchecked<2>();
+  for (py::ssize_t i = 0; i < vectors.shape(0); ++i)
+    for (py::ssize_t k = 0; k < vectors.shape(1); ++k) m.support_vectors.push_back(vv(i, k));
+  // X row-major (one copy when it is not already), then the rows in parallel.
+  const auto rows = static_cast<std::size_t>(x.shape(0));
+  const py::array_t<double, py::array::c_style | py::array::forcecast> xc(x);
+  py::array_t<double> out(static_cast<py::ssize_t>(rows));
+  {
+    const std::span<const double> in(xc.data(), rows * m.dims);
+    const std::span<double> result(out.mutable_data(), rows);
+    py::gil_scoped_release release;
+    if (n_jobs == 1 || rows < 256) {
+      m.predict(in, result);
+    } else {
+      ThreadPool pool(n_jobs < 0 ? 0u : static_cast<unsigned>(n_jobs));
+      m.predict(in, result, &pool);
+    }
+  }
+  return out;
+}
+
+}  // namespace
+
+void bind_svr(py::module_& m) {
+  m.def("svr_fit", &fit, py::arg("X"), py::arg("y"), py::arg("sample_weight"), py::arg("kernel"),
+        py::arg("gamma"), py::arg("C"), py::arg("epsilon"), py::arg("tol"), py::arg("cache_size"),
+        py::arg("max_iter"), py::arg("shrinking"), py::arg("solver"),
+        "Fits ε-SVR; returns support, dual_coef, support_vectors, rho and the solver summary.");
+  m.def("svr_fit_path", &fit_path, py::arg("X"), py::arg("y"), py::arg("sample_weight"),
+        py::arg("C"), py::arg("kernel"), py::arg("gamma"), py::arg("epsilon"), py::arg("tol"),
+        py::arg("cache_size"), py::arg("max_iter"), py::arg("shrinking"), py::arg("solver"),
+        "Fits ε-SVR at each C in turn, each warm-started from the one before.");
+  m.def(
+      "release_memory",
+      [] {
+        const std::size_t bytes = workspaces().clear();
+        return bytes;
+      },
+      "Frees the memory kept from earlier fits for later ones; returns the bytes freed.");
+  m.def("svr_predict", &predict, py::arg("support_vectors"), py::arg("dual_coef"), py::arg("rho"),
+        py::arg("kernel"), py::arg("gamma"), py::arg("X"), py::arg("n_jobs"),
+        "f(x) = Σ dual_coef·K(sv, x) − rho for every row of X.");
+}
+
+}  // namespace fogdrift::python
