@@ -12,6 +12,7 @@ packages=(
   gnuplot-nox                          # fogdrift paper's figures (PNG)
   pybind11-dev python3-dev             # the Python package (python/)
   python3-sklearn python3-pytest       # its tests: scikit-learn's estimator checks and SVR as reference
+  python3-pandas                       # recordings as DataFrames, and scikit-learn's DataFrame checks
 )
 
 missing=()

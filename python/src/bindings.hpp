@@ -8,4 +8,7 @@ namespace fogdrift::python {
 /// The ε-SVR engine: fit, fit_path, predict (python/fogdrift/svr.py wraps them).
 void bind_svr(pybind11::module_& m);
 
+/// Recordings and compensation models: read_recording, write_recording, Model.
+void bind_model(pybind11::module_& m);
+
 }  // namespace fogdrift::python

@@ -26,4 +26,5 @@ PYBIND11_MODULE(_fogdrift, m) {
     }
   });
   fogdrift::python::bind_svr(m);
+  fogdrift::python::bind_model(m);
 }

@@ -1,0 +1,172 @@
+// Recordings and compensation models for Python (fogdrift.Model, fogdrift.read_recording): a
+// recording is a mapping from column names to arrays (a dict, or a pandas DataFrame), a model the
+// C++ CompensationModel with its JSON file (docs/python.md).
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+#include <pybind11/stl/filesystem.h>
+
+#include <string>
+#include <vector>
+
+#include "bindings.hpp"
+#include "fogdrift/error.hpp"
+#include "fogdrift/model.hpp"
+#include "fogdrift/recording.hpp"
+
+namespace py = pybind11;
+
+namespace fogdrift::python {
+namespace {
+
+py::array_t<double> to_array(const std::vector<double>& v) {
+  py::array_t<double> out(static_cast<py::ssize_t>(v.size()));
+  std::copy(v.begin(), v.end(), out.mutable_data());
+  return out;
+}
+
+// Every known column the recording has, in fogdrift's order; thermometers the unit lacks are
+// left out.
+py::dict to_dict(const Recording& r) {
+  py::dict out;
+  for (const auto* names : {&required_columns(), &optional_columns()})
+    for (const std::string& name : *names)
+      if (const std::vector<double>* column = known_column(r, name);
+          column != nullptr && !column->empty())
+        out[py::str(name)] = to_array(*column);
+  return out;
+}
+
+// A recording from any mapping of column names to 1-D sequences (dict, DataFrame): the known
+// columns are read, others ignored; then checked as a file would be (recording.hpp).
+Recording to_recording(const py::object& columns, const std::string& source) {
+  if (py::isinstance<py::str>(columns) || py::hasattr(columns, "__fspath__"))
+    return read_recording(py::cast<std::filesystem::path>(columns));
+  Recording r;
+  r.source = source;
+  for (const auto* names : {&required_columns(), &optional_columns()})
+    for (const std::string& name : *names) {
+      if (!columns.attr("__contains__")(name).cast<bool>()) continue;
+      const auto values = py::array_t<double, py::array::forcecast>::ensure(columns[py::str(name)]);
+      if (!values || values.ndim() != 1)
+        throw InputError(source, 0, 0, "column " + name + ": must be a 1-D array of numbers");
+      std::vector<double>* column = known_column(r, name, true);
+      column->assign(values.data(), values.data() + values.shape(0));
+    }
+  for (const std::string& name : required_columns())
+    if (known_column(r, name) == nullptr || known_column(r, name)->empty())
+      throw InputError(source, 0, 0, "missing required column " + name);
+  validate(r);
+  return r;
+}
+
+py::dict hyperparameters(const CompensationModel& m) {
+  py::dict out;
+  for (const auto& [name, value] : m.provenance.hyperparameters) out[py::str(name)] = value;
+  return out;
+}
+
+}  // namespace
+
+void bind_model(py::module_& m) {
+  m.def(
+      "read_recording",
+      [](const std::filesystem::path& path) { return to_dict(read_recording(path)); },
+      py::arg("path"),
+      "A recording CSV (docs/formats.md) as a dict of column name → float64 array; thermometers "
+      "the unit lacks are left out. Errors name the file, line and column.");
+  m.def(
+      "write_recording",
+      [](const std::filesystem::path& path, const py::object& columns) {
+        write_recording(path, to_recording(columns, path.string()));
+      },
+      py::arg("path"), py::arg("columns"),
+      "Writes a mapping of columns (dict or DataFrame) as a recording CSV, atomically.");
+
+  py::class_<CompensationModel>(m, "Model",
+                                "A compensation model: features, scalers, regressor, novelty "
+                                "guard and provenance, as `fogdrift train` writes it.")
+      .def_static(
+          "load",
+          [](const std::filesystem::path& path, bool allow_edited) {
+            return load_compensation_model(path, {allow_edited});
+          },
+          py::arg("path"), py::arg("allow_edited") = false,
+          "Reads and checks a model file (its checksum too, unless allow_edited).")
+      .def_static(
+          "from_json",
+          [](const std::string& text, bool allow_edited) {
+            return compensation_model_from_json(text, "(text)", {allow_edited});
+          },
+          py::arg("text"), py::arg("allow_edited") = false)
+      .def(
+          "to_json", [](const CompensationModel& self) { return to_json(self); },
+          "The model file's text, byte for byte what save() writes.")
+      .def(
+          "save",
+          [](const CompensationModel& self, const std::filesystem::path& path) {
+            save(self, path);
+          },
+          py::arg("path"), "Writes the model file atomically.")
+      .def_property_readonly(
+          "method", [](const CompensationModel& self) { return to_string(self.provenance.method); })
+      .def_property_readonly("feature_names",
+                             [](const CompensationModel& self) { return self.feature_names; })
+      .def_property_readonly("hyperparameters", &hyperparameters)
+      .def_property_readonly("fitness",
+                             [](const CompensationModel& self) { return self.provenance.fitness; })
+      .def_property_readonly(
+          "fitness_value",
+          [](const CompensationModel& self) { return self.provenance.fitness_value; })
+      .def_property_readonly(
+          "training_rows",
+          [](const CompensationModel& self) { return self.provenance.training_rows; })
+      .def_property_readonly("training_files",
+                             [](const CompensationModel& self) {
+                               py::list out;
+                               for (const auto& f : self.provenance.files)
+                                 out.append(py::make_tuple(f.path, f.sha256));
+                               return out;
+                             })
+      .def(
+          "predict",
+          [](const CompensationModel& self, const py::object& recording, bool guarded) {
+            const Recording r = to_recording(recording, "(recording)");
+            RecordingPrediction p;
+            {
+              py::gil_scoped_release release;
+              p = self.predict(r, guarded);
+            }
+            py::dict out;
+            out["drift_dph"] = to_array(p.drift_dph);
+            out["model_drift_dph"] = to_array(p.model_drift_dph);
+            out["novelty"] = to_array(p.novelty);
+            out["guard_weight"] = to_array(p.weight);
+            return out;
+          },
+          py::arg("recording"), py::arg("guarded") = true,
+          "Drift at every sample of a recording (a path, or a mapping of columns), °/h: "
+          "drift_dph (what to subtract), model_drift_dph (before the guard), novelty and "
+          "guard_weight, each a float64 array; as `fogdrift compensate` computes them.")
+      .def(
+          "compensate",
+          [](const CompensationModel& self, const py::object& recording, bool guarded) {
+            const Recording r = to_recording(recording, "(recording)");
+            std::vector<double> out;
+            {
+              py::gil_scoped_release release;
+              out = self.predict_dph(r, guarded);
+              for (std::size_t i = 0; i < out.size(); ++i) out[i] = r.gyro_dph[i] - out[i];
+            }
+            return to_array(out);
+          },
+          py::arg("recording"), py::arg("guarded") = true,
+          "gyro_dph − drift_dph: the compensated gyro of a recording, °/h.")
+      .def("__repr__", [](const CompensationModel& self) {
+        return "<fogdrift.Model " + to_string(self.provenance.method) + ", " +
+               std::to_string(self.inputs()) + " features, " +
+               std::to_string(self.provenance.training_rows) + " training rows>";
+      });
+}
+
+}  // namespace fogdrift::python

@@ -1,0 +1,108 @@
+"""fogdrift.Model and recordings in Python, against the command line: the same model file, the
+same drift and compensated gyro, to the bit, as `fogdrift train` and `fogdrift compensate`."""
+import csv
+import os
+import subprocess
+
+import numpy as np
+import pytest
+
+import fogdrift
+
+
+def cli():
+    return os.environ.get("FOGDRIFT_CLI", "build/apps/fogdrift/fogdrift")
+
+
+@pytest.fixture(scope="module")
+def trained(tmp_path_factory):
+    """A simulated calibration campaign and an SVR model trained on it by the command line."""
+    d = tmp_path_factory.mktemp("model")
+    subprocess.run([cli(), "simulate", "calibration", "--out", str(d / "cal"), "--seed", "2"],
+                   check=True, stdout=subprocess.DEVNULL)
+    subprocess.run([cli(), "train", str(d / "cal"), "--method", "svr", "-o", str(d / "m.json"),
+                    "-q"], check=True)
+    recording = d / "cal" / "cal_r1_20C.csv"
+    subprocess.run([cli(), "compensate", str(d / "m.json"), str(recording), "-o",
+                    str(d / "comp.csv"), "-q"], check=True)
+    with open(d / "comp.csv", newline="") as f:
+        rows = list(csv.DictReader(f))
+    expected = {k: np.array([float(r[k]) for r in rows])
+                for k in ("drift_dph", "gyro_comp_dph", "novelty", "guard_weight")}
+    return d, recording, expected
+
+
+def test_a_model_file_reads_and_writes_byte_for_byte(trained):
+    d, _, _ = trained
+    text = (d / "m.json").read_text()
+    m = fogdrift.Model.load(d / "m.json")
+    assert m.method == "svr"
+    assert m.hyperparameters["C"] == 1.0 and m.hyperparameters["epsilon"] == 0.1
+    assert len(m.feature_names) == 9 and m.training_rows > 0
+    assert all(len(sha) == 64 for _, sha in m.training_files)
+    assert m.to_json() == text
+    m.save(d / "again.json")
+    assert (d / "again.json").read_text() == text
+    assert fogdrift.Model.from_json(text).to_json() == text
+    assert "fogdrift.Model svr" in repr(m)
+
+
+def test_drift_and_compensation_are_the_command_lines(trained):
+    d, recording, expected = trained
+    m = fogdrift.Model.load(str(d / "m.json"))
+    columns = fogdrift.read_recording(recording)
+    for source in (recording, str(recording), columns):
+        p = m.predict(source)
+        for k in ("drift_dph", "novelty", "guard_weight"):
+            np.testing.assert_array_equal(p[k], expected[k])
+        np.testing.assert_array_equal(m.compensate(source), expected["gyro_comp_dph"])
+    # Unguarded: the model's own drift everywhere.
+    np.testing.assert_array_equal(m.predict(columns, guarded=False)["drift_dph"],
+                                  m.predict(columns)["model_drift_dph"])
+    # Column order, extra columns and other sequence types do not matter.
+    shuffled = {k: list(columns[k]) for k in reversed(list(columns))}
+    shuffled["operator_note"] = np.zeros(len(columns["time_s"]))
+    np.testing.assert_array_equal(m.compensate(shuffled), expected["gyro_comp_dph"])
+
+
+def test_recordings_round_trip_and_open_in_pandas(trained, tmp_path):
+    _, recording, _ = trained
+    columns = fogdrift.read_recording(recording)
+    assert list(columns)[:3] == ["time_s", "gyro_dph", "temp_fog_degc"]
+    assert all(v.dtype == np.float64 for v in columns.values())
+    fogdrift.write_recording(tmp_path / "copy.csv", columns)
+    again = fogdrift.read_recording(tmp_path / "copy.csv")
+    assert list(again) == list(columns)
+    for k in columns:
+        np.testing.assert_array_equal(again[k], columns[k])
+    pandas = pytest.importorskip("pandas")
+    frame = pandas.read_csv(tmp_path / "copy.csv")
+    np.testing.assert_array_equal(frame["gyro_dph"].to_numpy(), columns["gyro_dph"])
+    fogdrift.write_recording(tmp_path / "frame.csv", frame)
+    np.testing.assert_array_equal(fogdrift.read_recording(tmp_path / "frame.csv")["time_s"],
+                                  columns["time_s"])
+
+
+def test_bad_input_is_a_value_error_naming_the_file_and_rule(trained, tmp_path):
+    d, recording, _ = trained
+    m = fogdrift.Model.load(d / "m.json")
+    columns = fogdrift.read_recording(recording)
+    missing = {k: v for k, v in columns.items() if k != "temp_fog_degc"}
+    with pytest.raises(ValueError, match="missing required column temp_fog_degc"):
+        m.predict(missing)
+    backwards = dict(columns, time_s=columns["time_s"][::-1].copy())
+    with pytest.raises(ValueError, match="time_s"):
+        m.compensate(backwards)
+    with pytest.raises(ValueError, match="must be a 1-D array"):
+        m.predict(dict(columns, gyro_dph=np.zeros((2, 2))))
+    bad = tmp_path / "bad.csv"
+    bad.write_text("time_s,gyro_dph,temp_fog_degc\n0,1,20\n1,x,20\n")
+    with pytest.raises(ValueError, match=r"bad\.csv:3:2"):
+        fogdrift.read_recording(bad)
+    edited = (d / "m.json").read_text().replace('"epsilon": 0.1', '"epsilon": 0.2', 1)
+    assert edited != (d / "m.json").read_text()
+    with pytest.raises(ValueError, match="checksum"):
+        fogdrift.Model.from_json(edited)
+    assert fogdrift.Model.from_json(edited, allow_edited=True).method == "svr"
+    with pytest.raises(ValueError, match="nothing.json"):
+        fogdrift.Model.load(tmp_path / "nothing.json")
