@@ -3,7 +3,8 @@
 The package wraps fogdrift's C++ library (docs/python.md):
 
 * ``fogdrift.SVR`` — a scikit-learn regressor with LIBSVM's solution, several times faster,
-  with warm-started C paths (``fit_path``) and threaded prediction (``n_jobs``).
+  with warm-started C paths (``fit_path``) and threaded prediction (``n_jobs``);
+  ``fogdrift.SVRGridSearchCV`` searches C × gamma by warm-started paths in parallel.
 * ``fogdrift.Model`` — a compensation model file as ``fogdrift train`` writes it: load, save,
   predict the drift of a recording and compensate it; ``read_recording`` and
   ``write_recording`` — recordings as dicts of NumPy arrays.
@@ -11,6 +12,8 @@ The package wraps fogdrift's C++ library (docs/python.md):
   process (about ``cache_size`` per thread that fits); this gives it back and returns the bytes.
 """
 from ._fogdrift import Model, __version__, read_recording, release_memory, write_recording
+from .search import SVRGridSearchCV
 from .svr import SVR
 
-__all__ = ["Model", "SVR", "read_recording", "release_memory", "write_recording", "__version__"]
+__all__ = ["Model", "SVR", "SVRGridSearchCV", "read_recording", "release_memory",
+           "write_recording", "__version__"]

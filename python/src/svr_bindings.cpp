@@ -6,8 +6,11 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <memory>
+#include <numeric>
 #include <optional>
 #include <span>
 #include <stdexcept>
@@ -182,6 +185,81 @@ py::list fit_path(const Array& x, const Array& y, const std::optional<Array>& we
   return out;
 }
 
+// A grid search's fits: for each fold and γ, one warm-started path over C (ascending) on the
+// fold's training rows, each model scored by its sum of squared errors on the fold's test
+// rows. (fold, γ) pairs run in parallel, each with a workspace; results do not depend on the
+// thread count. Returns SSE[γ][C][fold].
+py::array_t<double> search(const Array& x, const Array& y, const std::optional<Array>& weight,
+                           const std::vector<py::array_t<std::int64_t>>& train_rows,
+                           const std::vector<py::array_t<std::int64_t>>& test_rows,
+                           const std::vector<double>& c_values, const std::vector<Gamma>& gammas,
+                           const std::string& kernel, double epsilon, double tol, double cache_mb,
+                           std::int64_t max_iter, bool shrinking, const std::string& solver,
+                           int n_jobs) {
+  if (c_values.empty() || gammas.empty() || train_rows.empty() ||
+      train_rows.size() != test_rows.size())
+    throw std::invalid_argument("search: needs values of C and gamma, and train and test folds");
+  for (const double c : c_values)
+    if (!(std::isfinite(c) && c > 0))
+      throw OptionError("C", fmt::format("every value must be a finite number > 0 (got {})", c));
+  const svr::Data all = to_data(x, y, weight);
+  const std::size_t folds = train_rows.size(), ng = gammas.size(), nc = c_values.size();
+  auto indices = [&](const py::array_t<std::int64_t>& rows) {
+    std::vector<std::size_t> out;
+    const auto r = rows.unchecked<1>();
+    for (py::ssize_t i = 0; i < rows.shape(0); ++i) {
+      if (r(i) < 0 || static_cast<std::size_t>(r(i)) >= all.rows)
+        throw std::invalid_argument("search: a fold's row index is out of range");
+      out.push_back(static_cast<std::size_t>(r(i)));
+    }
+    return out;
+  };
+  std::vector<std::vector<std::size_t>> train(folds), test(folds);
+  for (std::size_t f = 0; f < folds; ++f) {
+    train[f] = indices(train_rows[f]);
+    test[f] = indices(test_rows[f]);
+  }
+  // C in ascending order along each path (warm starts go from small C to large).
+  std::vector<std::size_t> by_c(nc);
+  std::iota(by_c.begin(), by_c.end(), std::size_t{0});
+  std::stable_sort(by_c.begin(), by_c.end(),
+                   [&](std::size_t a, std::size_t b) { return c_values[a] < c_values[b]; });
+  std::vector<double> ascending(nc);
+  for (std::size_t k = 0; k < nc; ++k) ascending[k] = c_values[by_c[k]];
+
+  std::vector<double> sse(ng * nc * folds, 0.0);
+  {
+    py::gil_scoped_release release;
+    std::vector<std::unique_ptr<svr::TrainingSet>> sets(folds);
+    std::vector<std::vector<svr::Params>> params(folds);
+    for (std::size_t f = 0; f < folds; ++f) {
+      sets[f] = std::make_unique<svr::TrainingSet>(all.subset(train[f]));
+      for (const Gamma& g : gammas)
+        params[f].push_back(to_params(kernel, gamma_of(g, sets[f]->data()), ascending.front(),
+                                      epsilon, tol, cache_mb, max_iter, shrinking, solver));
+    }
+    ThreadPool pool(n_jobs < 0 ? 0u : static_cast<unsigned>(n_jobs));
+    svr::WorkspacePool& spaces = workspaces();
+    pool.parallel_for(folds * ng, [&](std::size_t task) {
+      const std::size_t f = task / ng, gi = task % ng;
+      const svr::WorkspacePool::Lease workspace = spaces.borrow();
+      const auto path = svr::fit_c_path(*sets[f], params[f][gi], ascending, workspace.get());
+      for (std::size_t k = 0; k < nc; ++k) {
+        double s = 0;
+        for (const std::size_t row : test[f]) {
+          const double e = path[k].model.predict(all.row(row)) - all.y[row];
+          s += e * e;
+        }
+        sse[(gi * nc + by_c[k]) * folds + f] = s;
+      }
+    });
+  }
+  py::array_t<double> out({static_cast<py::ssize_t>(ng), static_cast<py::ssize_t>(nc),
+                           static_cast<py::ssize_t>(folds)});
+  std::copy(sse.begin(), sse.end(), out.mutable_data());
+  return out;
+}
+
 py::array_t<double> predict(const Array& vectors, const Array& coef, double rho,
                             const std::string& kernel, double gamma, const Array& x, int n_jobs) {
   svr::Model m;
@@ -225,6 +303,11 @@ void bind_svr(py::module_& m) {
         py::arg("C"), py::arg("kernel"), py::arg("gamma"), py::arg("epsilon"), py::arg("tol"),
         py::arg("cache_size"), py::arg("max_iter"), py::arg("shrinking"), py::arg("solver"),
         "Fits ε-SVR at each C in turn, each warm-started from the one before.");
+  m.def("svr_search", &search, py::arg("X"), py::arg("y"), py::arg("sample_weight"),
+        py::arg("train_rows"), py::arg("test_rows"), py::arg("C"), py::arg("gamma"),
+        py::arg("kernel"), py::arg("epsilon"), py::arg("tol"), py::arg("cache_size"),
+        py::arg("max_iter"), py::arg("shrinking"), py::arg("solver"), py::arg("n_jobs"),
+        "Sum of squared test errors of every (gamma, C, fold), by warm-started C paths.");
   m.def(
       "release_memory",
       [] {

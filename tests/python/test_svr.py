@@ -194,3 +194,49 @@ def test_fits_reuse_memory_until_it_is_released(rng):
     assert fogdrift.release_memory() == 0
     b = fogdrift.SVR(C=10).fit(X, y).predict(X)
     np.testing.assert_array_equal(a, b)
+
+
+def test_grid_search_scores_and_chooses_as_grid_search_cv(rng):
+    from sklearn.model_selection import KFold
+    X, y = startup_like(rng, 500)
+    grid = {"C": [0.5, 5, 50], "gamma": ["scale", 0.05, 0.5]}
+    folds = KFold(4, shuffle=True, random_state=1)
+    ours = fogdrift.SVRGridSearchCV(fogdrift.SVR(epsilon=0.05), grid, cv=folds).fit(X, y)
+    cold = GridSearchCV(fogdrift.SVR(epsilon=0.05), grid, cv=folds).fit(X, y)
+    theirs = GridSearchCV(SkSVR(epsilon=0.05), grid, cv=folds).fit(X, y)
+    assert ours.cv_results_["params"] == theirs.cv_results_["params"]
+    for k in ["mean_test_score"] + [f"split{i}_test_score" for i in range(4)]:
+        # Warm starts and cold fits stop at different points within the tolerance.
+        np.testing.assert_allclose(ours.cv_results_[k], cold.cv_results_[k], atol=2e-3)
+        np.testing.assert_allclose(ours.cv_results_[k], theirs.cv_results_[k], atol=2e-3)
+    np.testing.assert_array_equal(ours.cv_results_["rank_test_score"],
+                                  theirs.cv_results_["rank_test_score"])
+    assert ours.best_params_ == theirs.best_params_ and ours.n_splits_ == 4
+    np.testing.assert_array_equal(
+        ours.predict(X), fogdrift.SVR(epsilon=0.05, **ours.best_params_).fit(X, y).predict(X))
+    threads = fogdrift.SVRGridSearchCV(fogdrift.SVR(epsilon=0.05), grid, cv=folds, n_jobs=2)
+    np.testing.assert_array_equal(threads.fit(X, y).cv_results_["mean_test_score"],
+                                  ours.cv_results_["mean_test_score"])
+
+
+def test_grid_search_scorings_weights_and_errors(rng):
+    X, y = startup_like(rng, 300)
+    grid = {"C": [1, 10], "gamma": [0.1, 0.3]}
+    w = rng.uniform(0.5, 2, size=300)
+    w[::9] = 0
+    for scoring in ("neg_mean_squared_error", "neg_root_mean_squared_error"):
+        ours = fogdrift.SVRGridSearchCV(param_grid=grid, scoring=scoring, cv=3).fit(X, y, w)
+        theirs = GridSearchCV(fogdrift.SVR(), grid, scoring=scoring, cv=3).fit(
+            X, y, sample_weight=w)
+        np.testing.assert_allclose(ours.cv_results_["mean_test_score"],
+                                   theirs.cv_results_["mean_test_score"], rtol=2e-3)
+    with pytest.raises(ValueError, match="param_grid may hold C and gamma only"):
+        fogdrift.SVRGridSearchCV(param_grid={"C": [1], "epsilon": [0.1]}).fit(X, y)
+    with pytest.raises(ValueError, match="estimator must be a fogdrift.SVR"):
+        fogdrift.SVRGridSearchCV(SkSVR(), {"C": [1]}).fit(X, y)
+    with pytest.raises(ValueError, match="scoring must be one of"):
+        fogdrift.SVRGridSearchCV(param_grid={"C": [1]}, scoring="accuracy").fit(X, y)
+    with pytest.raises(ValueError, match="gamma must be"):
+        fogdrift.SVRGridSearchCV(param_grid={"C": [1], "gamma": [-1.0]}).fit(X, y)
+    with pytest.raises(ValueError, match="option C: every value must be a finite number > 0"):
+        fogdrift.SVRGridSearchCV(param_grid={"C": [1, 0]}).fit(X, y)
