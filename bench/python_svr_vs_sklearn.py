@@ -2,7 +2,7 @@
 """fogdrift.SVR against scikit-learn's SVR (LIBSVM) in one Python process, on the same data.
 
     PYTHONPATH=build/python python3 bench/python_svr_vs_sklearn.py [--build build]
-        [--sizes 2000,6000] [--repeats 3] [--no-grid] [--grid-n 2000]
+        [--sizes 2000,6000] [--repeats 3] [--no-grid] [--grid-n 2000] [--grid-c 3]
 
 Data: the C++ bench's startup_like(N) (d = 9, standardised; tests/svr/datasets.hpp), written by
 `svr_vs_libsvm --write-data` and read with scikit-learn's svmlight reader. Both estimators get
@@ -49,6 +49,8 @@ def main():
     parser.add_argument("--repeats", type=int, default=3)
     parser.add_argument("--no-grid", action="store_true")
     parser.add_argument("--grid-n", type=int, default=2000)
+    parser.add_argument("--grid-c", type=int, default=3,
+                        help="values of C: 3 is {1, 10, 100}, more are log-spaced 0.1 … 100")
     args = parser.parse_args()
 
     print(f"fogdrift {fogdrift.__version__}, scikit-learn "
@@ -83,11 +85,12 @@ def main():
 
     if not args.no_grid:
         X, y = data(args.build, args.grid_n)
-        grid = {"C": [1, 10, 100], "gamma": [0.125, 0.5, 2]}
+        c_values = [1, 10, 100] if args.grid_c == 3 else list(np.logspace(-1, 2, args.grid_c))
+        grid = {"C": c_values, "gamma": [0.125, 0.5, 2]}
         folds = KFold(3, shuffle=True, random_state=0)
         t_sk, sk = timed(lambda: GridSearchCV(SkSVR(), grid, cv=folds).fit(X, y))
-        print(f"\n### C × γ grid search, 3 × 3 grid, 3 folds (27 fits and the refit), "
-              f"N = {args.grid_n}\n")
+        print(f"\n### C × γ grid search, {len(c_values)} × 3 grid, 3 folds "
+              f"({9 * len(c_values)} fits and the refit), N = {args.grid_n}\n")
         print(f"scikit-learn: GridSearchCV(sklearn.svm.SVR()) {t_sk:.2f} s.\n")
         print("| fogdrift | s | speed-up | same best params | worst |Δ mean R²| |")
         print("|---|---|---|---|---|")
