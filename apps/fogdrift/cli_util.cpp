@@ -49,8 +49,12 @@ std::string read_text_file(const std::string& path) {
 }
 
 OptionError as_flag(const OptionError& e, const FlagTable& flags) {
-  const auto it = flags.find(e.option());
-  return it == flags.end() ? e : OptionError(it->second, e.message());
+  return flags.contains(e.option()) ? OptionError(flag_for(e.option(), flags), e.message()) : e;
+}
+
+std::string flag_for(const std::string& field, const FlagTable& flags) {
+  const auto it = flags.find(field);
+  return it == flags.end() ? field : it->second;
 }
 
 void with_flags(const FlagTable& flags, const std::function<void()>& body) {

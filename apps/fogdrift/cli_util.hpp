@@ -27,6 +27,9 @@ using FlagTable = std::map<std::string, std::string>;
 /// named it (a field the command has no flag for).
 OptionError as_flag(const OptionError& e, const FlagTable& flags);
 
+/// The flag that sets library field `field`, or the field's own name when there is none.
+std::string flag_for(const std::string& field, const FlagTable& flags);
+
 /// Runs `body`, naming every option error by its flag.
 void with_flags(const FlagTable& flags, const std::function<void()>& body);
 

@@ -16,7 +16,7 @@
 #include "fogdrift/error.hpp"
 #include "fogdrift/sha256.hpp"
 #include "fogdrift/thread_pool.hpp"
-#include "fogdrift/train.hpp"
+#include "fogdrift/train_campaign.hpp"
 
 namespace fogdrift::app {
 namespace {
@@ -128,61 +128,29 @@ void run(const TrainArgs& a) {
     };
   }
 
-  const auto block_s = seconds_or_auto(a.block_s, "--block-s");
-  const auto window_s = seconds_or_auto(a.rate_window_s, "--rate-window-s");
+  CampaignTrainOptions campaign_options;
+  campaign_options.train = options;
+  campaign_options.dataset = dataset;
+  campaign_options.auto_features = a.features == "auto";
+  campaign_options.block_s = seconds_or_auto(a.block_s, "--block-s");
+  campaign_options.rate_window_s = seconds_or_auto(a.rate_window_s, "--rate-window-s");
   const Campaign campaign = read_campaign(a.campaign);
-  TrainResult result;
-  Dataset data;
-  std::vector<std::string> notes;
+  CampaignTrainResult trained;
   try {
-    std::vector<RecordingInput> inputs = read_inputs(campaign, Role::train, Scenario::calibration);
-    // Preprocessing fitted to the recordings' sampling, unless the user fixed it.
-    const double dt_s = sample_interval_s(inputs.front().recording);
-    std::size_t shortest = inputs.front().recording.size();
-    for (const auto& in : inputs) shortest = std::min(shortest, in.recording.size());
-    const FeatureOptions fitted = preprocessing_for(dt_s, shortest, dataset.preprocessing);
-    if (a.features == "auto") {
-      // The paper's inputs over the thermometers every training recording has.
-      std::vector<Thermometer> common = thermometers_of(inputs.front().recording);
-      for (const auto& in : inputs) {
-        const auto has = thermometers_of(in.recording);
-        std::erase_if(common, [&](Thermometer k) {
-          return std::find(has.begin(), has.end(), k) == has.end();
-        });
-      }
-      dataset.features = default_feature_spec(common);
-      if (common.size() < 3)
-        notes.push_back(fmt::format("{} thermometer{}: features '{}' (--features)", common.size(),
-                                    common.size() == 1 ? "" : "s", dataset.features.to_string()));
-    }
-    const FeatureOptions defaults;
-    dataset.preprocessing.block.block_s = block_s.value_or(fitted.block.block_s);
-    dataset.preprocessing.rates.window_s = window_s.value_or(fitted.rates.window_s);
-    if (!block_s && fitted.block.block_s != defaults.block.block_s)
-      notes.push_back(
-          fmt::format("recordings sampled every {:.6g} s: blocks of {:.6g} s, not {} s "
-                      "(--block-s)",
-                      dt_s, fitted.block.block_s, defaults.block.block_s));
-    if (!window_s && fitted.rates.window_s != defaults.rates.window_s)
-      notes.push_back(
-          fmt::format("recordings sampled every {:.6g} s, shortest {} samples: "
-                      "temperature rates over {:.6g} s, not {} s (--rate-window-s)",
-                      dt_s, shortest, fitted.rates.window_s, defaults.rates.window_s));
-    data = build_dataset(inputs, dataset);
-    if (data.rows == 0)
-      throw InputError((campaign.dir / "campaign.json").string(), 0, 0,
-                       "no calibration recording has role \"train\"; nothing to train on");
-    result = train(data, dataset, options);
+    trained = train_campaign(campaign, campaign_options);
   } catch (const OptionError& e) {
     if (show_progress) std::cerr << "\n";
     throw as_flag(e, kTrainFlags);
   }
   if (show_progress) std::cerr << "\n";
-
-  Provenance& p = result.model.provenance;
-  p.files.push_back({"campaign.json", sha256_file_hex(campaign.dir / "campaign.json")});
-  for (const GroupInfo& g : data.groups)
-    p.files.push_back({g.file, sha256_file_hex(campaign.dir / g.file)});
+  const TrainResult& result = trained.trained;
+  const Dataset& data = trained.data;
+  dataset = trained.dataset;
+  // The choices made for the user, each with the flag that would change it.
+  std::vector<std::string> notes;
+  for (const CampaignNote& n : trained.notes)
+    notes.push_back(fmt::format("{} ({})", n.text, flag_for(n.field, kTrainFlags)));
+  const Provenance& p = result.model.provenance;
   save(result.model, a.output);
 
   const TrainSummary& s = result.summary;

@@ -1,0 +1,48 @@
+// Training on a campaign, as `fogdrift train` and the Python package's fogdrift.train do it
+// (docs/tuning.md): read the calibration recordings whose role is "train", choose the features
+// and preprocessing the recordings allow, build the dataset, train, and record every data
+// file's SHA-256 in the model's provenance.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "fogdrift/campaign.hpp"
+#include "fogdrift/train.hpp"
+
+namespace fogdrift {
+
+struct CampaignTrainOptions {
+  TrainOptions train;
+  /// Preprocessing and target settings. Its features are used as given unless auto_features;
+  /// its block and rate window unless block_s or rate_window_s say "fit them".
+  DatasetOptions dataset;
+  /// The paper's inputs over the thermometers every training recording has (features.hpp,
+  /// default_feature_spec) instead of dataset.features.
+  bool auto_features = true;
+  /// Averaging block, s; unset: fitted to the recordings' sampling (preprocessing_for).
+  std::optional<double> block_s;
+  /// Temperature-rate window, s; unset: fitted to the sampling and the shortest recording.
+  std::optional<double> rate_window_s;
+};
+
+/// A choice made for the user that differs from the defaults, for the front end to report:
+/// `field` is the option that would change it ("features", "block_s", "window_s").
+struct CampaignNote {
+  std::string field;
+  std::string text;
+};
+
+struct CampaignTrainResult {
+  TrainResult trained;     ///< the model, its provenance holding every data file's SHA-256
+  Dataset data;            ///< the training rows, their recordings and any warnings
+  DatasetOptions dataset;  ///< the settings used, with everything "auto" resolved
+  std::vector<CampaignNote> notes;
+};
+
+/// Trains on `campaign`'s training recordings. Throws InputError (no training recording, a bad
+/// file) and OptionError (naming the library's field) as the parts it calls do.
+CampaignTrainResult train_campaign(const Campaign& campaign, const CampaignTrainOptions& options);
+
+}  // namespace fogdrift

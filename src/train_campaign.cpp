@@ -1,0 +1,62 @@
+#include "fogdrift/train_campaign.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+
+#include "fogdrift/error.hpp"
+#include "fogdrift/features.hpp"
+#include "fogdrift/sha256.hpp"
+
+namespace fogdrift {
+
+CampaignTrainResult train_campaign(const Campaign& campaign, const CampaignTrainOptions& options) {
+  CampaignTrainResult out;
+  DatasetOptions& dataset = out.dataset;
+  dataset = options.dataset;
+  std::vector<RecordingInput> inputs = read_inputs(campaign, Role::train, Scenario::calibration);
+  // Preprocessing fitted to the recordings' sampling, unless the user fixed it.
+  const double dt_s = sample_interval_s(inputs.front().recording);
+  std::size_t shortest = inputs.front().recording.size();
+  for (const auto& in : inputs) shortest = std::min(shortest, in.recording.size());
+  const FeatureOptions fitted = preprocessing_for(dt_s, shortest, dataset.preprocessing);
+  if (options.auto_features) {
+    // The paper's inputs over the thermometers every training recording has.
+    std::vector<Thermometer> common = thermometers_of(inputs.front().recording);
+    for (const auto& in : inputs) {
+      const auto has = thermometers_of(in.recording);
+      std::erase_if(
+          common, [&](Thermometer k) { return std::find(has.begin(), has.end(), k) == has.end(); });
+    }
+    dataset.features = default_feature_spec(common);
+    if (common.size() < 3)
+      out.notes.push_back(
+          {"features", fmt::format("{} thermometer{}: features '{}'", common.size(),
+                                   common.size() == 1 ? "" : "s", dataset.features.to_string())});
+  }
+  const FeatureOptions defaults;
+  dataset.preprocessing.block.block_s = options.block_s.value_or(fitted.block.block_s);
+  dataset.preprocessing.rates.window_s = options.rate_window_s.value_or(fitted.rates.window_s);
+  if (!options.block_s && fitted.block.block_s != defaults.block.block_s)
+    out.notes.push_back(
+        {"block_s", fmt::format("recordings sampled every {:.6g} s: blocks of "
+                                "{:.6g} s, not {} s",
+                                dt_s, fitted.block.block_s, defaults.block.block_s)});
+  if (!options.rate_window_s && fitted.rates.window_s != defaults.rates.window_s)
+    out.notes.push_back(
+        {"window_s", fmt::format("recordings sampled every {:.6g} s, shortest {} samples: "
+                                 "temperature rates over {:.6g} s, not {} s",
+                                 dt_s, shortest, fitted.rates.window_s, defaults.rates.window_s)});
+  out.data = build_dataset(inputs, dataset);
+  if (out.data.rows == 0)
+    throw InputError((campaign.dir / "campaign.json").string(), 0, 0,
+                     "no calibration recording has role \"train\"; nothing to train on");
+  out.trained = train(out.data, dataset, options.train);
+  Provenance& p = out.trained.model.provenance;
+  p.files.push_back({"campaign.json", sha256_file_hex(campaign.dir / "campaign.json")});
+  for (const GroupInfo& g : out.data.groups)
+    p.files.push_back({g.file, sha256_file_hex(campaign.dir / g.file)});
+  return out;
+}
+
+}  // namespace fogdrift
