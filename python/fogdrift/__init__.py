@@ -5,15 +5,18 @@ The package wraps fogdrift's C++ library (docs/python.md):
 * ``fogdrift.SVR`` — a scikit-learn regressor with LIBSVM's solution, several times faster,
   with warm-started C paths (``fit_path``) and threaded prediction (``n_jobs``);
   ``fogdrift.SVRGridSearchCV`` searches C × gamma by warm-started paths in parallel.
+* ``fogdrift.train(campaign, method=..., ...)`` — a campaign folder to a compensation model, as
+  ``fogdrift train`` does it, every option under the library's name, with a progress callback;
 * ``fogdrift.Model`` — a compensation model file as ``fogdrift train`` writes it: load, save,
   predict the drift of a recording and compensate it; ``read_recording`` and
   ``write_recording`` — recordings as dicts of NumPy arrays.
 * ``fogdrift.release_memory()`` — fits keep their kernel-row memory for the next fit in the
   process (about ``cache_size`` per thread that fits); this gives it back and returns the bytes.
 """
-from ._fogdrift import Model, __version__, read_recording, release_memory, write_recording
+from ._fogdrift import (Model, __version__, read_recording, release_memory, train,
+                        write_recording)
 from .search import SVRGridSearchCV
 from .svr import SVR
 
-__all__ = ["Model", "SVR", "SVRGridSearchCV", "read_recording", "release_memory",
+__all__ = ["Model", "SVR", "SVRGridSearchCV", "read_recording", "release_memory", "train",
            "write_recording", "__version__"]

@@ -11,4 +11,7 @@ void bind_svr(pybind11::module_& m);
 /// Recordings and compensation models: read_recording, write_recording, Model.
 void bind_model(pybind11::module_& m);
 
+/// Training on a campaign: train.
+void bind_train(pybind11::module_& m);
+
 }  // namespace fogdrift::python

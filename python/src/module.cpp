@@ -27,4 +27,5 @@ PYBIND11_MODULE(_fogdrift, m) {
   });
   fogdrift::python::bind_svr(m);
   fogdrift::python::bind_model(m);
+  fogdrift::python::bind_train(m);
 }

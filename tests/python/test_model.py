@@ -106,3 +106,44 @@ def test_bad_input_is_a_value_error_naming_the_file_and_rule(trained, tmp_path):
     assert fogdrift.Model.from_json(edited, allow_edited=True).method == "svr"
     with pytest.raises(ValueError, match="nothing.json"):
         fogdrift.Model.load(tmp_path / "nothing.json")
+
+
+def test_train_gives_the_command_lines_model_byte_for_byte(trained, tmp_path):
+    d, _, _ = trained
+    r = fogdrift.train(d / "cal", method="svr")
+    assert r["model"].to_json() == (d / "m.json").read_text()
+    assert r["summary"]["method"] == "svr" and r["summary"]["recordings"] > 0
+    # A tuned model, its search reported through the progress callback.
+    seen = []
+    tuned = fogdrift.train(str(d / "cal"), population=8, iterations=3, seed=5, threads=2,
+                           progress=lambda p: seen.append((p["iteration"], p["best_rmse"])))
+    subprocess.run([cli(), "train", str(d / "cal"), "--population", "8", "--iterations", "3",
+                    "--seed", "5", "-o", str(tmp_path / "t.json"), "-q"], check=True)
+    assert tuned["model"].to_json() == (tmp_path / "t.json").read_text()
+    assert [i for i, _ in seen] == [0, 1, 2, 3]
+    assert all(b >= a for (_, a), (_, b) in zip(seen[1:], seen))  # best so far never worsens
+    assert tuned["summary"]["fitness_rmse"] == seen[-1][1]
+
+
+def test_train_options_and_errors_use_the_librarys_names(trained):
+    d, _, _ = trained
+    r = fogdrift.train(d / "cal", method="poly", features="T(fog),dT(fog)", block_s=20,
+                       max_degree=2)
+    assert r["model"].feature_names == ["T_fog_degc", "dT_fog_degc_per_s"]
+    assert r["summary"]["block_s"] == 20
+    for kwargs, message in [
+            (dict(method="svm"), "option method: 'svm' is not a method"),
+            (dict(population=1), "option population: 1 is too small"),
+            (dict(block_s="soon"), "option block_s: must be 'auto' or a number of seconds"),
+            (dict(features="T(gps)"), "gps"),
+    ]:
+        with pytest.raises(ValueError, match=message):
+            fogdrift.train(d / "cal", **kwargs)
+    with pytest.raises(ValueError, match="campaign.json"):
+        fogdrift.train(d / "no such campaign")
+
+    def stop(progress):
+        raise KeyboardInterrupt("stopped by the user")
+
+    with pytest.raises(KeyboardInterrupt, match="stopped by the user"):
+        fogdrift.train(d / "cal", population=8, iterations=3, progress=stop)

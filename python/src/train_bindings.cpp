@@ -1,0 +1,147 @@
+// fogdrift.train: a campaign folder to a compensation model, with every option of
+// `fogdrift train` under the library's own field names, and a progress callback
+// (train_campaign.hpp, docs/python.md).
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+#include <pybind11/stl/filesystem.h>
+
+#include <exception>
+#include <optional>
+#include <string>
+
+#include "bindings.hpp"
+#include "fogdrift/campaign.hpp"
+#include "fogdrift/error.hpp"
+#include "fogdrift/signal/differentiate.hpp"
+#include "fogdrift/thread_pool.hpp"
+#include "fogdrift/train_campaign.hpp"
+
+namespace py = pybind11;
+
+namespace fogdrift::python {
+namespace {
+
+const TrainOptions kTrain;
+const opt::RunOptions kRun;
+const tune::SearchSpace kSpace;
+
+// "auto" or a number of seconds.
+std::optional<double> seconds(const py::object& value, const char* name) {
+  if (py::isinstance<py::str>(value)) {
+    if (value.cast<std::string>() == "auto") return std::nullopt;
+    throw OptionError(name, "must be 'auto' or a number of seconds > 0 (got '" +
+                                value.cast<std::string>() + "')");
+  }
+  const double v = value.cast<double>();
+  if (!(v > 0)) throw OptionError(name, "must be 'auto' or a number of seconds > 0");
+  return v;
+}
+
+py::dict train(const std::filesystem::path& campaign_path, const std::string& method,
+               const std::string& fitness, const std::string& cv, std::size_t folds,
+               const std::string& features, const std::string& differentiator,
+               const py::object& block_s, const py::object& rate_window_s, std::size_t population,
+               std::size_t iterations, std::uint64_t seed, unsigned threads, double c_min,
+               double c_max, double sigma_min, double sigma_max, double epsilon,
+               bool search_epsilon, bool auto_box, bool denoise, std::size_t hidden,
+               std::size_t max_degree, const py::object& progress) {
+  CampaignTrainOptions o;
+  TrainOptions& t = o.train;
+  t.method = parse_method(method, "method");
+  t.tune.fitness = tune::parse_fitness(fitness, "fitness");
+  t.tune.cv.scheme = tune::parse_cv_scheme(cv, "cv");
+  t.tune.cv.folds = folds;
+  o.auto_features = features == "auto";
+  if (!o.auto_features) o.dataset.features = FeatureSpec::parse(features);
+  o.dataset.preprocessing.rates.causality = signal::parse_causality(differentiator);
+  o.block_s = seconds(block_s, "block_s");
+  o.rate_window_s = seconds(rate_window_s, "rate_window_s");
+  o.dataset.denoise_target = denoise;
+  t.tune.optimizer.run.population = population;
+  t.tune.optimizer.run.iterations = iterations;
+  t.tune.optimizer.run.seed = seed;
+  t.tune.space.c_min = c_min;
+  t.tune.space.c_max = c_max;
+  t.tune.space.sigma_min = sigma_min;
+  t.tune.space.sigma_max = sigma_max;
+  t.tune.space.epsilon = epsilon;
+  t.tune.space.search_epsilon = search_epsilon;
+  t.auto_box_rounds = auto_box ? 3 : 0;
+  t.mlp.hidden = hidden;
+  t.poly_max_degree = max_degree;
+  // The callback runs on the training thread with the GIL taken; an exception in it stops the
+  // search and is raised when train returns.
+  std::exception_ptr callback_error;
+  if (!progress.is_none())
+    t.tune.optimizer.run.progress = [&](const opt::IterationRecord& r) {
+      py::gil_scoped_acquire gil;
+      try {
+        py::dict d;
+        d["iteration"] = r.iteration;
+        d["iterations"] = iterations;
+        d["evaluations"] = r.evaluations;
+        d["best_rmse"] = r.best_fitness;
+        d["best_point"] = r.best_point;
+        const py::object go_on = progress(d);
+        return go_on.is_none() || go_on.cast<bool>();
+      } catch (...) {
+        callback_error = std::current_exception();
+        return false;
+      }
+    };
+  std::optional<CampaignTrainResult> r;
+  {
+    py::gil_scoped_release release;
+    ThreadPool pool(threads);
+    t.tune.pool = &pool;
+    r.emplace(train_campaign(read_campaign(campaign_path), o));
+  }
+  if (callback_error) std::rethrow_exception(callback_error);
+  const TrainSummary& s = r->trained.summary;
+  py::dict summary;
+  summary["method"] = to_string(s.method);
+  summary["fitness"] = s.fitness;
+  summary["fitness_rmse"] = s.fitness_value;
+  py::dict hyper;
+  for (const auto& [k, v] : s.hyperparameters) hyper[py::str(k)] = v;
+  summary["hyperparameters"] = hyper;
+  summary["training_rows"] = s.rows;
+  summary["recordings"] = r->data.groups.size();
+  summary["features"] = r->data.feature_names;
+  summary["block_s"] = r->dataset.preprocessing.block.block_s;
+  summary["rate_window_s"] = r->dataset.preprocessing.rates.window_s;
+  py::list notes;
+  for (const auto& n : r->notes) notes.append(py::make_tuple(n.field, n.text));
+  summary["notes"] = notes;
+  summary["warnings"] = r->data.warnings;
+  summary["fits"] = s.tuning.fits;
+  summary["seconds"] = s.seconds;
+  py::dict out;
+  out["model"] = py::cast(std::move(r->trained.model));
+  out["summary"] = summary;
+  return out;
+}
+
+}  // namespace
+
+void bind_train(py::module_& m) {
+  m.def("train", &train, py::arg("campaign"), py::kw_only(),
+        py::arg("method") = to_string(kTrain.method),
+        py::arg("fitness") = std::string(tune::to_string(kTrain.tune.fitness)),
+        py::arg("cv") = std::string(tune::to_string(kTrain.tune.cv.scheme)),
+        py::arg("folds") = kTrain.tune.cv.folds, py::arg("features") = "auto",
+        py::arg("differentiator") =
+            std::string(signal::to_string(DatasetOptions{}.preprocessing.rates.causality)),
+        py::arg("block_s") = "auto", py::arg("rate_window_s") = "auto",
+        py::arg("population") = kRun.population, py::arg("iterations") = kRun.iterations,
+        py::arg("seed") = kRun.seed, py::arg("threads") = 0u, py::arg("c_min") = kSpace.c_min,
+        py::arg("c_max") = kSpace.c_max, py::arg("sigma_min") = kSpace.sigma_min,
+        py::arg("sigma_max") = kSpace.sigma_max, py::arg("epsilon") = kSpace.epsilon,
+        py::arg("search_epsilon") = false, py::arg("auto_box") = false, py::arg("denoise") = true,
+        py::arg("hidden") = kTrain.mlp.hidden, py::arg("max_degree") = kTrain.poly_max_degree,
+        py::arg("progress") = py::none(),
+        "Trains a compensation model on a campaign's training recordings, as `fogdrift train` "
+        "does; returns {'model': Model, 'summary': dict}.");
+}
+
+}  // namespace fogdrift::python
