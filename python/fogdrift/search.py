@@ -2,9 +2,9 @@
 
 scikit-learn's GridSearchCV fits every (C, gamma, fold) cold and alone. This search gives each
 (fold, gamma) one path over C, ascending, each fit warm-started from the one before with the
-kernel rows it computed (docs/svr.md, "warm start"), and runs the paths in parallel threads. The
-scores, the choice and the refit follow GridSearchCV's conventions, so the two are
-interchangeable for this grid.
+kernel rows it computed (docs/svr.md, "Where the speed comes from": warm start), and runs the
+paths in parallel threads. The scores, the choice and the refit follow GridSearchCV's
+conventions, so the two are interchangeable for this grid.
 """
 import numbers
 

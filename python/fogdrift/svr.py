@@ -124,7 +124,8 @@ class SVR(RegressorMixin, BaseEstimator):
 
         Returns a list of fitted SVR estimators, one per C, each as ``clone(self).set_params(C=c)
         .fit(X, y)`` would be up to the solver's tolerance. Far faster than separate fits: each
-        fit starts from the last solution and its kernel rows (docs/svr.md, "warm start").
+        fit starts from the last solution and its kernel rows (docs/svr.md, "Where the speed
+        comes from": warm start).
         """
         from sklearn.base import clone
 

@@ -1,6 +1,7 @@
-// The SMO skeleton both solvers share (docs/svr.md, "Solvers"), in LIBSVM 3.24's shape: the
-// loop, the shrinking cadence, the one unshrink, the iteration limit, ρ and the objective. What
-// differs between the solvers is how the dual's variables are laid out, and that is the Layout:
+// The SMO skeleton both solvers share (docs/svr.md, "One skeleton, two layouts"), in LIBSVM 3.24's
+// shape: the loop, the shrinking cadence, the one unshrink, the iteration limit, ρ and the
+// objective. What differs between the solvers is how the dual's variables are laid out, and that is
+// the Layout:
 //  * LibsvmLayout (libsvm_solver.cpp): LIBSVM's 2l variables, one gradient and one kernel-row
 //    entry each, shrunk one by one;
 //  * PairLayout (pair_solver.cpp): the two variables of a sample as one unit, sharing a gradient
