@@ -1,10 +1,8 @@
 // fogdrift train: fit a compensation model on a campaign's training recordings (docs/method.md §2).
 #include <fmt/format.h>
 
-#include <algorithm>
 #include <chrono>
 #include <iostream>
-#include <map>
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <optional>
@@ -14,7 +12,6 @@
 #include "fogdrift/campaign.hpp"
 #include "fogdrift/csv.hpp"
 #include "fogdrift/error.hpp"
-#include "fogdrift/sha256.hpp"
 #include "fogdrift/thread_pool.hpp"
 #include "fogdrift/train_campaign.hpp"
 

@@ -11,7 +11,7 @@ import numbers
 import numpy as np
 from sklearn.base import BaseEstimator, RegressorMixin, clone
 from sklearn.model_selection import check_cv
-from sklearn.utils.validation import _check_sample_weight, check_is_fitted
+from sklearn.utils.validation import check_is_fitted
 
 from . import _fogdrift
 from .svr import SVR
@@ -78,20 +78,17 @@ class SVRGridSearchCV(RegressorMixin, BaseEstimator):
         folds = list(check_cv(self.cv, y, classifier=False).split(X, y))
         # Samples of weight 0 are left out of every fold, as SVR.fit leaves them out.
         train_rows, test_rows = [], []
-        keep = None if weights.weights is None else np.isin(np.arange(len(y)), weights.rows)
         for train, test in folds:
-            if keep is not None:
-                train = train[keep[train]]
+            if weights.keep is not None:
+                train = train[weights.keep[train]]
             train_rows.append(np.asarray(train, dtype=np.int64))
             test_rows.append(np.asarray(test, dtype=np.int64))
-        w = None if sample_weight is None else _check_sample_weight(sample_weight, X)
+        # The engine takes positive weights only; a zero-weight row is in no training set.
+        w = None if weights.checked is None else np.where(weights.keep, weights.checked, 1.0)
         engine_gammas = [g if isinstance(g, str) else float(g) for g in gammas]
         args = probe._engine_args()
         del args["gamma"]
         n_jobs = 1 if self.n_jobs is None else int(self.n_jobs)
-        if w is not None:
-            # The engine takes positive weights only; a zero-weight row is in no training set.
-            w = np.where(w > 0, w, 1.0)
         sse = _fogdrift.svr_search(X, y, w, train_rows, test_rows, C=c_values, gamma=engine_gammas,
                                    n_jobs=n_jobs, **args)
         scores = np.empty_like(sse)

@@ -234,15 +234,16 @@ class SVR(RegressorMixin, BaseEstimator):
 
 
 class _Weights:
-    """Sample weights as the engine takes them: samples of weight 0 are left out (as
-    scikit-learn's LIBSVM does), `rows` maps the kept samples to the training rows."""
+    """Sample weights as the engine takes them: samples of weight 0 are left out (as a weight of
+    0 means), `rows` maps the kept samples to the training rows, `weights` are theirs; `checked`
+    is every sample's weight and `keep` the mask of the kept ones (both None without weights)."""
 
     def __init__(self, sample_weight, X):
         n = X.shape[0]
+        self.checked = self.keep = self.weights = None
         if sample_weight is None:
             self.kept = slice(None)
             self.rows = np.arange(n)
-            self.weights = None
             return
         w = _check_sample_weight(sample_weight, X, dtype=np.float64)
         if np.any(w < 0):
@@ -250,6 +251,7 @@ class _Weights:
         keep = w > 0
         if not np.any(keep):
             raise ValueError("sample_weight is 0 for every sample: nothing to fit")
+        self.checked, self.keep = w, keep
         self.rows = np.flatnonzero(keep)
         self.kept = slice(None) if keep.all() else self.rows
         self.weights = np.ascontiguousarray(w[self.rows])

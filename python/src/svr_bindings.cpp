@@ -101,9 +101,18 @@ svr::Params to_params(const std::string& kernel, double gamma, double c, double 
   return p;
 }
 
+// Every value of C of a path or a grid, checked before the first fit (fit_c_path would find a
+// bad one only when it reaches it).
+void check_c_values(const std::vector<double>& c_values) {
+  if (c_values.empty()) throw OptionError("C", "needs at least one value");
+  for (const double c : c_values)
+    if (!(std::isfinite(c) && c > 0))
+      throw OptionError("C", fmt::format("every value must be a finite number > 0 (got {})", c));
+}
+
 // A fit as the Python estimator stores it: the support vectors' indices into the training rows,
-// their coefficients α⁺ − α⁻ and rows, ρ, and the solver's summary.
-py::dict to_dict(const svr::FitResult& r, const svr::Data& data) {
+// their coefficients α⁺ − α⁻ and rows, ρ, the γ used, and the solver's summary.
+py::dict to_dict(const svr::FitResult& r, const svr::Data& data, double gamma) {
   const std::size_t n = data.rows, d = data.cols, m = r.model.size();
   py::array_t<std::int32_t> support(static_cast<py::ssize_t>(m));
   auto sv = support.mutable_unchecked<1>();
@@ -120,6 +129,7 @@ py::dict to_dict(const svr::FitResult& r, const svr::Data& data) {
   out["dual_coef"] = coef;
   out["support_vectors"] = vectors;
   out["rho"] = r.model.rho;
+  out["gamma"] = gamma;
   out["n_iter"] = r.summary.solver.iterations;
   out["converged"] = r.summary.solver.status == svr::SolverStatus::optimal;
   out["objective"] = r.summary.solver.objective;
@@ -151,23 +161,18 @@ py::dict fit(const Array& x, const Array& y, const std::optional<Array>& weight,
     const svr::WorkspacePool::Lease workspace = workspaces().borrow();
     r.emplace(svr::fit(*set, p, nullptr, workspace.get()));
   }
-  py::dict out = to_dict(*r, set->data());
-  out["gamma"] = g;
-  return out;
+  return to_dict(*r, set->data(), g);
 }
 
 py::list fit_path(const Array& x, const Array& y, const std::optional<Array>& weight,
                   const std::vector<double>& c_values, const std::string& kernel,
                   const Gamma& gamma, double epsilon, double tol, double cache_mb,
                   std::int64_t max_iter, bool shrinking, const std::string& solver) {
-  if (c_values.empty()) throw OptionError("C", "needs at least one value");
+  check_c_values(c_values);
   svr::Data data = to_data(x, y, weight);
   const double g = gamma_of(gamma, data);
   const svr::Params p =
       to_params(kernel, g, c_values.front(), epsilon, tol, cache_mb, max_iter, shrinking, solver);
-  for (const double c : c_values)
-    if (!(std::isfinite(c) && c > 0))
-      throw OptionError("C", fmt::format("every value must be a finite number > 0 (got {})", c));
   std::optional<svr::TrainingSet> set;
   std::vector<svr::FitResult> path;
   {
@@ -177,11 +182,7 @@ py::list fit_path(const Array& x, const Array& y, const std::optional<Array>& we
     path = svr::fit_c_path(*set, p, c_values, workspace.get());
   }
   py::list out;
-  for (const auto& r : path) {
-    py::dict d = to_dict(r, set->data());
-    d["gamma"] = g;
-    out.append(d);
-  }
+  for (const auto& r : path) out.append(to_dict(r, set->data(), g));
   return out;
 }
 
@@ -196,12 +197,9 @@ py::array_t<double> search(const Array& x, const Array& y, const std::optional<A
                            const std::string& kernel, double epsilon, double tol, double cache_mb,
                            std::int64_t max_iter, bool shrinking, const std::string& solver,
                            int n_jobs) {
-  if (c_values.empty() || gammas.empty() || train_rows.empty() ||
-      train_rows.size() != test_rows.size())
-    throw std::invalid_argument("search: needs values of C and gamma, and train and test folds");
-  for (const double c : c_values)
-    if (!(std::isfinite(c) && c > 0))
-      throw OptionError("C", fmt::format("every value must be a finite number > 0 (got {})", c));
+  check_c_values(c_values);
+  if (gammas.empty() || train_rows.empty() || train_rows.size() != test_rows.size())
+    throw std::invalid_argument("search: needs values of gamma, and train and test folds");
   const svr::Data all = to_data(x, y, weight);
   const std::size_t folds = train_rows.size(), ng = gammas.size(), nc = c_values.size();
   auto indices = [&](const py::array_t<std::int64_t>& rows) {

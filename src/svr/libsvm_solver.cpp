@@ -215,7 +215,7 @@ class LibsvmLayout {
   bool is_lower(std::size_t k) const { return status_[k] == kLowerBound; }
   bool is_free(std::size_t k) const { return status_[k] == kFree; }
   void update_status(std::size_t k) {
-    status_[k] = alpha_[k] >= cap_[k] ? kUpperBound : (alpha_[k] <= 0 ? kLowerBound : kFree);
+    status_[k] = static_cast<std::uint8_t>(bound_of(alpha_[k], cap_[k]));
   }
 
   // The kernel row of variable k in solver order, first `len` entries at least; unsigned

@@ -226,8 +226,8 @@ class PairLayout {
 
   // Both variables of sample k: α⁺ (y = +1, y·G⁺ = f + ε) and α⁻ (y = −1, y·G⁻ = f − ε).
   void add_rho_terms(std::size_t k, RhoBounds& bounds) const {
-    bounds.add(f_[k] + epsilon_, true, where(a_[k], cap_[k]));
-    bounds.add(f_[k] - epsilon_, false, where(b_[k], cap_[k]));
+    bounds.add(f_[k] + epsilon_, true, bound_of(a_[k], cap_[k]));
+    bounds.add(f_[k] - epsilon_, false, bound_of(b_[k], cap_[k]));
   }
 
   // α⁺(G⁺ + p⁺) + α⁻(G⁻ + p⁻), with G⁺ + p⁺ = f − z + 2ε and G⁻ + p⁻ = z − f + 2ε.
@@ -441,10 +441,6 @@ class PairLayout {
   double free_part(std::size_t k) const {
     return (a_[k] > 0 && a_[k] < cap_[k] ? a_[k] : 0.0) -
            (b_[k] > 0 && b_[k] < cap_[k] ? b_[k] : 0.0);
-  }
-
-  static Bound where(double alpha, double c) {
-    return alpha >= c ? Bound::upper : (alpha <= 0 ? Bound::lower : Bound::free);
   }
 };
 

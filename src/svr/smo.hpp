@@ -110,6 +110,12 @@ inline std::int64_t iteration_limit(std::int64_t requested, std::size_t samples)
 /// Where a variable is in its box, coded as the inner loops read it (loops.hpp).
 enum class Bound : std::uint8_t { lower = kLowerBound, upper = kUpperBound, free = kFree };
 
+/// LIBSVM's status of a variable α in [0, C]: at the upper bound from C on, at the lower from 0
+/// down, free between.
+inline Bound bound_of(double alpha, double c) {
+  return alpha >= c ? Bound::upper : (alpha <= 0 ? Bound::lower : Bound::free);
+}
+
 /// m(α) = max −y·G over I_up and M(α) = max y·G over I_low (LIBSVM's Gmax and Gmax2); the dual
 /// is optimal within the tolerance when m + M < tolerance.
 struct Extremes {

@@ -147,3 +147,9 @@ def test_train_options_and_errors_use_the_librarys_names(trained):
 
     with pytest.raises(KeyboardInterrupt, match="stopped by the user"):
         fogdrift.train(d / "cal", population=8, iterations=3, progress=stop)
+
+
+def test_train_rejects_a_block_that_is_not_a_positive_number(trained):
+    d, _, _ = trained
+    with pytest.raises(ValueError, match="option rate_window_s: must be 'auto' or a number"):
+        fogdrift.train(d / "cal", method="svr", rate_window_s=-5)

@@ -240,3 +240,43 @@ def test_grid_search_scorings_weights_and_errors(rng):
         fogdrift.SVRGridSearchCV(param_grid={"C": [1], "gamma": [-1.0]}).fit(X, y)
     with pytest.raises(ValueError, match="option C: every value must be a finite number > 0"):
         fogdrift.SVRGridSearchCV(param_grid={"C": [1, 0]}).fit(X, y)
+
+
+def test_the_engine_entry_points_check_their_own_inputs(rng):
+    # fogdrift.SVR validates before it calls the engine; the module's functions check again, for
+    # any other caller, and name the rule broken.
+    from fogdrift import _fogdrift as engine
+    X, y = startup_like(rng, 40)
+    args = dict(kernel="rbf", gamma=0.5, C=1.0, epsilon=0.1, tol=1e-3, cache_size=10,
+                max_iter=0, shrinking=True, solver="pairs")
+    with pytest.raises(ValueError, match="X must be a 2-D array"):
+        engine.svr_fit(X[:, 0], y, None, **args)
+    with pytest.raises(ValueError, match="y must be a 1-D array with one value per row of X"):
+        engine.svr_fit(X, y[:-1], None, **args)
+    with pytest.raises(ValueError, match="sample_weight must be a 1-D array"):
+        engine.svr_fit(X, y, np.ones(3), **args)
+    with pytest.raises(ValueError, match="sample 2: weight is 0"):
+        engine.svr_fit(X, y, np.where(np.arange(40) == 1, 0.0, 1.0), **args)
+    with pytest.raises(ValueError, match="option kernel: must be 'rbf' or 'linear'"):
+        engine.svr_fit(X, y, None, **dict(args, kernel="poly"))
+    with pytest.raises(ValueError, match="option solver: must be 'pairs' or 'libsvm'"):
+        engine.svr_fit(X, y, None, **dict(args, solver="smo"))
+    with pytest.raises(ValueError, match="option gamma: must be 'scale', 'auto' or a number"):
+        engine.svr_fit(X, y, None, **dict(args, gamma="wide"))
+    path_args = {k: v for k, v in args.items() if k != "C"}
+    with pytest.raises(ValueError, match="option C: needs at least one value"):
+        engine.svr_fit_path(X, y, None, C=[], **path_args)
+    with pytest.raises(ValueError, match="option C: needs at least one value"):
+        fogdrift.SVR().fit_path(X, y, C=[])
+    folds = [np.arange(30, dtype=np.int64)], [np.arange(30, 40, dtype=np.int64)]
+    search_args = dict(path_args, gamma=[0.5], n_jobs=1)
+    with pytest.raises(ValueError, match="a fold's row index is out of range"):
+        engine.svr_search(X, y, None, [np.array([0, 99], dtype=np.int64)], folds[1], C=[1.0],
+                          **search_args)
+    with pytest.raises(ValueError, match="needs values of gamma, and train and test folds"):
+        engine.svr_search(X, y, None, folds[0], [], C=[1.0], **search_args)
+    m = fogdrift.SVR().fit(X, y)
+    with pytest.raises(ValueError, match="inconsistent model or data shapes"):
+        engine.svr_predict(m.support_vectors_, m.dual_coef_[0][:-1], 0.0, "rbf", 0.5, X, 1)
+    with pytest.raises(ValueError, match="X has another number of features than the model"):
+        engine.svr_predict(m.support_vectors_, m.dual_coef_[0], 0.0, "rbf", 0.5, X[:, :2], 1)
