@@ -12,9 +12,6 @@
 namespace fogdrift::sim {
 namespace {
 
-constexpr int idx(Node n) {
-  return static_cast<int>(n);
-}
 constexpr std::array<Node, 3> kThermometerNode = {Node::coil_outer, Node::acc1, Node::acc2};
 
 // `value` rounded to a multiple of `step`, computed so that 0.01-type steps print exactly
@@ -54,7 +51,7 @@ int substeps(double interval_s, double fine_step_s) {
 NfsSimulator::NfsSimulator(const Instrument& instrument, const NodeTemps& initial, double time_s)
     : instrument_(instrument), network_(instrument.thermal), temps_(initial), time_s_(time_s) {
   validate(instrument_);
-  for (int i = 0; i < 3; ++i) thermometer_state_degc_[i] = temps_[idx(kThermometerNode[i])];
+  for (int i = 0; i < 3; ++i) thermometer_state_degc_[i] = temps_[node_index(kThermometerNode[i])];
 }
 
 void NfsSimulator::step(double dt, const AirProfile& air, bool powered, const NodeTemps* rate) {
@@ -66,7 +63,7 @@ void NfsSimulator::step(double dt, const AirProfile& air, bool powered, const No
   const std::array<const ThermometerParams*, 3> therm = {
       &instrument_.thermometer_fog, &instrument_.thermometer_acc1, &instrument_.thermometer_acc2};
   for (int i = 0; i < 3; ++i) {
-    const double target = temps_[idx(kThermometerNode[i])];
+    const double target = temps_[node_index(kThermometerNode[i])];
     const double lag = therm[i]->lag_s;
     const double a = lag > 0.0 ? 1.0 - std::exp(-dt / lag) : 1.0;
     thermometer_state_degc_[i] += a * (target - thermometer_state_degc_[i]);
@@ -120,9 +117,11 @@ Recording NfsSimulator::record(const RecordSetup& setup, const AirProfile& air,
       const double t_rel = (time_s_ - start) + 0.5 * dt;  // mid-step, relative to the recording
       const NodeTemps rate = network_.derivative(temps_, air(time_s_), true);
       const double coil_mean =
-          0.5 * (temps_[idx(Node::coil_inner)] + temps_[idx(Node::coil_outer)]);
-      const double coil_rate = 0.5 * (rate[idx(Node::coil_inner)] + rate[idx(Node::coil_outer)]);
-      const double gradient_rate = rate[idx(Node::coil_inner)] - rate[idx(Node::coil_outer)];
+          0.5 * (temps_[node_index(Node::coil_inner)] + temps_[node_index(Node::coil_outer)]);
+      const double coil_rate =
+          0.5 * (rate[node_index(Node::coil_inner)] + rate[node_index(Node::coil_outer)]);
+      const double gradient_rate =
+          rate[node_index(Node::coil_inner)] - rate[node_index(Node::coil_outer)];
       const double drift = thermal_drift(fog, coil_mean, coil_rate, gradient_rate).total_dph();
       const double input = dot(earth, setup.platform.body_x(setup.table.angle_deg(t_rel)));
       angle_arcsec += (input + turn_on_bias_dph + drift) * dt + noise.angle_increment_arcsec(dt);
@@ -144,11 +143,11 @@ Recording NfsSimulator::record(const RecordSetup& setup, const AirProfile& air,
         read_thermometer(instrument_.thermometer_acc2, thermometer_state_degc_[2], sensor_rng));
     rec.accel_x_g->push_back(
         round_to(accelerometer_output_g(instrument_.accel_x, setup.platform.body_x(table),
-                                        temps_[idx(Node::acc1)], sensor_rng),
+                                        temps_[node_index(Node::acc1)], sensor_rng),
                  kAccelResolutionG));
     rec.accel_y_g->push_back(
         round_to(accelerometer_output_g(instrument_.accel_y, setup.platform.body_y(table),
-                                        temps_[idx(Node::acc2)], sensor_rng),
+                                        temps_[node_index(Node::acc2)], sensor_rng),
                  kAccelResolutionG));
     double wrapped = std::fmod(table, 360.0);
     if (wrapped < 0.0) wrapped += 360.0;

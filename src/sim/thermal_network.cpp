@@ -4,18 +4,11 @@
 #include <cmath>
 
 namespace fogdrift::sim {
-namespace {
-
-constexpr int idx(Node n) {
-  return static_cast<int>(n);
-}
-
-}  // namespace
 
 ThermalNetwork::ThermalNetwork(const ThermalParams& params) : p_(params) {
   auto link = [&](Node a, Node b, double g) {
-    g_[idx(a)][idx(b)] += g;
-    g_[idx(b)][idx(a)] += g;
+    g_[node_index(a)][node_index(b)] += g;
+    g_[node_index(b)][node_index(a)] += g;
   };
   link(Node::electronics, Node::housing, p_.electronics_housing_w_per_k);
   link(Node::coil_outer, Node::housing, p_.coil_outer_housing_w_per_k);
@@ -24,7 +17,7 @@ ThermalNetwork::ThermalNetwork(const ThermalParams& params) : p_(params) {
   link(Node::acc1, Node::electronics, p_.acc1_electronics_w_per_k);
   link(Node::acc1, Node::housing, p_.acc1_housing_w_per_k);
   link(Node::acc2, Node::housing, p_.acc2_housing_w_per_k);
-  g_air_[idx(Node::housing)] = p_.housing_air_w_per_k;
+  g_air_[node_index(Node::housing)] = p_.housing_air_w_per_k;
 }
 
 NodeTemps ThermalNetwork::powers_w(double housing_degc, bool powered) const {
@@ -32,10 +25,10 @@ NodeTemps ThermalNetwork::powers_w(double housing_degc, bool powered) const {
   if (!powered) return p;
   // The light source and its cooler sit on the electronics board; their heat reaches the coil hub
   // through the hub's mount, so the coil warms from the inside out with a delay.
-  p[idx(Node::electronics)] = p_.electronics_power_w + p_.light_source_power_w +
-                              p_.tec_w_per_k * std::abs(housing_degc - p_.tec_setpoint_degc);
-  p[idx(Node::acc1)] = p_.acc1_power_w;
-  p[idx(Node::acc2)] = p_.acc2_power_w;
+  p[node_index(Node::electronics)] = p_.electronics_power_w + p_.light_source_power_w +
+                                     p_.tec_w_per_k * std::abs(housing_degc - p_.tec_setpoint_degc);
+  p[node_index(Node::acc1)] = p_.acc1_power_w;
+  p[node_index(Node::acc2)] = p_.acc2_power_w;
   return p;
 }
 
@@ -46,7 +39,7 @@ double ThermalNetwork::total_power_w(double housing_degc) const {
 }
 
 NodeTemps ThermalNetwork::derivative(const NodeTemps& t, double air_degc, bool powered) const {
-  const NodeTemps p = powers_w(t[idx(Node::housing)], powered);
+  const NodeTemps p = powers_w(t[node_index(Node::housing)], powered);
   NodeTemps d{};
   for (int k = 0; k < kNodeCount; ++k) {
     double flow = p[k] + g_air_[k] * (air_degc - t[k]);
@@ -95,7 +88,7 @@ NodeTemps ThermalNetwork::steady_state(double air_degc, bool powered) const {
   }
   const auto solver = laplacian.fullPivLu();
   for (int iteration = 0; iteration < 100; ++iteration) {
-    const NodeTemps p = powers_w(t[idx(Node::housing)], true);
+    const NodeTemps p = powers_w(t[node_index(Node::housing)], true);
     Eigen::Matrix<double, kNodeCount, 1> rhs;
     for (int k = 0; k < kNodeCount; ++k) rhs(k) = p[k];
     const Eigen::Matrix<double, kNodeCount, 1> rise = solver.solve(rhs);

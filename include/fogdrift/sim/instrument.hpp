@@ -14,6 +14,10 @@ namespace fogdrift::sim {
 /// Nodes of the lumped thermal network, in state-vector order.
 enum class Node : int { housing = 0, electronics, coil_outer, coil_inner, acc1, acc2 };
 inline constexpr int kNodeCount = 6;
+/// A node's index into arrays of kNodeCount values.
+constexpr int node_index(Node n) {
+  return static_cast<int>(n);
+}
 
 struct ThermalParams {
   /// Heat capacity of each node, J/K, in Node order.
