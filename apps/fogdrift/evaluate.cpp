@@ -6,15 +6,12 @@
 #include <iostream>
 #include <limits>
 #include <memory>
-#include <nlohmann/json.hpp>
 
 #include "cli_util.hpp"
 #include "commands.hpp"
 #include "fogdrift/campaign.hpp"
 #include "fogdrift/error.hpp"
-#include "fogdrift/eval/allan.hpp"
-#include "fogdrift/eval/metrics.hpp"
-#include "fogdrift/features.hpp"
+#include "fogdrift/eval/evaluation.hpp"
 #include "fogdrift/model.hpp"
 
 namespace fogdrift::app {
@@ -29,38 +26,20 @@ struct EvaluateArgs {
   bool no_guard = false;
 };
 
-// Datasheet noise terms of a recording's gyro output before and after compensation, from the
-// overlapping Allan deviation at the recording's own rate.
-struct AllanRow {
-  eval::NoiseTerms raw, compensated;
-};
-
-AllanRow allan_row(const CompensationModel& model, const Recording& rec, bool guarded) {
-  const double dt = sample_interval_s(rec);
-  const std::vector<double> drift = model.predict_dph(rec, guarded);
-  std::vector<double> comp(rec.gyro_dph.size());
-  for (std::size_t i = 0; i < comp.size(); ++i) comp[i] = rec.gyro_dph[i] - drift[i];
-  return {eval::noise_terms(eval::allan_deviation(rec.gyro_dph, dt, 10)),
-          eval::noise_terms(eval::allan_deviation(comp, dt, 10))};
-}
-
 bool is_campaign(const std::string& path) {
   return std::filesystem::is_directory(path) || path.ends_with(".json");
 }
 
 void run(const EvaluateArgs& a) {
   const CompensationModel model = load_compensation_model(a.model, {a.allow_edited});
-  Dataset data;
+  const eval::EvaluationOptions options{.guarded = !a.no_guard, .allan = a.allan};
+  eval::Evaluation e;
   std::string source;
-  std::vector<RecordingInput> inputs;
-  bool simulated = false;  // a campaign fogdrift simulate wrote
   if (a.inputs.size() == 1 && is_campaign(a.inputs[0])) {
-    const Campaign campaign = read_campaign(a.inputs[0]);
-    simulated = campaign.generator_json.find("\"fogdrift simulate\"") != std::string::npos;
-    inputs = read_inputs(campaign, Role::test, Scenario::calibration);
-    data = build_dataset(inputs, model.dataset);
+    e = eval::evaluate(model, read_campaign(a.inputs[0]), options, a.model);
     source = a.inputs[0] + " (recordings with role \"test\")";
   } else {
+    std::vector<RecordingInput> inputs;
     for (const auto& path : a.inputs) {
       if (is_campaign(path))
         throw OptionError("inputs", fmt::format("{} is a campaign; give one campaign or recording "
@@ -71,84 +50,24 @@ void run(const EvaluateArgs& a) {
       in.info.file = path;
       inputs.push_back(std::move(in));
     }
-    data = build_dataset(inputs, model.dataset);
+    e = eval::evaluate(model, inputs, options, a.model);
     source = fmt::format("{} recording file{}", inputs.size(), inputs.size() == 1 ? "" : "s");
   }
-  if (data.feature_names != model.feature_names)
-    throw InputError(
-        a.model, 0, 0,
-        fmt::format("features: the model's features ({}) differ from those its "
-                    "feature spec gives for this data ({})",
-                    fmt::join(model.feature_names, ","), fmt::join(data.feature_names, ",")));
-  const bool guarded = !a.no_guard;
-  const std::vector<eval::CompensationMetrics> per =
-      eval::metrics_per_recording(data, model.predict_dph(data, guarded));
-  const eval::CompensationMetrics all = eval::pool(per);
-  const std::string method = to_string(model.provenance.method);
-  std::vector<AllanRow> allan;
-  if (a.allan)
-    for (const auto& in : inputs) allan.push_back(allan_row(model, in.recording, guarded));
-  // The guard's view of each recording at its own rate, as compensate and stream see it.
-  std::vector<NoveltySummary> novelty;
-  for (const auto& in : inputs) {
-    const RecordingPrediction p = model.predict(in.recording, guarded);
-    novelty.push_back(summarize_novelty(p.novelty, p.weight));
-  }
-  auto terms_json = [](const eval::NoiseTerms& t) {
-    return nlohmann::ordered_json{{"arw_deg_per_rt_h", t.arw_deg_per_rt_h},
-                                  {"bias_instability_dph", t.bias_instability_dph},
-                                  {"rrw_dph_per_rt_h", t.rrw_dph_per_rt_h}};
-  };
-
   if (a.json) {
-    nlohmann::ordered_json j;
-    j["model"] = a.model;
-    j["method"] = method;
-    j["source"] = source;
-    // The metrics of one recording or of all, under the same names.
-    auto metrics_json = [](const eval::CompensationMetrics& m) {
-      return nlohmann::ordered_json{{"rows", m.rows},
-                                    {"mae_dph", m.mae_dph},
-                                    {"mae_before_dph", m.mae_before_dph},
-                                    {"rmse_dph", m.rmse_dph},
-                                    {"std_denoised_dph", m.std_before_dph},
-                                    {"std_compensated_dph", m.std_after_dph},
-                                    {"pooled_std_denoised_dph", m.pooled_std_before_dph},
-                                    {"pooled_std_compensated_dph", m.pooled_std_after_dph},
-                                    {"startup_residual_before_dph", m.startup_before_dph},
-                                    {"startup_residual_after_dph", m.startup_after_dph},
-                                    {"opposite_difference_before_dph", m.opposite_before_dph},
-                                    {"opposite_difference_after_dph", m.opposite_after_dph}};
-    };
-    j["overall"] = metrics_json(all);
-    j["guard"] = guarded;
-    for (std::size_t g = 0; g < per.size(); ++g) {
-      nlohmann::ordered_json r = {{"file", data.groups[g].file},
-                                  {"initial_temp_degc", data.groups[g].initial_temp_degc},
-                                  {"repetition", data.groups[g].repetition}};
-      r.update(metrics_json(per[g]));
-      const double n = static_cast<double>(std::max<std::size_t>(1, novelty[g].samples));
-      r["novelty_outside_share"] = static_cast<double>(novelty[g].outside) / n;
-      r["novelty_reduced_share"] = static_cast<double>(novelty[g].reduced) / n;
-      j["recordings"].push_back(r);
-      if (a.allan)
-        j["recordings"].back()["allan"] = {{"raw", terms_json(allan[g].raw)},
-                                           {"compensated", terms_json(allan[g].compensated)}};
-    }
-    j["warnings"] = data.warnings;
-    std::cout << j.dump(2) << "\n";
+    std::cout << eval::to_json(e, a.model, source) << "\n";
     return;
   }
-  std::cout << fmt::format("{} on {}: {} rows of {} recording{}\n\n", method, source, data.rows,
-                           data.groups.size(), data.groups.size() == 1 ? "" : "s");
+  const eval::CompensationMetrics& all = e.overall;
+  const auto& per = e.recordings;
+  std::cout << fmt::format("{} on {}: {} rows of {} recording{}\n\n", e.method, source, e.rows,
+                           per.size(), per.size() == 1 ? "" : "s");
   std::cout << "Before (the denoised drift) → after compensation, °/h:\n"
                "| recording | T0 (°C) | MAE | STD |\n"
                "|---|---|---|---|\n";
-  for (std::size_t g = 0; g < per.size(); ++g)
-    std::cout << fmt::format("| {} | {:g} | {:.4f} → {:.4f} | {:.4f} → {:.4f} |\n",
-                             data.groups[g].file, data.groups[g].initial_temp_degc,
-                             per[g].mae_before_dph, per[g].mae_dph, per[g].std_before_dph,
-                             per[g].std_after_dph);
+  for (const eval::RecordingEvaluation& r : per)
+    std::cout << fmt::format("| {} | {:g} | {:.4f} → {:.4f} | {:.4f} → {:.4f} |\n", r.info.file,
+                             r.info.initial_temp_degc, r.metrics.mae_before_dph, r.metrics.mae_dph,
+                             r.metrics.std_before_dph, r.metrics.std_after_dph);
   std::cout << fmt::format("| **all** | | **{:.4f} → {:.4f}** | **{:.4f} → {:.4f}** |\n",
                            all.mae_before_dph, all.mae_dph, all.std_before_dph, all.std_after_dph);
   if (per.size() > 1)
@@ -157,40 +76,37 @@ void run(const EvaluateArgs& a) {
         "between recordings kept: {:.4f} → {:.4f})\n",
         all.pooled_std_before_dph, all.pooled_std_after_dph);
   // The paper's figures belong beside the paper's instrument, the simulator, not a user's data.
-  if (simulated)
+  if (e.simulated)
     std::cout << fmt::format(
         "\nTable 2 view: denoised STD {:.4f} °/h, {} STD {:.4f} °/h, MAE {:.4f} °/h "
         "(paper: denoised 0.0134; SSA-SVR 0.0031, MAE 0.0025)\n",
-        all.std_before_dph, method, all.std_after_dph, all.mae_dph);
+        all.std_before_dph, e.method, all.std_after_dph, all.mae_dph);
   std::cout << "\nWhere north-finding needs it (docs/field.md), before → after, °/h:\n"
                "| recording | first 5 min residual | opposite positions 180 s apart | guard |\n"
                "|---|---|---|---|\n";
-  for (std::size_t g = 0; g < per.size(); ++g)
-    std::cout << fmt::format(
-        "| {} | {:.4f} → {:.4f} | {:.4f} → {:.4f} | {} |\n", data.groups[g].file,
-        per[g].startup_before_dph, per[g].startup_after_dph, per[g].opposite_before_dph,
-        per[g].opposite_after_dph, g < novelty.size() ? novelty[g].line().substr(9) : "");
+  for (const eval::RecordingEvaluation& r : per)
+    std::cout << fmt::format("| {} | {:.4f} → {:.4f} | {:.4f} → {:.4f} | {} |\n", r.info.file,
+                             r.metrics.startup_before_dph, r.metrics.startup_after_dph,
+                             r.metrics.opposite_before_dph, r.metrics.opposite_after_dph,
+                             r.novelty.line().substr(9));
   std::cout << fmt::format("| **all** | **{:.4f} → {:.4f}** | **{:.4f} → {:.4f}** | {} |\n",
                            all.startup_before_dph, all.startup_after_dph, all.opposite_before_dph,
-                           all.opposite_after_dph, guarded ? "on" : "off (--no-guard)");
+                           all.opposite_after_dph, e.guarded ? "on" : "off (--no-guard)");
   if (a.allan) {
     std::cout
         << "\nAllan deviation of the gyro output at the recording's rate, raw → compensated:\n"
            "| recording | ARW (°/√h) | bias instability (°/h) | RRW (°/h/√h) |\n"
            "|---|---|---|---|\n";
-    for (std::size_t g = 0; g < allan.size(); ++g) {
-      const auto& r = allan[g].raw;
-      const auto& c = allan[g].compensated;
+    double shortest = std::numeric_limits<double>::infinity(), longest = 0;
+    for (const eval::RecordingEvaluation& rec : per) {
+      const auto& r = rec.allan->raw;
+      const auto& c = rec.allan->compensated;
       std::cout << fmt::format("| {} | {:.5f} → {:.5f} | {:.4f} → {:.4f} | {:.4f} → {:.4f} |\n",
-                               data.groups[g].file, r.arw_deg_per_rt_h, c.arw_deg_per_rt_h,
+                               rec.info.file, r.arw_deg_per_rt_h, c.arw_deg_per_rt_h,
                                r.bias_instability_dph, c.bias_instability_dph, r.rrw_dph_per_rt_h,
                                c.rrw_dph_per_rt_h);
-    }
-    double shortest = std::numeric_limits<double>::infinity(), longest = 0;
-    for (const auto& in : inputs) {
-      const double d = in.recording.time_s.back() - in.recording.time_s.front();
-      shortest = std::min(shortest, d);
-      longest = std::max(longest, d);
+      shortest = std::min(shortest, rec.duration_s);
+      longest = std::max(longest, rec.duration_s);
     }
     const std::string span =
         std::lround(shortest / 60) == std::lround(longest / 60)
@@ -201,7 +117,7 @@ void run(const EvaluateArgs& a) {
         "compare before and after, not with a datasheet's hours-long runs)\n",
         span, shortest / 120);
   }
-  for (const auto& w : data.warnings) std::cout << "warning: " << w << "\n";
+  for (const auto& w : e.warnings) std::cout << "warning: " << w << "\n";
 }
 
 }  // namespace

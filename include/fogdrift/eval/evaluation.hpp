@@ -1,0 +1,70 @@
+// A compensation model on test recordings: the paper's Table 2 view with what north-finding
+// needs beside it (docs/method.md "Evaluation", docs/field.md). What `fogdrift evaluate` prints
+// and what Python's fogdrift.evaluate returns, computed once here.
+//
+// Per recording: the metrics of metrics.hpp against the dataset's target at the model's block
+// rate, the novelty guard's view at the recording's own rate (as compensate and stream see it),
+// and optionally the Allan noise terms of the gyro output before and after compensation. Over
+// all recordings: eval::pool of the per-recording metrics.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "fogdrift/campaign.hpp"
+#include "fogdrift/dataset.hpp"
+#include "fogdrift/eval/allan.hpp"
+#include "fogdrift/eval/metrics.hpp"
+#include "fogdrift/guard.hpp"
+#include "fogdrift/model.hpp"
+
+namespace fogdrift::eval {
+
+struct EvaluationOptions {
+  bool guarded = true;  ///< apply the novelty guard (false: the model's full correction)
+  bool allan = false;   ///< also the Allan noise terms of each recording, raw and compensated
+};
+
+/// Datasheet noise terms of a recording's gyro output before and after compensation, from the
+/// overlapping Allan deviation at the recording's own rate, 10 points a decade.
+struct AllanComparison {
+  NoiseTerms raw, compensated;
+};
+
+struct RecordingEvaluation {
+  GroupInfo info;               ///< file, initial temperature, repetition, ...
+  CompensationMetrics metrics;  ///< at the model's block rate
+  NoveltySummary novelty;       ///< at the recording's own rate
+  std::optional<AllanComparison> allan;
+  double duration_s = 0;  ///< last minus first time stamp
+};
+
+struct Evaluation {
+  std::string method;           ///< the model's method ("ssa-svr", ...)
+  bool guarded = true;          ///< as EvaluationOptions::guarded
+  bool simulated = false;       ///< the recordings are a campaign `fogdrift simulate` wrote
+  std::size_t rows = 0;         ///< dataset rows over all recordings
+  CompensationMetrics overall;  ///< eval::pool of the recordings' metrics
+  std::vector<RecordingEvaluation> recordings;
+  std::vector<std::string> warnings;  ///< the dataset builder's
+};
+
+/// Evaluates `model` on recordings. Throws InputError naming `model_label` when the model's
+/// features differ from those its feature spec gives for this data (a thermometer missing).
+Evaluation evaluate(const CompensationModel& model, const std::vector<RecordingInput>& inputs,
+                    const EvaluationOptions& options = {},
+                    const std::string& model_label = "model");
+
+/// Evaluates `model` on the campaign's calibration recordings with role "test".
+Evaluation evaluate(const CompensationModel& model, const Campaign& campaign,
+                    const EvaluationOptions& options = {},
+                    const std::string& model_label = "model");
+
+/// The JSON `fogdrift evaluate --json` prints: "model" (`model_label`), "method", "source",
+/// "overall", "guard", "recordings" (each with its metrics, novelty shares and, when computed,
+/// "allan"), "warnings"; metric keys name their unit (…_dph).
+std::string to_json(const Evaluation& evaluation, const std::string& model_label,
+                    const std::string& source);
+
+}  // namespace fogdrift::eval
