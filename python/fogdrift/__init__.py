@@ -10,13 +10,18 @@ The package wraps fogdrift's C++ library (docs/python.md):
 * ``fogdrift.Model`` — a compensation model file as ``fogdrift train`` writes it: load, save,
   predict the drift of a recording and compensate it; ``read_recording`` and
   ``write_recording`` — recordings as dicts of NumPy arrays.
+* ``simulate``, ``denoise``, ``features``, ``evaluate`` (Table 2), ``northfind`` (Table 3),
+  ``allan_deviation`` and ``noise_terms``, ``StreamingCompensator`` — the rest of the pipeline,
+  each as the command of the same name computes it.
 * ``fogdrift.release_memory()`` — fits keep their kernel-row memory for the next fit in the
   process (about ``cache_size`` per thread that fits); this gives it back and returns the bytes.
 """
-from ._fogdrift import (Model, __version__, read_recording, release_memory, train,
-                        write_recording)
+from ._fogdrift import (Model, StreamingCompensator, __version__, allan_deviation, denoise,
+                        evaluate, features, noise_terms, northfind, read_recording,
+                        release_memory, simulate, train, write_recording)
 from .search import SVRGridSearchCV
 from .svr import SVR
 
-__all__ = ["Model", "SVR", "SVRGridSearchCV", "read_recording", "release_memory", "train",
-           "write_recording", "__version__"]
+__all__ = ["Model", "SVR", "SVRGridSearchCV", "StreamingCompensator", "allan_deviation",
+           "denoise", "evaluate", "features", "noise_terms", "northfind", "read_recording",
+           "release_memory", "simulate", "train", "write_recording", "__version__"]

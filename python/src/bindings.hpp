@@ -14,4 +14,16 @@ void bind_model(pybind11::module_& m);
 /// Training on a campaign: train.
 void bind_train(pybind11::module_& m);
 
+/// Signals: denoise, features.
+void bind_signal(pybind11::module_& m);
+
+/// Evaluation: evaluate, northfind, allan_deviation, noise_terms.
+void bind_eval(pybind11::module_& m);
+
+/// The simulator: simulate.
+void bind_sim(pybind11::module_& m);
+
+/// Compensation one sample at a time: StreamingCompensator.
+void bind_stream(pybind11::module_& m);
+
 }  // namespace fogdrift::python

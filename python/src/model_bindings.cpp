@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "bindings.hpp"
+#include "convert.hpp"
 #include "fogdrift/error.hpp"
 #include "fogdrift/model.hpp"
 #include "fogdrift/recording.hpp"
@@ -18,47 +19,6 @@ namespace py = pybind11;
 
 namespace fogdrift::python {
 namespace {
-
-py::array_t<double> to_array(const std::vector<double>& v) {
-  py::array_t<double> out(static_cast<py::ssize_t>(v.size()));
-  std::copy(v.begin(), v.end(), out.mutable_data());
-  return out;
-}
-
-// Every known column the recording has, in fogdrift's order; thermometers the unit lacks are
-// left out.
-py::dict to_dict(const Recording& r) {
-  py::dict out;
-  for (const auto* names : {&required_columns(), &optional_columns()})
-    for (const std::string& name : *names)
-      if (const std::vector<double>* column = known_column(r, name);
-          column != nullptr && !column->empty())
-        out[py::str(name)] = to_array(*column);
-  return out;
-}
-
-// A recording from any mapping of column names to 1-D sequences (dict, DataFrame): the known
-// columns are read, others ignored; then checked as a file would be (recording.hpp).
-Recording to_recording(const py::object& columns, const std::string& source) {
-  if (py::isinstance<py::str>(columns) || py::hasattr(columns, "__fspath__"))
-    return read_recording(py::cast<std::filesystem::path>(columns));
-  Recording r;
-  r.source = source;
-  for (const auto* names : {&required_columns(), &optional_columns()})
-    for (const std::string& name : *names) {
-      if (!columns.attr("__contains__")(name).cast<bool>()) continue;
-      const auto values = py::array_t<double, py::array::forcecast>::ensure(columns[py::str(name)]);
-      if (!values || values.ndim() != 1)
-        throw InputError(source, 0, 0, "column " + name + ": must be a 1-D array of numbers");
-      std::vector<double>* column = known_column(r, name, true);
-      column->assign(values.data(), values.data() + values.shape(0));
-    }
-  for (const std::string& name : required_columns())
-    if (known_column(r, name) == nullptr || known_column(r, name)->empty())
-      throw InputError(source, 0, 0, "missing required column " + name);
-  validate(r);
-  return r;
-}
 
 py::dict hyperparameters(const CompensationModel& m) {
   py::dict out;
@@ -78,10 +38,11 @@ void bind_model(py::module_& m) {
   m.def(
       "write_recording",
       [](const std::filesystem::path& path, const py::object& columns) {
-        write_recording(path, to_recording(columns, path.string()));
+        write_recording(path, to_recording(columns, path.string(), true));
       },
       py::arg("path"), py::arg("columns"),
-      "Writes a mapping of columns (dict or DataFrame) as a recording CSV, atomically.");
+      "Writes a mapping of columns (dict or DataFrame) as a recording CSV, atomically; columns "
+      "fogdrift does not know are written after its own, as they are.");
 
   py::class_<CompensationModel>(m, "Model",
                                 "A compensation model: features, scalers, regressor, novelty "
@@ -138,10 +99,10 @@ void bind_model(py::module_& m) {
               p = self.predict(r, guarded);
             }
             py::dict out;
-            out["drift_dph"] = to_array(p.drift_dph);
-            out["model_drift_dph"] = to_array(p.model_drift_dph);
-            out["novelty"] = to_array(p.novelty);
-            out["guard_weight"] = to_array(p.weight);
+            out["drift_dph"] = to_array(std::move(p.drift_dph));
+            out["model_drift_dph"] = to_array(std::move(p.model_drift_dph));
+            out["novelty"] = to_array(std::move(p.novelty));
+            out["guard_weight"] = to_array(std::move(p.weight));
             return out;
           },
           py::arg("recording"), py::arg("guarded") = true,
@@ -158,10 +119,16 @@ void bind_model(py::module_& m) {
               out = self.predict_dph(r, guarded);
               for (std::size_t i = 0; i < out.size(); ++i) out[i] = r.gyro_dph[i] - out[i];
             }
-            return to_array(out);
+            return to_array(std::move(out));
           },
           py::arg("recording"), py::arg("guarded") = true,
           "gyro_dph − drift_dph: the compensated gyro of a recording, °/h.")
+      // Pickled as its file's text: a model crosses to another process (a Dask worker)
+      // unchanged and checked again on arrival.
+      .def(py::pickle([](const CompensationModel& self) { return to_json(self); },
+                      [](const std::string& text) {
+                        return compensation_model_from_json(text, "(pickle)", {false});
+                      }))
       .def("__repr__", [](const CompensationModel& self) {
         return "<fogdrift.Model " + to_string(self.provenance.method) + ", " +
                std::to_string(self.inputs()) + " features, " +

@@ -28,4 +28,8 @@ PYBIND11_MODULE(_fogdrift, m) {
   fogdrift::python::bind_svr(m);
   fogdrift::python::bind_model(m);
   fogdrift::python::bind_train(m);
+  fogdrift::python::bind_signal(m);
+  fogdrift::python::bind_eval(m);
+  fogdrift::python::bind_sim(m);
+  fogdrift::python::bind_stream(m);
 }

@@ -10,6 +10,7 @@
 #include <string>
 
 #include "bindings.hpp"
+#include "convert.hpp"
 #include "fogdrift/campaign.hpp"
 #include "fogdrift/error.hpp"
 #include "fogdrift/signal/differentiate.hpp"
@@ -24,18 +25,6 @@ namespace {
 const TrainOptions kTrain;
 const opt::RunOptions kRun;
 const tune::SearchSpace kSpace;
-
-// "auto" or a number of seconds.
-std::optional<double> seconds(const py::object& value, const char* name) {
-  if (py::isinstance<py::str>(value)) {
-    if (value.cast<std::string>() == "auto") return std::nullopt;
-    throw OptionError(name, "must be 'auto' or a number of seconds > 0 (got '" +
-                                value.cast<std::string>() + "')");
-  }
-  const double v = value.cast<double>();
-  if (!(v > 0)) throw OptionError(name, "must be 'auto' or a number of seconds > 0");
-  return v;
-}
 
 py::dict train(const std::filesystem::path& campaign_path, const std::string& method,
                const std::string& fitness, const std::string& cv, std::size_t folds,
@@ -54,8 +43,8 @@ py::dict train(const std::filesystem::path& campaign_path, const std::string& me
   o.auto_features = features == "auto";
   if (!o.auto_features) o.dataset.features = FeatureSpec::parse(features);
   o.dataset.preprocessing.rates.causality = signal::parse_causality(differentiator);
-  o.block_s = seconds(block_s, "block_s");
-  o.rate_window_s = seconds(rate_window_s, "rate_window_s");
+  o.block_s = seconds_or_auto(block_s, "block_s");
+  o.rate_window_s = seconds_or_auto(rate_window_s, "rate_window_s");
   o.dataset.denoise_target = denoise;
   t.tune.optimizer.run.population = population;
   t.tune.optimizer.run.iterations = iterations;

@@ -1,5 +1,8 @@
 # pytest's configuration for the Python package's tests (tests/python, run by CTest with
 # PYTHONPATH pointing at BUILD/python).
+import os
+import subprocess
+
 import numpy as np
 import pytest
 
@@ -17,3 +20,18 @@ def startup_like(rng, n, d=6):
     X = (X - X.mean(axis=0)) / X.std(axis=0)
     y = np.sin(2 * X[:, 0]) + 0.5 * X[:, 1] * X[:, 2] + 0.1 * rng.normal(size=n)
     return X, y
+
+
+@pytest.fixture(scope="session")
+def cli():
+    """Runs the fogdrift command line (FOGDRIFT_CLI, set by CTest) and returns its standard
+    output; a non-zero exit fails the test with the command's error."""
+    path = os.environ.get("FOGDRIFT_CLI", "build/apps/fogdrift/fogdrift")
+
+    def run(*args):
+        done = subprocess.run([path, *map(str, args)], capture_output=True, text=True)
+        if done.returncode != 0:
+            pytest.fail(f"fogdrift {' '.join(map(str, args))}: {done.stderr}")
+        return done.stdout
+
+    return run

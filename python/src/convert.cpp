@@ -1,0 +1,114 @@
+// Conversions shared by the bindings (convert.hpp).
+#include "convert.hpp"
+
+#include <pybind11/stl.h>
+#include <pybind11/stl/filesystem.h>
+
+#include <filesystem>
+#include <memory>
+
+#include "fogdrift/csv.hpp"
+#include "fogdrift/error.hpp"
+
+namespace py = pybind11;
+
+namespace fogdrift::python {
+
+py::array_t<double> to_array(std::vector<double>&& values, std::size_t rows, std::size_t columns) {
+  auto* owned = new std::vector<double>(std::move(values));
+  py::capsule owner(owned, [](void* p) { delete static_cast<std::vector<double>*>(p); });
+  const auto r = static_cast<py::ssize_t>(rows), c = static_cast<py::ssize_t>(columns);
+  return py::array_t<double>(
+      {r, c},
+      {c * static_cast<py::ssize_t>(sizeof(double)), static_cast<py::ssize_t>(sizeof(double))},
+      owned->data(), owner);
+}
+
+py::array_t<double> to_array(std::vector<double>&& values) {
+  auto* owned = new std::vector<double>(std::move(values));
+  py::capsule owner(owned, [](void* p) { delete static_cast<std::vector<double>*>(p); });
+  return py::array_t<double>(static_cast<py::ssize_t>(owned->size()), owned->data(), owner);
+}
+
+py::array_t<double> copy_to_array(const std::vector<double>& values) {
+  return to_array(std::vector<double>(values));
+}
+
+py::dict to_dict(const Recording& r) {
+  py::dict out;
+  for (const auto* names : {&required_columns(), &optional_columns()})
+    for (const std::string& name : *names)
+      if (const std::vector<double>* column = known_column(r, name);
+          column != nullptr && !column->empty())
+        out[py::str(name)] = copy_to_array(*column);
+  for (const ExtraColumn& c : r.extra) {
+    try {
+      out[py::str(c.name)] = to_array(r.numeric_column(c.name));
+    } catch (const InputError&) {
+      out[py::str(c.name)] = py::cast(c.cells);  // text: kept as it was written
+    }
+  }
+  return out;
+}
+
+Recording to_recording(const py::object& columns, const std::string& source, bool keep_others) {
+  if (py::isinstance<py::str>(columns) || py::hasattr(columns, "__fspath__"))
+    return read_recording(py::cast<std::filesystem::path>(columns));
+  if (!py::hasattr(columns, "__contains__") || !py::hasattr(columns, "__getitem__"))
+    throw InputError(source, 0, 0,
+                     "a recording must be a path or a mapping of column names to arrays (a dict "
+                     "or a pandas DataFrame)");
+  Recording r;
+  r.source = source;
+  for (const auto* names : {&required_columns(), &optional_columns()})
+    for (const std::string& name : *names) {
+      if (!columns.attr("__contains__")(name).cast<bool>()) continue;
+      const auto values = py::array_t<double, py::array::forcecast>::ensure(columns[py::str(name)]);
+      if (!values || values.ndim() != 1)
+        throw InputError(source, 0, 0, "column " + name + ": must be a 1-D array of numbers");
+      std::vector<double>* column = known_column(r, name, true);
+      column->assign(values.data(), values.data() + values.shape(0));
+    }
+  for (const std::string& name : required_columns())
+    if (known_column(r, name) == nullptr || known_column(r, name)->empty())
+      throw InputError(source, 0, 0, "missing required column " + name);
+  if (keep_others)
+    for (const py::handle key : columns.attr("keys")()) {
+      const auto name = py::str(key).cast<std::string>();
+      if (r.has_column(name)) continue;
+      const py::object values = columns[key];
+      ExtraColumn c{name, {}};
+      if (const auto numbers = py::array_t<double, py::array::forcecast>::ensure(values);
+          numbers && numbers.ndim() == 1) {
+        for (py::ssize_t i = 0; i < numbers.shape(0); ++i)
+          c.cells.push_back(csv::format_number(numbers.at(i)));
+      } else {
+        PyErr_Clear();
+        for (const py::handle cell : values) c.cells.push_back(py::str(cell).cast<std::string>());
+      }
+      if (c.cells.size() != r.size())
+        throw InputError(source, 0, 0,
+                         "column " + name + ": has " + std::to_string(c.cells.size()) +
+                             " values, time_s " + std::to_string(r.size()));
+      r.extra.push_back(std::move(c));
+    }
+  validate(r);
+  return r;
+}
+
+std::optional<double> seconds_or_auto(const py::object& value, const char* name) {
+  if (py::isinstance<py::str>(value)) {
+    if (value.cast<std::string>() == "auto") return std::nullopt;
+    throw OptionError(name, "must be 'auto' or a number of seconds > 0 (got '" +
+                                value.cast<std::string>() + "')");
+  }
+  const double v = value.cast<double>();
+  if (!(v > 0)) throw OptionError(name, "must be 'auto' or a number of seconds > 0");
+  return v;
+}
+
+py::object from_json(const std::string& text) {
+  return py::module_::import("json").attr("loads")(text);
+}
+
+}  // namespace fogdrift::python

@@ -1,0 +1,44 @@
+// Conversions between the library's types and Python's, shared by the bindings: arrays without a
+// second copy, recordings as mappings of columns, JSON text as Python objects.
+#pragma once
+
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "fogdrift/recording.hpp"
+
+namespace fogdrift::python {
+
+/// A 1-D float64 array that takes over `values` (no copy): the array owns the vector's buffer.
+pybind11::array_t<double> to_array(std::vector<double>&& values);
+
+/// A rows × columns float64 array over a row-major vector, taking it over.
+pybind11::array_t<double> to_array(std::vector<double>&& values, std::size_t rows,
+                                   std::size_t columns);
+
+/// A 1-D float64 array copied from `values`.
+pybind11::array_t<double> copy_to_array(const std::vector<double>& values);
+
+/// Every column of the recording, in fogdrift's column order, then the others it carries (as
+/// float64 arrays when every cell is a number, else lists of str); thermometers the unit lacks
+/// are left out.
+pybind11::dict to_dict(const Recording& recording);
+
+/// A recording from a path, or from any mapping of column names to 1-D sequences (dict,
+/// DataFrame): the known columns are read, the others kept as text (numbers in shortest
+/// round-trip form) when `keep_others`, else ignored; then checked as a file would be
+/// (recording.hpp), errors naming `source`.
+Recording to_recording(const pybind11::object& columns, const std::string& source,
+                       bool keep_others = false);
+
+/// None for "auto", else a number of seconds > 0; OptionError naming `name` otherwise.
+std::optional<double> seconds_or_auto(const pybind11::object& value, const char* name);
+
+/// The Python value of a JSON text (json.loads).
+pybind11::object from_json(const std::string& text);
+
+}  // namespace fogdrift::python

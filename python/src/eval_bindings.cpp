@@ -1,0 +1,160 @@
+// fogdrift.evaluate, fogdrift.northfind, fogdrift.allan_deviation and fogdrift.noise_terms: a
+// model's Table 2 and Table 3, and the gyro's noise terms (eval/evaluation.hpp,
+// eval/findings.hpp, eval/allan.hpp; docs/python.md).
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+#include <pybind11/stl/filesystem.h>
+
+#include <cmath>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "bindings.hpp"
+#include "convert.hpp"
+#include "fogdrift/campaign.hpp"
+#include "fogdrift/error.hpp"
+#include "fogdrift/eval/allan.hpp"
+#include "fogdrift/eval/evaluation.hpp"
+#include "fogdrift/eval/findings.hpp"
+
+namespace py = pybind11;
+
+namespace fogdrift::python {
+namespace {
+
+using Array = py::array_t<double, py::array::forcecast>;
+
+bool is_path(const py::object& o) {
+  return py::isinstance<py::str>(o) || py::hasattr(o, "__fspath__");
+}
+
+// A campaign folder or its campaign.json (not a recording CSV).
+bool is_campaign(const py::object& o) {
+  if (!is_path(o)) return false;
+  const auto p = o.cast<std::filesystem::path>();
+  return std::filesystem::is_directory(p) || p.extension() == ".json";
+}
+
+py::object evaluate(const CompensationModel& model, const py::object& data, bool guarded,
+                    bool allan) {
+  const eval::EvaluationOptions options{.guarded = guarded, .allan = allan};
+  eval::Evaluation e;
+  std::string source;
+  if (is_campaign(data)) {
+    const Campaign campaign = read_campaign(data.cast<std::filesystem::path>());
+    py::gil_scoped_release release;
+    e = eval::evaluate(model, campaign, options);
+    source = campaign.dir.string() + " (recordings with role \"test\")";
+  } else {
+    // One recording (a path or a mapping of columns) or a list of them.
+    std::vector<py::object> items;
+    if (is_path(data) || py::hasattr(data, "keys"))
+      items.push_back(data);
+    else
+      for (const py::handle item : data) items.push_back(py::reinterpret_borrow<py::object>(item));
+    std::vector<RecordingInput> inputs;
+    for (std::size_t i = 0; i < items.size(); ++i) {
+      RecordingInput in;
+      in.info.file = is_path(items[i]) ? items[i].cast<std::filesystem::path>().string()
+                                       : "recording " + std::to_string(i + 1);
+      in.recording = to_recording(items[i], in.info.file);
+      inputs.push_back(std::move(in));
+    }
+    if (inputs.empty()) throw OptionError("data", "no recordings to evaluate on");
+    source = std::to_string(inputs.size()) + " recording" + (inputs.size() == 1 ? "" : "s");
+    py::gil_scoped_release release;
+    e = eval::evaluate(model, inputs, options);
+  }
+  py::dict out = from_json(eval::to_json(e, "model", source)).cast<py::dict>();
+  out.attr("pop")("model");
+  return out;
+}
+
+py::object northfind(const py::object& campaign_path, const CompensationModel* model,
+                     bool guarded) {
+  if (!is_campaign(campaign_path))
+    throw OptionError("campaign", "must be a campaign folder or its campaign.json");
+  const Campaign campaign = read_campaign(campaign_path.cast<std::filesystem::path>());
+  eval::CampaignFindings f;
+  {
+    py::gil_scoped_release release;
+    f = eval::find_north(campaign, model, guarded);
+  }
+  py::dict out = from_json(eval::to_json(f, campaign.dir.string(), "model")).cast<py::dict>();
+  if (out.contains("model")) out.attr("pop")("model");
+  return out;
+}
+
+// A rate signal: 1-D and finite (allan.hpp leaves that check to its caller).
+Array rate_signal(const py::object& rate) {
+  const auto x = Array::ensure(rate);
+  if (!x || x.ndim() != 1) throw OptionError("rate", "must be a 1-D array of numbers");
+  for (py::ssize_t i = 0; i < x.shape(0); ++i)
+    if (!std::isfinite(x.at(i)))
+      throw OptionError("rate", "sample " + std::to_string(i) + " is not a finite number");
+  return x;
+}
+
+py::tuple allan_deviation(const py::object& rate, double dt_s, std::size_t points_per_decade) {
+  const Array x = rate_signal(rate);
+  eval::AllanDeviation a;
+  {
+    py::gil_scoped_release release;
+    a = eval::allan_deviation({x.data(), static_cast<std::size_t>(x.shape(0))}, dt_s,
+                              points_per_decade);
+  }
+  py::array_t<std::int64_t> m(static_cast<py::ssize_t>(a.m.size()));
+  for (std::size_t i = 0; i < a.m.size(); ++i) m.mutable_at(i) = static_cast<std::int64_t>(a.m[i]);
+  return py::make_tuple(to_array(std::move(a.tau_s)), to_array(std::move(a.adev)), m);
+}
+
+py::dict noise_terms(const py::object& rate, double dt_s) {
+  const Array x = rate_signal(rate);
+  eval::NoiseTerms t;
+  {
+    py::gil_scoped_release release;
+    t = eval::noise_terms(
+        eval::allan_deviation({x.data(), static_cast<std::size_t>(x.shape(0))}, dt_s, 10));
+  }
+  py::dict out;
+  out["arw_deg_per_rt_h"] = t.arw_deg_per_rt_h;
+  out["bias_instability_dph"] = t.bias_instability_dph;
+  out["rrw_dph_per_rt_h"] = t.rrw_dph_per_rt_h;
+  out["arw_tau_s"] = t.arw_tau_s;
+  out["bias_instability_tau_s"] = t.bias_instability_tau_s;
+  out["rrw_tau_s"] = t.rrw_tau_s;
+  return out;
+}
+
+}  // namespace
+
+void bind_eval(py::module_& m) {
+  m.def("evaluate", &evaluate, py::arg("model"), py::arg("data"), py::kw_only(),
+        py::arg("guarded") = true, py::arg("allan") = false,
+        "The paper's Table 2 view of a Model on test data, as `fogdrift evaluate --json` prints "
+        "it: data is a campaign folder (its recordings with role 'test'), a recording (a path or "
+        "a mapping of columns) or a list of them. Returns a dict: 'method', 'source', "
+        "'overall' and one entry per recording in 'recordings' (MAE, RMSE, STD before and "
+        "after, start-up residual, opposite-position difference, all °/h; novelty shares; with "
+        "allan=True the Allan noise terms raw and compensated), 'guard', 'warnings'.");
+  m.def("northfind", &northfind, py::arg("campaign"), py::arg("model") = nullptr, py::kw_only(),
+        py::arg("guarded") = true,
+        "Four-position north-finding on a campaign's northfind and stable recordings, raw and "
+        "with the model's drift subtracted (paper Table 3), as `fogdrift northfind --json` "
+        "prints it: a dict with each recording's per-finding azimuth errors (°) and 'table3' "
+        "(RMSE per initial temperature; on simulated recordings the floor with the true drift "
+        "subtracted and the share of the removable error removed).");
+  m.def("allan_deviation", &allan_deviation, py::arg("rate"), py::arg("dt_s") = 1.0,
+        py::arg("points_per_decade") = 0,
+        "Overlapping Allan deviation of a rate signal sampled every dt_s seconds (IEEE Std 952; "
+        "allantools' oadev with data_type='freq'): (tau_s, adev, m), adev in the rate's unit, m "
+        "the samples per cluster. points_per_decade=0 gives every octave (m = 1, 2, 4, ...).");
+  m.def("noise_terms", &noise_terms, py::arg("rate"), py::arg("dt_s") = 1.0,
+        "Datasheet noise terms of a gyro rate in °/h from its Allan deviation: angle random "
+        "walk (°/√h), bias instability (°/h), rate random walk (°/h/√h), and the tau each was "
+        "read at (s).");
+}
+
+}  // namespace fogdrift::python

@@ -1,0 +1,174 @@
+// fogdrift.StreamingCompensator: compensation one sample at a time, as the instrument's
+// processor runs it and `fogdrift stream` prints it (compensator.hpp, docs/python.md).
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include <array>
+#include <cmath>
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "bindings.hpp"
+#include "convert.hpp"
+#include "fogdrift/compensator.hpp"
+#include "fogdrift/error.hpp"
+
+namespace py = pybind11;
+
+namespace fogdrift::python {
+namespace {
+
+const FaultPolicy kFaults;
+
+// The compensator with what it needs to check its samples: which thermometers the model reads.
+struct Stream {
+  StreamingCompensator compensator;
+  bool reads_acc1, reads_acc2;
+
+  Stream(const CompensationModel& model, double dt_s, const StreamOptions& options)
+      : compensator(model, dt_s, options),
+        reads_acc1(model.dataset.features.reads(Thermometer::acc1)),
+        reads_acc2(model.dataset.features.reads(Thermometer::acc2)) {}
+
+  // A thermometer the model does not read may be absent (0, as `fogdrift stream` takes it).
+  double thermometer(const std::optional<double>& value, bool read, const char* name) const {
+    if (value) return *value;
+    if (read) throw OptionError(name, "the model reads this thermometer; give its reading");
+    return 0.0;
+  }
+};
+
+std::unique_ptr<Stream> make_stream(const CompensationModel& model, double dt_s, bool guarded,
+                                    double temp_min_degc, double temp_max_degc,
+                                    double gyro_limit_dph, double bridge_s, double hold_s,
+                                    double stuck_s, double stuck_delta_degc) {
+  if (!(dt_s > 0) || !std::isfinite(dt_s))
+    throw OptionError("dt_s", "must be a finite number of seconds > 0");
+  StreamOptions o;
+  o.guarded = guarded;
+  o.faults = {temp_min_degc, temp_max_degc, gyro_limit_dph,  bridge_s,
+              hold_s,        stuck_s,       stuck_delta_degc};
+  try {
+    validate(o.faults);
+  } catch (const OptionError& e) {  // "faults.bridge_s" is the keyword bridge_s here
+    const std::string& field = e.option();
+    throw OptionError(field.starts_with("faults.") ? field.substr(7) : field, e.message());
+  }
+  return std::make_unique<Stream>(model, dt_s, o);
+}
+
+py::tuple update(Stream& s, double time_s, double gyro_dph, double temp_fog_degc,
+                 const std::optional<double>& temp_acc1_degc,
+                 const std::optional<double>& temp_acc2_degc) {
+  const StreamOutput out =
+      s.compensator.update({time_s, gyro_dph, temp_fog_degc,
+                            s.thermometer(temp_acc1_degc, s.reads_acc1, "temp_acc1_degc"),
+                            s.thermometer(temp_acc2_degc, s.reads_acc2, "temp_acc2_degc")});
+  return py::make_tuple(out.drift_dph, out.gyro_comp_dph, out.flags);
+}
+
+// One column of a mapping as float64, or an empty array when absent and not `required`.
+py::array_t<double, py::array::forcecast> column(const py::object& columns, const char* name,
+                                                 bool required, std::size_t n) {
+  using Array = py::array_t<double, py::array::forcecast>;
+  if (!columns.attr("__contains__")(name).cast<bool>()) {
+    if (required) throw InputError("(recording)", 0, 0, std::string("missing column ") + name);
+    return Array(0);
+  }
+  auto a = Array::ensure(columns[py::str(name)]);
+  if (!a || a.ndim() != 1)
+    throw InputError("(recording)", 0, 0, std::string("column ") + name + ": must be 1-D");
+  if (n != 0 && static_cast<std::size_t>(a.shape(0)) != n)
+    throw InputError("(recording)", 0, 0,
+                     std::string("column ") + name + ": has " + std::to_string(a.shape(0)) +
+                         " values, time_s " + std::to_string(n));
+  return a;
+}
+
+// A recording's samples as the stream sees them: a file is read and checked as for training; a
+// mapping's columns are taken as they are, NaNs and all, since the fault policy handles them.
+py::dict run(Stream& s, const py::object& recording) {
+  std::array<py::array_t<double, py::array::forcecast>, 5> c;
+  if (py::isinstance<py::str>(recording) || py::hasattr(recording, "__fspath__")) {
+    const Recording r = to_recording(recording, "(recording)");
+    const std::vector<double>* v[5] = {&r.time_s, &r.gyro_dph, &r.temp_fog_degc, &r.temp_acc1_degc,
+                                       &r.temp_acc2_degc};
+    for (std::size_t k = 0; k < 5; ++k) c[k] = copy_to_array(*v[k]);
+  } else {
+    c[0] = column(recording, "time_s", true, 0);
+    const auto n = static_cast<std::size_t>(c[0].shape(0));
+    c[1] = column(recording, "gyro_dph", true, n);
+    c[2] = column(recording, "temp_fog_degc", true, n);
+    c[3] = column(recording, "temp_acc1_degc", s.reads_acc1, n);
+    c[4] = column(recording, "temp_acc2_degc", s.reads_acc2, n);
+  }
+  const auto n = static_cast<std::size_t>(c[0].shape(0));
+  if (s.reads_acc1 && c[3].shape(0) == 0)
+    throw InputError("(recording)", 0, 0, "missing column temp_acc1_degc, which the model reads");
+  if (s.reads_acc2 && c[4].shape(0) == 0)
+    throw InputError("(recording)", 0, 0, "missing column temp_acc2_degc, which the model reads");
+  const bool has_acc1 = c[3].shape(0) != 0, has_acc2 = c[4].shape(0) != 0;
+  std::vector<double> drift(n), comp(n), novelty(n), weight(n);
+  py::array_t<std::uint32_t> flags(static_cast<py::ssize_t>(n));
+  std::uint32_t* f = flags.mutable_data();
+  const double *t = c[0].data(), *g = c[1].data(), *fog = c[2].data(), *a1 = c[3].data(),
+               *a2 = c[4].data();
+  {
+    py::gil_scoped_release release;
+    for (std::size_t i = 0; i < n; ++i) {
+      const StreamOutput out = s.compensator.update(
+          {t[i], g[i], fog[i], has_acc1 ? a1[i] : 0.0, has_acc2 ? a2[i] : 0.0});
+      drift[i] = out.drift_dph;
+      comp[i] = out.gyro_comp_dph;
+      novelty[i] = s.compensator.novelty();
+      weight[i] = s.compensator.weight();
+      f[i] = out.flags;
+    }
+  }
+  py::dict d;
+  d["drift_dph"] = to_array(std::move(drift));
+  d["gyro_comp_dph"] = to_array(std::move(comp));
+  d["novelty"] = to_array(std::move(novelty));
+  d["guard_weight"] = to_array(std::move(weight));
+  d["fault_flags"] = flags;
+  return d;
+}
+
+}  // namespace
+
+void bind_stream(py::module_& m) {
+  py::class_<Stream>(m, "StreamingCompensator",
+                     "A Model run one sample at a time, causally, as the instrument's processor "
+                     "runs it (`fogdrift stream`): rates from the causal differentiator, the "
+                     "novelty guard, and the fault policy (docs/field.md) that keeps the output "
+                     "finite through bad samples, flagging each.")
+      .def(py::init(&make_stream), py::arg("model"), py::arg("dt_s"), py::kw_only(),
+           py::arg("guarded") = true, py::arg("temp_min_degc") = kFaults.temp_min_degc,
+           py::arg("temp_max_degc") = kFaults.temp_max_degc,
+           py::arg("gyro_limit_dph") = kFaults.gyro_limit_dph,
+           py::arg("bridge_s") = kFaults.bridge_s, py::arg("hold_s") = kFaults.hold_s,
+           py::arg("stuck_s") = kFaults.stuck_s,
+           py::arg("stuck_delta_degc") = kFaults.stuck_delta_degc, py::keep_alive<1, 2>(),
+           "dt_s: the logger's fixed sample interval, s. The fault policy's limits are "
+           "`fogdrift stream`'s flags under their field names.")
+      .def("update", &update, py::arg("time_s"), py::arg("gyro_dph"), py::arg("temp_fog_degc"),
+           py::arg("temp_acc1_degc") = py::none(), py::arg("temp_acc2_degc") = py::none(),
+           "One sample in, (drift_dph, gyro_comp_dph, fault_flags) out; a NaN reading is a "
+           "fault, flagged, not an error. A thermometer the model does not read may be left "
+           "out.")
+      .def("run", &run, py::arg("recording"),
+           "Every sample of a recording (a path or a mapping of columns) through update(), "
+           "continuing from the state before: a dict of arrays drift_dph, gyro_comp_dph, "
+           "novelty, guard_weight and fault_flags (uint32), the columns `fogdrift stream` adds.")
+      .def(
+          "reset", [](Stream& s) { s.compensator.reset(); }, "Starts again, as at power-on.")
+      .def_property_readonly("novelty", [](const Stream& s) { return s.compensator.novelty(); })
+      .def_property_readonly("weight", [](const Stream& s) { return s.compensator.weight(); })
+      .def_static(
+          "describe_flags", [](std::uint32_t flags) { return fault::describe(flags); },
+          py::arg("flags"), "The names of the faults in a fault_flags value.");
+}
+
+}  // namespace fogdrift::python

@@ -1,0 +1,226 @@
+"""The gyro pipeline in Python against the command line and independent references: simulate,
+denoise (PyWavelets), features (SciPy's Savitzky-Golay filter), evaluate (Table 2), northfind
+(Table 3), the Allan deviation (its defining formula) and the streaming compensator."""
+import csv
+import json
+import math
+
+import numpy as np
+import pytest
+import pywt
+from scipy.signal import savgol_filter
+
+import fogdrift
+
+
+@pytest.fixture(scope="module")
+def campaign(tmp_path_factory, cli):
+    """A small calibration campaign from Python and the same from the command line, a model the
+    command line trained on it, and a north-finding campaign."""
+    d = tmp_path_factory.mktemp("pipeline")
+    py = fogdrift.simulate("calibration", out=d / "cal", seed=3, temps_degc=[-20, 10, 40],
+                           repetitions=2)
+    cli("simulate", "calibration", "--out", d / "cal_cli", "--seed", "3", "--temps", "-20,10,40",
+        "--repetitions", "2")
+    cli("train", d / "cal", "--method", "svr", "-o", d / "m.json", "-q")
+    cli("simulate", "northfind", "--out", d / "nf", "--temps", "-16,28", "--findings", "2")
+    return d, py
+
+
+def test_simulate_writes_the_command_lines_files(campaign):
+    d, py = campaign
+    manifest = json.loads((d / "cal" / "campaign.json").read_text())
+    assert manifest == json.loads((d / "cal_cli" / "campaign.json").read_text())
+    assert [r["file"] for r in py["recordings"]] == [r["file"] for r in manifest["recordings"]]
+    assert py["latitude_deg"] == manifest["latitude_deg"]
+    for entry, data in zip(manifest["recordings"], py["data"]):
+        text = (d / "cal" / entry["file"]).read_bytes()
+        assert text == (d / "cal_cli" / entry["file"]).read_bytes()
+        # The arrays returned are the numbers written (shortest round-trip text).
+        on_disk = fogdrift.read_recording(d / "cal" / entry["file"])
+        assert set(on_disk) == set(data)
+        for name, values in on_disk.items():
+            np.testing.assert_array_equal(data[name], values)
+    assert "drift_true_dph" in py["data"][0]
+
+
+def test_simulate_options_are_the_librarys_and_checked():
+    nf = fogdrift.simulate("northfind", temps_degc=[25], findings=1, approach="soaked", seed=2)
+    assert len(nf["data"]) == 1 and nf["recordings"][0]["scenario"] == "northfind"
+    assert "table_deg" in nf["data"][0]
+    for kwargs, message in [
+            (dict(scenario="storm"), "option scenario: must be 'calibration'"),
+            (dict(repetitions=0), "calibration.repetitions"),
+            (dict(temps_degc=[20], speed=2), "option speed: is not an option of the calibration"),
+            (dict(temps_degc="warm"), "option temps_degc: has the wrong type"),
+            (dict(approaches="sunny"), "option approaches"),
+            (dict(instrument={"fog": {"bias_dph": "x"}}), "instrument"),
+    ]:
+        with pytest.raises(ValueError, match=message):
+            fogdrift.simulate(**kwargs)
+
+
+def test_denoise_is_pywavelets_universal_soft_thresholding():
+    rng = np.random.default_rng(7)
+    t = np.arange(1800.0)
+    # A step leaves detail coefficients above the threshold, which soft shrinkage moves.
+    x = 0.02 * np.exp(-t / 400) + 0.05 * (t > 900) + 0.003 * rng.normal(size=t.size)
+    ours, summary = fogdrift.denoise(x, wavelet="sym4", level=4, threshold="universal",
+                                     summary=True)
+    coeffs = pywt.wavedec(x, "sym4", mode="symmetric", level=4)
+    sigma = np.median(np.abs(coeffs[-1])) / 0.6745
+    lam = sigma * math.sqrt(2 * math.log(x.size))
+    ref = pywt.waverec([coeffs[0]] + [pywt.threshold(c, lam, mode="soft") for c in coeffs[1:]],
+                       "sym4", mode="symmetric")[:x.size]
+    np.testing.assert_allclose(ours, ref, rtol=0, atol=1e-15)
+    assert 0 < sum(b["kept"] for b in summary["bands"]) < x.size // 4
+    assert summary["level"] == 4 and summary["noise_sigma"] == pytest.approx(sigma, rel=1e-14)
+    assert [b["threshold"] for b in summary["bands"]] == pytest.approx([lam] * 4, rel=1e-14)
+    # Hard shrinkage and another extension, as pywt names them.
+    hard = fogdrift.denoise(x, wavelet="db2", level=3, threshold="universal", mode="hard",
+                            extension="periodization")
+    c = pywt.wavedec(x, "db2", mode="periodization", level=3)
+    lam = np.median(np.abs(c[-1])) / 0.6745 * math.sqrt(2 * math.log(x.size))
+    ref = pywt.waverec([c[0]] + [pywt.threshold(b, lam, mode="hard") for b in c[1:]], "db2",
+                       mode="periodization")
+    np.testing.assert_allclose(hard, ref, atol=1e-15)
+    # Any float sequence, either memory order, is the same signal.
+    np.testing.assert_array_equal(fogdrift.denoise(list(x)), fogdrift.denoise(x))
+    with pytest.raises(ValueError, match="not a finite number"):
+        fogdrift.denoise(np.r_[x[:10], np.nan, x[11:]])
+    with pytest.raises(ValueError, match="option wavelet"):
+        fogdrift.denoise(x, wavelet="morlet")
+    with pytest.raises(ValueError, match="option mode"):
+        fogdrift.denoise(x, mode="medium")
+    with pytest.raises(ValueError, match="option data: must be a 1-D array"):
+        fogdrift.denoise(np.zeros((4, 400)))
+
+
+def test_features_are_block_means_of_the_temperatures_and_their_rates(campaign):
+    d, py = campaign
+    rec = py["data"][0]
+    f = fogdrift.features(rec)
+    assert f["spec"] == "T,dT,grad" and len(f["names"]) == 9 and f["block"] == 10
+    x = f["x"]
+    assert x.shape == (rec["time_s"].size // 10, 9) and x.flags.c_contiguous
+    blocks = lambda v: v[:x.shape[0] * 10].reshape(-1, 10).mean(axis=1)  # noqa: E731
+    col = {n: x[:, i] for i, n in enumerate(f["names"])}
+    np.testing.assert_allclose(col["T_fog_degc"], blocks(rec["temp_fog_degc"]), rtol=1e-13)
+    np.testing.assert_allclose(col["grad_fog_acc1_degc"],
+                               blocks(rec["temp_fog_degc"] - rec["temp_acc1_degc"]), atol=1e-12)
+    # The centred rate: SciPy's Savitzky-Golay derivative (121 samples, degree 2) inside the
+    # recording, where neither filter reaches an end.
+    rate = savgol_filter(rec["temp_fog_degc"], 121, 2, deriv=1, delta=1.0)
+    inner = slice(7, x.shape[0] - 7)
+    np.testing.assert_allclose(col["dT_fog_degc_per_s"][inner], blocks(rate)[inner], atol=1e-12)
+    np.testing.assert_allclose(f["time_s"], blocks(rec["time_s"]))
+    # A model's own features: the rows it predicts from.
+    m = fogdrift.Model.load(d / "m.json")
+    fm = fogdrift.features(rec, model=m)
+    assert fm["names"] == m.feature_names
+    np.testing.assert_array_equal(fm["x"], x)
+    one = fogdrift.features(rec, "T(fog),dT(fog)", block_s=20, rate_window_s=61)
+    assert one["names"] == ["T_fog_degc", "dT_fog_degc_per_s"] and one["block"] == 20
+    with pytest.raises(ValueError, match="option block_s"):
+        fogdrift.features(rec, block_s=15.5)
+    with pytest.raises(ValueError, match="give a feature spec or a model"):
+        fogdrift.features(rec, "T", model=m)
+
+
+def without(d, *keys):
+    return {k: v for k, v in d.items() if k not in keys}
+
+
+def test_evaluate_is_the_command_lines_table_2(campaign, cli):
+    d, py = campaign
+    m = fogdrift.Model.load(d / "m.json")
+    for flags, kwargs in [((), {}), (("--allan", "--no-guard"), dict(allan=True, guarded=False))]:
+        expected = json.loads(cli("evaluate", d / "m.json", d / "cal", "--json", *flags))
+        got = fogdrift.evaluate(m, d / "cal", **kwargs)
+        assert without(got, "source") == without(expected, "model", "source")
+    # Recordings given as arrays: the same figures as the files.
+    files = [d / "cal" / r["file"] for r in py["recordings"] if r["role"] == "test"]
+    expected = json.loads(cli("evaluate", d / "m.json", *files, "--json"))
+    got = fogdrift.evaluate(m, [py["data"][i] for i, r in enumerate(py["recordings"])
+                                if r["role"] == "test"])
+    for a, b in zip(got["recordings"], expected["recordings"]):
+        assert without(a, "file") == without(b, "file")
+    assert got["overall"] == expected["overall"]
+    assert got["overall"]["std_compensated_dph"] < got["overall"]["std_denoised_dph"]
+    with pytest.raises(ValueError, match="no calibration recordings with role test"):
+        fogdrift.evaluate(m, d / "nf")
+
+
+def test_northfind_is_the_command_lines_table_3(campaign, cli):
+    d, _ = campaign
+    m = fogdrift.Model.load(d / "m.json")
+    expected = json.loads(cli("northfind", d / "nf", "--json"))
+    assert without(fogdrift.northfind(d / "nf"), "campaign") == without(expected, "campaign")
+    expected = json.loads(cli("northfind", d / "nf", "--model", d / "m.json", "--json"))
+    got = fogdrift.northfind(d / "nf", m)
+    assert without(got, "campaign") == without(expected, "campaign", "model")
+    assert got["table3"]["temps_degc"] == [-16, 28]
+    assert len(got["recordings"][0]["compensated_error_deg"]) == 2
+    with pytest.raises(ValueError, match="no northfind or stable recordings"):
+        fogdrift.northfind(d / "cal")
+
+
+def overlapping_adev(rate, dt, m):
+    """IEEE Std 952's overlapping Allan deviation at cluster size m, from the angle."""
+    theta = np.concatenate([[0.0], np.cumsum(rate) * dt])
+    tau = m * dt
+    d = theta[2 * m:] - 2 * theta[m:-m] + theta[:-2 * m]
+    return math.sqrt(np.sum(d * d) / (2 * tau * tau * (rate.size - 2 * m + 1)))
+
+
+def test_allan_deviation_is_the_overlapping_estimator():
+    rng = np.random.default_rng(11)
+    dt = 0.5
+    rate = 0.01 * rng.normal(size=20000) + 1e-4 * np.cumsum(rng.normal(size=20000))
+    tau, adev, m = fogdrift.allan_deviation(rate, dt)
+    assert list(m[:5]) == [1, 2, 4, 8, 16] and m[-1] <= rate.size // 2
+    np.testing.assert_allclose(tau, m * dt)
+    for k in range(len(m)):
+        assert adev[k] == pytest.approx(overlapping_adev(rate, dt, int(m[k])), rel=1e-10)
+    # White rate noise of σ per sample: σ(τ) = σ·√(dt/τ); the ARW is σ·√dt in °/√h units.
+    white = 0.05 * rng.normal(size=200000)
+    terms = fogdrift.noise_terms(white, dt_s=1.0)
+    assert terms["arw_deg_per_rt_h"] == pytest.approx(0.05 / 60, rel=0.05)
+    with pytest.raises(ValueError, match="option rate: sample 3 is not a finite number"):
+        fogdrift.allan_deviation([1.0, 2.0, 3.0, np.inf, 5.0])
+
+
+def test_the_stream_is_the_command_lines_stream(campaign, cli, tmp_path):
+    d, _ = campaign
+    m = fogdrift.Model.load(d / "m.json")
+    recording = d / "cal" / "cal_r2_10C.csv"
+    cli("stream", d / "m.json", recording, "--rate-hz", "1")  # prints; read it back below
+    with open(tmp_path / "s.csv", "w") as f:
+        f.write(cli("stream", d / "m.json", recording, "--rate-hz", "1"))
+    with open(tmp_path / "s.csv", newline="") as f:
+        rows = list(csv.DictReader(f))
+    s = fogdrift.StreamingCompensator(m, 1.0)
+    out = s.run(recording)
+    for name in ("drift_dph", "gyro_comp_dph", "novelty", "guard_weight"):
+        np.testing.assert_array_equal(out[name], [float(r[name]) for r in rows])
+    np.testing.assert_array_equal(out["fault_flags"], [int(r["fault_flags"]) for r in rows])
+    # One sample at a time gives the same; a NaN reading is flagged, not an error.
+    columns = fogdrift.read_recording(recording)
+    s.reset()
+    for i in range(50):
+        drift, comp, flags = s.update(columns["time_s"][i], columns["gyro_dph"][i],
+                                      columns["temp_fog_degc"][i], columns["temp_acc1_degc"][i],
+                                      columns["temp_acc2_degc"][i])
+        assert (drift, comp, flags) == (out["drift_dph"][i], out["gyro_comp_dph"][i], 0)
+    drift, comp, flags = s.update(50.0, float("nan"), 20.0, 20.0, 20.0)
+    assert math.isfinite(drift) and flags != 0
+    assert "gyro" in fogdrift.StreamingCompensator.describe_flags(flags)
+    columns["temp_fog_degc"][100] = np.nan
+    flagged = fogdrift.StreamingCompensator(m, 1.0).run(columns)["fault_flags"]
+    assert flagged[100] != 0 and np.count_nonzero(flagged) < 10
+    with pytest.raises(ValueError, match="option temp_acc1_degc: the model reads"):
+        s.update(51.0, 0.0, 20.0)
+    with pytest.raises(ValueError, match="option bridge_s"):
+        fogdrift.StreamingCompensator(m, 1.0, bridge_s=-1)
+    with pytest.raises(ValueError, match="option dt_s"):
+        fogdrift.StreamingCompensator(m, 0.0)
