@@ -1,0 +1,55 @@
+"""fogdrift.fleet on Dask: one model per campaign on a LocalCluster of worker processes, byte for
+byte the models of a serial run, with a refused unit reported and the others trained."""
+import json
+
+import pytest
+
+import fogdrift
+from fogdrift.fleet import train_fleet
+
+distributed = pytest.importorskip("distributed")
+
+
+@pytest.fixture(scope="module")
+def units(tmp_path_factory):
+    """Three units' campaigns (different instruments: different seeds) and a broken one."""
+    d = tmp_path_factory.mktemp("fleet")
+    paths = []
+    for seed in (1, 2, 3):
+        paths.append(d / f"unit{seed}")
+        fogdrift.simulate("calibration", out=paths[-1], seed=seed, temps_degc=[-20, 10, 40],
+                          repetitions=2)
+    broken = d / "unit4"
+    fogdrift.simulate("calibration", out=broken, seed=4, temps_degc=[-20, 10, 40], repetitions=2)
+    manifest = json.loads((broken / "campaign.json").read_text())
+    (broken / manifest["recordings"][0]["file"]).write_text("time_s,gyro_dph\n0,1\n")
+    return paths, broken
+
+
+def test_a_local_cluster_trains_the_serial_runs_models(units, tmp_path):
+    paths, broken = units
+    options = dict(method="ssa-svr", population=6, iterations=2, seed=7)
+    serial = train_fleet(paths, **options)
+    seen = []
+    with distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=True,
+                                  dashboard_address=None) as cluster, \
+            distributed.Client(cluster) as client:
+        parallel = train_fleet(paths + [broken], client=client, out=tmp_path / "models",
+                               progress=lambda done, total, r: seen.append((done, total)),
+                               **options)
+    assert sorted(seen) == [(1, 4), (2, 4), (3, 4), (4, 4)]
+    assert [r["campaign"] for r in parallel] == [str(p) for p in paths + [broken]]
+    for s, p in zip(serial, parallel):
+        assert s["error"] is None and p["error"] is None
+        assert p["model"].to_json() == s["model"].to_json()
+        assert p["evaluation"] == s["evaluation"]
+        assert p["summary"]["hyperparameters"] == s["summary"]["hyperparameters"]
+        written = tmp_path / "models" / (p["campaign"].rsplit("/", 1)[-1] + ".json")
+        assert written.read_text() == s["model"].to_json()
+    # The units differ: each model is its own instrument's.
+    assert len({r["model"].to_json() for r in serial}) == 3
+    # The refused unit says why and leaves nothing behind.
+    bad = parallel[-1]
+    assert bad["model"] is None and "missing required column 'temp_fog_degc'" in bad["error"]
+    assert not (tmp_path / "models" / "unit4.json").exists()
+
