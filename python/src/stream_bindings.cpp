@@ -56,6 +56,16 @@ std::unique_ptr<Stream> make_stream(const CompensationModel& model, double dt_s,
     const std::string& field = e.option();
     throw OptionError(field.starts_with("faults.") ? field.substr(7) : field, e.message());
   }
+  // Streamed, a model trained on centred rates sees causal ones, noisier than those it learned:
+  // a tuned SVR's drift then departs from its batch drift by more than the drift itself
+  // (docs/python.md, step 6).
+  if (model.dataset.preprocessing.rates.causality != signal::Causality::causal)
+    if (PyErr_WarnEx(PyExc_UserWarning,
+                     "the model was trained with centred temperature rates; streamed, it sees "
+                     "causal ones and its drift differs from Model.predict's. For the instrument, "
+                     "train with differentiator='causal'",
+                     1) != 0)
+      throw py::error_already_set();
   return std::make_unique<Stream>(model, dt_s, o);
 }
 

@@ -199,7 +199,8 @@ def test_the_stream_is_the_command_lines_stream(campaign, cli, tmp_path):
         f.write(cli("stream", d / "m.json", recording, "--rate-hz", "1"))
     with open(tmp_path / "s.csv", newline="") as f:
         rows = list(csv.DictReader(f))
-    s = fogdrift.StreamingCompensator(m, 1.0)
+    with pytest.warns(UserWarning, match="trained with centred temperature rates"):
+        s = fogdrift.StreamingCompensator(m, 1.0)
     out = s.run(recording)
     for name in ("drift_dph", "gyro_comp_dph", "novelty", "guard_weight"):
         np.testing.assert_array_equal(out[name], [float(r[name]) for r in rows])
@@ -216,7 +217,8 @@ def test_the_stream_is_the_command_lines_stream(campaign, cli, tmp_path):
     assert math.isfinite(drift) and flags != 0
     assert "gyro" in fogdrift.StreamingCompensator.describe_flags(flags)
     columns["temp_fog_degc"][100] = np.nan
-    flagged = fogdrift.StreamingCompensator(m, 1.0).run(columns)["fault_flags"]
+    with pytest.warns(UserWarning):
+        flagged = fogdrift.StreamingCompensator(m, 1.0).run(columns)["fault_flags"]
     assert flagged[100] != 0 and np.count_nonzero(flagged) < 10
     with pytest.raises(ValueError, match="option temp_acc1_degc: the model reads"):
         s.update(51.0, 0.0, 20.0)
@@ -224,3 +226,12 @@ def test_the_stream_is_the_command_lines_stream(campaign, cli, tmp_path):
         fogdrift.StreamingCompensator(m, 1.0, bridge_s=-1)
     with pytest.raises(ValueError, match="option dt_s"):
         fogdrift.StreamingCompensator(m, 0.0)
+
+
+def test_a_causal_model_streams_its_batch_drift_without_a_warning(campaign, recwarn):
+    d, _ = campaign
+    causal = fogdrift.train(d / "cal", method="svr", differentiator="causal")["model"]
+    columns = fogdrift.read_recording(d / "cal" / "cal_r2_40C.csv")
+    streamed = fogdrift.StreamingCompensator(causal, 1.0).run(columns)
+    np.testing.assert_array_equal(streamed["drift_dph"], causal.predict(columns)["drift_dph"])
+    assert not [w for w in recwarn if issubclass(w.category, UserWarning)]
