@@ -114,8 +114,8 @@ class SVR(RegressorMixin, BaseEstimator):
     def fit(self, X, y, sample_weight=None):
         """Fit to X (n_samples × n_features) and y; sample_weight scales C per sample."""
         X, y, sample_weight = self._prepare(X, y, sample_weight)
-        fitted = _fogdrift.svr_fit(X[sample_weight.kept], y[sample_weight.kept],
-                                   sample_weight.weights, C=self.C, **self._engine_args())
+        fitted = _fogdrift.svr_fit(X, y, sample_weight.weights, sample_weight.taken, C=self.C,
+                                   **self._engine_args())
         self._store(fitted, X.shape, sample_weight)
         return self
 
@@ -133,8 +133,8 @@ class SVR(RegressorMixin, BaseEstimator):
         if not c_values:
             raise ValueError("option C: needs at least one value")
         X, y, sample_weight = self._prepare(X, y, sample_weight)
-        fits = _fogdrift.svr_fit_path(X[sample_weight.kept], y[sample_weight.kept],
-                                      sample_weight.weights, C=c_values, **self._engine_args())
+        fits = _fogdrift.svr_fit_path(X, y, sample_weight.weights, sample_weight.taken,
+                                      C=c_values, **self._engine_args())
         out = []
         for c, fitted in zip(c_values, fits):
             est = clone(self).set_params(C=c)
@@ -235,14 +235,15 @@ class SVR(RegressorMixin, BaseEstimator):
 
 class _Weights:
     """Sample weights as the engine takes them: samples of weight 0 are left out (as a weight of
-    0 means), `rows` maps the kept samples to the training rows, `weights` are theirs; `checked`
+    0 means), `rows` maps the kept samples to the training rows, `weights` are theirs; `taken`
+    is the rows the engine copies from X (None: all, so X is copied once either way); `checked`
     is every sample's weight and `keep` the mask of the kept ones (both None without weights)."""
 
     def __init__(self, sample_weight, X):
         n = X.shape[0]
         self.checked = self.keep = self.weights = None
         if sample_weight is None:
-            self.kept = slice(None)
+            self.taken = None
             self.rows = np.arange(n)
             return
         w = _check_sample_weight(sample_weight, X, dtype=np.float64)
@@ -253,5 +254,5 @@ class _Weights:
             raise ValueError("sample_weight is 0 for every sample: nothing to fit")
         self.checked, self.keep = w, keep
         self.rows = np.flatnonzero(keep)
-        self.kept = slice(None) if keep.all() else self.rows
+        self.taken = None if keep.all() else self.rows
         self.weights = np.ascontiguousarray(w[self.rows])

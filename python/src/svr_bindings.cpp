@@ -30,25 +30,39 @@ namespace {
 
 using Array = py::array_t<double, py::array::forcecast>;
 
-// X (n × d, any strides) and y, w (n) as the engine's data, in one copy.
-svr::Data to_data(const Array& x, const Array& y, const std::optional<Array>& weight) {
+using Rows = py::array_t<std::int64_t, py::array::forcecast>;
+
+// X (n × d, any strides) and y as the engine's data, in one copy: every row, or only `rows`
+// (the samples of non-zero weight); w has one weight per row taken.
+svr::Data to_data(const Array& x, const Array& y, const std::optional<Array>& weight,
+                  const std::optional<Rows>& rows = std::nullopt) {
   if (x.ndim() != 2) throw std::invalid_argument("X must be a 2-D array");
   if (y.ndim() != 1 || y.shape(0) != x.shape(0))
     throw std::invalid_argument("y must be a 1-D array with one value per row of X");
+  const py::ssize_t n = rows ? rows->shape(0) : x.shape(0);
+  auto row = [&](py::ssize_t i) {
+    if (!rows) return i;
+    const std::int64_t r = rows->at(i);
+    if (r < 0 || r >= x.shape(0)) throw std::invalid_argument("rows: an index outside X");
+    return static_cast<py::ssize_t>(r);
+  };
   svr::Data d;
-  d.rows = static_cast<std::size_t>(x.shape(0));
+  d.rows = static_cast<std::size_t>(n);
   d.cols = static_cast<std::size_t>(x.shape(1));
   d.x.resize(d.rows * d.cols);
-  const auto xv = x.unchecked<2>();
-  for (py::ssize_t i = 0; i < x.shape(0); ++i)
-    for (py::ssize_t k = 0; k < x.shape(1); ++k)
-      d.x[static_cast<std::size_t>(i) * d.cols + static_cast<std::size_t>(k)] = xv(i, k);
-  const auto yv = y.unchecked<1>();
   d.y.resize(d.rows);
-  for (py::ssize_t i = 0; i < y.shape(0); ++i) d.y[static_cast<std::size_t>(i)] = yv(i);
+  const auto xv = x.unchecked<2>();
+  const auto yv = y.unchecked<1>();
+  for (py::ssize_t i = 0; i < n; ++i) {
+    const py::ssize_t r = row(i);
+    for (py::ssize_t k = 0; k < x.shape(1); ++k)
+      d.x[static_cast<std::size_t>(i) * d.cols + static_cast<std::size_t>(k)] = xv(r, k);
+    d.y[static_cast<std::size_t>(i)] = yv(r);
+  }
   if (weight) {
-    if (weight->ndim() != 1 || weight->shape(0) != x.shape(0))
-      throw std::invalid_argument("sample_weight must be a 1-D array with one value per row of X");
+    if (weight->ndim() != 1 || weight->shape(0) != n)
+      throw std::invalid_argument(
+          "sample_weight must be a 1-D array with one value per row of X taken");
     const auto wv = weight->unchecked<1>();
     d.weight.resize(d.rows);
     for (py::ssize_t i = 0; i < weight->shape(0); ++i)
@@ -147,9 +161,10 @@ svr::WorkspacePool& workspaces() {
 }
 
 py::dict fit(const Array& x, const Array& y, const std::optional<Array>& weight,
-             const std::string& kernel, const Gamma& gamma, double c, double epsilon, double tol,
-             double cache_mb, std::int64_t max_iter, bool shrinking, const std::string& solver) {
-  svr::Data data = to_data(x, y, weight);
+             const std::optional<Rows>& rows, const std::string& kernel, const Gamma& gamma,
+             double c, double epsilon, double tol, double cache_mb, std::int64_t max_iter,
+             bool shrinking, const std::string& solver) {
+  svr::Data data = to_data(x, y, weight, rows);
   const double g = gamma_of(gamma, data);
   const svr::Params p =
       to_params(kernel, g, c, epsilon, tol, cache_mb, max_iter, shrinking, solver);
@@ -165,11 +180,12 @@ py::dict fit(const Array& x, const Array& y, const std::optional<Array>& weight,
 }
 
 py::list fit_path(const Array& x, const Array& y, const std::optional<Array>& weight,
-                  const std::vector<double>& c_values, const std::string& kernel,
-                  const Gamma& gamma, double epsilon, double tol, double cache_mb,
-                  std::int64_t max_iter, bool shrinking, const std::string& solver) {
+                  const std::optional<Rows>& rows, const std::vector<double>& c_values,
+                  const std::string& kernel, const Gamma& gamma, double epsilon, double tol,
+                  double cache_mb, std::int64_t max_iter, bool shrinking,
+                  const std::string& solver) {
   check_c_values(c_values);
-  svr::Data data = to_data(x, y, weight);
+  svr::Data data = to_data(x, y, weight, rows);
   const double g = gamma_of(gamma, data);
   const svr::Params p =
       to_params(kernel, g, c_values.front(), epsilon, tol, cache_mb, max_iter, shrinking, solver);
@@ -293,14 +309,14 @@ py::array_t<double> predict(const Array& vectors, const Array& coef, double rho,
 }  // namespace
 
 void bind_svr(py::module_& m) {
-  m.def("svr_fit", &fit, py::arg("X"), py::arg("y"), py::arg("sample_weight"), py::arg("kernel"),
-        py::arg("gamma"), py::arg("C"), py::arg("epsilon"), py::arg("tol"), py::arg("cache_size"),
-        py::arg("max_iter"), py::arg("shrinking"), py::arg("solver"),
+  m.def("svr_fit", &fit, py::arg("X"), py::arg("y"), py::arg("sample_weight"), py::arg("rows"),
+        py::arg("kernel"), py::arg("gamma"), py::arg("C"), py::arg("epsilon"), py::arg("tol"),
+        py::arg("cache_size"), py::arg("max_iter"), py::arg("shrinking"), py::arg("solver"),
         "Fits ε-SVR; returns support, dual_coef, support_vectors, rho and the solver summary.");
   m.def("svr_fit_path", &fit_path, py::arg("X"), py::arg("y"), py::arg("sample_weight"),
-        py::arg("C"), py::arg("kernel"), py::arg("gamma"), py::arg("epsilon"), py::arg("tol"),
-        py::arg("cache_size"), py::arg("max_iter"), py::arg("shrinking"), py::arg("solver"),
-        "Fits ε-SVR at each C in turn, each warm-started from the one before.");
+        py::arg("rows"), py::arg("C"), py::arg("kernel"), py::arg("gamma"), py::arg("epsilon"),
+        py::arg("tol"), py::arg("cache_size"), py::arg("max_iter"), py::arg("shrinking"),
+        py::arg("solver"), "Fits ε-SVR at each C in turn, each warm-started from the one before.");
   m.def("svr_search", &search, py::arg("X"), py::arg("y"), py::arg("sample_weight"),
         py::arg("train_rows"), py::arg("test_rows"), py::arg("C"), py::arg("gamma"),
         py::arg("kernel"), py::arg("epsilon"), py::arg("tol"), py::arg("cache_size"),

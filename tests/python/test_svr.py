@@ -104,6 +104,10 @@ def test_sample_weights_are_scikit_learns(rng):
     assert not set(ours.support_) & set(range(0, 400, 7))
     alone = fogdrift.SVR(C=4, tol=1e-7).fit(X[kept], y[kept], sample_weight=w[kept])
     np.testing.assert_array_equal(ours.predict(X), alone.predict(X))
+    # A warm-started path leaves them out too, its support indices into the whole X.
+    path = fogdrift.SVR(tol=1e-7).fit_path(X, y, C=[1, 4], sample_weight=w)
+    assert not set(path[1].support_) & set(range(0, 400, 7))
+    assert agree(path[1].predict(X), ours.predict(X), y, 1e-6)
     # In another order the solver takes another path to the same optimum.
     order = rng.permutation(400)
     shuffled = fogdrift.SVR(C=4, tol=1e-9).fit(X[order], y[order], sample_weight=w[order])
@@ -249,6 +253,7 @@ def test_the_engine_entry_points_check_their_own_inputs(rng):
     X, y = startup_like(rng, 40)
     args = dict(kernel="rbf", gamma=0.5, C=1.0, epsilon=0.1, tol=1e-3, cache_size=10,
                 max_iter=0, shrinking=True, solver="pairs")
+    args["rows"] = None
     with pytest.raises(ValueError, match="X must be a 2-D array"):
         engine.svr_fit(X[:, 0], y, None, **args)
     with pytest.raises(ValueError, match="y must be a 1-D array with one value per row of X"):
@@ -257,6 +262,11 @@ def test_the_engine_entry_points_check_their_own_inputs(rng):
         engine.svr_fit(X, y, np.ones(3), **args)
     with pytest.raises(ValueError, match="sample 2: weight is 0"):
         engine.svr_fit(X, y, np.where(np.arange(40) == 1, 0.0, 1.0), **args)
+    # Rows taken from X: one weight each, every index inside X.
+    with pytest.raises(ValueError, match="one value per row of X taken"):
+        engine.svr_fit(X, y, np.ones(40), **dict(args, rows=np.arange(10)))
+    with pytest.raises(ValueError, match="rows: an index outside X"):
+        engine.svr_fit(X, y, np.ones(2), **dict(args, rows=np.array([3, 40])))
     with pytest.raises(ValueError, match="option kernel: must be 'rbf' or 'linear'"):
         engine.svr_fit(X, y, None, **dict(args, kernel="poly"))
     with pytest.raises(ValueError, match="option solver: must be 'pairs' or 'libsvm'"):
@@ -264,12 +274,13 @@ def test_the_engine_entry_points_check_their_own_inputs(rng):
     with pytest.raises(ValueError, match="option gamma: must be 'scale', 'auto' or a number"):
         engine.svr_fit(X, y, None, **dict(args, gamma="wide"))
     path_args = {k: v for k, v in args.items() if k != "C"}
+    search_only = {k: v for k, v in path_args.items() if k != "rows"}
     with pytest.raises(ValueError, match="option C: needs at least one value"):
         engine.svr_fit_path(X, y, None, C=[], **path_args)
     with pytest.raises(ValueError, match="option C: needs at least one value"):
         fogdrift.SVR().fit_path(X, y, C=[])
     folds = [np.arange(30, dtype=np.int64)], [np.arange(30, 40, dtype=np.int64)]
-    search_args = dict(path_args, gamma=[0.5], n_jobs=1)
+    search_args = dict(search_only, gamma=[0.5], n_jobs=1)
     with pytest.raises(ValueError, match="a fold's row index is out of range"):
         engine.svr_search(X, y, None, [np.array([0, 99], dtype=np.int64)], folds[1], C=[1.0],
                           **search_args)
