@@ -158,7 +158,17 @@ class SVR(RegressorMixin, BaseEstimator):
         if self.kernel != "linear":
             raise AttributeError("coef_ is only available when using a linear kernel")
         check_is_fitted(self)
-        return self.dual_coef_ @ self.support_vectors_
+        coef = self.dual_coef_ @ self.support_vectors_
+        coef.flags.writeable = False  # derived: an edit would be silently ignored by predict
+        return coef
+
+    @property
+    def class_weight_(self):
+        """Deprecated in scikit-learn 1.2 (empty for regressors); kept for code that reads it."""
+        warnings.warn("Attribute `class_weight_` was deprecated in version 1.2 and will be "
+                      "removed in 1.4.", FutureWarning)
+        check_is_fitted(self)
+        return np.empty(0)
 
     @property
     def n_support_(self):
@@ -234,8 +244,8 @@ class SVR(RegressorMixin, BaseEstimator):
 
 
 class _Weights:
-    """Sample weights as the engine takes them: samples of weight 0 are left out (as a weight of
-    0 means), `rows` maps the kept samples to the training rows, `weights` are theirs; `taken`
+    """Sample weights as the engine takes them: samples of weight ≤ 0 are left out (as
+    scikit-learn's SVR masks them), `rows` maps the kept samples to the training rows, `weights` are theirs; `taken`
     is the rows the engine copies from X (None: all, so X is copied once either way); `checked`
     is every sample's weight and `keep` the mask of the kept ones (both None without weights)."""
 
@@ -247,11 +257,9 @@ class _Weights:
             self.rows = np.arange(n)
             return
         w = _check_sample_weight(sample_weight, X, dtype=np.float64)
-        if np.any(w < 0):
-            raise ValueError("sample_weight must be ≥ 0 (a negative weight has no meaning in SVR)")
-        keep = w > 0
+        keep = w > 0  # zero and negative weights leave the sample out, as in scikit-learn
         if not np.any(keep):
-            raise ValueError("sample_weight is 0 for every sample: nothing to fit")
+            raise ValueError("Invalid input - all samples have zero or negative weights.")
         self.checked, self.keep = w, keep
         self.rows = np.flatnonzero(keep)
         self.taken = None if keep.all() else self.rows
