@@ -82,18 +82,12 @@ std::string_view to_string(Role role) {
   return name_in(kRoleNames, role);
 }
 
-Campaign read_campaign(const fs::path& path) {
-  const fs::path manifest = fs::is_directory(path) ? path / "campaign.json" : path;
-  const std::string file = manifest.string();
-  std::ifstream in(manifest, std::ios::binary);
-  if (!in) {
-    throw InputError(file, 0, 0,
-                     fs::exists(manifest) ? "cannot be read"
-                                          : "not found (a campaign folder holds campaign.json)");
-  }
-  std::stringstream buffer;
-  buffer << in.rdbuf();
-  const std::string text = buffer.str();
+namespace {
+
+// The manifest `text` (named `file` in errors) of a campaign in `dir`; with `files_exist`, each
+// recording's file must be there.
+Campaign parse_manifest(const std::string& text, const std::string& file, const fs::path& dir,
+                        bool files_exist) {
   json doc;
   try {
     doc = json::parse(text);
@@ -112,7 +106,7 @@ Campaign read_campaign(const fs::path& path) {
   }
 
   Campaign c;
-  c.dir = manifest.has_parent_path() ? manifest.parent_path() : fs::path(".");
+  c.dir = dir;
   if (doc.contains("latitude_deg"))
     c.latitude_deg = number_in(doc, "latitude_deg", -90, 90, false, file, "");
   if (doc.contains("generator")) c.generator_json = doc["generator"].dump();
@@ -170,7 +164,7 @@ Campaign read_campaign(const fs::path& path) {
     }
     if (r.contains("notes")) e.notes_json = r["notes"].dump();
     const fs::path rec_path = c.dir / e.file;
-    if (!fs::is_regular_file(rec_path)) {
+    if (files_exist && !fs::is_regular_file(rec_path)) {
       fail(file, path_i + ".file",
            fmt::format("recording \"{}\" does not exist", rec_path.string()));
     }
@@ -185,6 +179,27 @@ Campaign read_campaign(const fs::path& path) {
     c.recordings.push_back(std::move(e));
   }
   return c;
+}
+
+}  // namespace
+
+Campaign read_campaign(const fs::path& path) {
+  const fs::path manifest = fs::is_directory(path) ? path / "campaign.json" : path;
+  const std::string file = manifest.string();
+  std::ifstream in(manifest, std::ios::binary);
+  if (!in) {
+    throw InputError(file, 0, 0,
+                     fs::exists(manifest) ? "cannot be read"
+                                          : "not found (a campaign folder holds campaign.json)");
+  }
+  std::stringstream buffer;
+  buffer << in.rdbuf();
+  return parse_manifest(buffer.str(), file,
+                        manifest.has_parent_path() ? manifest.parent_path() : fs::path("."), true);
+}
+
+Campaign campaign_from_json(const std::string& text, const std::string& source) {
+  return parse_manifest(text, source, fs::path(), false);
 }
 
 std::string manifest_json(const Campaign& c) {

@@ -10,11 +10,15 @@
 
 namespace fogdrift {
 
-CampaignTrainResult train_campaign(const Campaign& campaign, const CampaignTrainOptions& options) {
+namespace {
+
+// Everything but the provenance's file digests, from the training recordings; `manifest` names
+// the campaign in errors.
+CampaignTrainResult train_inputs(const std::vector<RecordingInput>& inputs,
+                                 const std::string& manifest, const CampaignTrainOptions& options) {
   CampaignTrainResult out;
   DatasetOptions& dataset = out.dataset;
   dataset = options.dataset;
-  std::vector<RecordingInput> inputs = read_inputs(campaign, Role::train, Scenario::calibration);
   // Preprocessing fitted to the recordings' sampling, unless the user fixed it.
   const double dt_s = sample_interval_s(inputs.front().recording);
   std::size_t shortest = inputs.front().recording.size();
@@ -49,13 +53,46 @@ CampaignTrainResult train_campaign(const Campaign& campaign, const CampaignTrain
                                  dt_s, shortest, fitted.rates.window_s, defaults.rates.window_s)});
   out.data = build_dataset(inputs, dataset);
   if (out.data.rows == 0)
-    throw InputError((campaign.dir / "campaign.json").string(), 0, 0,
+    throw InputError(manifest, 0, 0,
                      "no calibration recording has role \"train\"; nothing to train on");
   out.trained = train(out.data, dataset, options.train);
+  return out;
+}
+
+}  // namespace
+
+CampaignTrainResult train_campaign(const Campaign& campaign, const CampaignTrainOptions& options) {
+  const std::string manifest = (campaign.dir / "campaign.json").string();
+  CampaignTrainResult out =
+      train_inputs(read_inputs(campaign, Role::train, Scenario::calibration), manifest, options);
   Provenance& p = out.trained.model.provenance;
   p.files.push_back({"campaign.json", sha256_file_hex(campaign.dir / "campaign.json")});
   for (const GroupInfo& g : out.data.groups)
     p.files.push_back({g.file, sha256_file_hex(campaign.dir / g.file)});
+  return out;
+}
+
+CampaignTrainResult train_campaign(const Campaign& campaign,
+                                   const std::vector<Recording>& recordings,
+                                   const CampaignTrainOptions& options) {
+  if (recordings.size() != campaign.recordings.size())
+    throw InputError("campaign", 0, 0,
+                     fmt::format("has {} recordings in its manifest and {} given",
+                                 campaign.recordings.size(), recordings.size()));
+  std::vector<RecordingInput> inputs;
+  for (std::size_t i = 0; i < recordings.size(); ++i) {
+    const CampaignEntry& e = campaign.recordings[i];
+    if (e.scenario == Scenario::calibration && e.role == Role::train)
+      inputs.push_back(recording_input(campaign, e, recordings[i]));
+  }
+  if (inputs.empty())
+    throw InputError("campaign", 0, 0, "no calibration recordings with role train in the campaign");
+  CampaignTrainResult out = train_inputs(inputs, "campaign", options);
+  // The digests of the files these would be: the same as training on the written campaign.
+  Provenance& p = out.trained.model.provenance;
+  p.files.push_back({"campaign.json", sha256_hex(manifest_json(campaign))});
+  for (std::size_t g = 0; g < out.data.groups.size(); ++g)
+    p.files.push_back({out.data.groups[g].file, sha256_hex(to_csv(inputs[g].recording))});
   return out;
 }
 

@@ -2,6 +2,10 @@
 
 #include <gtest/gtest.h>
 
+#include <string>
+#include <utility>
+#include <vector>
+
 #include "fogdrift/error.hpp"
 #include "test_util.hpp"
 
@@ -45,6 +49,29 @@ TEST(Campaign, ManifestRoundTrip) {
   EXPECT_EQ(manifest_json(back), test::read_file(dir / "campaign.json"));
   // The manifest path itself is accepted as well as the folder.
   EXPECT_EQ(read_campaign(dir / "campaign.json").recordings.size(), 2u);
+}
+
+TEST(Campaign, AManifestInMemoryIsCheckedAsAFileButNeedsNoRecordingFiles) {
+  const std::string text =
+      R"({"format":"fogdrift-campaign/1","latitude_deg":30,"recordings":[)"
+      R"({"file":"nowhere/a.csv","scenario":"calibration","role":"train","initial_temp_degc":25}]})";
+  const Campaign c = campaign_from_json(text, "campaign");
+  ASSERT_EQ(c.recordings.size(), 1u);
+  EXPECT_EQ(c.recordings[0].file, "nowhere/a.csv");
+  EXPECT_TRUE(c.dir.empty());
+  EXPECT_EQ(campaign_from_json(manifest_json(c), "campaign").recordings[0].file, "nowhere/a.csv");
+  for (const auto& [bad, rule] : std::vector<std::pair<std::string, std::string>>{
+           {R"({"recordings":[]})", "campaign: format: required field is missing"},
+           {R"({"format":"fogdrift-campaign/1","recordings":[{"file":"a.csv"}]})",
+            "recordings[0].scenario: required field is missing"},
+           {"{", "campaign:1:"}}) {
+    try {
+      campaign_from_json(bad, "campaign");
+      FAIL() << bad;
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find(rule), std::string::npos) << e.what();
+    }
+  }
 }
 
 TEST(Campaign, MissingManifestNamesTheFile) {

@@ -71,5 +71,30 @@ TEST(TrainCampaign, ReportsTheChoicesItMadeAndTheFieldBehindEach) {
   EXPECT_THROW(train_campaign(read_campaign(dir.path() / "none"), o), InputError);
 }
 
+TEST(TrainCampaign, ACampaignInMemoryGivesTheWrittenCampaignsModelByteForByte) {
+  test::TempDir dir;
+  const auto sc = small_campaign();
+  sim::write_campaign(dir.path() / "cal", sc, false);
+  const CampaignTrainResult on_disk =
+      train_campaign(read_campaign(dir.path() / "cal"), svr_options());
+  // The manifest as text, its recordings never written: the digests are of the files they
+  // would be, so the model is the same.
+  const Campaign held = campaign_from_json(manifest_json(sc.campaign), "campaign");
+  EXPECT_TRUE(held.dir.empty());
+  const CampaignTrainResult in_memory = train_campaign(held, sc.recordings, svr_options());
+  EXPECT_EQ(to_json(in_memory.trained.model), to_json(on_disk.trained.model));
+
+  auto fewer = sc.recordings;
+  fewer.pop_back();
+  try {
+    train_campaign(held, fewer, svr_options());
+    FAIL() << "a recording short was trained";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("6 recordings in its manifest and 5 given"),
+              std::string::npos)
+        << e.what();
+  }
+}
+
 }  // namespace
 }  // namespace fogdrift

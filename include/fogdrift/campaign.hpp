@@ -65,6 +65,11 @@ struct Campaign {
 /// recording file is missing or listed twice. Recordings themselves are not read here.
 Campaign read_campaign(const std::filesystem::path& path);
 
+/// A manifest given as text whose recordings are held elsewhere (in memory, as Python's
+/// fogdrift.simulate returns them): checked as read_campaign checks a file, errors naming
+/// `source`, but for the recordings' files, which need not exist; `dir` is empty.
+Campaign campaign_from_json(const std::string& text, const std::string& source);
+
 /// The manifest as JSON text (2-space indentation, fields in documented order).
 std::string manifest_json(const Campaign& campaign);
 

@@ -45,4 +45,12 @@ struct CampaignTrainResult {
 /// file) and OptionError (naming the library's field) as the parts it calls do.
 CampaignTrainResult train_campaign(const Campaign& campaign, const CampaignTrainOptions& options);
 
+/// The same on a campaign held in memory: `recordings[i]` is the data of
+/// `campaign.recordings[i]` (campaign_from_json). The provenance records the digests of the
+/// files they would be written as (manifest_json, to_csv), so a campaign trained in memory and
+/// the same campaign written and trained give the same model bytes.
+CampaignTrainResult train_campaign(const Campaign& campaign,
+                                   const std::vector<Recording>& recordings,
+                                   const CampaignTrainOptions& options);
+
 }  // namespace fogdrift

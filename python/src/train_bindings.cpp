@@ -26,14 +26,42 @@ const TrainOptions kTrain;
 const opt::RunOptions kRun;
 const tune::SearchSpace kSpace;
 
-py::dict train(const std::filesystem::path& campaign_path, const std::string& method,
-               const std::string& fitness, const std::string& cv, std::size_t folds,
-               const std::string& features, const std::string& differentiator,
-               const py::object& block_s, const py::object& rate_window_s, std::size_t population,
-               std::size_t iterations, std::uint64_t seed, unsigned threads, double c_min,
-               double c_max, double sigma_min, double sigma_max, double epsilon,
-               bool search_epsilon, bool auto_box, bool denoise, std::size_t hidden,
-               std::size_t max_degree, const py::object& progress) {
+// A campaign in memory: the manifest's fields (as campaign.json holds them) with "data", one
+// recording (a mapping of columns) per entry of "recordings".
+struct HeldCampaign {
+  Campaign campaign;
+  std::vector<Recording> recordings;
+};
+
+HeldCampaign held_campaign(const py::object& given) {
+  py::dict manifest;
+  for (const auto& [key, value] : given.cast<py::dict>())
+    if (key.cast<std::string>() != "data") manifest[key] = value;
+  if (!given.contains("data"))
+    throw InputError("campaign", 0, 0,
+                     "data: required in a campaign given as a dict (one recording per entry of "
+                     "recordings, as fogdrift.simulate returns it)");
+  const auto text = py::module_::import("json").attr("dumps")(manifest).cast<std::string>();
+  HeldCampaign h{campaign_from_json(text, "campaign"), {}};
+  std::size_t i = 0;
+  for (const py::handle recording : given["data"]) {
+    const std::string name =
+        i < h.campaign.recordings.size()
+            ? "campaign data[" + std::to_string(i) + "] (" + h.campaign.recordings[i].file + ")"
+            : "campaign data[" + std::to_string(i) + "]";
+    h.recordings.push_back(to_recording(py::reinterpret_borrow<py::object>(recording), name, true));
+    ++i;
+  }
+  return h;
+}
+
+py::dict train(const py::object& campaign, const std::string& method, const std::string& fitness,
+               const std::string& cv, std::size_t folds, const std::string& features,
+               const std::string& differentiator, const py::object& block_s,
+               const py::object& rate_window_s, std::size_t population, std::size_t iterations,
+               std::uint64_t seed, unsigned threads, double c_min, double c_max, double sigma_min,
+               double sigma_max, double epsilon, bool search_epsilon, bool auto_box, bool denoise,
+               std::size_t hidden, std::size_t max_degree, const py::object& progress) {
   CampaignTrainOptions o;
   TrainOptions& t = o.train;
   t.method = parse_method(method, "method");
@@ -78,12 +106,22 @@ py::dict train(const std::filesystem::path& campaign_path, const std::string& me
         return false;
       }
     };
+  // A folder (or its campaign.json), or a campaign held in memory.
+  std::optional<std::filesystem::path> path;
+  std::optional<HeldCampaign> held;
+  if (py::isinstance<py::dict>(campaign))
+    held = held_campaign(campaign);
+  else
+    path = campaign.cast<std::filesystem::path>();
   std::optional<CampaignTrainResult> r;
   {
     py::gil_scoped_release release;
     ThreadPool pool(threads);
     t.tune.pool = &pool;
-    r.emplace(train_campaign(read_campaign(campaign_path), o));
+    if (held)
+      r.emplace(train_campaign(held->campaign, held->recordings, o));
+    else
+      r.emplace(train_campaign(read_campaign(*path), o));
   }
   if (callback_error) std::rethrow_exception(callback_error);
   const TrainSummary& s = r->trained.summary;
@@ -130,7 +168,10 @@ void bind_train(py::module_& m) {
         py::arg("hidden") = kTrain.mlp.hidden, py::arg("max_degree") = kTrain.poly_max_degree,
         py::arg("progress") = py::none(),
         "Trains a compensation model on a campaign's training recordings, as `fogdrift train` "
-        "does; returns {'model': Model, 'summary': dict}.");
+        "does; returns {'model': Model, 'summary': dict}. campaign: a folder (or its "
+        "campaign.json), or a campaign in memory: a dict with the manifest's fields and 'data', "
+        "one recording per entry (what fogdrift.simulate returns); the same model bytes either "
+        "way.");
 }
 
 }  // namespace fogdrift::python

@@ -235,3 +235,21 @@ def test_a_causal_model_streams_its_batch_drift_without_a_warning(campaign, recw
     streamed = fogdrift.StreamingCompensator(causal, 1.0).run(columns)
     np.testing.assert_array_equal(streamed["drift_dph"], causal.predict(columns)["drift_dph"])
     assert not [w for w in recwarn if issubclass(w.category, UserWarning)]
+
+
+def test_a_campaign_in_memory_trains_the_folders_model(campaign):
+    d, py = campaign
+    on_disk = fogdrift.train(d / "cal", method="svr")["model"].to_json()
+    assert fogdrift.train(py, method="svr")["model"].to_json() == on_disk
+    # Recordings as DataFrames, as a user's own loading code gives them.
+    pandas = pytest.importorskip("pandas")
+    frames = dict(py, data=[pandas.DataFrame(r) for r in py["data"]])
+    assert fogdrift.train(frames, method="svr")["model"].to_json() == on_disk
+    with pytest.raises(ValueError, match="data: required in a campaign given as a dict"):
+        fogdrift.train({k: v for k, v in py.items() if k != "data"})
+    with pytest.raises(ValueError, match="has 6 recordings in its manifest and 5 given"):
+        fogdrift.train(dict(py, data=py["data"][:5]))
+    broken = [dict(r) for r in py["data"]]
+    del broken[2]["temp_fog_degc"]
+    with pytest.raises(ValueError, match=r"campaign data\[2\] \(cal_r1_40C.csv\): missing"):
+        fogdrift.train(dict(py, data=broken))
