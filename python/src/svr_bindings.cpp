@@ -258,14 +258,8 @@ py::array_t<double> search(const Array& x, const Array& y, const std::optional<A
       const std::size_t f = task / ng, gi = task % ng;
       const svr::WorkspacePool::Lease workspace = spaces.borrow();
       const auto path = svr::fit_c_path(*sets[f], params[f][gi], ascending, workspace.get());
-      for (std::size_t k = 0; k < nc; ++k) {
-        double s = 0;
-        for (const std::size_t row : test[f]) {
-          const double e = path[k].model.predict(all.row(row)) - all.y[row];
-          s += e * e;
-        }
-        sse[(gi * nc + by_c[k]) * folds + f] = s;
-      }
+      const std::vector<double> errors = svr::path_squared_errors(*sets[f], path, all, test[f]);
+      for (std::size_t k = 0; k < nc; ++k) sse[(gi * nc + by_c[k]) * folds + f] = errors[k];
     });
   }
   py::array_t<double> out({static_cast<py::ssize_t>(ng), static_cast<py::ssize_t>(nc),

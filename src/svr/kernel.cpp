@@ -155,6 +155,18 @@ void TrainingSet::kernel_row(const Kernel& kernel, std::size_t i, float* out) co
   }
 }
 
+void TrainingSet::kernel_row_of(const Kernel& kernel, const double* x, float* out) const {
+  const std::size_t n = data_.rows, d = data_.cols;
+  if (kernel.type == KernelType::linear) {
+    detail::loops().linear_row(x, feature_major_.data(), n, n, d, out);
+    return;
+  }
+  double sq = 0;  // summed in feature order, as the set's own norms
+  for (std::size_t k = 0; k < d; ++k) sq += x[k] * x[k];
+  detail::loops().rbf_row(x, sq, feature_major_.data(), n, squared_norms_.data(), n, d,
+                          kernel.gamma, out);
+}
+
 double TrainingSet::kernel_diagonal(const Kernel& kernel, std::size_t i) const {
   const double sq = squared_norms_[i];
   if (kernel.type == KernelType::linear) return sq;

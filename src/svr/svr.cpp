@@ -175,6 +175,61 @@ std::vector<double> Model::predict(const Data& data, ThreadPool* pool) const {
   return out;
 }
 
+std::vector<double> path_squared_errors(const TrainingSet& set, std::span<const FitResult> path,
+                                        const Data& data, std::span<const std::size_t> rows) {
+  const std::size_t l = set.size(), models = path.size();
+  if (data.cols != set.dims())
+    throw std::invalid_argument(fmt::format(
+        "path_squared_errors: data has {} features, the training set {}", data.cols, set.dims()));
+  // Each model's coefficient of every training sample (eq. 6: α⁺ − α⁻), over the samples that
+  // are a support vector of some model.
+  std::vector<std::size_t> used;
+  std::vector<double> beta;  // used.size() × models
+  for (std::size_t i = 0; i < l; ++i) {
+    bool any = false;
+    for (const FitResult& r : path) any = any || r.dual.alpha[i] != r.dual.alpha[i + l];
+    if (!any) continue;
+    used.push_back(i);
+    for (const FitResult& r : path) beta.push_back(r.dual.alpha[i] - r.dual.alpha[i + l]);
+  }
+  std::vector<double> sse(models, 0.0), f(models);
+  const Kernel kernel = path.empty() ? Kernel{} : path.front().model.kernel;
+  const std::size_t d = set.dims();
+  // Linear: each model's primal weights w = Σ β_i·x_i, in double (float kernel values would
+  // lose digits to the cancellation in Σ β_i·K_i at large C).
+  std::vector<double> w;
+  if (kernel.type == KernelType::linear) {
+    w.assign(models * d, 0.0);
+    for (std::size_t u = 0; u < used.size(); ++u)
+      for (std::size_t m = 0; m < models; ++m)
+        for (std::size_t c = 0; c < d; ++c)
+          w[m * d + c] += beta[u * models + m] * set.data().row(used[u])[c];
+  }
+  std::vector<float> k(kernel.type == KernelType::linear ? 0 : l);
+  for (const std::size_t row : rows) {
+    if (row >= data.rows)
+      throw std::invalid_argument("path_squared_errors: a row index is out of range");
+    const double* x = data.row(row);
+    std::fill(f.begin(), f.end(), 0.0);
+    if (kernel.type == KernelType::linear) {
+      for (std::size_t m = 0; m < models; ++m)
+        for (std::size_t c = 0; c < d; ++c) f[m] += w[m * d + c] * x[c];
+    } else {
+      set.kernel_row_of(kernel, x, k.data());
+      for (std::size_t u = 0; u < used.size(); ++u) {
+        const double kv = k[used[u]];
+        const double* b = beta.data() + u * models;
+        for (std::size_t m = 0; m < models; ++m) f[m] += b[m] * kv;
+      }
+    }
+    for (std::size_t m = 0; m < models; ++m) {
+      const double e = (f[m] - path[m].model.rho) - data.y[row];
+      sse[m] += e * e;
+    }
+  }
+  return sse;
+}
+
 FitResult fit(const TrainingSet& set, const Params& params, const DualSolution* warm,
               Workspace* workspace) {
   validate(params);

@@ -7,6 +7,7 @@
 #include <cfloat>
 #include <cmath>
 #include <cstring>
+#include <vector>
 
 #include "fogdrift/random.hpp"
 #include "svr/datasets.hpp"
@@ -37,6 +38,34 @@ TEST(KernelRows, MatchLibsvmsFormulaInDouble) {
       }
     }
     EXPECT_LE(differ, 1);
+  }
+}
+
+TEST(KernelRows, ThePointsOwnRowIsTheSamplesRow) {
+  // A point equal to sample i gives sample i's row, float for float; any point, LIBSVM's formula.
+  const Data d = testing::smooth(300, 5, 0.0, 2);
+  const TrainingSet set(d);
+  for (const Kernel k : {Kernel::rbf_sigma(0.8), Kernel::linear()}) {
+    std::vector<float> of_point(d.rows), of_sample(d.rows);
+    for (std::size_t i = 0; i < d.rows; i += 29) {
+      set.kernel_row_of(k, d.row(i), of_point.data());
+      set.kernel_row(k, i, of_sample.data());
+      EXPECT_EQ(std::memcmp(of_point.data(), of_sample.data(), d.rows * sizeof(float)), 0);
+    }
+    const std::vector<double> x{0.3, -1.2, 0.5, 2.0, -0.1};
+    set.kernel_row_of(k, x.data(), of_point.data());
+    for (std::size_t j = 0; j < d.rows; j += 17) {
+      double dot = 0, sq_x = 0, sq_j = 0;
+      for (std::size_t f = 0; f < d.cols; ++f) {
+        dot += x[f] * d.row(j)[f];
+        sq_x += x[f] * x[f];
+        sq_j += d.row(j)[f] * d.row(j)[f];
+      }
+      EXPECT_NEAR(
+          of_point[j],
+          k.type == KernelType::linear ? dot : std::exp(-k.gamma * ((sq_x + sq_j) - 2 * dot)),
+          1e-6);
+    }
   }
 }
 

@@ -206,6 +206,35 @@ TEST(SvrVsLibsvm, EdgeCases) {
   }
 }
 
+TEST(SvrWarmStart, APathsTestErrorsArePredictionsErrors) {
+  const Data d = testing::startup_like(600, 5);
+  std::vector<std::size_t> train_rows, test_rows;
+  for (std::size_t i = 0; i < d.rows; ++i) (i % 3 == 0 ? test_rows : train_rows).push_back(i);
+  const TrainingSet set(d.subset(train_rows));
+  for (const Kernel kernel : {Kernel::rbf_sigma(1.0), Kernel::linear()}) {
+    Params base;
+    base.kernel = kernel;
+    const std::vector<double> cs{0.5, 5, 50};
+    const auto path = fit_c_path(set, base, cs);
+    const std::vector<double> sse = path_squared_errors(set, path, d, test_rows);
+    ASSERT_EQ(sse.size(), cs.size());
+    for (std::size_t k = 0; k < cs.size(); ++k) {
+      double expected = 0;
+      for (const std::size_t row : test_rows) {
+        const double e = path[k].model.predict(d.row(row)) - d.y[row];
+        expected += e * e;
+      }
+      // RBF: float kernel values, as the solver's; linear: primal weights in double.
+      const double tolerance = kernel.type == KernelType::linear ? 1e-9 : 1e-5;
+      EXPECT_NEAR(sse[k], expected, tolerance * expected) << "C=" << cs[k];
+    }
+  }
+  const std::vector<std::size_t> outside{d.rows};
+  EXPECT_THROW(
+      path_squared_errors(set, fit_c_path(set, Params{}, std::vector<double>{1.0}), d, outside),
+      std::invalid_argument);
+}
+
 TEST(SvrWarmStart, CPathMatchesColdFitsAndReusesTheGradient) {
   const Data d = testing::startup_like(720, 5);
   const TrainingSet set(d);

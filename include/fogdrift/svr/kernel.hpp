@@ -100,6 +100,9 @@ class TrainingSet {
 
   /// Writes row i of the kernel matrix (size() floats). Safe to call from several threads.
   void kernel_row(const Kernel& kernel, std::size_t i, float* out) const;
+  /// The kernel between a point `x` (dims() values, not a sample of the set) and every sample,
+  /// as kernel_row forms a row from the features (size() floats). Safe from several threads.
+  void kernel_row_of(const Kernel& kernel, const double* x, float* out) const;
   /// K(x_i, x_i) in double, LIBSVM's QD.
   double kernel_diagonal(const Kernel& kernel, std::size_t i) const;
   /// ‖x_i‖², summed over the features in order, as the kernel rows use it.
