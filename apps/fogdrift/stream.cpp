@@ -75,6 +75,15 @@ void run(const StreamArgs& a) {
     throw OptionError("--rate-hz", fmt::format("{} is outside (0, 1000] Hz", a.rate_hz));
   with_flags(fault_flags(), [&] { validate(a.faults); });
   const CompensationModel model = load_compensation_model(a.model, {a.allow_edited});
+  // Streamed, a model trained on centred rates sees causal ones, noisier than those it learned:
+  // a tuned SVR's drift then departs from its batch drift by more than the drift itself
+  // (docs/compensation.md). The stream still runs; the user is told, as export-c tells.
+  if (model.dataset.preprocessing.rates.causality != signal::Causality::causal)
+    std::cerr << fmt::format(
+        "fogdrift stream: warning: {} was trained with centred temperature rates; streamed, it "
+        "sees causal ones and its drift differs from compensate's (train with --differentiator "
+        "causal for the instrument)\n",
+        a.model);
   const double dt_s = 1.0 / a.rate_hz;
   StreamingCompensator compensator(model, dt_s, {!a.no_guard, a.faults});
 

@@ -355,6 +355,9 @@ check "stream clean recording unflagged" bash -c "awk -F, 'NR>1 && \$15!=0{bad=1
 check "stream from a file" run 0 "$fd" stream "$work/causal.json" "$rec20" --rate-hz 1
 check "stream file output equals stdin's" cmp -s "$work/out" "$work/streamed.csv"
 check "stream clean: nothing on stderr" test ! -s "$work/err"
+# A model trained on centred rates streams, with a warning.
+check "stream a centred model" run 0 "$fd" stream "$work/svr.json" "$rec20" --rate-hz 1
+check "stream centred warning" err_has "svr.json was trained with centred temperature rates"
 # A wrong rate makes every step a gap: bridged and flagged, or with --strict an error.
 check "stream wrong rate" run 0 "$fd" stream "$work/causal.json" "$rec20" --rate-hz 2
 check "stream wrong rate summary" err_has "samples flagged (gap"
