@@ -72,6 +72,14 @@ py::dict features(const py::object& recording, const std::optional<std::string>&
       throw OptionError("spec",
                         "give a feature spec or a model (whose features are used), "
                         "not both");
+    const bool auto_window =
+        py::isinstance<py::str>(rate_window_s) && rate_window_s.cast<std::string>() == "auto";
+    const bool auto_block =
+        py::isinstance<py::str>(block_s) && block_s.cast<std::string>() == "auto";
+    if (differentiator != "centred" || !auto_window || !auto_block)
+      throw OptionError("model",
+                        "its own preprocessing is used; leave differentiator, "
+                        "rate_window_s and block_s at their defaults");
     s = model->dataset.features;
     o = model->dataset.preprocessing;
   } else {

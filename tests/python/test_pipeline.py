@@ -125,6 +125,8 @@ def test_features_are_block_means_of_the_temperatures_and_their_rates(campaign):
         fogdrift.features(rec, block_s=15.5)
     with pytest.raises(ValueError, match="give a feature spec or a model"):
         fogdrift.features(rec, "T", model=m)
+    with pytest.raises(ValueError, match="option model: its own preprocessing is used"):
+        fogdrift.features(rec, model=m, block_s=20)
 
 
 def without(d, *keys):
