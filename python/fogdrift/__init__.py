@@ -11,6 +11,7 @@ The package wraps fogdrift's C++ library (docs/python.md):
   predict the drift of a recording and compensate it; ``read_recording`` and
   ``write_recording`` — recordings as dicts of NumPy arrays.
 * ``simulate``, ``denoise``, ``features``, ``evaluate`` (Table 2), ``northfind`` (Table 3),
+  ``find_north`` (the findings of one recording),
   ``allan_deviation`` and ``noise_terms``, ``StreamingCompensator`` — the rest of the pipeline,
   each as the command of the same name computes it.
 * ``fogdrift.train_fleet(campaigns, client=...)`` — one model per unit's campaign, in parallel on
@@ -19,12 +20,13 @@ The package wraps fogdrift's C++ library (docs/python.md):
   process (about ``cache_size`` per thread that fits); this gives it back and returns the bytes.
 """
 from ._fogdrift import (Model, StreamingCompensator, __version__, allan_deviation, denoise,
-                        evaluate, features, noise_terms, northfind, read_recording,
+                        evaluate, features, find_north, noise_terms, northfind, read_recording,
                         release_memory, simulate, train, write_recording)
 from .fleet import train_fleet
 from .search import SVRGridSearchCV
 from .svr import SVR
 
 __all__ = ["Model", "SVR", "SVRGridSearchCV", "StreamingCompensator", "allan_deviation",
-           "denoise", "evaluate", "features", "noise_terms", "northfind", "read_recording",
-           "release_memory", "simulate", "train", "train_fleet", "write_recording", "__version__"]
+           "denoise", "evaluate", "features", "find_north", "noise_terms", "northfind",
+           "read_recording", "release_memory", "simulate", "train", "train_fleet",
+           "write_recording", "__version__"]

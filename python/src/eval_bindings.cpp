@@ -18,6 +18,7 @@
 #include "fogdrift/eval/allan.hpp"
 #include "fogdrift/eval/evaluation.hpp"
 #include "fogdrift/eval/findings.hpp"
+#include "fogdrift/eval/northfind.hpp"
 
 namespace py = pybind11;
 
@@ -87,6 +88,47 @@ py::object northfind(const py::object& campaign_path, const CompensationModel* m
   return out;
 }
 
+// Every four-position finding of one recording: the field's case, a unit on its turntable with
+// no manifest and no truth.
+py::list find_north(const py::object& recording, double latitude_deg,
+                    const CompensationModel* model, bool guarded, double tolerance_deg,
+                    double settle_s, double min_dwell_s) {
+  if (!(latitude_deg >= -90 && latitude_deg <= 90))
+    throw OptionError("latitude_deg", "must be within [-90, 90]");
+  const Recording r = to_recording(recording, "(recording)");
+  if (!r.table_deg || !r.accel_x_g || !r.accel_y_g)
+    throw InputError(r.source.empty() ? "(recording)" : r.source, 0, 0,
+                     "four-position north-finding needs the columns table_deg, accel_x_g and "
+                     "accel_y_g");
+  const eval::SegmentationOptions options{tolerance_deg, settle_s, min_dwell_s};
+  std::vector<eval::FourPositionReadings> findings;
+  std::vector<eval::FourPositionSolution> solutions;
+  {
+    py::gil_scoped_release release;
+    std::vector<double> gyro;
+    if (model != nullptr) {
+      gyro = model->predict_dph(r, guarded);
+      for (std::size_t i = 0; i < gyro.size(); ++i) gyro[i] = r.gyro_dph[i] - gyro[i];
+    }
+    findings = eval::segment_findings(r, options, model != nullptr ? &gyro : nullptr);
+    for (const auto& f : findings) solutions.push_back(eval::solve_four_position(f, latitude_deg));
+  }
+  py::list out;
+  for (std::size_t k = 0; k < findings.size(); ++k) {
+    py::dict d;
+    d["azimuth_deg"] = solutions[k].azimuth_deg;
+    d["pitch_deg"] = solutions[k].pitch_deg;
+    d["roll_deg"] = solutions[k].roll_deg;
+    d["horizontal_rate_dph"] = solutions[k].horizontal_rate_dph;
+    d["start_s"] = findings[k].start_s[0];
+    d["end_s"] = findings[k].end_s[3];
+    d["gyro_dph"] =
+        py::cast(std::vector<double>(findings[k].gyro_dph.begin(), findings[k].gyro_dph.end()));
+    out.append(d);
+  }
+  return out;
+}
+
 // A rate signal: 1-D and finite (allan.hpp leaves that check to its caller).
 Array rate_signal(const py::object& rate) {
   const auto x = Array::ensure(rate);
@@ -146,6 +188,18 @@ void bind_eval(py::module_& m) {
         "prints it: a dict with each recording's per-finding azimuth errors (°) and 'table3' "
         "(RMSE per initial temperature; on simulated recordings the floor with the true drift "
         "subtracted and the share of the removable error removed).");
+  const eval::SegmentationOptions segmentation;
+  m.def("find_north", &find_north, py::arg("recording"), py::arg("latitude_deg"),
+        py::arg("model") = nullptr, py::kw_only(), py::arg("guarded") = true,
+        py::arg("tolerance_deg") = segmentation.tolerance_deg,
+        py::arg("settle_s") = segmentation.settle_s,
+        py::arg("min_dwell_s") = segmentation.min_dwell_s,
+        "Every four-position finding of one recording (a path or a mapping of columns with "
+        "table_deg, accel_x_g and accel_y_g), raw or with the model's drift subtracted: a list "
+        "of dicts with azimuth_deg (of the FOG axis at table 0°, [0, 360)), pitch_deg, "
+        "roll_deg, horizontal_rate_dph, start_s, end_s and the four positions' mean gyro_dph. "
+        "Positions are found from table_deg (within tolerance_deg, settle_s after arriving, "
+        "held at least min_dwell_s), as northfind finds them.");
   m.def("allan_deviation", &allan_deviation, py::arg("rate"), py::arg("dt_s") = 1.0,
         py::arg("points_per_decade") = 0,
         "Overlapping Allan deviation of a rate signal sampled every dt_s seconds (IEEE Std 952; "

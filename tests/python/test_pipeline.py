@@ -165,6 +165,23 @@ def test_northfind_is_the_command_lines_table_3(campaign, cli):
     assert len(got["recordings"][0]["compensated_error_deg"]) == 2
     with pytest.raises(ValueError, match="no northfind or stable recordings"):
         fogdrift.northfind(d / "cal")
+    # One recording on its own, as in the field: the same findings, raw and compensated.
+    entry = got["recordings"][0]
+    manifest = json.loads((d / "nf" / "campaign.json").read_text())
+    recording = d / "nf" / entry["file"]
+    for model, key in [(None, "raw_error_deg"), (m, "compensated_error_deg")]:
+        findings = fogdrift.find_north(recording, manifest["latitude_deg"], model)
+        assert len(findings) == 2
+        for f, error in zip(findings, entry[key]):
+            off = (f["azimuth_deg"] - entry["true_azimuth_deg"] + 180) % 360 - 180
+            assert off == pytest.approx(error, abs=1e-9)
+            assert f["start_s"] < f["end_s"] and len(f["gyro_dph"]) == 4
+    columns = fogdrift.read_recording(recording)
+    del columns["table_deg"]
+    with pytest.raises(ValueError, match="needs the columns table_deg"):
+        fogdrift.find_north(columns, 30.0)
+    with pytest.raises(ValueError, match="option latitude_deg"):
+        fogdrift.find_north(recording, 95.0)
 
 
 def overlapping_adev(rate, dt, m):
