@@ -76,7 +76,7 @@ void run(const StreamArgs& a) {
   with_flags(fault_flags(), [&] { validate(a.faults); });
   const CompensationModel model = load_compensation_model(a.model, {a.allow_edited});
   // Streamed, a model trained on centred rates sees causal ones, noisier than those it learned:
-  // a tuned SVR's drift then departs from its batch drift by more than the drift itself
+  // a tuned SVR's drift then departs from its batch drift by about the drift's own STD
   // (docs/compensation.md). The stream still runs; the user is told, as export-c tells.
   if (model.dataset.preprocessing.rates.causality != signal::Causality::causal)
     std::cerr << fmt::format(

@@ -57,7 +57,7 @@ std::unique_ptr<Stream> make_stream(const CompensationModel& model, double dt_s,
     throw OptionError(field.starts_with("faults.") ? field.substr(7) : field, e.message());
   }
   // Streamed, a model trained on centred rates sees causal ones, noisier than those it learned:
-  // a tuned SVR's drift then departs from its batch drift by more than the drift itself
+  // a tuned SVR's drift then departs from its batch drift by about the drift's own STD
   // (docs/python.md, step 6).
   if (model.dataset.preprocessing.rates.causality != signal::Causality::causal)
     if (PyErr_WarnEx(PyExc_UserWarning,
