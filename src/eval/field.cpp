@@ -22,14 +22,6 @@ double mean_over(const std::vector<FieldRecording>& rows, Get get) {
   return s / static_cast<double>(rows.size());
 }
 
-// RMSE of the findings after subtracting `drift` from the gyro.
-double rmse_after(Recording rec, const std::vector<double>& drift, double latitude_deg,
-                  double true_azimuth_deg) {
-  for (std::size_t k = 0; k < drift.size() && k < rec.gyro_dph.size(); ++k)
-    rec.gyro_dph[k] -= drift[k];
-  return rms(northfind_errors_deg(rec, latitude_deg, true_azimuth_deg));
-}
-
 }  // namespace
 
 double FieldSummary::raw_mean_rmse_deg() const {
@@ -70,14 +62,13 @@ FieldSummary field_summary(const Campaign& campaign, const std::vector<Recording
     FieldRecording r;
     r.file = e.file;
     r.initial_temp_degc = e.initial_temp_degc;
-    r.raw_rmse_deg = rmse_after(rec, {}, campaign.latitude_deg.value(), *e.true_azimuth_deg);
-    r.floor_rmse_deg = rec.has_column("drift_true_dph")
-                           ? rmse_after(rec, rec.numeric_column("drift_true_dph"),
-                                        campaign.latitude_deg.value(), *e.true_azimuth_deg)
-                           : kNaN;
-    r.comp_rmse_deg =
-        drift ? rmse_after(rec, drift(rec), campaign.latitude_deg.value(), *e.true_azimuth_deg)
-              : kNaN;
+    const double latitude = campaign.latitude_deg.value(), truth = *e.true_azimuth_deg;
+    r.raw_rmse_deg = rms(northfind_errors_deg(rec, latitude, truth));
+    r.floor_rmse_deg =
+        rec.has_column("drift_true_dph")
+            ? rms(northfind_errors_deg(rec, rec.numeric_column("drift_true_dph"), latitude, truth))
+            : kNaN;
+    r.comp_rmse_deg = drift ? rms(northfind_errors_deg(rec, drift(rec), latitude, truth)) : kNaN;
     if (r.comp_rmse_deg > r.raw_rmse_deg) ++out.worse_than_raw;
     out.recordings.push_back(std::move(r));
   }

@@ -55,20 +55,16 @@ CampaignFindings find_north(const Campaign& campaign, const CompensationModel* m
       throw InputError(manifest, 0, 0,
                        fmt::format("{}: a north-finding recording needs true_azimuth_deg", e.file));
     const double latitude = campaign.latitude_deg.value();
-    Recording rec = read_recording(campaign.path_of(e));
-    RecordingFindings r{e.file, e.scenario, e.initial_temp_degc, *e.true_azimuth_deg, {}, {}, {}};
-    r.raw_error_deg = northfind_errors_deg(rec, latitude, *e.true_azimuth_deg);
-    if (rec.has_column("drift_true_dph")) {
-      Recording truth = rec;
-      const std::vector<double> d = rec.numeric_column("drift_true_dph");
-      for (std::size_t i = 0; i < d.size(); ++i) truth.gyro_dph[i] -= d[i];
-      r.floor_error_deg = northfind_errors_deg(truth, latitude, *e.true_azimuth_deg);
-    }
-    if (model != nullptr) {
-      const std::vector<double> drift = model->predict_dph(rec, guarded);
-      for (std::size_t i = 0; i < drift.size(); ++i) rec.gyro_dph[i] -= drift[i];
-      r.compensated_error_deg = northfind_errors_deg(rec, latitude, *e.true_azimuth_deg);
-    }
+    const Recording rec = read_recording(campaign.path_of(e));
+    const double truth = *e.true_azimuth_deg;
+    RecordingFindings r{e.file, e.scenario, e.initial_temp_degc, truth, {}, {}, {}};
+    r.raw_error_deg = northfind_errors_deg(rec, latitude, truth);
+    if (rec.has_column("drift_true_dph"))
+      r.floor_error_deg =
+          northfind_errors_deg(rec, rec.numeric_column("drift_true_dph"), latitude, truth);
+    if (model != nullptr)
+      r.compensated_error_deg =
+          northfind_errors_deg(rec, model->predict_dph(rec, guarded), latitude, truth);
     out.recordings.push_back(std::move(r));
   }
   if (out.recordings.empty())

@@ -1,6 +1,8 @@
 #include "fogdrift/eval/startup.hpp"
 
 #include <algorithm>
+#include <stdexcept>
+#include <string>
 
 #include "fogdrift/inspect.hpp"
 
@@ -34,15 +36,37 @@ StartupStats startup_stats(const std::vector<double>& time_s, const std::vector<
   return s;
 }
 
-std::vector<double> northfind_errors_deg(const Recording& rec, double latitude_deg,
-                                         double true_azimuth_deg,
-                                         const SegmentationOptions& options) {
+namespace {
+
+std::vector<double> errors_of(const Recording& rec, const std::vector<double>* gyro_dph,
+                              double latitude_deg, double true_azimuth_deg,
+                              const SegmentationOptions& options) {
   std::vector<double> errors;
-  for (const auto& finding : segment_findings(rec, options)) {
+  for (const auto& finding : segment_findings(rec, options, gyro_dph)) {
     const auto solution = solve_four_position(finding, latitude_deg);
     errors.push_back(angle_difference_deg(solution.azimuth_deg, true_azimuth_deg));
   }
   return errors;
+}
+
+}  // namespace
+
+std::vector<double> northfind_errors_deg(const Recording& rec, double latitude_deg,
+                                         double true_azimuth_deg,
+                                         const SegmentationOptions& options) {
+  return errors_of(rec, nullptr, latitude_deg, true_azimuth_deg, options);
+}
+
+std::vector<double> northfind_errors_deg(const Recording& rec, const std::vector<double>& drift_dph,
+                                         double latitude_deg, double true_azimuth_deg,
+                                         const SegmentationOptions& options) {
+  if (drift_dph.size() != rec.gyro_dph.size())
+    throw std::invalid_argument("northfind_errors_deg: " + std::to_string(drift_dph.size()) +
+                                " drift values for " + std::to_string(rec.gyro_dph.size()) +
+                                " samples");
+  std::vector<double> gyro(rec.gyro_dph.size());
+  for (std::size_t i = 0; i < gyro.size(); ++i) gyro[i] = rec.gyro_dph[i] - drift_dph[i];
+  return errors_of(rec, &gyro, latitude_deg, true_azimuth_deg, options);
 }
 
 }  // namespace fogdrift::eval

@@ -55,13 +55,10 @@ std::vector<double> northfind_rmse(const sim::SimulatedCampaign& nf, const Drift
   std::vector<double> out;
   for (std::size_t i = 0; i < nf.recordings.size(); ++i) {
     const CampaignEntry& e = nf.campaign.recordings[i];
-    Recording rec = nf.recordings[i];
-    if (drift) {
-      const std::vector<double> d = drift(rec);
-      for (std::size_t k = 0; k < d.size(); ++k) rec.gyro_dph[k] -= d[k];
-    }
-    out.push_back(eval::rms(eval::northfind_errors_deg(rec, nf.campaign.latitude_deg.value(),
-                                                       e.true_azimuth_deg.value())));
+    const Recording& rec = nf.recordings[i];
+    const double latitude = nf.campaign.latitude_deg.value(), truth = e.true_azimuth_deg.value();
+    out.push_back(eval::rms(drift ? eval::northfind_errors_deg(rec, drift(rec), latitude, truth)
+                                  : eval::northfind_errors_deg(rec, latitude, truth)));
   }
   return out;
 }

@@ -6,9 +6,12 @@
 
 #include <cmath>
 #include <nlohmann/json.hpp>
+#include <stdexcept>
+#include <vector>
 
 #include "fogdrift/error.hpp"
 #include "fogdrift/eval/northfind.hpp"
+#include "fogdrift/eval/startup.hpp"
 #include "fogdrift/sim/scenarios.hpp"
 #include "test_util.hpp"
 
@@ -53,6 +56,20 @@ TEST(Findings, PoolsTheStartUpsByTemperatureWithTheirFloor) {
   EXPECT_EQ(j["table3"]["temps_degc"], nlohmann::json({-16.0, 28.0}));
   EXPECT_EQ(j["table3"]["raw_rmse_deg"][1].get<double>(), f.table3[1].raw_rmse_deg);
   EXPECT_EQ(j["recordings"][0]["true_drift_subtracted_error_deg"].size(), 2u);
+}
+
+TEST(Findings, ADriftIsSubtractedFromTheGyroAndMustMatchIt) {
+  const sim::SimulatedCampaign sc = sim::simulate_northfind({}, two_temperatures());
+  const Recording& rec = sc.recordings[0];
+  const double latitude = sc.campaign.latitude_deg.value();
+  const double truth = sc.campaign.recordings[0].true_azimuth_deg.value();
+  const std::vector<double> drift = rec.numeric_column("drift_true_dph");
+  Recording subtracted = rec;
+  for (std::size_t i = 0; i < drift.size(); ++i) subtracted.gyro_dph[i] -= drift[i];
+  EXPECT_EQ(northfind_errors_deg(rec, drift, latitude, truth),
+            northfind_errors_deg(subtracted, latitude, truth));
+  const std::vector<double> short_drift(drift.begin(), drift.end() - 1);
+  EXPECT_THROW(northfind_errors_deg(rec, short_drift, latitude, truth), std::invalid_argument);
 }
 
 TEST(Findings, StableRecordingsStandApartFromTable3) {

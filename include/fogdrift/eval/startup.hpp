@@ -31,4 +31,12 @@ std::vector<double> northfind_errors_deg(const Recording& recording, double lati
                                          double true_azimuth_deg,
                                          const SegmentationOptions& options = {});
 
+/// The same with `drift_dph` (one value per sample) subtracted from the gyro first: a model's
+/// compensation, or the simulator's true drift for the floor. Throws std::invalid_argument when
+/// `drift_dph` has another length than the recording.
+std::vector<double> northfind_errors_deg(const Recording& recording,
+                                         const std::vector<double>& drift_dph, double latitude_deg,
+                                         double true_azimuth_deg,
+                                         const SegmentationOptions& options = {});
+
 }  // namespace fogdrift::eval
