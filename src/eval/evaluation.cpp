@@ -12,10 +12,9 @@
 namespace fogdrift::eval {
 namespace {
 
-AllanComparison allan_comparison(const CompensationModel& model, const Recording& rec,
-                                 bool guarded) {
+// From the drift the model predicted for the recording (RecordingPrediction::drift_dph).
+AllanComparison allan_comparison(const Recording& rec, const std::vector<double>& drift) {
   const double dt = sample_interval_s(rec);
-  const std::vector<double> drift = model.predict_dph(rec, guarded);
   std::vector<double> comp(rec.gyro_dph.size());
   for (std::size_t i = 0; i < comp.size(); ++i) comp[i] = rec.gyro_dph[i] - drift[i];
   return {noise_terms(allan_deviation(rec.gyro_dph, dt, 10)),
@@ -69,7 +68,7 @@ Evaluation evaluate(const CompensationModel& model, const std::vector<RecordingI
     r.metrics = per[g];
     const RecordingPrediction p = model.predict(rec, options.guarded);
     r.novelty = summarize_novelty(p.novelty, p.weight);
-    if (options.allan) r.allan = allan_comparison(model, rec, options.guarded);
+    if (options.allan) r.allan = allan_comparison(rec, p.drift_dph);
     r.duration_s = rec.time_s.back() - rec.time_s.front();
     e.recordings.push_back(std::move(r));
   }
