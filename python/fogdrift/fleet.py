@@ -51,8 +51,12 @@ def train_fleet(campaigns, *, client=None, out=None, evaluate=True, progress=Non
     """
     campaigns = [os.fspath(c) for c in campaigns]
     options = dict(options, threads=threads)
-    if "progress" in options:
-        raise ValueError("option progress: a fleet reports per unit (train_fleet's progress)")
+    names = [os.path.basename(os.path.normpath(c[:-len("campaign.json")]
+                                               if c.endswith("campaign.json") else c))
+             for c in campaigns]
+    if out is not None and len(set(names)) != len(names):
+        raise ValueError("option out: two campaigns have the same folder name; their models "
+                         "would overwrite each other")
     results = [None] * len(campaigns)
     if client is None:
         for i, c in enumerate(campaigns):
@@ -72,12 +76,6 @@ def train_fleet(campaigns, *, client=None, out=None, evaluate=True, progress=Non
                 progress(done, len(campaigns), results[i])
     if out is not None:
         os.makedirs(out, exist_ok=True)
-        names = [os.path.basename(os.path.normpath(c[:-len("campaign.json")]
-                                                   if c.endswith("campaign.json") else c))
-                 for c in campaigns]
-        if len(set(names)) != len(names):
-            raise ValueError("option out: two campaigns have the same folder name; their "
-                             "models would overwrite each other")
         for name, r in zip(names, results):
             if r["model"] is not None:
                 r["model"].save(os.path.join(out, name + ".json"))

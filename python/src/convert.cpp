@@ -14,20 +14,26 @@ namespace py = pybind11;
 
 namespace fogdrift::python {
 
-py::array_t<double> to_array(std::vector<double>&& values, std::size_t rows, std::size_t columns) {
+namespace {
+
+// An array of `shape` and `strides` (bytes) over `values`' buffer, which it takes over.
+py::array_t<double> owning(std::vector<double>&& values, std::vector<py::ssize_t> shape,
+                           std::vector<py::ssize_t> strides) {
   auto* owned = new std::vector<double>(std::move(values));
   py::capsule owner(owned, [](void* p) { delete static_cast<std::vector<double>*>(p); });
-  const auto r = static_cast<py::ssize_t>(rows), c = static_cast<py::ssize_t>(columns);
-  return py::array_t<double>(
-      {r, c},
-      {c * static_cast<py::ssize_t>(sizeof(double)), static_cast<py::ssize_t>(sizeof(double))},
-      owned->data(), owner);
+  return py::array_t<double>(std::move(shape), std::move(strides), owned->data(), owner);
+}
+
+}  // namespace
+
+py::array_t<double> to_array(std::vector<double>&& values, std::size_t rows, std::size_t columns) {
+  const auto c = static_cast<py::ssize_t>(columns), item = py::ssize_t{sizeof(double)};
+  return owning(std::move(values), {static_cast<py::ssize_t>(rows), c}, {c * item, item});
 }
 
 py::array_t<double> to_array(std::vector<double>&& values) {
-  auto* owned = new std::vector<double>(std::move(values));
-  py::capsule owner(owned, [](void* p) { delete static_cast<std::vector<double>*>(p); });
-  return py::array_t<double>(static_cast<py::ssize_t>(owned->size()), owned->data(), owner);
+  const auto n = static_cast<py::ssize_t>(values.size());
+  return owning(std::move(values), {n}, {py::ssize_t{sizeof(double)}});
 }
 
 py::array_t<double> copy_to_array(const std::vector<double>& values) {

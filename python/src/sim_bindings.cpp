@@ -6,11 +6,9 @@
 #include <pybind11/stl/filesystem.h>
 
 #include <filesystem>
-#include <fstream>
 #include <functional>
 #include <map>
 #include <optional>
-#include <sstream>
 #include <string>
 
 #include "bindings.hpp"
@@ -18,6 +16,7 @@
 #include "fogdrift/error.hpp"
 #include "fogdrift/sim/instrument.hpp"
 #include "fogdrift/sim/scenarios.hpp"
+#include "fogdrift/text_file.hpp"
 
 namespace py = pybind11;
 
@@ -110,11 +109,7 @@ sim::Instrument instrument_of(const py::object& instrument) {
     return sim::instrument_from_json(text, "instrument");
   }
   const auto path = instrument.cast<std::filesystem::path>();
-  std::ifstream in(path);
-  if (!in) throw InputError(path.string(), 0, 0, "cannot be opened for reading");
-  std::stringstream text;
-  text << in.rdbuf();
-  return sim::instrument_from_json(text.str(), path.string());
+  return sim::instrument_from_json(read_text_file(path), path.string());
 }
 
 py::dict simulate(const std::string& scenario, const std::optional<std::filesystem::path>& out,

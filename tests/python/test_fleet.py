@@ -53,3 +53,16 @@ def test_a_local_cluster_trains_the_serial_runs_models(units, tmp_path):
     assert bad["model"] is None and "missing required column 'temp_fog_degc'" in bad["error"]
     assert not (tmp_path / "models" / "unit4.json").exists()
 
+
+
+
+def test_models_that_would_overwrite_each_other_are_refused_before_training(units, tmp_path):
+    paths, _ = units
+    other = tmp_path / "elsewhere" / paths[0].name
+    other.parent.mkdir()
+    other.symlink_to(paths[0], target_is_directory=True)
+    trained = []
+    with pytest.raises(ValueError, match="option out: two campaigns have the same folder name"):
+        train_fleet([paths[0], other], out=tmp_path / "models", method="svr",
+                    progress=lambda done, total, r: trained.append(done))
+    assert trained == [] and not (tmp_path / "models").exists()

@@ -55,6 +55,7 @@ def test_simulate_options_are_the_librarys_and_checked():
             (dict(temps_degc="warm"), "option temps_degc: has the wrong type"),
             (dict(approaches="sunny"), "option approaches"),
             (dict(instrument={"fog": {"bias_dph": "x"}}), "instrument"),
+            (dict(instrument="/nonexistent/unit.json"), "unit.json: cannot open"),
     ]:
         with pytest.raises(ValueError, match=message):
             fogdrift.simulate(**kwargs)
@@ -272,3 +273,25 @@ def test_a_campaign_in_memory_trains_the_folders_model(campaign):
     del broken[2]["temp_fog_degc"]
     with pytest.raises(ValueError, match=r"campaign data\[2\] \(cal_r1_40C.csv\): missing"):
         fogdrift.train(dict(py, data=broken))
+
+
+def test_malformed_inputs_are_value_errors_naming_the_rule(campaign):
+    d, py = campaign
+    m = fogdrift.Model.load(d / "m.json")
+    rec = py["data"][0]
+    with pytest.raises(ValueError, match="option data: no recordings to evaluate on"):
+        fogdrift.evaluate(m, [])
+    with pytest.raises(ValueError, match="a recording must be a path or a mapping"):
+        fogdrift.evaluate(m, [42])
+    with pytest.raises(ValueError, match="option campaign: must be a campaign folder"):
+        fogdrift.northfind(d / "cal" / py["recordings"][0]["file"])
+    with pytest.raises(ValueError, match="option rate: must be a 1-D array"):
+        fogdrift.allan_deviation(np.zeros((10, 2)))
+    with pytest.raises(ValueError, match="option rate: must be a 1-D array"):
+        fogdrift.noise_terms(np.zeros((10, 2)))
+    with pytest.warns(UserWarning):
+        stream = fogdrift.StreamingCompensator(m, 1.0)
+    with pytest.raises(ValueError, match="missing column time_s"):
+        stream.run({"gyro_dph": rec["gyro_dph"]})
+    with pytest.raises(ValueError, match=r"column gyro_dph: has 10 values, time_s \d+"):
+        stream.run(dict(rec, gyro_dph=rec["gyro_dph"][:10]))
