@@ -75,9 +75,17 @@ std::string c_guard_part(const CompensationModel& model, const std::string& pref
       "static const double {0}_guard_recover_s = {4};\n\n",
       prefix, c_number(model.guard.radius), c_number(g.full_at), c_number(g.zero_at),
       c_number(g.recover_s));
+  std::string warmup;
+  for (std::size_t k = 0; k < model.guard.dims; ++k)
+    warmup += fmt::format("{}{}", k ? ", " : "",
+                          k < model.guard.warmup_inputs.size() ? model.guard.warmup_inputs[k] : 1);
+  h += fmt::format("static const unsigned char {}_guard_warmup_inputs[{}] = {{{}}};\n\n", prefix,
+                   model.guard.dims, warmup);
   h += fmt::format(
-      "/* nu for one row of features in their own units. */\n"
-      "static inline double {0}_novelty(const double features[{1}_N_FEATURES]) {{\n"
+      "/* nu for one row of features in their own units; while the rate window fills (warming),\n"
+      " * over the features that read no rate only (fogdrift docs/field.md, \"The guard at\n"
+      " * power-on\"). */\n"
+      "static inline double {0}_novelty_of(const double features[{1}_N_FEATURES], int warming) {{\n"
       "  double x[{1}_N_FEATURES], best = HUGE_VAL;\n"
       "  int i, k;\n"
       "  for (k = 0; k < {1}_N_FEATURES; ++k)\n"
@@ -86,12 +94,16 @@ std::string c_guard_part(const CompensationModel& model, const std::string& pref
       "    const double* p = {0}_guard_points + i * {1}_N_FEATURES;\n"
       "    double s = 0.0;\n"
       "    for (k = 0; k < {1}_N_FEATURES; ++k) {{\n"
-      "      const double e = x[k] - p[k];\n"
+      "      const double e = (warming && !{0}_guard_warmup_inputs[k]) ? 0.0 : x[k] - p[k];\n"
       "      s += e * e;\n"
       "    }}\n"
       "    if (s < best) best = s;\n"
       "  }}\n"
       "  return sqrt(best) / {0}_guard_radius;\n"
+      "}}\n\n"
+      "/* nu for one row of features whose rates come from a full window. */\n"
+      "static inline double {0}_novelty(const double features[{1}_N_FEATURES]) {{\n"
+      "  return {0}_novelty_of(features, 0);\n"
       "}}\n\n"
       "/* The share of the correction a sample of novelty nu asks for (0 when nu is not a number). "
       "*/\n"
@@ -383,7 +395,8 @@ static inline double @P@_compensated_dph(@P@_state* s, double gyro_dph) {
 
 constexpr std::string_view kGuardC = R"(#if @U@_GUARD
     {
-      const double v = @P@_target_weight(s->novelty = @P@_novelty(f));
+      const double v =
+          @P@_target_weight(s->novelty = @P@_novelty_of(f, s->count < @U@_RATE_WINDOW));
       if (!any_bridged) {
         const double dt =
             s->guard_started ? (t - s->last_time_s > 0.0 ? t - s->last_time_s : 0.0) : 0.0;

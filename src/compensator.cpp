@@ -186,7 +186,10 @@ StreamOutput StreamingCompensator::update(const Sample& s) noexcept {
   } else {
     for (std::size_t c = 0; c < columns_.size(); ++c)
       features_[c] = columns_[c].value(temp, rate, t);
-    last_ = model_.predict(features_, work_);
+    // While the rate window fills, novelty leaves the rates out (guard.hpp, "Warm-up").
+    bool warming = false;
+    for (std::size_t k = 0; k < 3; ++k) warming |= thermometers_[k].read && !rates_[k].settled();
+    last_ = model_.predict(features_, work_, warming);
     drift = last_.drift_dph;
     if (any_bridged) flags |= fault::bridged;
     if (guarded_) {

@@ -93,6 +93,7 @@ Dataset build_dataset(const std::vector<RecordingInput>& inputs, const DatasetOp
     const auto y = drift_target(input, options, info, out.warnings);
     const auto y_blocks = signal::block_average(y, table.block);
     const std::size_t g = out.groups.size();
+    info.warm_rows = table.warm_rows;
     out.groups.push_back(std::move(info));
     out.x.insert(out.x.end(), table.x.begin(), table.x.end());
     out.y.insert(out.y.end(), y_blocks.begin(), y_blocks.end());

@@ -192,6 +192,12 @@ FeatureSpec default_feature_spec() {
   return FeatureSpec::parse("T,dT,grad");
 }
 
+std::vector<bool> FeatureSpec::rate_inputs() const {
+  std::vector<bool> out;
+  for (const FeatureColumn& c : columns()) out.push_back(c.reads_rate());
+  return out;
+}
+
 bool FeatureSpec::reads(Thermometer k) const {
   const std::vector<FeatureColumn> plan = columns();
   return std::any_of(plan.begin(), plan.end(), [k](const FeatureColumn& c) { return c.reads(k); });
@@ -317,6 +323,8 @@ FeatureTable compute_features(const Recording& recording, const FeatureSpec& spe
   table.block = block;
   table.time_s = signal::block_average(recording.time_s, block);
   table.rows = table.time_s.size();
+  const std::size_t warm = signal::warmup_samples(options.rates, dt);  // samples
+  table.warm_rows = std::min(table.rows, (warm + block - 1) / block);
   const std::size_t cols = columns.size();
   table.x.resize(table.rows * cols);
   for (std::size_t c = 0; c < cols; ++c) {

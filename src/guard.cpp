@@ -95,11 +95,28 @@ NoveltyGuard NoveltyGuard::fit(std::span<const double> z, std::size_t dims,
   return g;
 }
 
-double NoveltyGuard::novelty(std::span<const double> z) const noexcept {
+double NoveltyGuard::novelty(std::span<const double> z, bool warming) const noexcept {
   double best = std::numeric_limits<double>::infinity();
-  for (std::size_t k = 0; k < size(); ++k)
-    best = std::min(best, squared_distance(z.data(), prototypes.data() + k * dims, dims));
+  if (warming && warmup_inputs.size() == dims) {
+    for (std::size_t k = 0; k < size(); ++k) {
+      const double* p = prototypes.data() + k * dims;
+      double s = 0.0;
+      for (std::size_t j = 0; j < dims; ++j) {
+        const double e = warmup_inputs[j] ? z[j] - p[j] : 0.0;
+        s += e * e;
+      }
+      best = std::min(best, s);
+    }
+  } else {
+    for (std::size_t k = 0; k < size(); ++k)
+      best = std::min(best, squared_distance(z.data(), prototypes.data() + k * dims, dims));
+  }
   return std::sqrt(best) / radius;
+}
+
+void NoveltyGuard::set_warmup_inputs(const std::vector<bool>& reads_rate) {
+  warmup_inputs.assign(reads_rate.size(), 0);
+  for (std::size_t j = 0; j < reads_rate.size(); ++j) warmup_inputs[j] = reads_rate[j] ? 0 : 1;
 }
 
 double NoveltyGuard::target_weight(double nu) const noexcept {

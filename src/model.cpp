@@ -40,7 +40,7 @@ Method parse_method(const std::string& text, const std::string& option) {
 }
 
 DriftPrediction CompensationModel::predict(std::span<const double> features,
-                                           std::span<double> work) const {
+                                           std::span<double> work, bool warming) const {
   const std::size_t d = inputs();
   for (std::size_t k = 0; k < d; ++k)
     work[k] = (features[k] - x_scaler.mean[k]) / x_scaler.scale[k];
@@ -50,7 +50,7 @@ DriftPrediction CompensationModel::predict(std::span<const double> features,
   if (guard.empty()) {
     out.novelty = std::numeric_limits<double>::quiet_NaN();
   } else {
-    out.novelty = guard.novelty(work.first(d));
+    out.novelty = guard.novelty(work.first(d), warming);
     out.target_weight = guard.target_weight(out.novelty);
   }
   return out;
@@ -74,11 +74,14 @@ std::vector<double> CompensationModel::predict_dph(const Dataset& data, bool gua
                                 fmt::join(data.feature_names, ","), fmt::join(feature_names, ",")));
   std::vector<double> out(data.rows), work(inputs());
   GuardFilter filter;
+  std::size_t in_group = 0;  // the row's place in its recording
   for (std::size_t i = 0; i < data.rows; ++i) {
-    const DriftPrediction p = predict(data.row(i), work);
+    in_group = (i == 0 || data.group[i] != data.group[i - 1]) ? 0 : in_group + 1;
+    const bool warming = in_group < data.groups[data.group[i]].warm_rows;
+    const DriftPrediction p = predict(data.row(i), work, warming);
     out[i] = p.drift_dph;
     if (guarded && !guard.empty()) {
-      if (i == 0 || data.group[i] != data.group[i - 1]) filter.reset();
+      if (in_group == 0) filter.reset();
       const double w = filter.update(data.time_s[i], p.target_weight, guard.settings.recover_s);
       out[i] = guarded_dph(p.drift_dph, w);
     }
@@ -107,7 +110,8 @@ RecordingPrediction CompensationModel::predict(const Recording& recording, bool 
   const std::size_t d = inputs();
   GuardFilter filter;
   for (std::size_t i = 0; i < table.rows; ++i) {
-    const DriftPrediction p = predict(std::span<const double>(table.x.data() + i * d, d), work);
+    const DriftPrediction p =
+        predict(std::span<const double>(table.x.data() + i * d, d), work, i < table.warm_rows);
     out.model_drift_dph[i] = p.drift_dph;
     out.novelty[i] = p.novelty;
     out.weight[i] = 1.0;
@@ -288,6 +292,7 @@ CompensationModel compensation_model_from_json(const std::string& text, const st
       m.guard.radius = g.at("radius").get<double>();
       m.guard.prototypes = g.at("points").get<std::vector<double>>();
       m.guard.dims = m.feature_names.size();
+      m.guard.set_warmup_inputs(m.dataset.features.rate_inputs());
       validate(m.guard.settings);
     }
     where = "provenance";

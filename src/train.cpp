@@ -172,6 +172,7 @@ TrainResult train(const Dataset& data, const DatasetOptions& dataset, const Trai
     labels[i] = k;
   }
   m.guard = NoveltyGuard::fit(z, data.cols(), labels, options.guard);
+  m.guard.set_warmup_inputs(m.dataset.features.rate_inputs());
   p.fitness = s.fitness;
   p.fitness_value = s.fitness_value;
   p.hyperparameters = s.hyperparameters;

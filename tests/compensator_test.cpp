@@ -122,13 +122,14 @@ TEST(StreamingCompensator, EqualsTheBatchPath) {
   }
 }
 
-// A start-up unlike the calibration (soaked, where the model saw only the chamber's protocol)
-// trips the novelty guard; the guarded drift is the same in the batch path, the streaming
-// compensator and the compiled C header, and where the weight is 0 the correction is the constant
-// mean drift only.
+// A start-up unlike the calibration (soaked at 45 °C, where the model saw only the chamber's
+// protocol at 0, 10 and 20 °C) trips the novelty guard from the first sample, while the rate
+// window still fills; the guarded drift is the same in the batch path, the streaming compensator
+// and the compiled C header, and where the weight is 0 the correction is the constant mean drift
+// only.
 TEST(StreamingCompensator, GuardsNovelStartUpsAlikeInEveryPath) {
   sim::CalibrationOptions co;
-  co.temps_degc = {0, 20, 40};
+  co.temps_degc = {0, 10, 20};
   co.repetitions = 2;
   co.test_repetitions = 0;
   co.powered_s = 900;
@@ -164,6 +165,7 @@ TEST(StreamingCompensator, GuardsNovelStartUpsAlikeInEveryPath) {
     }
   }
   EXPECT_GT(zero, test.size() / 2) << "the soaked start-up should be novel to this model";
+  EXPECT_EQ(batch.weight[0], 0.0) << "novel temperatures count during the warm-up too";
 
   StreamingCompensator stream(model, 1.0);
   for (std::size_t i = 0; i < test.size(); ++i) {
@@ -184,6 +186,52 @@ TEST(StreamingCompensator, GuardsNovelStartUpsAlikeInEveryPath) {
     scale = std::max(scale, std::abs(batch.drift_dph[i]));
   }
   EXPECT_LE(worst, 1e-12 * scale);
+}
+
+// The differentiator's warm-up does not switch a causal model off (docs/field.md, "The guard at
+// power-on"): on start-ups like its calibration, at a temperature between two of it, the guard
+// keeps the full correction from the first sample, where the first rates come from fits to one,
+// two, three samples. Before the warm-up rule, ν reached 10-50 there and the latched weight was
+// 0 for the whole start-up.
+TEST(StreamingCompensator, WarmUpDoesNotSwitchACausalModelOff) {
+  sim::CalibrationOptions co;
+  co.temps_degc = {0, 20, 40};
+  co.repetitions = 2;
+  co.test_repetitions = 0;
+  co.powered_s = 900;
+  const sim::SimulatedCampaign sc = sim::simulate_calibration(sim::Instrument{}, co);
+  std::vector<RecordingInput> inputs;
+  for (std::size_t i = 0; i < sc.recordings.size(); ++i)
+    inputs.push_back(recording_input(sc.campaign, sc.campaign.recordings[i], sc.recordings[i]));
+  DatasetOptions dataset;
+  dataset.preprocessing.rates.causality = signal::Causality::causal;
+  TrainOptions o;
+  o.method = Method::svr;
+  const CompensationModel model = train(build_dataset(inputs, dataset), dataset, o).model;
+
+  sim::NorthfindOptions no;
+  no.temps_degc = {10, 30};
+  no.findings = 2;
+  for (const Recording& test : sim::simulate_northfind(sim::Instrument{}, no).recordings) {
+    StreamingCompensator stream(model, 1.0);
+    double warm_max = 0;
+    for (std::size_t i = 0; i < test.size(); ++i) {
+      stream.update({test.time_s[i], test.gyro_dph[i], test.temp_fog_degc[i],
+                     test.temp_acc1_degc[i], test.temp_acc2_degc[i]});
+      if (i < 120) warm_max = std::max(warm_max, stream.novelty());
+      ASSERT_EQ(stream.weight(), 1.0) << test.source << " sample " << i;
+    }
+    EXPECT_LT(warm_max, model.guard.settings.full_at) << test.source;
+    // The batch path and the C header keep the correction too, sample for sample.
+    const RecordingPrediction batch = model.predict(test);
+    EXPECT_EQ(batch.novelty.back(), stream.novelty());
+    const std::vector<double> in_c = c_header_stream(model, test);
+    ASSERT_EQ(in_c.size(), test.size());
+    for (std::size_t i = 0; i < test.size(); ++i) {
+      ASSERT_EQ(batch.weight[i], 1.0) << i;
+      ASSERT_NEAR(in_c[i], batch.drift_dph[i], 1e-12 * std::abs(batch.drift_dph[i]) + 1e-15) << i;
+    }
+  }
 }
 
 }  // namespace

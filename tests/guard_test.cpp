@@ -25,6 +25,27 @@ TEST(NoveltyGuard, FarthestPointsAndCoverRadiusInClosedForm) {
   EXPECT_DOUBLE_EQ(g.novelty(outside), 3.0);  // 6 from 10, over r = 2
 }
 
+// During the differentiator's warm-up ν leaves out the inputs that read a rate (guard.hpp,
+// "Warm-up"): prototypes (0, 0) and (10, 0), r = 1 (one prototype each, no labels: the radius
+// floor, set here by hand), input 1 a rate. (3, 4) is 5 from (0, 0) in full and 3 without the
+// rate; (12, −100) is 2 from (10, 0) without it.
+TEST(NoveltyGuard, WarmingUpLeavesTheRatesOut) {
+  NoveltyGuard g;
+  g.dims = 2;
+  g.prototypes = {0, 0, 10, 0};
+  g.radius = 1;
+  g.set_warmup_inputs({false, true});
+  ASSERT_EQ(g.warmup_inputs, (std::vector<unsigned char>{1, 0}));
+  const double a[] = {3, 4}, b[] = {12, -100};
+  EXPECT_DOUBLE_EQ(g.novelty(a), 5.0);
+  EXPECT_DOUBLE_EQ(g.novelty(a, true), 3.0);
+  EXPECT_DOUBLE_EQ(g.novelty(b, true), 2.0);
+  EXPECT_GT(g.novelty(b), 99.0);
+  // Without a mask (a model of no rate inputs, or none set), warming changes nothing.
+  g.warmup_inputs.clear();
+  EXPECT_DOUBLE_EQ(g.novelty(a, true), 5.0);
+}
+
 TEST(NoveltyGuard, EveryTrainingRowIsInside) {
   Rng rng(7);
   std::vector<double> z(3000 * 4);

@@ -42,6 +42,8 @@ struct GroupInfo {
   double initial_temp_degc = 0;
   std::string target;         ///< how y was formed: "input_rate", "earth_rate" or "mean"
   double input_rate_dph = 0;  ///< the rate subtracted (its mean over the recording), °/h
+  /// Its first rows in the causal differentiator's warm-up (FeatureTable::warm_rows).
+  std::size_t warm_rows = 0;
 };
 
 /// One recording with what is known about its input.

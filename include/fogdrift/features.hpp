@@ -74,6 +74,12 @@ struct FeatureColumn {
     const bool two = term == FeatureTerm::gradient || term == FeatureTerm::gradient_rate;
     return a == k || (two && b == k);
   }
+  /// Whether it reads the rate of any thermometer: an input the differentiator's warm-up
+  /// disturbs (docs/field.md, "The guard at power-on").
+  bool reads_rate() const noexcept {
+    return term == FeatureTerm::rate || term == FeatureTerm::gradient_rate ||
+           term == FeatureTerm::temp_rate_product;
+  }
   /// Whether it reads the rate of thermometer `k`.
   bool reads_rate(Thermometer k) const noexcept {
     return (term == FeatureTerm::rate || term == FeatureTerm::temp_rate_product) ? a == k
@@ -103,6 +109,8 @@ struct FeatureSpec {
   std::vector<FeatureColumn> columns() const;
   /// Whether some input reads thermometer `k` (a unit without it cannot use the spec).
   bool reads(Thermometer k) const;
+  /// Per input, whether it reads a temperature rate (FeatureColumn::reads_rate).
+  std::vector<bool> rate_inputs() const;
 };
 
 /// The paper's inputs, "T,dT,grad" (9 features).
@@ -140,6 +148,9 @@ struct FeatureTable {
   std::vector<double> x;       ///< rows x names.size(), row-major
   std::vector<double> time_s;  ///< block-centre time since power-on, s
   std::size_t block = 1;       ///< samples per block
+  /// Leading rows holding a sample whose rates the causal differentiator took from fewer than
+  /// W samples (signal::warmup_samples); 0 with the centred differentiator.
+  std::size_t warm_rows = 0;
 };
 
 /// The median sample interval of `recording`, after checking that every interval is within 1 %

@@ -32,6 +32,14 @@
 // uncompensated gyro shifted by a constant. Inputs that are not numbers are near no prototype
 // (ν = ∞, or NaN) and so v = 0: the correction stops, latched like any other, rather than
 // passing a NaN on.
+//
+// Warm-up (docs/field.md, "The guard at power-on"). A causal differentiator's first W − 1 rates
+// come from fits to fewer samples: at power-on they are noise, ν of 10-50 on a start-up like
+// the calibration's, and the latch would switch the model off for the whole start-up. While the
+// rate window fills, ν is therefore measured over the inputs that read no rate (temperatures,
+// gradients, time):  ν_warm = min_p ‖z_S − p_S‖ / r,  S = those inputs (`warmup_inputs`).
+// Novel temperatures or gradients still reduce the correction from the first sample; novel
+// rates do so from the first full window on. ν_warm ≤ ν, with the same unit r.
 #pragma once
 
 #include <cstddef>
@@ -66,6 +74,9 @@ struct NoveltyGuard {
   std::size_t dims = 0;
   std::vector<double> prototypes;  ///< K × dims, row-major, standardised units
   double radius = 0;               ///< the unit r of ν, standardised units (> 0)
+  /// Per input, 1 where ν counts it during the differentiator's warm-up: the inputs that read no
+  /// rate. Derived from the model's features (set_warmup_inputs), not stored in the model file.
+  std::vector<unsigned char> warmup_inputs;
 
   /// Fits the region to `z`, rows × dims standardised training inputs (rows ≥ 1); `labels`
   /// (one per row, e.g. the index of its calibration temperature, or empty) set the unit r.
@@ -74,8 +85,11 @@ struct NoveltyGuard {
                           const GuardSettings& settings = {});
   bool empty() const { return prototypes.empty(); }
   std::size_t size() const { return dims ? prototypes.size() / dims : 0; }
-  /// ν of one standardised input row (dims values).
-  double novelty(std::span<const double> z) const noexcept;
+  /// ν of one standardised input row (dims values); during the warm-up (`warming`) ν_warm, over
+  /// `warmup_inputs` only (all inputs when that is empty).
+  double novelty(std::span<const double> z, bool warming = false) const noexcept;
+  /// Marks the inputs ν_warm counts: `reads_rate[k]` true for an input that reads a rate.
+  void set_warmup_inputs(const std::vector<bool>& reads_rate);
   /// v for a novelty ν (the policy above); 0 for NaN.
   double target_weight(double novelty) const noexcept;
 };

@@ -79,7 +79,10 @@ struct CompensationModel {
 
   std::size_t inputs() const { return feature_names.size(); }
   /// One row of features in their own units, unguarded; `work` holds inputs() doubles.
-  DriftPrediction predict(std::span<const double> features, std::span<double> work) const;
+  /// `warming`: the row's rates come from the causal differentiator's warm-up, and its novelty
+  /// is measured without them (guard.hpp).
+  DriftPrediction predict(std::span<const double> features, std::span<double> work,
+                          bool warming = false) const;
   /// predict(...).drift_dph.
   double predict_dph(std::span<const double> features, std::span<double> work) const;
   /// ȳ + w·(f − ȳ): a drift f with the share w of its correction applied (guard.hpp).

@@ -69,6 +69,10 @@ std::size_t window_samples(const DifferentiatorOptions& options, double dt_s) {
   return w % 2 == 1 ? w : w + 1;
 }
 
+std::size_t warmup_samples(const DifferentiatorOptions& options, double dt_s) {
+  return options.causality == Causality::causal ? window_samples(options, dt_s) - 1 : 0;
+}
+
 void validate(const DifferentiatorOptions& options, double dt_s, std::size_t n_samples) {
   if (!(dt_s > 0) || !std::isfinite(dt_s)) {
     throw OptionError("dt_s", "the sample interval must be positive and finite");

@@ -69,6 +69,10 @@ struct PaperOptions {
   /// Empty: no table.
   std::vector<sim::Approach> start_ups{sim::Approach::calibration, sim::Approach::soaked,
                                        sim::Approach::warm, sim::Approach::ramping};
+  /// Adds the causal SSA-SVR row to the start-up conditions table: the tuned C, σ and ε refitted
+  /// on causal rates (`fogdrift train --differentiator causal`), the model `stream` and the C
+  /// header run; one SVR fit per seed.
+  bool causal = true;
   ThreadPool* pool = nullptr;  ///< parallel fits; results do not depend on it
   /// Called at every stage with what is being done and the fraction of the run done, [0, 1].
   std::function<void(const std::string& stage, double fraction)> progress;
@@ -106,6 +110,9 @@ struct SeedRun {
   /// Under each of PaperOptions::start_ups: mean raw RMSE and the floor (true drift subtracted;
   /// NaN without it).
   std::vector<double> start_up_raw_rmse_deg, start_up_floor_rmse_deg;
+  /// The same for SSA-SVR as firmware runs it (PaperOptions::causal): its C, σ and ε refitted on
+  /// causal rates and applied causally, sample by sample, guarded and not. Empty when not run.
+  std::vector<double> causal_start_up_rmse_deg, causal_start_up_unguarded_rmse_deg;
   std::vector<MethodRun> methods;  ///< in kPaperMethods order
   double seconds = 0;
   const MethodRun& method(Method m) const;  ///< throws std::out_of_range if not run

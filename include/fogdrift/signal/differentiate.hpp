@@ -57,6 +57,10 @@ struct DifferentiatorProperties {
   double noise_gain_per_s = 0;  ///< output std per unit input std of white noise, 1/s
 };
 
+/// Samples at the start of a signal whose rate the causal differentiator takes from fewer than W
+/// samples (W − 1); 0 for the centred one, whose every output is a fit to W samples.
+std::size_t warmup_samples(const DifferentiatorOptions& options, double dt_s);
+
 /// The interior filter's delay and noise gain (see the file comment).
 DifferentiatorProperties differentiator_properties(const DifferentiatorOptions& options,
                                                    double dt_s);
@@ -77,6 +81,9 @@ class CausalDifferentiator {
   double push(double x) noexcept;
   std::size_t window() const { return w_; }
   double dt_s() const { return dt_s_; }
+  /// Whether the last push() used a full window of W samples; before that the rate comes from
+  /// a shorter, noisier fit (the warm-up, docs/field.md "The guard at power-on").
+  bool settled() const noexcept { return count_ >= w_; }
   /// The taps applied when `samples` (1 … window()) samples are available, oldest first; the
   /// derivative is their dot product with those samples, divided by dt_s().
   const std::vector<double>& taps(std::size_t samples) const { return taps_.at(samples - 1); }
