@@ -13,6 +13,7 @@
 #include <variant>
 #include <vector>
 
+#include "fogdrift/decimate.hpp"
 #include "fogdrift/error.hpp"
 #include "fogdrift/signal/differentiate.hpp"
 
@@ -132,7 +133,7 @@ std::string fill_template(std::string text,
 // fault policy (stream_faults.hpp), the same steps in the same order as
 // StreamingCompensator::update().
 constexpr std::string_view kStreamingC =
-    R"(/* Streaming: the features computed causally, one sample every @DT@ s.
+    R"(/* Streaming: samples every @DATA_DT@ s in, the features computed causally every @DT@ s.
  *   @P@_state s; @P@_reset(&s);   at power-on
  *   drift_dph = @P@_update(&s, time_s, temp_fog_degc, temp_acc1_degc, temp_acc2_degc);
  *   gyro_compensated_dph = @P@_compensated_dph(&s, gyro_dph);
@@ -169,6 +170,8 @@ constexpr std::string_view kStreamingC =
 #define @U@_STUCK_DELTA_DEGC (@STUCK_DELTA@)
 #endif
 @FLAGS@
+#define @U@_BLOCK @BLOCK@ /* samples per model sample */
+static const double @P@_data_dt_s = @DATA_DT@;
 static const double @P@_dt_s = @DT@;
 static const int @P@_reads[3] = {@READ_FLAGS@};
 static const double @P@_rate_taps[@NTAPS@] = {@TAPS@};
@@ -191,6 +194,10 @@ typedef struct {
   int seen_good[3], out[3], tracking[3];
   double good_degc[3], good_time_s[3], good_rate[3], pushed_degc[3];
   double unchanged_degc[3], unchanged_since_s[3], others_degc[3][3];
+  /* the block being averaged (@U@_BLOCK > 1) */
+  int data_started;
+  long sum_count;
+  double data_time_s, sum[3];
 } @P@_state;
 
 static inline void @P@_reset(@P@_state* s) {
@@ -207,7 +214,11 @@ static inline void @P@_reset(@P@_state* s) {
   s->refill = 0;
   s->has_good_drift = 0;
   s->good_drift_dph = s->good_drift_time_s = s->last_drift_dph = s->last_comp_dph = 0.0;
+  s->data_started = 0;
+  s->sum_count = 0;
+  s->data_time_s = 0.0;
   for (k = 0; k < 3; ++k) {
+    s->sum[k] = 0.0;
     s->seen_good[k] = s->out[k] = s->tracking[k] = 0;
     s->good_degc[k] = s->good_time_s[k] = s->good_rate[k] = s->pushed_degc[k] = 0.0;
   }
@@ -258,16 +269,15 @@ static inline double @P@_degraded_(@P@_state* s, double time_s) {
   return @P@_drift_mean_dph;
 }
 
-/* Predicted drift, deg/h, for the newest sample (every dt_s seconds since power-on). */
-static inline double @P@_update(@P@_state* s, double time_s, double temp_fog_degc,
-                                 double temp_acc1_degc, double temp_acc2_degc) {
+/* One sample at the model's interval, @P@_dt_s: the fault policy, the rates, the model. */
+static inline double @P@_step_(@P@_state* s, double time_s, double temp_fog_degc,
+                                double temp_acc1_degc, double temp_acc2_degc) {
   const double raw[3] = {temp_fog_degc, temp_acc1_degc, temp_acc2_degc};
   double temp[3] = {0.0, 0.0, 0.0}, rate[3] = {0.0, 0.0, 0.0}, f[@U@_N_FEATURES];
   int good[3] = {0, 0, 0}, stuck[3] = {0, 0, 0};
   int k, j, long_gap = 0, restart_rates, any_out = 0, any_bridged = 0, refilling;
   long missing = 0, m;
   double t = time_s, drift;
-  s->flags = 0;
   if (!isfinite(t)) {
     s->flags |= @U@_FAULT_TIME_BAD;
     t = s->started ? s->previous_time_s + @P@_dt_s : 0.0;
@@ -382,6 +392,46 @@ static inline double @P@_update(@P@_state* s, double time_s, double temp_fog_deg
   return drift;
 }
 
+/* Predicted drift, deg/h, for the newest sample (every @P@_data_dt_s seconds since power-on):
+ * the thermometers averaged over blocks of @U@_BLOCK samples, the first sample a block of its
+ * own, and the model run once per block (fogdrift docs/compensation.md, "Any sample rate"). */
+static inline double @P@_update(@P@_state* s, double time_s, double temp_fog_degc,
+                                 double temp_acc1_degc, double temp_acc2_degc) {
+  double t = time_s, c;
+  int first;
+  s->flags = 0;
+  if (@U@_BLOCK == 1) return @P@_step_(s, t, temp_fog_degc, temp_acc1_degc, temp_acc2_degc);
+  if (!isfinite(t)) {
+    s->flags |= @U@_FAULT_TIME_BAD;
+    t = s->data_started ? s->data_time_s + @P@_data_dt_s : 0.0;
+  }
+  if (s->data_started) {
+    const double gap = t - s->data_time_s;
+    if (gap < -@U@_BRIDGE_S) {
+      @P@_reset(s);
+      s->flags |= @U@_FAULT_RESTART;
+    } else if (gap < 0.5 * @P@_data_dt_s) {
+      s->flags |= @U@_FAULT_OUT_OF_ORDER;
+      return s->last_drift_dph;
+    }
+  }
+  first = !s->data_started;
+  s->data_started = 1;
+  s->data_time_s = t;
+  s->sum[0] += temp_fog_degc;
+  s->sum[1] += temp_acc1_degc;
+  s->sum[2] += temp_acc2_degc;
+  ++s->sum_count;
+  if (!first && s->sum_count < @U@_BLOCK) return s->last_drift_dph;
+  c = (double)s->sum_count;
+  {
+    const double fog = s->sum[0] / c, acc1 = s->sum[1] / c, acc2 = s->sum[2] / c;
+    s->sum[0] = s->sum[1] = s->sum[2] = 0.0;
+    s->sum_count = 0;
+    return @P@_step_(s, t, fog, acc1, acc2);
+  }
+}
+
 /* gyro_dph minus the last update's drift; the last good value where the gyro reading is not a
  * number or beyond @U@_GYRO_LIMIT_DPH (then @U@_FAULT_GYRO_BAD is set in s->flags). */
 static inline double @P@_compensated_dph(@P@_state* s, double gyro_dph) {
@@ -412,9 +462,13 @@ constexpr std::string_view kGuardC = R"(#if @U@_GUARD
 )";
 
 std::string c_streaming_part(const CompensationModel& model, const std::string& prefix,
-                             const std::string& upper, double dt_s, const FaultPolicy& faults) {
-  if (!std::isfinite(dt_s)) throw OptionError("stream_dt_s", "must be a finite interval");
+                             const std::string& upper, double data_dt_s,
+                             const FaultPolicy& faults) {
+  if (!std::isfinite(data_dt_s)) throw OptionError("stream_dt_s", "must be a finite interval");
   validate(faults);
+  const std::size_t block =
+      decimation_factor(model.dataset.preprocessing.sample_interval_s, data_dt_s, "stream_dt_s");
+  const double dt_s = static_cast<double>(block) * data_dt_s;  // the model's interval
   signal::CausalDifferentiator diff(model.dataset.preprocessing.rates, dt_s);
   const std::size_t w = diff.window();
   std::vector<double> taps;
@@ -487,6 +541,8 @@ std::string c_streaming_part(const CompensationModel& model, const std::string& 
        {"@HOLD@", c_number(faults.hold_s)},
        {"@STUCK@", c_number(faults.stuck_s)},
        {"@STUCK_DELTA@", c_number(faults.stuck_delta_degc)},
+       {"@DATA_DT@", c_number(data_dt_s)},
+       {"@BLOCK@", std::to_string(block)},
        {"@DT@", c_number(dt_s)},
        {"@W@", std::to_string(w)},
        // Last: the values above may contain the prefix's own placeholders.

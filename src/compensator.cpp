@@ -9,11 +9,13 @@ namespace fogdrift {
 StreamingCompensator::StreamingCompensator(const CompensationModel& model, double dt_s,
                                            const StreamOptions& options)
     : model_(model),
-      dt_s_(dt_s),
+      k_(decimation_factor(model.dataset.preprocessing.sample_interval_s, dt_s, "rate")),
+      data_dt_s_(dt_s),
+      dt_s_(static_cast<double>(k_) * dt_s),
       faults_(options.faults),
-      rates_{signal::CausalDifferentiator(model.dataset.preprocessing.rates, dt_s),
-             signal::CausalDifferentiator(model.dataset.preprocessing.rates, dt_s),
-             signal::CausalDifferentiator(model.dataset.preprocessing.rates, dt_s)},
+      rates_{signal::CausalDifferentiator(model.dataset.preprocessing.rates, dt_s_),
+             signal::CausalDifferentiator(model.dataset.preprocessing.rates, dt_s_),
+             signal::CausalDifferentiator(model.dataset.preprocessing.rates, dt_s_)},
       columns_(model.dataset.features.columns()),
       features_(model.inputs()),
       work_(model.inputs()),
@@ -32,6 +34,8 @@ void StreamingCompensator::reset() noexcept {
   refill_ = 0;
   has_good_drift_ = false;
   last_drift_dph_ = last_comp_dph_ = 0;
+  block_.clear();
+  data_started_ = false;
 }
 
 // Which thermometers the model reads give a good reading at this sample: a number inside the
@@ -106,7 +110,36 @@ StreamOutput StreamingCompensator::finish(const Sample& s, double drift_dph,
 }
 
 StreamOutput StreamingCompensator::update(const Sample& s) noexcept {
+  if (k_ == 1) return step(s, 0);
+  // Blocks of k_ samples (decimate.hpp); time is checked here at the data's interval as step()
+  // checks it at the model's.
   std::uint32_t flags = 0;
+  double t = s.time_s;
+  if (!std::isfinite(t)) {
+    flags |= fault::time_bad;
+    t = data_started_ ? data_time_s_ + data_dt_s_ : 0.0;
+  }
+  if (data_started_) {
+    const double gap = t - data_time_s_;
+    if (gap < -faults_.bridge_s) {
+      reset();
+      flags |= fault::restart;
+    } else if (gap < 0.5 * data_dt_s_) {
+      return finish(s, last_drift_dph_, flags | fault::out_of_order);
+    }
+  }
+  const bool first = !data_started_;
+  data_started_ = true;
+  data_time_s_ = t;
+  block_.add(s.temp_fog_degc, s.temp_acc1_degc, s.temp_acc2_degc, 0.0);
+  if (!first && block_.count < k_) return finish(s, last_drift_dph_, flags);
+  const auto c = static_cast<double>(block_.count);
+  const Sample mean{t, s.gyro_dph, block_.fog / c, block_.acc1 / c, block_.acc2 / c};
+  block_.clear();
+  return step(mean, flags);
+}
+
+StreamOutput StreamingCompensator::step(const Sample& s, std::uint32_t flags) noexcept {
   double t = s.time_s;
   if (!std::isfinite(t)) {
     flags |= fault::time_bad;

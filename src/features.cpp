@@ -260,6 +260,7 @@ FeatureOptions preprocessing_for(double dt_s, std::size_t shortest_samples,
   }
   o.rates.window_s = window * dt_s;
   if (window == defaults.rates.window_s / dt_s) o.rates.window_s = defaults.rates.window_s;
+  o.sample_interval_s = dt_s;
   return o;
 }
 

@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include "fogdrift/atomic_file.hpp"
+#include "fogdrift/decimate.hpp"
 #include "fogdrift/enum_names.hpp"
 #include "fogdrift/error.hpp"
 #include "fogdrift/sha256.hpp"
@@ -39,8 +40,8 @@ Method parse_method(const std::string& text, const std::string& option) {
   return parse_in(kMethodNames, text, option, "a method");
 }
 
-DriftPrediction CompensationModel::predict(std::span<const double> features,
-                                           std::span<double> work, bool warming) const {
+DriftPrediction CompensationModel::predict(std::span<const double> features, std::span<double> work,
+                                           bool warming) const {
   const std::size_t d = inputs();
   for (std::size_t k = 0; k < d; ++k)
     work[k] = (features[k] - x_scaler.mean[k]) / x_scaler.scale[k];
@@ -94,6 +95,25 @@ std::vector<double> CompensationModel::predict_dph(const Recording& recording, b
 }
 
 RecordingPrediction CompensationModel::predict(const Recording& recording, bool guarded) const {
+  // Data faster than the model's interval: its blocks, one prediction each, held (decimate.hpp).
+  std::size_t k = 1;
+  try {
+    k = decimation_factor(dataset.preprocessing.sample_interval_s, sample_interval_s(recording),
+                          "rate");
+  } catch (const OptionError& e) {
+    throw InputError(recording.source, 0, 0, e.message());
+  }
+  if (k > 1) {
+    const RecordingPrediction blocks = predict(decimate(recording, k), guarded);
+    RecordingPrediction out;
+    for (std::size_t i = 0; i < recording.size(); ++i) {
+      out.drift_dph.push_back(blocks.drift_dph[i / k]);
+      out.model_drift_dph.push_back(blocks.model_drift_dph[i / k]);
+      out.novelty.push_back(blocks.novelty[i / k]);
+      out.weight.push_back(blocks.weight[i / k]);
+    }
+    return out;
+  }
   FeatureOptions options = dataset.preprocessing;
   options.block.block_s = sample_interval_s(recording);
   const FeatureTable table = compute_features(recording, dataset.features, options);
@@ -165,6 +185,8 @@ std::string to_json(const CompensationModel& m) {
         {"poly_order", d.preprocessing.rates.poly_order},
         {"causality", std::string(signal::to_string(d.preprocessing.rates.causality))}}},
       {"block_s", d.preprocessing.block.block_s}};
+  if (d.preprocessing.sample_interval_s > 0)
+    j["features"]["sample_interval_s"] = d.preprocessing.sample_interval_s;
   j["target"] = {{"denoise", d.denoise_target},
                  {"wavelet", d.denoise.wavelet},
                  {"level", d.denoise.level ? ojson(*d.denoise.level) : ojson("max")},
@@ -249,6 +271,12 @@ CompensationModel compensation_model_from_json(const std::string& text, const st
     m.dataset.preprocessing.rates.causality =
         signal::parse_causality(dif.at("causality").get<std::string>(), "causality");
     m.dataset.preprocessing.block.block_s = f.at("block_s").get<double>();
+    if (f.contains("sample_interval_s")) {
+      m.dataset.preprocessing.sample_interval_s = f.at("sample_interval_s").get<double>();
+      if (!(m.dataset.preprocessing.sample_interval_s > 0) ||
+          !std::isfinite(m.dataset.preprocessing.sample_interval_s))
+        fail("features.sample_interval_s", "must be a finite interval > 0 s");
+    }
     where = "target";
     const ojson& t = doc.at("target");
     m.dataset.denoise_target = t.at("denoise").get<bool>();

@@ -41,6 +41,7 @@ CampaignTrainResult train_inputs(const std::vector<RecordingInput>& inputs,
   const FeatureOptions defaults;
   dataset.preprocessing.block.block_s = options.block_s.value_or(fitted.block.block_s);
   dataset.preprocessing.rates.window_s = options.rate_window_s.value_or(fitted.rates.window_s);
+  dataset.preprocessing.sample_interval_s = fitted.sample_interval_s;  // decimate.hpp
   if (!options.block_s && fitted.block.block_s != defaults.block.block_s)
     out.notes.push_back(
         {"block_s", fmt::format("recordings sampled every {:.6g} s: blocks of "

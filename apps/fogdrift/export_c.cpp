@@ -27,8 +27,8 @@ struct ExportArgs {
 
 void run(const ExportArgs& a) {
   const CompensationModel model = load_compensation_model(a.model, {a.allow_edited});
-  if (!(a.stream_rate_hz >= 0) || a.stream_rate_hz > 1000)
-    throw OptionError("--stream-rate-hz", fmt::format("{} is outside [0, 1000] Hz (0: no "
+  if (!(a.stream_rate_hz >= 0) || a.stream_rate_hz > 10000)
+    throw OptionError("--stream-rate-hz", fmt::format("{} is outside [0, 10000] Hz (0: no "
                                                       "streaming part)",
                                                       a.stream_rate_hz));
   with_flags(fault_flags(), [&] { validate(a.faults); });
@@ -41,8 +41,7 @@ void run(const ExportArgs& a) {
       throw OptionError("--prefix", fmt::format("'{}' is not a C identifier (letters, digits and "
                                                 "'_', not starting with a digit)",
                                                 a.prefix));
-    const std::string what = e.what();
-    throw OptionError("--stream-rate-hz", what.substr(what.find(": ") + 2));
+    throw OptionError("--stream-rate-hz", e.message());
   }
   write_text_atomically(a.output, header);
   if (!a.quiet) {

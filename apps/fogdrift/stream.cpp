@@ -9,6 +9,7 @@
 #include <fstream>
 #include <iostream>
 #include <memory>
+#include <optional>
 
 #include "cli_util.hpp"
 #include "commands.hpp"
@@ -71,8 +72,8 @@ void stop_at_fault(const std::string& name, std::size_t line_no, std::uint32_t f
 }
 
 void run(const StreamArgs& a) {
-  if (!(a.rate_hz > 0) || a.rate_hz > 1000)
-    throw OptionError("--rate-hz", fmt::format("{} is outside (0, 1000] Hz", a.rate_hz));
+  if (!(a.rate_hz > 0) || a.rate_hz > 10000)
+    throw OptionError("--rate-hz", fmt::format("{} is outside (0, 10000] Hz", a.rate_hz));
   with_flags(fault_flags(), [&] { validate(a.faults); });
   const CompensationModel model = load_compensation_model(a.model, {a.allow_edited});
   // Streamed, a model trained on centred rates sees causal ones, noisier than those it learned:
@@ -85,7 +86,11 @@ void run(const StreamArgs& a) {
         "causal for the instrument)\n",
         a.model);
   const double dt_s = 1.0 / a.rate_hz;
-  StreamingCompensator compensator(model, dt_s, {!a.no_guard, a.faults});
+  std::optional<StreamingCompensator> made;  // a rate the model cannot run at names --rate-hz
+  with_flags({{"rate", "--rate-hz"}}, [&] {
+    made.emplace(model, dt_s, StreamOptions{!a.no_guard, a.faults});
+  });
+  StreamingCompensator& compensator = *made;
 
   std::ifstream file;
   if (a.input != "-") {

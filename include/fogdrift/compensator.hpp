@@ -12,6 +12,10 @@
 // differ from those it was trained on (a causal fit lags or is noisier); docs/compensation.md
 // measures what that costs.
 //
+// Data faster than the model's interval (a 1 Hz model on a 100 Hz logger) are averaged in blocks
+// of k samples and the model runs once per block (decimate.hpp): the cost per sample does not
+// grow with the rate, and the result equals the batch path's on the same data.
+//
 // Faulty samples (a thermometer or gyro that is not a number, out of range or stuck, a time gap,
 // time that does not advance or goes back) are handled by the policy of stream_faults.hpp: the
 // output is always finite, each affected sample is flagged, and without faults nothing changes.
@@ -21,6 +25,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "fogdrift/decimate.hpp"
 #include "fogdrift/model.hpp"
 #include "fogdrift/signal/differentiate.hpp"
 #include "fogdrift/stream_faults.hpp"
@@ -50,8 +55,8 @@ struct StreamOutput {
 
 class StreamingCompensator {
  public:
-  /// `dt_s` is the logger's sample interval (the differentiator's taps depend on it). Throws
-  /// OptionError for an invalid FaultPolicy.
+  /// `dt_s` is the logger's sample interval. Throws OptionError for an invalid FaultPolicy, and
+  /// (naming "rate") for an interval the model cannot run at (decimation_factor).
   StreamingCompensator(const CompensationModel& model, double dt_s,
                        const StreamOptions& options = {});
 
@@ -79,7 +84,9 @@ class StreamingCompensator {
   };
 
   const CompensationModel& model_;
-  double dt_s_;
+  std::size_t k_;     // data samples per model sample (decimate.hpp)
+  double data_dt_s_;  // the logger's interval
+  double dt_s_;       // the model's: k_ · data_dt_s_
   FaultPolicy faults_;
   std::array<signal::CausalDifferentiator, 3> rates_;
   std::vector<FeatureColumn> columns_;  // the model's inputs (FeatureSpec::columns())
@@ -96,7 +103,13 @@ class StreamingCompensator {
   bool has_good_drift_ = false;
   double good_drift_dph_ = 0, good_drift_time_s_ = 0;
   double last_drift_dph_ = 0, last_comp_dph_ = 0;
+  // The block being filled (k_ > 1), and the time of the last data sample taken.
+  BlockSum block_;
+  bool data_started_ = false;
+  double data_time_s_ = 0;
 
+  // One sample at the model's interval: the fault policy, the rates, the model and the guard.
+  StreamOutput step(const Sample& s, std::uint32_t flags) noexcept;
   std::array<bool, 3> check_thermometers(const std::array<double, 3>& raw, double time_s,
                                          std::uint32_t& flags) noexcept;
   double substitute(std::size_t k, double time_s) const noexcept;

@@ -128,6 +128,10 @@ std::vector<Thermometer> thermometers_of(const Recording& recording);
 struct FeatureOptions {
   signal::DifferentiatorOptions rates;  ///< temperature differentiator (default centred, 121 s)
   signal::BlockAverageOptions block;    ///< block averaging (default 10 s)
+  /// The interval of the recordings the features were formed at, s (set by preprocessing_for);
+  /// faster data are brought to it before compensation (decimate.hpp). 0: not recorded, and a
+  /// model runs at the data's own interval, as model files before it did.
+  double sample_interval_s = 0;
 };
 
 /// The default preprocessing fitted to recordings sampled every dt_s seconds, the shortest of
@@ -137,6 +141,7 @@ struct FeatureOptions {
 ///   window_s  121 s when that spans at least 5 samples, else 5 samples; for the centred
 ///             differentiator no longer than the shortest recording (its largest odd number of
 ///             samples, at least 5: a shorter recording still fails, naming window_s).
+///   sample_interval_s  dt_s.
 /// The differentiator's causality and degree are kept from `base`.
 FeatureOptions preprocessing_for(double dt_s, std::size_t shortest_samples,
                                  const FeatureOptions& base = {});

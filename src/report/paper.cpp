@@ -27,12 +27,6 @@ double seconds_since(Clock::time_point start) {
   return std::chrono::duration<double>(Clock::now() - start).count();
 }
 
-double mean_of(const std::vector<double>& v) {
-  double s = 0;
-  for (double x : v) s += x;
-  return v.empty() ? 0.0 : s / static_cast<double>(v.size());
-}
-
 std::vector<RecordingInput> inputs_of(const sim::SimulatedCampaign& c, std::optional<Role> role) {
   std::vector<RecordingInput> inputs;
   for (std::size_t i = 0; i < c.recordings.size(); ++i) {

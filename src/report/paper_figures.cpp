@@ -23,12 +23,6 @@ std::vector<double> smoothed(const std::vector<double>& v, std::size_t window, s
   return out;
 }
 
-double mean_of(const std::vector<double>& v) {
-  double s = 0;
-  for (double x : v) s += x;
-  return v.empty() ? 0.0 : s / static_cast<double>(v.size());
-}
-
 constexpr std::size_t kWindow = 61, kStep = 10;  // 60 s moving average, one point in ten
 
 /// The test repetition's start-ups, 60 s moving average: x from `x_of`, the gyro as y.

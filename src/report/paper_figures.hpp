@@ -14,6 +14,13 @@
 
 namespace fogdrift::report {
 
+/// The mean of `v`, 0 when it is empty.
+inline double mean_of(const std::vector<double>& v) {
+  double s = 0;
+  for (double x : v) s += x;
+  return v.empty() ? 0.0 : s / static_cast<double>(v.size());
+}
+
 /// What the first seed keeps for the studies and the figures.
 struct FirstSeed {
   sim::SimulatedCampaign cal, nf;

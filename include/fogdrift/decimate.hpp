@@ -1,0 +1,45 @@
+// A model at any sample rate (docs/compensation.md, "Any sample rate"). A model's features are
+// formed at the interval of the recordings it was trained on, dt_m (FeatureOptions::
+// sample_interval_s). Data logged faster, every dt_d = dt_m / k with k a whole number, is brought
+// to the model's interval before its features are formed: the thermometers are averaged over
+// blocks of k samples, and the model runs once per block, so its cost per data sample falls as
+// the rate rises instead of growing with the rate (a 121 s rate window is 121 taps at any rate,
+// not 12,101 at 100 Hz).
+//
+// Blocks. After power-on the first sample is a block of its own; then every k samples make one:
+//     block 0 = sample 0,   block j ≥ 1 = samples (j − 1)k + 1 … jk,
+// each at the time of its last sample, so block j is complete at sample jk and the blocks are
+// dt_m apart from the first sample on. Data sample i is compensated with the drift of the last
+// block complete at it, block ⌊i / k⌋: causal, and at most dt_m old. The batch path
+// (CompensationModel::predict), the StreamingCompensator and the C header form the same blocks
+// with the same arithmetic (the sum of k values in order, then one division).
+#pragma once
+
+#include <cstddef>
+#include <string>
+
+#include "fogdrift/recording.hpp"
+
+namespace fogdrift {
+
+/// k, the data samples per model sample, for a model trained at `model_dt_s` on data sampled
+/// every `data_dt_s`: 1 when model_dt_s is 0 (a model file that does not record it runs at the
+/// data's own rate). Throws OptionError naming `option` when the data are slower than the model
+/// or dt_m / dt_d is more than 1 % from a whole number, with the fix.
+std::size_t decimation_factor(double model_dt_s, double data_dt_s, const std::string& option);
+
+/// The recording in blocks of `k` samples (see the file comment): time of each block's last
+/// sample, thermometers and gyro averaged; other columns are not kept. k = 1 returns a copy.
+Recording decimate(const Recording& recording, std::size_t k);
+
+/// Sums of the thermometers over a block as it fills, shared by the streaming paths.
+struct BlockSum {
+  double fog = 0, acc1 = 0, acc2 = 0, gyro = 0;
+  std::size_t count = 0;
+  void add(double fog_degc, double acc1_degc, double acc2_degc, double gyro_dph) noexcept {
+    fog += fog_degc, acc1 += acc1_degc, acc2 += acc2_degc, gyro += gyro_dph, ++count;
+  }
+  void clear() noexcept { *this = BlockSum{}; }
+};
+
+}  // namespace fogdrift

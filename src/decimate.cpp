@@ -1,0 +1,57 @@
+#include "fogdrift/decimate.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+
+#include "fogdrift/error.hpp"
+
+namespace fogdrift {
+
+std::size_t decimation_factor(double model_dt_s, double data_dt_s, const std::string& option) {
+  if (model_dt_s == 0) return 1;
+  if (!(data_dt_s > 0) || !std::isfinite(data_dt_s))
+    throw OptionError(option, "the data's sample interval must be positive and finite");
+  const double ratio = model_dt_s / data_dt_s;
+  if (ratio < 0.99)
+    throw OptionError(
+        option, fmt::format("the data come every {:.6g} s ({:.6g} Hz), slower than the model's "
+                            "{:.6g} s ({:.6g} Hz): train a model on data at this rate, or log at "
+                            "{:.6g} Hz or a whole multiple of it",
+                            data_dt_s, 1 / data_dt_s, model_dt_s, 1 / model_dt_s, 1 / model_dt_s));
+  const double k = std::round(ratio);
+  if (std::fabs(ratio - k) > 0.01 * k)
+    throw OptionError(
+        option, fmt::format("the data's interval {:.6g} s ({:.6g} Hz) is not a whole fraction of "
+                            "the model's {:.6g} s ({:.6g} Hz): put the data on the model's grid "
+                            "(fogdrift import ... --step-s {:.6g}), or train at the data's rate",
+                            data_dt_s, 1 / data_dt_s, model_dt_s, 1 / model_dt_s, model_dt_s));
+  return static_cast<std::size_t>(k);
+}
+
+Recording decimate(const Recording& recording, std::size_t k) {
+  if (k <= 1) return recording;
+  Recording out;
+  out.source = recording.source;
+  const std::size_t n = recording.size();
+  auto has = [](const std::vector<double>& v) { return !v.empty(); };
+  for (std::size_t first = 0, last = 0; first < n; first = last + 1) {
+    last = first == 0 ? 0 : std::min(n - 1, first + k - 1);
+    if (first != 0 && last - first + 1 < k) break;  // a trailing partial block is not yet done
+    BlockSum sum;
+    for (std::size_t i = first; i <= last; ++i)
+      sum.add(recording.temp_fog_degc[i],
+              has(recording.temp_acc1_degc) ? recording.temp_acc1_degc[i] : 0.0,
+              has(recording.temp_acc2_degc) ? recording.temp_acc2_degc[i] : 0.0,
+              recording.gyro_dph[i]);
+    const auto c = static_cast<double>(sum.count);
+    out.time_s.push_back(recording.time_s[last]);
+    out.gyro_dph.push_back(sum.gyro / c);
+    out.temp_fog_degc.push_back(sum.fog / c);
+    if (has(recording.temp_acc1_degc)) out.temp_acc1_degc.push_back(sum.acc1 / c);
+    if (has(recording.temp_acc2_degc)) out.temp_acc2_degc.push_back(sum.acc2 / c);
+  }
+  return out;
+}
+
+}  // namespace fogdrift
