@@ -15,6 +15,7 @@ packages=(
   python3-pandas                       # recordings as DataFrames, and scikit-learn's DataFrame checks
   python3-dask python3-distributed     # fogdrift.fleet: one model per unit on a Dask cluster
   python3-matplotlib                   # docs/python.md's worked example, run as a test
+  gcc-arm-none-eabi libnewlib-arm-none-eabi qemu-system-arm   # the C header on a Cortex-M4F
 )
 
 missing=()

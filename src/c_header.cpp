@@ -67,13 +67,13 @@ std::string c_guard_part(const CompensationModel& model, const std::string& pref
       prefix, upper, model.guard.size(), c_number(g.full_at), c_number(g.zero_at),
       g.recover_s > 0 ? fmt::format("recovers over {} s", c_number(g.recover_s))
                       : fmt::format("stays at its lowest until the next {}_reset", prefix));
-  h += fmt::format("static const double {}_guard_points[{}] = {{{}}};\n", prefix,
+  h += fmt::format("static const @REAL@ {}_guard_points[{}] = {{{}}};\n", prefix,
                    model.guard.prototypes.size(), c_array(model.guard.prototypes));
   h += fmt::format(
-      "static const double {0}_guard_radius = {1};\n"
-      "static const double {0}_guard_full_at = {2};\n"
-      "static const double {0}_guard_zero_at = {3};\n"
-      "static const double {0}_guard_recover_s = {4};\n\n",
+      "static const @REAL@ {0}_guard_radius = {1};\n"
+      "static const @REAL@ {0}_guard_full_at = {2};\n"
+      "static const @REAL@ {0}_guard_zero_at = {3};\n"
+      "static const @REAL@ {0}_guard_recover_s = {4};\n\n",
       prefix, c_number(model.guard.radius), c_number(g.full_at), c_number(g.zero_at),
       c_number(g.recover_s));
   std::string warmup;
@@ -86,29 +86,29 @@ std::string c_guard_part(const CompensationModel& model, const std::string& pref
       "/* nu for one row of features in their own units; while the rate window fills (warming),\n"
       " * over the features that read no rate only (fogdrift docs/field.md, \"The guard at\n"
       " * power-on\"). */\n"
-      "static inline double {0}_novelty_of(const double features[{1}_N_FEATURES], int warming) {{\n"
-      "  double x[{1}_N_FEATURES], best = HUGE_VAL;\n"
+      "static inline @REAL@ {0}_novelty_of(const @REAL@ features[{1}_N_FEATURES], int warming) {{\n"
+      "  @REAL@ x[{1}_N_FEATURES], best = HUGE_VAL;\n"
       "  int i, k;\n"
       "  for (k = 0; k < {1}_N_FEATURES; ++k)\n"
       "    x[k] = (features[k] - {0}_feature_mean[k]) / {0}_feature_scale[k];\n"
       "  for (i = 0; i < {1}_N_GUARD; ++i) {{\n"
-      "    const double* p = {0}_guard_points + i * {1}_N_FEATURES;\n"
-      "    double s = 0.0;\n"
+      "    const @REAL@* p = {0}_guard_points + i * {1}_N_FEATURES;\n"
+      "    @REAL@ s = 0.0;\n"
       "    for (k = 0; k < {1}_N_FEATURES; ++k) {{\n"
-      "      const double e = (warming && !{0}_guard_warmup_inputs[k]) ? 0.0 : x[k] - p[k];\n"
+      "      const @REAL@ e = (warming && !{0}_guard_warmup_inputs[k]) ? 0.0 : x[k] - p[k];\n"
       "      s += e * e;\n"
       "    }}\n"
       "    if (s < best) best = s;\n"
       "  }}\n"
-      "  return sqrt(best) / {0}_guard_radius;\n"
+      "  return sqrt@F@(best) / {0}_guard_radius;\n"
       "}}\n\n"
       "/* nu for one row of features whose rates come from a full window. */\n"
-      "static inline double {0}_novelty(const double features[{1}_N_FEATURES]) {{\n"
+      "static inline @REAL@ {0}_novelty(const @REAL@ features[{1}_N_FEATURES]) {{\n"
       "  return {0}_novelty_of(features, 0);\n"
       "}}\n\n"
       "/* The share of the correction a sample of novelty nu asks for (0 when nu is not a number). "
       "*/\n"
-      "static inline double {0}_target_weight(double nu) {{\n"
+      "static inline @REAL@ {0}_target_weight(@REAL@ nu) {{\n"
       "  if (nu != nu) return 0.0;\n"
       "  if (nu <= {0}_guard_full_at) return 1.0;\n"
       "  if (nu >= {0}_guard_zero_at) return 0.0;\n"
@@ -174,30 +174,33 @@ constexpr std::string_view kStreamingC =
 static const double @P@_data_dt_s = @DATA_DT@;
 static const double @P@_dt_s = @DT@;
 static const int @P@_reads[3] = {@READ_FLAGS@};
-static const double @P@_rate_taps[@NTAPS@] = {@TAPS@};
+static const @REAL@ @P@_rate_taps[@NTAPS@] = {@TAPS@};
 
 typedef struct {
-  double buffer[3][2 * @U@_RATE_WINDOW]; /* fog, acc1, acc2; newest at size - 1 */
+  @REAL@ buffer[3][2 * @U@_RATE_WINDOW]; /* fog, acc1, acc2; newest at size - 1 */
   long size;                             /* samples in the buffer */
   long count;                            /* samples since the rate filters started */
-  double weight;                         /* the guard's weight w, 1 at power-on */
+  @REAL@ weight;                         /* the guard's weight w, 1 at power-on */
   int guard_started;                     /* the guard has seen a sample */
   double last_time_s;                    /* time of the guard's previous sample */
-  double novelty;                        /* nu of the last evaluated sample (0 without a guard) */
+  @REAL@ novelty;                        /* nu of the last evaluated sample (0 without a guard) */
   unsigned flags;                        /* @U@_FAULT_* bits of the last sample */
   /* the fault policy's state */
   int started;
   double previous_time_s;
   long refill;
   int has_good_drift;
-  double good_drift_dph, good_drift_time_s, last_drift_dph, last_comp_dph;
+  @REAL@ good_drift_dph, last_drift_dph, last_comp_dph;
+  double good_drift_time_s;
   int seen_good[3], out[3], tracking[3];
-  double good_degc[3], good_time_s[3], good_rate[3], pushed_degc[3];
-  double unchanged_degc[3], unchanged_since_s[3], others_degc[3][3];
+  @REAL@ good_degc[3], good_rate[3], pushed_degc[3];
+  double good_time_s[3];
+  @REAL@ unchanged_degc[3], others_degc[3][3];
+  double unchanged_since_s[3];
   /* the block being averaged (@U@_BLOCK > 1) */
   int data_started;
   long sum_count;
-  double data_time_s, sum[3];
+  double data_time_s, sum[3]; /* time, and sums of a block in double: up to 2000 samples */
 } @P@_state;
 
 static inline void @P@_reset(@P@_state* s) {
@@ -225,10 +228,10 @@ static inline void @P@_reset(@P@_state* s) {
 }
 
 /* Thermometer k's sample pushed into its rate filter; returns its rate, deg C/s. */
-static inline double @P@_push_(@P@_state* s, int k, double v) {
-  const double* taps;
-  const double* x;
-  double sum = 0.0;
+static inline @REAL@ @P@_push_(@P@_state* s, int k, @REAL@ v) {
+  const @REAL@* taps;
+  const @REAL@* x;
+  @REAL@ sum = 0.0;
   long used, j;
   if (k == 0) {
     if (s->size == 2 * @U@_RATE_WINDOW) { /* keep the newest window - 1 at the front */
@@ -245,22 +248,23 @@ static inline double @P@_push_(@P@_state* s, int k, double v) {
   used = s->count < @U@_RATE_WINDOW ? s->count : @U@_RATE_WINDOW;
   taps = @P@_rate_taps + (used - 1) * used / 2;
   x = s->buffer[k] + (s->size - used);
-  for (j = 0; j < used; ++j) sum += taps[j] * x[j];
+  /* The taps sum to 0: @RATE_REF_NOTE@ */
+  for (j = 0; j < used; ++j) sum += taps[j] * (x[j] - @RATE_REF@);
   return sum / @P@_dt_s;
 }
 
-static inline double @P@_clamp_degc_(double v) {
+static inline @REAL@ @P@_clamp_degc_(@REAL@ v) {
   return v < @U@_TEMP_MIN_DEGC ? @U@_TEMP_MIN_DEGC : (v > @U@_TEMP_MAX_DEGC ? @U@_TEMP_MAX_DEGC : v);
 }
 
 /* A faulty thermometer's stand-in: its last good reading continued along its last rate. */
-static inline double @P@_substitute_(const @P@_state* s, int k, double time_s) {
+static inline @REAL@ @P@_substitute_(const @P@_state* s, int k, double time_s) {
   if (!s->seen_good[k]) return @P@_clamp_degc_(0.0);
   return @P@_clamp_degc_(s->good_degc[k] + s->good_rate[k] * (time_s - s->good_time_s[k]));
 }
 
 /* The drift where the model cannot be evaluated: held, then stopped. */
-static inline double @P@_degraded_(@P@_state* s, double time_s) {
+static inline @REAL@ @P@_degraded_(@P@_state* s, double time_s) {
   if (s->has_good_drift && time_s - s->good_drift_time_s <= @U@_HOLD_S) {
     s->flags |= @U@_FAULT_HELD;
     return s->good_drift_dph;
@@ -270,14 +274,15 @@ static inline double @P@_degraded_(@P@_state* s, double time_s) {
 }
 
 /* One sample at the model's interval, @P@_dt_s: the fault policy, the rates, the model. */
-static inline double @P@_step_(@P@_state* s, double time_s, double temp_fog_degc,
-                                double temp_acc1_degc, double temp_acc2_degc) {
-  const double raw[3] = {temp_fog_degc, temp_acc1_degc, temp_acc2_degc};
-  double temp[3] = {0.0, 0.0, 0.0}, rate[3] = {0.0, 0.0, 0.0}, f[@U@_N_FEATURES];
+static inline @REAL@ @P@_step_(@P@_state* s, double time_s, @REAL@ temp_fog_degc,
+                                @REAL@ temp_acc1_degc, @REAL@ temp_acc2_degc) {
+  const @REAL@ raw[3] = {temp_fog_degc, temp_acc1_degc, temp_acc2_degc};
+  @REAL@ temp[3] = {0.0, 0.0, 0.0}, rate[3] = {0.0, 0.0, 0.0}, f[@U@_N_FEATURES];
   int good[3] = {0, 0, 0}, stuck[3] = {0, 0, 0};
   int k, j, long_gap = 0, restart_rates, any_out = 0, any_bridged = 0, refilling;
   long missing = 0, m;
-  double t = time_s, drift;
+  double t = time_s;
+  @REAL@ drift;
   if (!isfinite(t)) {
     s->flags |= @U@_FAULT_TIME_BAD;
     t = s->started ? s->previous_time_s + @P@_dt_s : 0.0;
@@ -317,7 +322,7 @@ static inline double @P@_step_(@P@_state* s, double time_s, double temp_fog_degc
         if (j == k || !good[j]) continue;
         if (isnan(s->others_degc[k][j])) s->others_degc[k][j] = raw[j];
         if (t - s->unchanged_since_s[k] >= @U@_STUCK_S &&
-            fabs(raw[j] - s->others_degc[k][j]) >= @U@_STUCK_DELTA_DEGC)
+            fabs@F@(raw[j] - s->others_degc[k][j]) >= @U@_STUCK_DELTA_DEGC)
           stuck[k] = 1;
       }
     }
@@ -352,9 +357,9 @@ static inline double @P@_step_(@P@_state* s, double time_s, double temp_fog_degc
   for (m = 1; m <= missing; ++m) {
     const double tm = s->previous_time_s + (double)m * @P@_dt_s;
     for (k = 0; k < 3; ++k) {
-      const double v = !@P@_reads[k] ? 0.0
-                       : good[k] ? s->pushed_degc[k] + (temp[k] - s->pushed_degc[k]) * (double)m /
-                                                           (double)(missing + 1)
+      const @REAL@ v = !@P@_reads[k] ? 0.0
+                       : good[k] ? s->pushed_degc[k] + (temp[k] - s->pushed_degc[k]) * (@REAL@)m /
+                                                           (@REAL@)(missing + 1)
                                  : @P@_substitute_(s, k, tm);
       (void)@P@_push_(s, k, v);
     }
@@ -395,8 +400,8 @@ static inline double @P@_step_(@P@_state* s, double time_s, double temp_fog_degc
 /* Predicted drift, deg/h, for the newest sample (every @P@_data_dt_s seconds since power-on):
  * the thermometers averaged over blocks of @U@_BLOCK samples, the first sample a block of its
  * own, and the model run once per block (fogdrift docs/compensation.md, "Any sample rate"). */
-static inline double @P@_update(@P@_state* s, double time_s, double temp_fog_degc,
-                                 double temp_acc1_degc, double temp_acc2_degc) {
+static inline @REAL@ @P@_update(@P@_state* s, double time_s, @REAL@ temp_fog_degc,
+                                 @REAL@ temp_acc1_degc, @REAL@ temp_acc2_degc) {
   double t = time_s, c;
   int first;
   s->flags = 0;
@@ -425,7 +430,8 @@ static inline double @P@_update(@P@_state* s, double time_s, double temp_fog_deg
   if (!first && s->sum_count < @U@_BLOCK) return s->last_drift_dph;
   c = (double)s->sum_count;
   {
-    const double fog = s->sum[0] / c, acc1 = s->sum[1] / c, acc2 = s->sum[2] / c;
+    const @REAL@ fog = (@REAL@)(s->sum[0] / c), acc1 = (@REAL@)(s->sum[1] / c),
+                 acc2 = (@REAL@)(s->sum[2] / c);
     s->sum[0] = s->sum[1] = s->sum[2] = 0.0;
     s->sum_count = 0;
     return @P@_step_(s, t, fog, acc1, acc2);
@@ -434,8 +440,8 @@ static inline double @P@_update(@P@_state* s, double time_s, double temp_fog_deg
 
 /* gyro_dph minus the last update's drift; the last good value where the gyro reading is not a
  * number or beyond @U@_GYRO_LIMIT_DPH (then @U@_FAULT_GYRO_BAD is set in s->flags). */
-static inline double @P@_compensated_dph(@P@_state* s, double gyro_dph) {
-  if (isfinite(gyro_dph) && fabs(gyro_dph) <= @U@_GYRO_LIMIT_DPH)
+static inline @REAL@ @P@_compensated_dph(@P@_state* s, @REAL@ gyro_dph) {
+  if (isfinite(gyro_dph) && fabs@F@(gyro_dph) <= @U@_GYRO_LIMIT_DPH)
     return s->last_comp_dph = gyro_dph - s->last_drift_dph;
   s->flags |= @U@_FAULT_GYRO_BAD;
   return s->last_comp_dph;
@@ -445,12 +451,12 @@ static inline double @P@_compensated_dph(@P@_state* s, double gyro_dph) {
 
 constexpr std::string_view kGuardC = R"(#if @U@_GUARD
     {
-      const double v =
+      const @REAL@ v =
           @P@_target_weight(s->novelty = @P@_novelty_of(f, s->count < @U@_RATE_WINDOW));
       if (!any_bridged) {
-        const double dt =
+        const @REAL@ dt =
             s->guard_started ? (t - s->last_time_s > 0.0 ? t - s->last_time_s : 0.0) : 0.0;
-        const double up = s->weight + (@P@_guard_recover_s > 0 ? dt / @P@_guard_recover_s : 0.0);
+        const @REAL@ up = s->weight + (@P@_guard_recover_s > 0 ? dt / @P@_guard_recover_s : 0.0);
         s->weight = up < v ? up : v;
         s->last_time_s = t;
         s->guard_started = 1;
@@ -462,8 +468,8 @@ constexpr std::string_view kGuardC = R"(#if @U@_GUARD
 )";
 
 std::string c_streaming_part(const CompensationModel& model, const std::string& prefix,
-                             const std::string& upper, double data_dt_s,
-                             const FaultPolicy& faults) {
+                             const std::string& upper, double data_dt_s, const FaultPolicy& faults,
+                             bool single) {
   if (!std::isfinite(data_dt_s)) throw OptionError("stream_dt_s", "must be a finite interval");
   validate(faults);
   const std::size_t block =
@@ -541,6 +547,11 @@ std::string c_streaming_part(const CompensationModel& model, const std::string& 
        {"@HOLD@", c_number(faults.hold_s)},
        {"@STUCK@", c_number(faults.stuck_s)},
        {"@STUCK_DELTA@", c_number(faults.stuck_delta_degc)},
+       // In float, differences from the newest sample keep the rate's rounding that of the change
+       // in temperature over the window, not of the temperature itself.
+       {"@RATE_REF@", single ? "x[used - 1]" : "0.0"},
+       {"@RATE_REF_NOTE@", single ? "in float, samples less the newest lose less to rounding."
+                                  : "in double, the samples as they are (fogdrift's own sums)."},
        {"@DATA_DT@", c_number(data_dt_s)},
        {"@BLOCK@", std::to_string(block)},
        {"@DT@", c_number(dt_s)},
@@ -553,7 +564,7 @@ std::string c_streaming_part(const CompensationModel& model, const std::string& 
 }  // namespace
 
 std::string to_c_header(const CompensationModel& model, const std::string& prefix,
-                        double stream_dt_s, const FaultPolicy& faults) {
+                        double stream_dt_s, const FaultPolicy& faults, CPrecision precision) {
   const bool identifier = !prefix.empty() && !std::isdigit(static_cast<unsigned char>(prefix[0])) &&
                           std::all_of(prefix.begin(), prefix.end(), [](char c) {
                             return std::isalnum(static_cast<unsigned char>(c)) || c == '_';
@@ -581,62 +592,71 @@ std::string to_c_header(const CompensationModel& model, const std::string& prefi
       c_number(model.dataset.preprocessing.rates.window_s),
       model.dataset.preprocessing.rates.poly_order);
   h += fmt::format("#ifndef {0}_H\n#define {0}_H\n\n#include <math.h>\n\n", upper);
+  const bool single = precision == CPrecision::single;
+  h += fmt::format(
+      "/* Arithmetic in {1} precision{2}; times in seconds are double\n"
+      " * throughout (a float second count loses 10 ms after a day). */\n"
+      "typedef {1} {0}_real;\n\n",
+      prefix, single ? "float" : "double",
+      single ? " (export-c --precision float): the tables are the model's numbers rounded\n"
+               " * to float, for a processor whose FPU has 32 bits, e.g. a Cortex-M4F"
+             : " (export-c --precision double)");
   h += fmt::format("#define {}_N_FEATURES {}\n\n", upper, d);
   h += fmt::format("static const char* const {}_feature_names[{}] = {{", prefix, d);
   for (std::size_t k = 0; k < d; ++k)
     h += fmt::format("{}\"{}\"", k ? ", " : "", model.feature_names[k]);
   h += "};\n";
-  h += fmt::format("static const double {}_feature_mean[{}] = {{{}}};\n", prefix, d,
+  h += fmt::format("static const @REAL@ {}_feature_mean[{}] = {{{}}};\n", prefix, d,
                    c_array(model.x_scaler.mean));
-  h += fmt::format("static const double {}_feature_scale[{}] = {{{}}};\n", prefix, d,
+  h += fmt::format("static const @REAL@ {}_feature_scale[{}] = {{{}}};\n", prefix, d,
                    c_array(model.x_scaler.scale));
-  h += fmt::format("static const double {}_drift_mean_dph = {};\n", prefix,
+  h += fmt::format("static const @REAL@ {}_drift_mean_dph = {};\n", prefix,
                    c_number(model.y_scaler.mean[0]));
-  h += fmt::format("static const double {}_drift_scale_dph = {};\n\n", prefix,
+  h += fmt::format("static const @REAL@ {}_drift_scale_dph = {};\n\n", prefix,
                    c_number(model.y_scaler.scale[0]));
 
   std::string body;  // computes `z` (standardised prediction) from `x` (standardised features)
   if (const auto* m = std::get_if<svr::Model>(&model.regressor)) {
     const std::size_t n = m->size();
     h += fmt::format("#define {}_N_SV {}\n", upper, n);
-    h += fmt::format("static const double {}_sv[{}] = {{{}}};\n", prefix,
+    h += fmt::format("static const @REAL@ {}_sv[{}] = {{{}}};\n", prefix,
                      std::max<std::size_t>(1, n * d), n ? c_array(m->support_vectors) : "0");
-    h += fmt::format("static const double {}_coef[{}] = {{{}}};\n", prefix,
+    h += fmt::format("static const @REAL@ {}_coef[{}] = {{{}}};\n", prefix,
                      std::max<std::size_t>(1, n), n ? c_array(m->coef) : "0");
-    h += fmt::format("static const double {}_gamma = {};\nstatic const double {}_rho = {};\n\n",
+    h += fmt::format("static const @REAL@ {}_gamma = {};\nstatic const @REAL@ {}_rho = {};\n\n",
                      prefix, c_number(m->kernel.gamma), prefix, c_number(m->rho));
     const bool rbf = m->kernel.type == svr::KernelType::rbf;
     body = fmt::format(
-        "  double z = -{0}_rho;\n"
+        "  @REAL@ z = -{0}_rho;\n"
         "  int i, k;\n"
         "  for (i = 0; i < {1}_N_SV; ++i) {{\n"
-        "    const double* s = {0}_sv + i * {1}_N_FEATURES;\n"
-        "    double acc = 0.0;\n"
+        "    const @REAL@* s = {0}_sv + i * {1}_N_FEATURES;\n"
+        "    @REAL@ acc = 0.0;\n"
         "    for (k = 0; k < {1}_N_FEATURES; ++k) {{\n"
         "{2}"
         "    }}\n"
         "    z += {0}_coef[i] * {3};\n"
         "  }}\n",
         prefix, upper,
-        rbf ? "      const double e = x[k] - s[k];\n      acc += e * e;\n"
+        rbf ? "      const @REAL@ e = x[k] - s[k];\n      acc += e * e;\n"
             : "      acc += x[k] * s[k];\n",
-        rbf ? fmt::format("exp(-{}_gamma * acc)", prefix) : "acc");
+        rbf ? fmt::format("exp@F@(-{}_gamma * acc)", prefix) : "acc");
   } else if (const auto* m = std::get_if<Mlp>(&model.regressor)) {
     h += fmt::format("#define {}_N_HIDDEN {}\n", upper, m->hidden);
-    h += fmt::format("static const double {}_w1[{}] = {{{}}};\n", prefix, m->w1.size(),
+    h += fmt::format("static const @REAL@ {}_w1[{}] = {{{}}};\n", prefix, m->w1.size(),
                      c_array(m->w1));
-    h += fmt::format("static const double {}_b1[{}] = {{{}}};\n", prefix, m->b1.size(),
+    h += fmt::format("static const @REAL@ {}_b1[{}] = {{{}}};\n", prefix, m->b1.size(),
                      c_array(m->b1));
-    h += fmt::format("static const double {}_w2[{}] = {{{}}};\n", prefix, m->w2.size(),
+    h += fmt::format("static const @REAL@ {}_w2[{}] = {{{}}};\n", prefix, m->w2.size(),
                      c_array(m->w2));
-    h += fmt::format("static const double {}_b2 = {};\n\n", prefix, c_number(m->b2));
+    h += fmt::format("static const @REAL@ {}_b2 = {};\n\n", prefix, c_number(m->b2));
     body = fmt::format(
-        "  double z = {0}_b2;\n"
+        "  @REAL@ z = {0}_b2;\n"
         "  int h, k;\n"
         "  for (h = 0; h < {1}_N_HIDDEN; ++h) {{\n"
-        "    double a = {0}_b1[h];\n"
+        "    @REAL@ a = {0}_b1[h];\n"
         "    for (k = 0; k < {1}_N_FEATURES; ++k) a += {0}_w1[h * {1}_N_FEATURES + k] * x[k];\n"
-        "    z += {0}_w2[h] * tanh(a);\n"
+        "    z += {0}_w2[h] * tanh@F@(a);\n"
         "  }}\n",
         prefix, upper);
   } else {
@@ -648,13 +668,13 @@ std::string to_c_header(const CompensationModel& model, const std::string& prefi
       h += fmt::format("{}{}{}", i % 20 == 0 ? "\n    " : "", poly.exponents[i],
                        i + 1 < poly.exponents.size() ? ", " : "");
     h += "};\n";
-    h += fmt::format("static const double {}_poly_coef[{}] = {{{}}};\n\n", prefix, poly.terms(),
+    h += fmt::format("static const @REAL@ {}_poly_coef[{}] = {{{}}};\n\n", prefix, poly.terms(),
                      c_array(poly.coef));
     body = fmt::format(
-        "  double z = 0.0;\n"
+        "  @REAL@ z = 0.0;\n"
         "  int t, k, e;\n"
         "  for (t = 0; t < {1}_N_TERMS; ++t) {{\n"
-        "    double term = {0}_poly_coef[t];\n"
+        "    @REAL@ term = {0}_poly_coef[t];\n"
         "    for (k = 0; k < {1}_N_FEATURES; ++k)\n"
         "      for (e = {0}_exponents[t * {1}_N_FEATURES + k]; e > 0; --e) term *= x[k];\n"
         "    z += term;\n"
@@ -663,8 +683,8 @@ std::string to_c_header(const CompensationModel& model, const std::string& prefi
   }
   h += fmt::format(
       "/* Predicted drift, deg/h, for one row of features in their own units. */\n"
-      "static inline double {0}_predict_dph(const double features[{1}_N_FEATURES]) {{\n"
-      "  double x[{1}_N_FEATURES];\n"
+      "static inline @REAL@ {0}_predict_dph(const @REAL@ features[{1}_N_FEATURES]) {{\n"
+      "  @REAL@ x[{1}_N_FEATURES];\n"
       "  int j;\n"
       "  for (j = 0; j < {1}_N_FEATURES; ++j)\n"
       "    x[j] = (features[j] - {0}_feature_mean[j]) / {0}_feature_scale[j];\n"
@@ -674,9 +694,10 @@ std::string to_c_header(const CompensationModel& model, const std::string& prefi
       "}}\n\n",
       prefix, upper, body);
   h += c_guard_part(model, prefix, upper);
-  if (stream_dt_s > 0) h += c_streaming_part(model, prefix, upper, stream_dt_s, faults);
+  if (stream_dt_s > 0) h += c_streaming_part(model, prefix, upper, stream_dt_s, faults, single);
   h += fmt::format("#endif /* {}_H */\n", upper);
-  return h;
+  // The arithmetic type and <math.h>'s functions for it (expf, sqrtf, tanhf, fabsf in float).
+  return fill_template(std::move(h), {{"@REAL@", prefix + "_real"}, {"@F@", single ? "f" : ""}});
 }
 
 }  // namespace fogdrift

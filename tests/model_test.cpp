@@ -69,7 +69,7 @@ TEST(CHeader, NamesTheFeaturesAndRejectsBadPrefixes) {
   EXPECT_NE(h.find("#define UNIT7_N_FEATURES 3"), std::string::npos);
   EXPECT_NE(h.find("static const char* const unit7_feature_names[3] = {\"a\", \"b\", \"c\"};"),
             std::string::npos);
-  EXPECT_NE(h.find("static inline double unit7_predict_dph("), std::string::npos);
+  EXPECT_NE(h.find("static inline unit7_real unit7_predict_dph("), std::string::npos);
   EXPECT_EQ(h.find("malloc"), std::string::npos);
   EXPECT_THROW(to_c_header(model, "7unit"), OptionError);
   EXPECT_THROW(to_c_header(model, "my-model"), OptionError);

@@ -9,6 +9,7 @@
 #include "fault_options.hpp"
 #include "fogdrift/atomic_file.hpp"
 #include "fogdrift/c_header.hpp"
+#include "fogdrift/decimate.hpp"
 #include "fogdrift/error.hpp"
 #include "fogdrift/model.hpp"
 
@@ -21,6 +22,7 @@ struct ExportArgs {
   std::string output;
   std::string prefix = "fogdrift_model";
   double stream_rate_hz = 0;
+  std::string precision = "double";
   bool quiet = false;
   FaultPolicy faults;
 };
@@ -35,7 +37,8 @@ void run(const ExportArgs& a) {
   std::string header;
   try {
     header =
-        to_c_header(model, a.prefix, a.stream_rate_hz > 0 ? 1.0 / a.stream_rate_hz : 0.0, a.faults);
+        to_c_header(model, a.prefix, a.stream_rate_hz > 0 ? 1.0 / a.stream_rate_hz : 0.0, a.faults,
+                    a.precision == "float" ? CPrecision::single : CPrecision::double_);
   } catch (const OptionError& e) {
     if (e.option() == "prefix")
       throw OptionError("--prefix", fmt::format("'{}' is not a C identifier (letters, digits and "
@@ -45,19 +48,26 @@ void run(const ExportArgs& a) {
   }
   write_text_atomically(a.output, header);
   if (!a.quiet) {
-    std::cout << fmt::format("wrote {}: {}_predict_dph(features[{}]) for {} ({}), C99, no heap\n",
-                             a.output, a.prefix, model.inputs(), a.model,
-                             to_string(model.provenance.method));
+    std::cout << fmt::format(
+        "wrote {}: {}_predict_dph(features[{}]) for {} ({}), C99 in {}, no heap\n", a.output,
+        a.prefix, model.inputs(), a.model, to_string(model.provenance.method), a.precision);
+    const std::size_t block = a.stream_rate_hz > 0
+                                  ? decimation_factor(model.dataset.preprocessing.sample_interval_s,
+                                                      1.0 / a.stream_rate_hz, "--stream-rate-hz")
+                                  : 1;
     if (a.stream_rate_hz > 0)
       std::cout << fmt::format(
           "  and {0}_update(&state, time_s, temp_fog, temp_acc1, temp_acc2) "
-          "at {1} Hz, causal{2}, with the sensor-fault policy (--bridge-s {3}, --hold-s {4})\n",
+          "at {1} Hz{5}, causal{2}, with the sensor-fault policy (--bridge-s {3}, --hold-s {4})\n",
           a.prefix, a.stream_rate_hz,
           model.dataset.preprocessing.rates.causality == signal::Causality::causal
               ? ""
               : " (the model was trained with centred rates: train with "
                 "--differentiator causal for firmware)",
-          a.faults.bridge_s, a.faults.hold_s);
+          a.faults.bridge_s, a.faults.hold_s,
+          block > 1 ? fmt::format(" (the model once per {} samples, its {:.6g} s interval)", block,
+                                  model.dataset.preprocessing.sample_interval_s)
+                    : std::string());
     if (!model.guard.empty())
       std::cout << fmt::format(
           "  and {}_novelty(features): {} guard prototypes, correction "
@@ -87,7 +97,9 @@ void add_export_c(CLI::App& app) {
       "novel, as fogdrift stream does (#define PREFIX_GUARD 0 before the #include: full).\n"
       "Examples:\n"
       "  fogdrift export-c model.json -o unit42.h --prefix unit42   # unit42_predict_dph(...)\n"
-      "  fogdrift export-c causal.json -o unit42.h --stream-rate-hz 1  # and unit42_update(...)");
+      "  fogdrift export-c causal.json -o unit42.h --stream-rate-hz 1  # and unit42_update(...)\n"
+      "  fogdrift export-c causal.json -o unit42.h --stream-rate-hz 100 --precision float\n"
+      "      # a 1 Hz model on a 100 Hz logger, in float for a Cortex-M4F");
   cmd->add_option("model", args->model, "Model file written by `fogdrift train`")->required();
   cmd->add_flag("--allow-edited", args->allow_edited,
                 "Load a model file whose content no longer matches its checksum (an edit made on "
@@ -96,6 +108,12 @@ void add_export_c(CLI::App& app) {
   cmd->add_option("--prefix", args->prefix, "C name prefix of every symbol")->capture_default_str();
   cmd->add_option("--stream-rate-hz", args->stream_rate_hz,
                   "Also write PREFIX_update() for samples at this fixed rate, Hz (0: none)")
+      ->capture_default_str();
+  cmd->add_option("--precision", args->precision,
+                  "Arithmetic of the header: double (the model's numbers, what fogdrift computes) "
+                  "or float (for a 32-bit FPU such as a Cortex-M4F's; docs/firmware.md gives its "
+                  "error and cost); times stay double")
+      ->check(CLI::IsMember({"double", "float"}))
       ->capture_default_str();
   cmd->add_flag("-q,--quiet", args->quiet, "Print nothing on success");
   add_fault_options(cmd, args->faults);

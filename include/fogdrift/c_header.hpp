@@ -12,7 +12,7 @@ namespace fogdrift {
 /// A self-contained C99 header for an instrument's processor: the scalers and regressor as
 /// `static const` tables (numbers printed to 17 significant digits, so the doubles are the
 /// model's) and
-///   static inline double PREFIX_predict_dph(const double features[PREFIX_N_FEATURES]);
+///   static inline PREFIX_real PREFIX_predict_dph(const PREFIX_real features[PREFIX_N_FEATURES]);
 /// which needs only <math.h> (exp or tanh), no heap and no other state. The features are those of
 /// the model's spec, in the order listed in the header's comment and PREFIX_feature_names.
 /// `prefix` must be a C identifier (OptionError("prefix", …) otherwise).
@@ -28,8 +28,16 @@ namespace fogdrift {
 /// It is meant for a model trained with causal rates; the header says so when the model's were
 /// centred. OptionError("stream_dt_s", …) when the differentiator window does not fit the
 /// interval, and the FaultPolicy's own for invalid settings.
+/// The arithmetic of the header (`export-c --precision`); times stay double either way.
+enum class CPrecision {
+  double_,  ///< the model's numbers as they are: the header computes what fogdrift computes
+  single,   ///< float tables and arithmetic, for a 32-bit FPU (Cortex-M4F): docs/firmware.md
+};
+
+/// With CPrecision::single every table and all arithmetic but time are float (PREFIX_real), and
+/// <math.h>'s float functions are called.
 std::string to_c_header(const CompensationModel& model,
                         const std::string& prefix = "fogdrift_model", double stream_dt_s = 0,
-                        const FaultPolicy& faults = {});
+                        const FaultPolicy& faults = {}, CPrecision precision = CPrecision::double_);
 
 }  // namespace fogdrift

@@ -429,7 +429,7 @@ check "export-c summary" out_has "unit42_predict_dph(features[9])"
 check "export-c streaming" run 0 "$fd" export-c "$work/bp.json" -o "$work/unit_stream.h" --prefix u --stream-rate-hz 1
 check "export-c streaming summary" out_has "u_update(&state, time_s, temp_fog, temp_acc1, temp_acc2) at 1 Hz"
 check "export-c warns of centred rates" out_has "train with --differentiator causal for firmware"
-check "streaming header has the update" grep -qF "static inline double u_update(u_state* s" "$work/unit_stream.h"
+check "streaming header has the update" grep -qF "static inline u_real u_update(u_state* s" "$work/unit_stream.h"
 if command -v cc >/dev/null; then
   check "streaming header compiles as C99" cc -std=c99 -Wall -Wextra -pedantic -Werror -fsyntax-only -x c "$work/unit_stream.h"
 fi
@@ -442,7 +442,7 @@ check "export-c bad stream rate" run 1 "$fd" export-c "$work/bp.json" -o "$work/
 check "export-c bad stream rate message" err_has "option --stream-rate-hz: -1 is outside [0, 10000] Hz"
 check "export-c window too short for the rate" run 1 "$fd" export-c "$work/bp.json" -o "$work/bad.h" --stream-rate-hz 0.001
 check "export-c window message names the option" err_has "option --stream-rate-hz"
-check "header has the function" grep -q "static inline double unit42_predict_dph" "$work/unit.h"
+check "header has the function" grep -q "static inline unit42_real unit42_predict_dph" "$work/unit.h"
 check "bad prefix" run 1 "$fd" export-c "$work/bp.json" -o "$work/bad.h" --prefix 4unit
 check "prefix message" err_has "option --prefix: '4unit' is not a C identifier"
 check "no header on error" test ! -e "$work/bad.h"
