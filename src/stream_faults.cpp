@@ -2,11 +2,23 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "fogdrift/error.hpp"
 
 namespace fogdrift {
+
+FaultPolicy fault_policy_for(double model_dt_s, double rate_window_s) {
+  FaultPolicy p;
+  if (!(model_dt_s > 0) || !std::isfinite(model_dt_s)) return p;
+  p.bridge_s = std::max(p.bridge_s, 2 * model_dt_s);
+  if (rate_window_s > 0 && std::isfinite(rate_window_s))
+    p.hold_s = std::max(p.hold_s, 2 * rate_window_s);
+  p.hold_s = std::max(p.hold_s, p.bridge_s);
+  p.stuck_s = std::max(p.stuck_s, 5 * model_dt_s);
+  return p;
+}
 
 void validate(const FaultPolicy& p) {
   auto finite = [](double v) { return std::isfinite(v); };

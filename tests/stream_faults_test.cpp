@@ -385,5 +385,23 @@ int main(void) {
   EXPECT_GT(flagged, 200u);
 }
 
+// Timings fitted to a model's interval (fault_policy_for): the defaults at 1 Hz; a model of 10 s
+// samples bridges two of them; of 305 s samples and a 5-sample rate window (1525 s), bridges
+// 610 s, holds two windows and checks for a stuck thermometer over five samples.
+TEST(FaultPolicyFor, StretchesTheTimingsForASlowModel) {
+  const FaultPolicy defaults;
+  const FaultPolicy at_1hz = fault_policy_for(1.0, 121.0);
+  EXPECT_EQ(at_1hz.bridge_s, defaults.bridge_s);
+  EXPECT_EQ(at_1hz.hold_s, defaults.hold_s);
+  EXPECT_EQ(at_1hz.stuck_s, defaults.stuck_s);
+  EXPECT_EQ(fault_policy_for(10.0, 130.0).bridge_s, 20.0);
+  const FaultPolicy slow = fault_policy_for(305.0, 1525.0);
+  EXPECT_EQ(slow.bridge_s, 610.0);
+  EXPECT_EQ(slow.hold_s, 3050.0);
+  EXPECT_EQ(slow.stuck_s, 1525.0);
+  EXPECT_EQ(slow.temp_max_degc, defaults.temp_max_degc);
+  EXPECT_NO_THROW(validate(slow));
+}
+
 }  // namespace
 }  // namespace fogdrift

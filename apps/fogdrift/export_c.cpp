@@ -27,13 +27,15 @@ struct ExportArgs {
   FaultPolicy faults;
 };
 
-void run(const ExportArgs& a) {
+void run(const ExportArgs& given, const CLI::App& cmd) {
+  ExportArgs a = given;  // fault timings not given come from the model
   const CompensationModel model = load_compensation_model(a.model, {a.allow_edited});
+  fault_timings_from_model(cmd, model, a.faults);
+  with_flags(fault_flags(), [&] { validate(a.faults); });
   if (!(a.stream_rate_hz >= 0) || a.stream_rate_hz > 10000)
     throw OptionError("--stream-rate-hz", fmt::format("{} is outside [0, 10000] Hz (0: no "
                                                       "streaming part)",
                                                       a.stream_rate_hz));
-  with_flags(fault_flags(), [&] { validate(a.faults); });
   std::string header;
   try {
     header =
@@ -117,7 +119,7 @@ void add_export_c(CLI::App& app) {
       ->capture_default_str();
   cmd->add_flag("-q,--quiet", args->quiet, "Print nothing on success");
   add_fault_options(cmd, args->faults);
-  cmd->callback([args] { with_model_settings(args->model, [&] { run(*args); }); });
+  cmd->callback([args, cmd] { with_model_settings(args->model, [&] { run(*args, *cmd); }); });
 }
 
 }  // namespace fogdrift::app

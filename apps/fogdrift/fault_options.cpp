@@ -37,6 +37,19 @@ void add_fault_options(CLI::App* cmd, FaultPolicy& p) {
       ->group(group);
 }
 
+void fault_timings_from_model(const CLI::App& cmd, const CompensationModel& model,
+                              FaultPolicy& policy) {
+  const FeatureOptions& f = model.dataset.preprocessing;
+  if (f.sample_interval_s == 0) return;  // a model file that does not record it: the defaults
+  const FaultPolicy fitted =
+      fault_policy_for(f.sample_interval_s,
+                       static_cast<double>(signal::window_samples(f.rates, f.sample_interval_s)) *
+                           f.sample_interval_s);
+  if (cmd.count("--bridge-s") == 0) policy.bridge_s = fitted.bridge_s;
+  if (cmd.count("--hold-s") == 0) policy.hold_s = fitted.hold_s;
+  if (cmd.count("--stuck-s") == 0) policy.stuck_s = fitted.stuck_s;
+}
+
 const FlagTable& fault_flags() {
   static const FlagTable kFlags = {{"faults.temp_min_degc", "--temp-min-degc"},
                                    {"faults.temp_max_degc", "--temp-max-degc"},

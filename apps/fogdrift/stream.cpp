@@ -71,11 +71,13 @@ void stop_at_fault(const std::string& name, std::size_t line_no, std::uint32_t f
       fmt::format("is a faulty sample ({}); --strict stops at the first", fault::describe(flags)));
 }
 
-void run(const StreamArgs& a) {
+void run(const StreamArgs& given, const CLI::App& cmd) {
+  StreamArgs a = given;  // fault timings not given come from the model
   if (!(a.rate_hz > 0) || a.rate_hz > 10000)
     throw OptionError("--rate-hz", fmt::format("{} is outside (0, 10000] Hz", a.rate_hz));
-  with_flags(fault_flags(), [&] { validate(a.faults); });
   const CompensationModel model = load_compensation_model(a.model, {a.allow_edited});
+  fault_timings_from_model(cmd, model, a.faults);
+  with_flags(fault_flags(), [&] { validate(a.faults); });
   // Streamed, a model trained on centred rates sees causal ones, noisier than those it learned:
   // a tuned SVR's drift then departs from its batch drift by about the drift's own STD
   // (docs/compensation.md). The stream still runs; the user is told, as export-c tells.
@@ -221,7 +223,7 @@ void add_stream(CLI::App& app) {
                 "Stop at the first faulty sample or torn line, naming its line and column, instead "
                 "of compensating through it");
   add_fault_options(cmd, args->faults);
-  cmd->callback([args] { with_model_settings(args->model, [&] { run(*args); }); });
+  cmd->callback([args, cmd] { with_model_settings(args->model, [&] { run(*args, *cmd); }); });
 }
 
 }  // namespace fogdrift::app

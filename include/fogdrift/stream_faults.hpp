@@ -52,6 +52,16 @@ struct FaultPolicy {
 /// Throws OptionError naming the field (faults.temp_min_degc, faults.bridge_s, …) and the rule.
 void validate(const FaultPolicy& policy);
 
+/// The policy's timings for a model whose features are formed every `model_dt_s` seconds with a
+/// rate window of `rate_window_s` (docs/compensation.md, "Sensor faults"): the defaults above,
+/// which suit a model at 1 Hz or faster, stretched for a slower one so that each still means what
+/// it says in samples of the model:
+///   bridge_s = max(5 s, 2 intervals)          one missing model sample is bridged
+///   hold_s   = max(300 s, 2 rate windows)     the hold outlasts the refill of the rate window
+///   stuck_s  = max(300 s, 5 intervals)
+/// The thermometer and gyro limits are the defaults'.
+FaultPolicy fault_policy_for(double model_dt_s, double rate_window_s);
+
 /// Per-sample flags of the streaming compensator, OR-ed together.
 namespace fault {
 constexpr std::uint32_t temp_bad = 1u << 0;      ///< a thermometer not a number or out of range

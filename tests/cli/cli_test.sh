@@ -402,6 +402,15 @@ check "export-c at 10 Hz" run 0 "$fd" export-c "$work/causal.json" -o "$work/u10
 check "export-c at 10 Hz: blocks of 10" grep -qF "#define FOGDRIFT_MODEL_BLOCK 10 " "$work/u10.h"
 check "export-c slower than the model" run 1 "$fd" export-c "$work/causal.json" -o "$work/never.h" --stream-rate-hz 0.5
 check "export-c slower message" err_has "option --stream-rate-hz: the data come every 2 s"
+# Fault timings follow the model's interval unless given: a model of 10 s samples bridges 20 s.
+check "simulate at 0.1 Hz" run 0 "$fd" simulate calibration --out "$work/slow" --temps 0,20,40 --repetitions 3 --rate-hz 0.1
+check "train at 0.1 Hz" run 0 "$fd" train "$work/slow" --method poly --differentiator causal -q -o "$work/slow.json"
+check "export-c timings from the model" run 0 "$fd" export-c "$work/slow.json" -o "$work/slow.h" --stream-rate-hz 1
+check "export-c prints them" out_has "(--bridge-s 20, --hold-s 300)"
+check "export-c blocks of 10" out_has "(the model once per 10 samples, its 10 s interval)"
+check "the header has them" grep -qF "#define FOGDRIFT_MODEL_BRIDGE_S (20)" "$work/slow.h"
+check "export-c timings given win" run 0 "$fd" export-c "$work/slow.json" -o "$work/slow.h" --stream-rate-hz 1 --bridge-s 7
+check "export-c prints the given one" out_has "(--bridge-s 7, --hold-s 300)"
 check "stream bad policy" run 1 "$fd" stream "$work/causal.json" "$rec20" --rate-hz 1 --hold-s 2
 check "stream bad policy message" err_has "option --hold-s: 2 s must be finite and no shorter than the bridge (5 s)"
 cut -d, -f1,2,3,4 "$rec20" >"$work/no_acc2.csv"
