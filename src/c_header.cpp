@@ -473,7 +473,7 @@ std::string c_streaming_part(const CompensationModel& model, const std::string& 
   if (!std::isfinite(data_dt_s)) throw OptionError("stream_dt_s", "must be a finite interval");
   validate(faults);
   const std::size_t block =
-      decimation_factor(model.dataset.preprocessing.sample_interval_s, data_dt_s, "stream_dt_s");
+      decimation_factor(model.dataset.preprocessing, data_dt_s, "stream_dt_s");
   const double dt_s = static_cast<double>(block) * data_dt_s;  // the model's interval
   signal::CausalDifferentiator diff(model.dataset.preprocessing.rates, dt_s);
   const std::size_t w = diff.window();

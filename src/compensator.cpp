@@ -9,7 +9,7 @@ namespace fogdrift {
 StreamingCompensator::StreamingCompensator(const CompensationModel& model, double dt_s,
                                            const StreamOptions& options)
     : model_(model),
-      k_(decimation_factor(model.dataset.preprocessing.sample_interval_s, dt_s, "rate")),
+      k_(decimation_factor(model.dataset.preprocessing, dt_s, "rate")),
       data_dt_s_(dt_s),
       dt_s_(static_cast<double>(k_) * dt_s),
       faults_(options.faults),

@@ -29,6 +29,25 @@ std::size_t decimation_factor(double model_dt_s, double data_dt_s, const std::st
   return static_cast<std::size_t>(k);
 }
 
+std::size_t decimation_factor(const FeatureOptions& model, double data_dt_s,
+                              const std::string& option) {
+  const std::size_t k = decimation_factor(model.sample_interval_s, data_dt_s, option);
+  constexpr std::size_t kLongestUnrecordedWindow = 1001;
+  if (model.sample_interval_s == 0 && std::isfinite(data_dt_s) && data_dt_s > 0) {
+    const std::size_t w = signal::window_samples(model.rates, data_dt_s);
+    if (w > kLongestUnrecordedWindow)
+      throw OptionError(
+          option,
+          fmt::format("the model file does not record the interval it was trained at (written "
+                      "before models did), so its {:.6g} s rate window would run at the data's "
+                      "{:.6g} Hz: {} samples, too many to set up; train the model again (the "
+                      "model then runs on blocks at its own rate), or resample the data to the "
+                      "training rate (fogdrift import ... --step-s)",
+                      model.rates.window_s, 1 / data_dt_s, w));
+  }
+  return k;
+}
+
 Recording decimate(const Recording& recording, std::size_t k) {
   if (k <= 1) return recording;
   Recording out;

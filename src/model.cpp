@@ -98,8 +98,7 @@ RecordingPrediction CompensationModel::predict(const Recording& recording, bool 
   // Data faster than the model's interval: its blocks, one prediction each, held (decimate.hpp).
   std::size_t k = 1;
   try {
-    k = decimation_factor(dataset.preprocessing.sample_interval_s, sample_interval_s(recording),
-                          "rate");
+    k = decimation_factor(dataset.preprocessing, sample_interval_s(recording), "rate");
   } catch (const OptionError& e) {
     throw InputError(recording.source, 0, 0, e.message());
   }

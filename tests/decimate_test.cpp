@@ -33,6 +33,25 @@ TEST(DecimationFactor, RefusesWhatTheModelCannotRunAt) {
   expect_refused(1.0, 0.0, "positive and finite");
 }
 
+// A model file without its interval runs its filter at the data's rate: up to 1001 samples in
+// its window (121 s at 8 Hz), refused beyond (121 s at 10 Hz is 1211), naming the fix.
+TEST(DecimationFactor, RefusesAnUnrecordedModelAtAHighRate) {
+  FeatureOptions legacy;  // sample_interval_s = 0, window 121 s
+  EXPECT_EQ(decimation_factor(legacy, 1.0 / 8, "--rate-hz"), 1u);
+  try {
+    decimation_factor(legacy, 0.1, "--rate-hz");
+    ADD_FAILURE() << "10 Hz should be refused";
+  } catch (const OptionError& e) {
+    EXPECT_EQ(e.option(), "--rate-hz");
+    EXPECT_NE(e.message().find("1211 samples, too many to set up; train the model again"),
+              std::string::npos)
+        << e.message();
+  }
+  FeatureOptions recorded = legacy;
+  recorded.sample_interval_s = 1.0;
+  EXPECT_EQ(decimation_factor(recorded, 0.001, "--rate-hz"), 1000u);
+}
+
 // Blocks in closed form: k = 3 on samples 0 … 7 gives block 0 = {0}, block 1 = {1, 2, 3},
 // block 2 = {4, 5, 6}; sample 7 starts a block that is not complete.
 TEST(Decimate, FirstSampleAloneThenBlocksOfK) {

@@ -54,7 +54,7 @@ void run(const ExportArgs& given, const CLI::App& cmd) {
         "wrote {}: {}_predict_dph(features[{}]) for {} ({}), C99 in {}, no heap\n", a.output,
         a.prefix, model.inputs(), a.model, to_string(model.provenance.method), a.precision);
     const std::size_t block = a.stream_rate_hz > 0
-                                  ? decimation_factor(model.dataset.preprocessing.sample_interval_s,
+                                  ? decimation_factor(model.dataset.preprocessing,
                                                       1.0 / a.stream_rate_hz, "--stream-rate-hz")
                                   : 1;
     if (a.stream_rate_hz > 0)

@@ -18,6 +18,7 @@
 #include <cstddef>
 #include <string>
 
+#include "fogdrift/features.hpp"
 #include "fogdrift/recording.hpp"
 
 namespace fogdrift {
@@ -27,6 +28,13 @@ namespace fogdrift {
 /// data's own rate). Throws OptionError naming `option` when the data are slower than the model
 /// or dt_m / dt_d is more than 1 % from a whole number, with the fix.
 std::size_t decimation_factor(double model_dt_s, double data_dt_s, const std::string& option);
+
+/// The same for a model's preprocessing, with one more refusal: a model file that does not record
+/// its interval runs its rate filter at the data's own rate, whose set-up grows with the square
+/// of the window in samples; beyond 1001 samples (a 121 s window above about 8 Hz) it is refused,
+/// naming the fix (retrain, which records the interval, or resample the data).
+std::size_t decimation_factor(const FeatureOptions& model, double data_dt_s,
+                              const std::string& option);
 
 /// The recording in blocks of `k` samples (see the file comment): time of each block's last
 /// sample, thermometers and gyro averaged; other columns are not kept. k = 1 returns a copy.
