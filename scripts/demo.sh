@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
-# Installs what is missing, builds fogdrift in Release and runs the main job: `fogdrift demo`.
+# Installs what is missing, builds the fogdrift executable in Release (the tests, benchmarks and
+# Python module are built by scripts/test.sh) and runs the main job: `fogdrift demo`.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
-bash "$root/scripts/build.sh" "$root/build"
+FOGDRIFT_TARGET=fogdrift_cli bash "$root/scripts/build.sh" "$root/build"
 exec "$root/build/apps/fogdrift/fogdrift" demo "$@"
