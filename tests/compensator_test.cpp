@@ -38,9 +38,9 @@ TEST(CausalDifferentiator, MatchesTheBatchFilterBitForBit) {
 // The C header's streaming part (to_c_header with a sample interval), compiled by the C compiler
 // and fed the recording sample by sample; returns its drift for every sample.
 std::vector<double> c_header_stream(const CompensationModel& model, const Recording& rec,
-                                    double dt_s = 1.0) {
+                                    double dt_s = 1.0, CPrecision precision = CPrecision::double_) {
   test::TempDir dir;
-  test::write_file(dir / "model.h", to_c_header(model, "fd", dt_s));
+  test::write_file(dir / "model.h", to_c_header(model, "fd", dt_s, {}, precision));
   test::write_file(dir / "driver.c", R"(#include <stdio.h>
 #include "model.h"
 int main(void) {
@@ -185,6 +185,28 @@ TEST(StreamingCompensator, RunsAFasterLoggerOnBlocks) {
   const double at_10hz = error_std(batch.drift_dph, fast.numeric_column("drift_true_dph"));
   const double at_1hz = error_std(model.predict_dph(slow), slow.numeric_column("drift_true_dph"));
   EXPECT_LT(at_10hz, 1.05 * at_1hz) << at_10hz << " °/h against " << at_1hz << " °/h at 1 Hz";
+}
+
+// The header in float (export-c --precision float), on the host: every drift within 1e-3 of the
+// drift's STD of the library's (tests/firmware runs it on a Cortex-M4F).
+TEST(StreamingCompensator, FloatHeaderWithinAThousandthOfTheDriftsStd) {
+  for (const Method method : {Method::poly, Method::svr}) {
+    const CompensationModel model = causal_model({-20, 10, 40}, 2, method);
+    sim::NorthfindOptions no;
+    no.temps_degc = {25};
+    no.findings = 2;
+    const Recording test = sim::simulate_northfind(sim::Instrument{}, no).recordings.front();
+    const std::vector<double> batch = model.predict_dph(test);
+    const std::vector<double> in_float = c_header_stream(model, test, 1.0, CPrecision::single);
+    ASSERT_EQ(in_float.size(), batch.size());
+    double mean = 0, var = 0, worst = 0;
+    for (double v : batch) mean += v / static_cast<double>(batch.size());
+    for (double v : batch) var += (v - mean) * (v - mean) / static_cast<double>(batch.size());
+    for (std::size_t i = 0; i < batch.size(); ++i)
+      worst = std::max(worst, std::abs(in_float[i] - batch[i]));
+    EXPECT_LT(worst, 1e-3 * std::sqrt(var)) << to_string(method);
+    EXPECT_GT(worst, 0.0) << "float should differ from double somewhere";
+  }
 }
 
 // A start-up unlike the calibration (soaked at 45 °C, where the model saw only the chamber's
