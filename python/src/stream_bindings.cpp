@@ -66,7 +66,12 @@ std::unique_ptr<Stream> make_stream(const CompensationModel& model, double dt_s,
                      "train with differentiator='causal'",
                      1) != 0)
       throw py::error_already_set();
-  return std::make_unique<Stream>(model, dt_s, o);
+  try {
+    return std::make_unique<Stream>(model, dt_s, o);
+  } catch (const OptionError& e) {  // an interval the model cannot run at: the keyword dt_s
+    if (e.option() == "rate") throw OptionError("dt_s", e.message());
+    throw;
+  }
 }
 
 py::tuple update(Stream& s, double time_s, double gyro_dph, double temp_fog_degc,

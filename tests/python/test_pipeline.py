@@ -255,6 +255,9 @@ def test_a_causal_model_streams_its_batch_drift_without_a_warning(campaign, recw
     streamed = fogdrift.StreamingCompensator(causal, 1.0).run(columns)
     np.testing.assert_array_equal(streamed["drift_dph"], causal.predict(columns)["drift_dph"])
     assert not [w for w in recwarn if issubclass(w.category, UserWarning)]
+    # The model records its 1 s interval: 2 s data are refused, naming the keyword.
+    with pytest.raises(ValueError, match="option dt_s: the data come every 2 s"):
+        fogdrift.StreamingCompensator(causal, 2.0)
 
 
 def test_a_campaign_in_memory_trains_the_folders_model(campaign):
