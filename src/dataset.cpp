@@ -6,6 +6,7 @@
 #include <numbers>
 #include <numeric>
 
+#include "fogdrift/decimate.hpp"
 #include "fogdrift/earth.hpp"
 #include "fogdrift/error.hpp"
 #include "fogdrift/memory.hpp"
@@ -88,9 +89,19 @@ Dataset build_dataset(const std::vector<RecordingInput>& inputs, const DatasetOp
   out.feature_spec = options.features.to_string();
   for (const auto& input : inputs) {
     GroupInfo info = input.info;
+    // Data faster than the model's interval: its features and target in the model's blocks
+    // (decimate.hpp); the target is formed at the data's rate first.
+    std::size_t k = 1;
+    try {
+      k = decimation_factor(options.preprocessing, sample_interval_s(input.recording), "rate");
+    } catch (const OptionError& e) {
+      throw InputError(input.recording.source, 0, 0, e.message());
+    }
     const FeatureTable table =
-        compute_features(input.recording, options.features, options.preprocessing);
-    const auto y = drift_target(input, options, info, out.warnings);
+        k > 1 ? compute_features(decimate(input.recording, k), options.features,
+                                 options.preprocessing)
+              : compute_features(input.recording, options.features, options.preprocessing);
+    const auto y = decimate(drift_target(input, options, info, out.warnings), k);
     const auto y_blocks = signal::block_average(y, table.block);
     const std::size_t g = out.groups.size();
     info.warm_rows = table.warm_rows;

@@ -74,3 +74,21 @@ Recording decimate(const Recording& recording, std::size_t k) {
 }
 
 }  // namespace fogdrift
+
+namespace fogdrift {
+
+std::vector<double> decimate(std::span<const double> values, std::size_t k) {
+  if (k <= 1) return {values.begin(), values.end()};
+  std::vector<double> out;
+  const std::size_t n = values.size();
+  for (std::size_t first = 0, last = 0; first < n; first = last + 1) {
+    last = first == 0 ? 0 : std::min(n - 1, first + k - 1);
+    if (first != 0 && last - first + 1 < k) break;
+    double sum = 0;
+    for (std::size_t i = first; i <= last; ++i) sum += values[i];
+    out.push_back(sum / static_cast<double>(last - first + 1));
+  }
+  return out;
+}
+
+}  // namespace fogdrift

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <numeric>
 
+#include "fogdrift/decimate.hpp"
 #include "fogdrift/earth.hpp"
 #include "fogdrift/error.hpp"
 #include "fogdrift/sim/scenarios.hpp"
@@ -106,6 +107,45 @@ TEST(Dataset, TargetFollowsTheTrueDrift) {
     // Besides the turn-on bias, what is left is well below the raw gyro's noise in 10 s means
     // (bench/denoise_study measures about 0.35 of it; white noise is removed, flicker is not).
     EXPECT_LT(centred_rms(diff), 0.5 * centred_rms(raw_diff)) << g;
+  }
+}
+
+// Rows of a recording logged faster than the model's interval are the rows of its blocks
+// (decimate.hpp): 10 Hz data for a 1 Hz model give the rows, features and block times of the
+// same start-up decimated by 10, and its target is the decimated target; a rate that is not a
+// whole fraction is refused naming the recording.
+TEST(Dataset, FasterDataInTheModelsBlocks) {
+  sim::NorthfindOptions no;
+  no.temps_degc = {20};
+  no.findings = 1;
+  no.output_rate_hz = 10;
+  RecordingInput fast;
+  fast.recording = sim::simulate_northfind(sim::Instrument{}, no).recordings.front();
+  fast.input_rate_dph = 0.0;
+  DatasetOptions o;
+  o.preprocessing.sample_interval_s = 1.0;
+  const Dataset d = build_dataset({fast}, o);
+  RecordingInput slow = fast;
+  slow.recording = decimate(fast.recording, 10);
+  DatasetOptions at_model_rate = o;
+  at_model_rate.denoise_target = false;  // the decimated target is compared below, not denoised
+  o.denoise_target = false;
+  const Dataset dn = build_dataset({fast}, o);
+  const Dataset ds = build_dataset({slow}, at_model_rate);
+  ASSERT_EQ(dn.rows, ds.rows);
+  EXPECT_EQ(d.rows, ds.rows);
+  EXPECT_EQ(dn.x, ds.x);
+  EXPECT_EQ(dn.time_s, ds.time_s);
+  for (std::size_t i = 0; i < dn.rows; ++i) EXPECT_NEAR(dn.y[i], ds.y[i], 1e-12) << i;
+  fast.recording.time_s.assign(fast.recording.size(), 0.0);
+  for (std::size_t i = 0; i < fast.recording.size(); ++i) fast.recording.time_s[i] = 0.4 * i;
+  fast.recording.source = "fast.csv";
+  try {
+    build_dataset({fast}, o);
+    ADD_FAILURE() << "0.4 s samples for a 1 s model should be refused";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("fast.csv"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("not a whole fraction"), std::string::npos) << e.what();
   }
 }
 

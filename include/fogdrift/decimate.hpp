@@ -16,7 +16,9 @@
 #pragma once
 
 #include <cstddef>
+#include <span>
 #include <string>
+#include <vector>
 
 #include "fogdrift/features.hpp"
 #include "fogdrift/recording.hpp"
@@ -39,6 +41,10 @@ std::size_t decimation_factor(const FeatureOptions& model, double data_dt_s,
 /// The recording in blocks of `k` samples (see the file comment): time of each block's last
 /// sample, thermometers and gyro averaged; other columns are not kept. k = 1 returns a copy.
 Recording decimate(const Recording& recording, std::size_t k);
+
+/// One column in the same blocks: the mean of each (a target at the data's rate brought to the
+/// model's rows, build_dataset).
+std::vector<double> decimate(std::span<const double> values, std::size_t k);
 
 /// Sums of the thermometers over a block as it fills, shared by the streaming paths.
 struct BlockSum {

@@ -387,6 +387,8 @@ check "stream range option: nothing flagged" test ! -s "$work/err"
 check "the model records its interval" grep -q '"sample_interval_s": 1.0' "$work/causal.json"
 check "simulate at 10 Hz" run 0 "$fd" simulate northfind --out "$work/nf10" --temps 20 --findings 1 --rate-hz 10
 check "compensate at 10 Hz" run 0 "$fd" compensate "$work/causal.json" "$work/nf10/nf_20C.csv" -o "$work/comp10.csv" -q
+check "evaluate at 10 Hz" run 0 "$fd" evaluate "$work/causal.json" "$work/nf10/nf_20C.csv" --json
+check "evaluate at 10 Hz: rows at the model's rate" python3 -c 'import json,sys; d=json.load(open(sys.argv[1])); assert d["overall"]["rows"] == 36, d["overall"]["rows"]' "$work/out"
 check "stream at 10 Hz" run 0 "$fd" stream "$work/causal.json" "$work/nf10/nf_20C.csv" --rate-hz 10
 check "stream at 10 Hz equals compensate" bash -c "cut -d, -f1-14 '$work/out' | cmp -s - '$work/comp10.csv'"
 check "stream at 10 Hz unflagged" bash -c "awk -F, 'NR>1 && \$15!=0{bad=1} END{exit bad}' '$work/out'"
