@@ -280,6 +280,10 @@ check "train with causal rates" run 0 "$fd" train "$work/small" --method poly --
 check "causal rates in the model" grep -q '"causality": "causal"' "$work/causal.json"
 check "bad differentiator" run 1 "$fd" train "$work/small" --differentiator future -o "$work/x.json"
 check "differentiator message" err_has "option --differentiator: 'future' is not a differentiator"
+check "bad rate degree" run 1 "$fd" train "$work/small" --rate-degree 5 -o "$work/x.json"
+check "rate degree message" err_has "option --rate-degree: 5 is outside 1..4"
+check "train with a causal line fit" run 0 "$fd" train "$work/small" --method poly --differentiator causal --rate-degree 1 -q -o "$work/line.json"
+check "the degree in the model" grep -q '"poly_order": 1' "$work/line.json"
 check "bad fitness" run 1 "$fd" train "$work/small" --fitness loo -o "$work/x.json"
 check "fitness message" err_has "option --fitness: 'loo' is not a fitness (cv, train)"
 check "one fold is impossible" run 1 "$fd" train "$work/small" --cv recording --folds 1 \
