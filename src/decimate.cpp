@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "fogdrift/error.hpp"
@@ -72,10 +73,6 @@ Recording decimate(const Recording& recording, std::size_t k) {
   }
   return out;
 }
-
-}  // namespace fogdrift
-
-namespace fogdrift {
 
 std::vector<double> decimate(std::span<const double> values, std::size_t k) {
   if (k <= 1) return {values.begin(), values.end()};
