@@ -251,15 +251,17 @@ FeatureOptions preprocessing_for(double dt_s, std::size_t shortest_samples,
   o.block.block_s = per_block * dt_s;
   if (std::fabs(defaults.block.block_s / dt_s - per_block) <= 1e-6 * per_block)
     o.block.block_s = defaults.block.block_s;  // exactly 10 s, not 10 s up to rounding
+  const signal::DifferentiatorOptions recommended = signal::recommended_rates(o.rates.causality);
+  o.rates.poly_order = recommended.poly_order;
   constexpr double kMinWindow = 5;
-  double window = std::max(defaults.rates.window_s / dt_s, kMinWindow);
+  double window = std::max(recommended.window_s / dt_s, kMinWindow);
   if (o.rates.causality == signal::Causality::centred && shortest_samples > 0) {
     const double longest_odd =
         static_cast<double>(shortest_samples % 2 == 1 ? shortest_samples : shortest_samples - 1);
     window = std::max(kMinWindow, std::min(window, longest_odd));
   }
   o.rates.window_s = window * dt_s;
-  if (window == defaults.rates.window_s / dt_s) o.rates.window_s = defaults.rates.window_s;
+  if (window == recommended.window_s / dt_s) o.rates.window_s = recommended.window_s;
   o.sample_interval_s = dt_s;
   return o;
 }

@@ -39,19 +39,22 @@ CampaignTrainResult train_inputs(const std::vector<RecordingInput>& inputs,
                                    common.size() == 1 ? "" : "s", dataset.features.to_string())});
   }
   const FeatureOptions defaults;
+  const signal::DifferentiatorOptions recommended =
+      signal::recommended_rates(dataset.preprocessing.rates.causality);
   dataset.preprocessing.block.block_s = options.block_s.value_or(fitted.block.block_s);
   dataset.preprocessing.rates.window_s = options.rate_window_s.value_or(fitted.rates.window_s);
+  dataset.preprocessing.rates.poly_order = options.rate_degree.value_or(fitted.rates.poly_order);
   dataset.preprocessing.sample_interval_s = fitted.sample_interval_s;  // decimate.hpp
   if (!options.block_s && fitted.block.block_s != defaults.block.block_s)
     out.notes.push_back(
         {"block_s", fmt::format("recordings sampled every {:.6g} s: blocks of "
                                 "{:.6g} s, not {} s",
                                 dt_s, fitted.block.block_s, defaults.block.block_s)});
-  if (!options.rate_window_s && fitted.rates.window_s != defaults.rates.window_s)
+  if (!options.rate_window_s && fitted.rates.window_s != recommended.window_s)
     out.notes.push_back(
         {"window_s", fmt::format("recordings sampled every {:.6g} s, shortest {} samples: "
                                  "temperature rates over {:.6g} s, not {} s",
-                                 dt_s, shortest, fitted.rates.window_s, defaults.rates.window_s)});
+                                 dt_s, shortest, fitted.rates.window_s, recommended.window_s)});
   out.data = build_dataset(inputs, dataset);
   if (out.data.rows == 0)
     throw InputError(manifest, 0, 0,

@@ -2,6 +2,7 @@
 #include <fmt/format.h>
 
 #include <chrono>
+#include <cmath>
 #include <iostream>
 #include <memory>
 #include <nlohmann/json.hpp>
@@ -33,7 +34,7 @@ struct TrainArgs {
       std::string(signal::to_string(DatasetOptions{}.preprocessing.rates.causality));
   std::string block_s = "auto";
   std::string rate_window_s = "auto";
-  int rate_degree = DatasetOptions{}.preprocessing.rates.poly_order;
+  std::string rate_degree = "auto";
   std::size_t folds = kTrain.tune.cv.folds;
   std::size_t population = kRun.population;
   std::size_t iterations = kRun.iterations;
@@ -81,6 +82,16 @@ std::optional<double> seconds_or_auto(const std::string& text, const std::string
   return v;
 }
 
+/// "auto" or a polynomial degree 1..4.
+std::optional<int> degree_or_auto(const std::string& text) {
+  if (text == "auto") return std::nullopt;
+  const auto v = csv::parse_number(text);
+  if (!v || *v != std::floor(*v) || *v < 1 || *v > 4)
+    throw OptionError("--rate-degree",
+                      fmt::format("'{}' is neither auto nor a whole degree 1..4", text));
+  return static_cast<int>(*v);
+}
+
 void run(const TrainArgs& a) {
   TrainOptions options;
   DatasetOptions dataset;
@@ -91,9 +102,6 @@ void run(const TrainArgs& a) {
     if (a.features != "auto") dataset.features = FeatureSpec::parse(a.features);
     dataset.preprocessing.rates.causality =
         signal::parse_causality(a.differentiator, "--differentiator");
-    if (a.rate_degree < 1 || a.rate_degree > 4)
-      throw OptionError("--rate-degree", fmt::format("{} is outside 1..4", a.rate_degree));
-    dataset.preprocessing.rates.poly_order = a.rate_degree;
   } catch (const OptionError& e) {
     throw as_flag(e, kTrainFlags);
   }
@@ -135,6 +143,7 @@ void run(const TrainArgs& a) {
   campaign_options.auto_features = a.features == "auto";
   campaign_options.block_s = seconds_or_auto(a.block_s, "--block-s");
   campaign_options.rate_window_s = seconds_or_auto(a.rate_window_s, "--rate-window-s");
+  campaign_options.rate_degree = degree_or_auto(a.rate_degree);
   const Campaign campaign = read_campaign(a.campaign);
   CampaignTrainResult trained;
   try {
@@ -296,13 +305,15 @@ void add_train(CLI::App& app) {
          "(one sample for logs slower than 0.1 Hz)")
       ->capture_default_str();
   cmd->add_option("--rate-window-s", args->rate_window_s,
-                  "Window of the temperature-rate differentiator, s; auto: 121 s, at least 5 "
-                  "samples, and (centred) no longer than the shortest recording")
+                  "Window of the temperature-rate differentiator, s; auto: 121 s centred, "
+                  "61 s causal, at least 5 samples, and (centred) no longer than the shortest "
+                  "recording")
       ->capture_default_str();
   cmd->add_option("--rate-degree", args->rate_degree,
-                  "Degree of the polynomial the differentiator fits, 1..4: for causal rates 1 is "
-                  "the least noisy and lags by half the window, 2 does not lag a steady "
-                  "curvature and is about four times noisier (docs/signal.md)")
+                  "Degree of the polynomial the differentiator fits, 1..4; auto: 2 centred, 1 "
+                  "causal. For causal rates 1 is the least noisy and lags by half the window, 2 "
+                  "does not lag a steady curvature and is about four times noisier "
+                  "(docs/signal.md)")
       ->capture_default_str();
   cmd->add_option("--cv", args->cv,
                   "Folds: auto (temperature with at least three temperatures, else repetition), "

@@ -138,11 +138,14 @@ struct FeatureOptions {
 /// which has shortest_samples samples (docs/logs.md, "Slow or short logs"):
 ///   block_s   10 s when that is a whole number of samples; else the whole number of samples
 ///             nearest 10 s, at least one (a log slower than 0.1 Hz is not averaged further);
-///   window_s  121 s when that spans at least 5 samples, else 5 samples; for the centred
-///             differentiator no longer than the shortest recording (its largest odd number of
-///             samples, at least 5: a shorter recording still fails, naming window_s).
+///   window_s  the recommended window for the base's causality (signal::recommended_rates:
+///             121 s centred, 61 s causal) when that spans at least 5 samples, else 5 samples;
+///             for the centred differentiator no longer than the shortest recording (its
+///             largest odd number of samples, at least 5: a shorter recording still fails,
+///             naming window_s);
+///   poly_order  the recommended degree for that causality (2 centred, 1 causal);
 ///   sample_interval_s  dt_s.
-/// The differentiator's causality and degree are kept from `base`.
+/// The differentiator's causality is kept from `base`, and everything else.
 FeatureOptions preprocessing_for(double dt_s, std::size_t shortest_samples,
                                  const FeatureOptions& base = {});
 

@@ -16,15 +16,19 @@ namespace fogdrift {
 struct CampaignTrainOptions {
   TrainOptions train;
   /// Preprocessing and target settings. Its features are used as given unless auto_features;
-  /// its block and rate window unless block_s or rate_window_s say "fit them".
+  /// its block, rate window and degree only where block_s, rate_window_s, rate_degree say so.
   DatasetOptions dataset;
   /// The paper's inputs over the thermometers every training recording has (features.hpp,
   /// default_feature_spec) instead of dataset.features.
   bool auto_features = true;
   /// Averaging block, s; unset: fitted to the recordings' sampling (preprocessing_for).
   std::optional<double> block_s;
-  /// Temperature-rate window, s; unset: fitted to the sampling and the shortest recording.
+  /// Temperature-rate window, s; unset: the recommended window for dataset's causality
+  /// (signal::recommended_rates) fitted to the sampling and the shortest recording.
   std::optional<double> rate_window_s;
+  /// Degree of the differentiator's polynomial, 1..4; unset: the recommended degree for
+  /// dataset's causality (2 centred, 1 causal).
+  std::optional<int> rate_degree;
 };
 
 /// A choice made for the user that differs from the defaults, for the front end to report:

@@ -58,10 +58,11 @@ HeldCampaign held_campaign(const py::object& given) {
 py::dict train(const py::object& campaign, const std::string& method, const std::string& fitness,
                const std::string& cv, std::size_t folds, const std::string& features,
                const std::string& differentiator, const py::object& block_s,
-               const py::object& rate_window_s, std::size_t population, std::size_t iterations,
-               std::uint64_t seed, unsigned threads, double c_min, double c_max, double sigma_min,
-               double sigma_max, double epsilon, bool search_epsilon, bool auto_box, bool denoise,
-               std::size_t hidden, std::size_t max_degree, const py::object& progress) {
+               const py::object& rate_window_s, const py::object& rate_degree,
+               std::size_t population, std::size_t iterations, std::uint64_t seed, unsigned threads,
+               double c_min, double c_max, double sigma_min, double sigma_max, double epsilon,
+               bool search_epsilon, bool auto_box, bool denoise, std::size_t hidden,
+               std::size_t max_degree, const py::object& progress) {
   CampaignTrainOptions o;
   TrainOptions& t = o.train;
   t.method = parse_method(method, "method");
@@ -73,6 +74,13 @@ py::dict train(const py::object& campaign, const std::string& method, const std:
   o.dataset.preprocessing.rates.causality = signal::parse_causality(differentiator);
   o.block_s = seconds_or_auto(block_s, "block_s");
   o.rate_window_s = seconds_or_auto(rate_window_s, "rate_window_s");
+  if (!(py::isinstance<py::str>(rate_degree) && rate_degree.cast<std::string>() == "auto")) {
+    if (!py::isinstance<py::int_>(rate_degree) || rate_degree.cast<long>() < 1 ||
+        rate_degree.cast<long>() > 4)
+      throw OptionError("rate_degree", "must be 'auto' or a whole degree 1..4 (got " +
+                                           py::repr(rate_degree).cast<std::string>() + ")");
+    o.rate_degree = rate_degree.cast<int>();
+  }
   o.dataset.denoise_target = denoise;
   t.tune.optimizer.run.population = population;
   t.tune.optimizer.run.iterations = iterations;
@@ -137,6 +145,7 @@ py::dict train(const py::object& campaign, const std::string& method, const std:
   summary["features"] = r->data.feature_names;
   summary["block_s"] = r->dataset.preprocessing.block.block_s;
   summary["rate_window_s"] = r->dataset.preprocessing.rates.window_s;
+  summary["rate_degree"] = r->dataset.preprocessing.rates.poly_order;
   py::list notes;
   for (const auto& n : r->notes) notes.append(py::make_tuple(n.field, n.text));
   summary["notes"] = notes;
@@ -160,11 +169,12 @@ void bind_train(py::module_& m) {
         py::arg("differentiator") =
             std::string(signal::to_string(DatasetOptions{}.preprocessing.rates.causality)),
         py::arg("block_s") = "auto", py::arg("rate_window_s") = "auto",
-        py::arg("population") = kRun.population, py::arg("iterations") = kRun.iterations,
-        py::arg("seed") = kRun.seed, py::arg("threads") = 0u, py::arg("c_min") = kSpace.c_min,
-        py::arg("c_max") = kSpace.c_max, py::arg("sigma_min") = kSpace.sigma_min,
-        py::arg("sigma_max") = kSpace.sigma_max, py::arg("epsilon") = kSpace.epsilon,
-        py::arg("search_epsilon") = false, py::arg("auto_box") = false, py::arg("denoise") = true,
+        py::arg("rate_degree") = "auto", py::arg("population") = kRun.population,
+        py::arg("iterations") = kRun.iterations, py::arg("seed") = kRun.seed,
+        py::arg("threads") = 0u, py::arg("c_min") = kSpace.c_min, py::arg("c_max") = kSpace.c_max,
+        py::arg("sigma_min") = kSpace.sigma_min, py::arg("sigma_max") = kSpace.sigma_max,
+        py::arg("epsilon") = kSpace.epsilon, py::arg("search_epsilon") = false,
+        py::arg("auto_box") = false, py::arg("denoise") = true,
         py::arg("hidden") = kTrain.mlp.hidden, py::arg("max_degree") = kTrain.poly_max_degree,
         py::arg("progress") = py::none(),
         "Trains a compensation model on a campaign's training recordings, as `fogdrift train` "

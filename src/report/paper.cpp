@@ -176,10 +176,11 @@ SeedRun run_seed(const PaperOptions& o, std::uint64_t seed, Stages& stages, Firs
       m.start_up_unguarded_rmse_deg.push_back(unguarded);
     }
     if (method == Method::ssa_svr && o.causal && !start_ups.empty()) {
-      // What firmware runs: the same C, σ and ε on causal rates. Its batch prediction equals
-      // the streaming compensator's sample for sample (compensator.hpp).
+      // What firmware runs: the same C, σ and ε on causal rates, over the causal window and
+      // degree `train` uses. Its batch prediction equals the streaming compensator's sample
+      // for sample (compensator.hpp).
       DatasetOptions causal = dataset;
-      causal.preprocessing.rates.causality = signal::Causality::causal;
+      causal.preprocessing.rates = signal::recommended_rates(signal::Causality::causal);
       TrainOptions to = train_options(o, Method::svr, seed, o.fitness);
       MethodRun tuned;
       tuned.hyperparameters = trained.summary.hyperparameters;

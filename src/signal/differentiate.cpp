@@ -63,6 +63,16 @@ Causality parse_causality(std::string_view text, std::string_view option) {
   return parse_in(kCausalityNames, text, option, "a differentiator");
 }
 
+DifferentiatorOptions recommended_rates(Causality causality) {
+  DifferentiatorOptions o;
+  o.causality = causality;
+  if (causality == Causality::causal) {
+    o.window_s = 61.0;
+    o.poly_order = 1;
+  }
+  return o;
+}
+
 std::size_t window_samples(const DifferentiatorOptions& options, double dt_s) {
   const double whole = std::max(std::round(options.window_s / dt_s), 0.0);
   const auto w = static_cast<std::size_t>(whole);

@@ -150,6 +150,20 @@ def test_train_rejects_a_block_that_is_not_a_positive_number(trained):
     d, _, _ = trained
     with pytest.raises(ValueError, match="option rate_window_s: must be 'auto' or a number"):
         fogdrift.train(d / "cal", method="svr", rate_window_s=-5)
+    for bad in (0, 5, 1.5, "two"):
+        with pytest.raises(ValueError, match="option rate_degree: must be 'auto' or a whole"):
+            fogdrift.train(d / "cal", method="svr", rate_degree=bad)
+
+
+def test_causal_rates_default_to_a_line_over_61_s(trained):
+    d, _, _ = trained
+    causal = fogdrift.train(d / "cal", method="poly", differentiator="causal")["summary"]
+    assert (causal["rate_window_s"], causal["rate_degree"]) == (61, 1)
+    centred = fogdrift.train(d / "cal", method="poly")["summary"]
+    assert (centred["rate_window_s"], centred["rate_degree"]) == (121, 2)
+    given = fogdrift.train(d / "cal", method="poly", differentiator="causal", rate_degree=2,
+                           rate_window_s=91)["summary"]
+    assert (given["rate_window_s"], given["rate_degree"]) == (91, 2)
 
 
 def test_a_model_pickles_as_its_file(trained):
