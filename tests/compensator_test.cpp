@@ -162,7 +162,9 @@ TEST(StreamingCompensator, RunsAFasterLoggerOnBlocks) {
                                             fast.temp_acc1_degc[i], fast.temp_acc2_degc[i]});
     ASSERT_EQ(out.drift_dph, batch.drift_dph[i]) << i;
     ASSERT_EQ(out.flags, 0u) << i;
-    if (i % 10 != 0) ASSERT_EQ(batch.drift_dph[i], batch.drift_dph[i - 1]) << i;
+    if (i % 10 != 0) {
+      ASSERT_EQ(batch.drift_dph[i], batch.drift_dph[i - 1]) << i;
+    }
   }
   const std::vector<double> in_c = c_header_stream(model, fast, 0.1);
   ASSERT_EQ(in_c.size(), fast.size());
