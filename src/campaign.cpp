@@ -88,6 +88,7 @@ namespace {
 // recording's file must be there.
 Campaign parse_manifest(const std::string& text, const std::string& file, const fs::path& dir,
                         bool files_exist) {
+  check_json_nesting(file, text);
   json doc;
   try {
     doc = json::parse(text);

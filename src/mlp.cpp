@@ -11,6 +11,7 @@
 
 #include "fogdrift/error.hpp"
 #include "fogdrift/random.hpp"
+#include "fogdrift/text_file.hpp"
 #include "json_number.hpp"
 
 namespace fogdrift {
@@ -153,6 +154,7 @@ Mlp mlp_from_json(const std::string& text, const std::string& source) {
   auto fail = [&](const std::string& where, const std::string& rule) {
     throw InputError(source, 0, 0, fmt::format("{}: {}", where, rule));
   };
+  check_json_nesting(source, text);
   Mlp n;
   std::string where = "(top level)";
   try {

@@ -226,6 +226,7 @@ std::string to_json(const CompensationModel& m) {
 
 CompensationModel compensation_model_from_json(const std::string& text, const std::string& source,
                                                const ModelLoadOptions& options) {
+  check_json_nesting(source, text);
   ojson doc;
   try {
     doc = ojson::parse(text);

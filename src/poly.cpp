@@ -7,6 +7,7 @@
 #include <string>
 
 #include "fogdrift/error.hpp"
+#include "fogdrift/text_file.hpp"
 #include "json_number.hpp"
 
 namespace fogdrift {
@@ -91,6 +92,7 @@ Poly poly_from_json(const std::string& text, const std::string& source) {
   auto fail = [&](const std::string& where, const std::string& rule) {
     throw InputError(source, 0, 0, fmt::format("{}: {}", where, rule));
   };
+  check_json_nesting(source, text);
   Poly p;
   std::vector<std::vector<int>> exps;
   std::string where = "(top level)";

@@ -70,4 +70,30 @@ void throw_json_number_error(const std::string& file, const std::string& text,
                                number.empty() ? std::string("here") : number));
 }
 
+void check_json_nesting(const std::string& file, const std::string& text, std::size_t max_depth) {
+  std::size_t depth = 0;
+  bool in_string = false;
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    const char c = text[i];
+    if (in_string) {
+      if (c == '\\')
+        ++i;  // the escaped character, a quote included, cannot end the string
+      else if (c == '"')
+        in_string = false;
+    } else if (c == '"') {
+      in_string = true;
+    } else if (c == '[' || c == '{') {
+      if (++depth > max_depth) {
+        const auto [line, column] = line_column_of(text, i);
+        throw InputError(file, line, column,
+                         fmt::format("invalid JSON: arrays and objects nested deeper than {} "
+                                     "levels; no fogdrift file needs more",
+                                     max_depth));
+      }
+    } else if ((c == ']' || c == '}') && depth > 0) {
+      --depth;
+    }
+  }
+}
+
 }  // namespace fogdrift

@@ -1,8 +1,10 @@
 // Reading a whole text file, with fogdrift's error for a file that cannot be opened.
 #pragma once
 
+#include <cstddef>
 #include <filesystem>
 #include <string>
+#include <utility>
 
 namespace fogdrift {
 
@@ -22,5 +24,16 @@ std::pair<std::size_t, std::size_t> line_column_of(const std::string& text, std:
 /// number is found in `text`, its line and column.
 [[noreturn]] void throw_json_number_error(const std::string& file, const std::string& text,
                                           const std::string& what);
+
+/// Arrays and objects nested deeper than this are refused by every JSON reader of fogdrift: no
+/// file it writes nests deeper than 6, and the JSON library writes and destroys nested values
+/// by recursion, which a file nested tens of thousands deep overflows (docs/reliability.md).
+inline constexpr std::size_t kMaxJsonDepth = 64;
+
+/// Throws InputError("FILE:LINE:COLUMN: invalid JSON: arrays and objects nested deeper than
+/// 64 …") at the bracket that goes one level too deep; brackets inside strings do not count.
+/// Run before parsing.
+void check_json_nesting(const std::string& file, const std::string& text,
+                        std::size_t max_depth = kMaxJsonDepth);
 
 }  // namespace fogdrift

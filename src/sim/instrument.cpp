@@ -150,6 +150,7 @@ std::string to_json(const Instrument& instrument) {
 }
 
 Instrument instrument_from_json(const std::string& text, const std::string& file) {
+  check_json_nesting(file, text);
   nlohmann::json doc;
   try {
     doc = nlohmann::json::parse(text);

@@ -306,6 +306,7 @@ std::string to_json(const Model& m) {
 }
 
 Model model_from_json(const std::string& text, const std::string& source) {
+  check_json_nesting(source, text);
   ojson doc;
   try {
     doc = ojson::parse(text);

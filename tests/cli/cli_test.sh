@@ -478,6 +478,19 @@ check "bad warm-off message" err_has "option --warm-off-s: -5 s is outside [0, 1
 check "warm restarts" run 0 "$fd" simulate northfind --out "$work/nfw" --approach warm --temps 10 --findings 1
 check "warm manifest" python3 -c 'import json,sys; assert json.load(open(sys.argv[1]))["generator"]["approach"] == "warm"' "$work/nfw/campaign.json"
 
+# Found by attack (issue 36, "crash"): notes nested 100,000 deep overflowed the stack.
+cp -r "$work/nfw" "$work/nested"
+python3 - "$work/nested/campaign.json" <<'PY'
+import json, sys
+text = open(sys.argv[1]).read().rstrip().rstrip("}")
+open(sys.argv[1], "w").write(text + ', "notes": ' + "[" * 100000 + "]" * 100000 + "}\n")
+PY
+for c in "inspect" "train -o $work/x.json"; do
+  check "$c: a manifest nested 100,000 deep" run 1 "$fd" $c "$work/nested"
+  check "$c: nesting message" err_has "nested/campaign.json:"
+  check "$c: nesting rule" err_has "arrays and objects nested deeper than 64 levels"
+done
+
 # --- northfind --------------------------------------------------------------------------------
 check "simulate northfind" run 0 "$fd" simulate northfind --out "$work/nf2" --temps -16,28 --seed 2
 check "northfind raw" run 0 "$fd" northfind "$work/nf2"
