@@ -258,6 +258,13 @@ CompensationModel compensation_model_from_json(const std::string& text, const st
                                 version > kCompensationModelVersion
                                     ? "; written by a newer fogdrift, upgrade to read it"
                                     : ""));
+  if (version < 3 && !options.allow_old_format && !doc.contains("checksum"))
+    fail("version",
+         fmt::format("format version {} carries no checksum{}, so nothing shows whether the file "
+                     "was edited since it was written. Train the model again, or load it with "
+                     "--allow-old-format",
+                     version,
+                     version == 1 ? " and no novelty guard (it compensates unguarded)" : ""));
   CompensationModel m;
   std::string where = "features";
   try {
@@ -370,9 +377,10 @@ CompensationModel compensation_model_from_json(const std::string& text, const st
   if (regressor_inputs != d)
     fail("regressor",
          fmt::format("takes {} inputs but the model has {} features", regressor_inputs, d));
-  // Version 3: the content must be what fogdrift wrote (checked last, so that a field that is
-  // wrong is named first).
-  if (version >= 3) {
+  // The content must be what fogdrift wrote (checked last, so that a field that is wrong is
+  // named first). A checksum is checked whatever version the file claims: lowering the version
+  // of an edited file must not let the edit through.
+  if (version >= 3 || doc.contains("checksum")) {
     const std::size_t key = text.rfind("\"checksum\"");
     if (!doc.contains("checksum") || !doc["checksum"].is_string() || key == std::string::npos)
       fail("checksum", "required field is missing (every version-3 model file carries one)");

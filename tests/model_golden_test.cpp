@@ -40,8 +40,20 @@ void expect_predictions(const CompensationModel& m, const Expected& expected) {
 }
 
 // Written by fogdrift 0.1.0 (format version 2, no checksum): BP on a 3-temperature campaign.
+// With nothing to show whether it was edited, it loads only when the user says so.
 TEST(ModelGolden, Version2BpLoadsAndPredictsAsWritten) {
-  const CompensationModel m = load_compensation_model(kModels / "bp_v2.json");
+  try {
+    load_compensation_model(kModels / "bp_v2.json");
+    ADD_FAILURE() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("bp_v2.json: version: format version 2 carries no "
+                                         "checksum"),
+              std::string::npos)
+        << e.what();
+    EXPECT_NE(std::string(e.what()).find("--allow-old-format"), std::string::npos) << e.what();
+  }
+  const CompensationModel m =
+      load_compensation_model(kModels / "bp_v2.json", {.allow_old_format = true});
   expect_predictions(m, {{{-0.11121513549865335, -0.11121513549865335},
                           {-0.078817792715530077, -0.078817792715530077},
                           {-0.075606512049865987, -0.075606512049865987},

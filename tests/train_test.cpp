@@ -157,13 +157,36 @@ TEST(ModelFile, RejectsWhatItCannotRead) {
             std::string::npos);
   EXPECT_NE(error_of(edit([](auto& j) { j["guard"].erase("recover_s"); })).find("m.json: guard"),
             std::string::npos);
-  // A version-1 file (before the guard) still loads, and compensates unguarded.
-  const CompensationModel v1 = compensation_model_from_json(edit([](auto& j) {
-                                                              j["version"] = 1;
-                                                              j.erase("guard");
-                                                            }),
-                                                            "v1.json");
+  // A version-1 file (before the guard) loads when the user accepts a file with no checksum,
+  // and compensates unguarded; the refusal says what the file lacks.
+  const std::string v1_text = edit([](auto& j) {
+    j["version"] = 1;
+    j.erase("guard");
+    j.erase("checksum");
+  });
+  EXPECT_NE(error_of(v1_text).find("m.json: version: format version 1 carries no checksum and no "
+                                   "novelty guard"),
+            std::string::npos);
+  const CompensationModel v1 =
+      compensation_model_from_json(v1_text, "v1.json", {.allow_old_format = true});
   EXPECT_TRUE(v1.guard.empty());
+  // Found by attack (issue 36, "checksum bypass"): an edited file whose version was lowered to
+  // one without checksums is still checked against the checksum it carries.
+  for (int version : {1, 2}) {
+    const std::string lowered = edit([version](auto& j) {
+      j["version"] = version;
+      j["scalers"]["drift_dph"]["mean"] = 9.5;
+    });
+    EXPECT_NE(error_of(lowered).find("m.json: checksum: the content does not match"),
+              std::string::npos)
+        << version;
+    try {
+      compensation_model_from_json(lowered, "m.json", {.allow_old_format = true});
+      ADD_FAILURE() << "version " << version << " loaded";
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find("checksum"), std::string::npos) << e.what();
+    }
+  }
   EXPECT_NE(error_of(edit([](auto& j) { j["provenance"].erase("seed"); })).find("provenance"),
             std::string::npos);
   EXPECT_NE(error_of(edit([](auto& j) { j["features"]["spec"] = "T,bogus"; })).find("features"),

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 #include <unistd.h>
+#include <CLI/CLI.hpp>
 
 #include <cerrno>
 #include <cstring>
@@ -84,6 +85,15 @@ void with_model_settings(const std::string& model_path, const std::function<void
 
 bool stderr_is_terminal() {
   return ::isatty(STDERR_FILENO) == 1;
+}
+
+void add_model_load_flags(CLI::App* cmd, ModelLoadOptions* options) {
+  cmd->add_flag("--allow-edited", options->allow_edited,
+                "Load a model file whose content no longer matches its checksum (an edit made on "
+                "purpose); its fields are still checked");
+  cmd->add_flag("--allow-old-format", options->allow_old_format,
+                "Load a model file of format version 1 or 2, written before model files carried "
+                "a checksum (version 1 also has no novelty guard and compensates unguarded)");
 }
 
 }  // namespace fogdrift::app

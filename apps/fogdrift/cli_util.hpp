@@ -7,6 +7,11 @@
 #include <vector>
 
 #include "fogdrift/error.hpp"
+#include "fogdrift/model.hpp"
+
+namespace CLI {
+class App;
+}
 
 namespace fogdrift::app {
 
@@ -37,6 +42,10 @@ void with_flags(const FlagTable& flags, const std::function<void()>& body);
 /// that the data cannot meet (the library names it: window_s, block_s, denoise, ...) is reported
 /// as the model's, with the train flag that sets it, since the command itself cannot change it.
 void with_model_settings(const std::string& model_path, const std::function<void()>& body);
+
+/// The flags of every command that loads a model file: --allow-edited and --allow-old-format,
+/// described once.
+void add_model_load_flags(CLI::App* cmd, ModelLoadOptions* options);
 
 /// True when standard error is a terminal (progress lines are shown only then).
 bool stderr_is_terminal();

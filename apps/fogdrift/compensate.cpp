@@ -19,7 +19,7 @@ namespace fogdrift::app {
 namespace {
 
 struct CompensateArgs {
-  bool allow_edited = false;
+  ModelLoadOptions load;
   std::string model;
   std::string input;
   std::string output;
@@ -29,7 +29,7 @@ struct CompensateArgs {
 };
 
 void run(const CompensateArgs& a) {
-  const CompensationModel model = load_compensation_model(a.model, {a.allow_edited});
+  const CompensationModel model = load_compensation_model(a.model, a.load);
   const csv::Table table = csv::read(a.input);
   for (const char* name : {"drift_dph", "gyro_comp_dph", "novelty", "guard_weight"})
     if (table.find(name))
@@ -116,9 +116,7 @@ void add_compensate(CLI::App& app) {
       "  fogdrift train cal -o model.json && fogdrift compensate model.json cal/cal_r4_20C.csv "
       "-o comp.csv");
   cmd->add_option("model", args->model, "Model file written by `fogdrift train`")->required();
-  cmd->add_flag("--allow-edited", args->allow_edited,
-                "Load a model file whose content no longer matches its checksum (an edit made on "
-                "purpose); its fields are still checked");
+  add_model_load_flags(cmd, &args->load);
   cmd->add_option("input", args->input, "Recording CSV")->required();
   cmd->add_option("-o,--output", args->output, "CSV to write (atomically)")->required();
   cmd->add_flag("--json", args->json, "Print a summary as JSON");

@@ -18,7 +18,7 @@ namespace fogdrift::app {
 namespace {
 
 struct EvaluateArgs {
-  bool allow_edited = false;
+  ModelLoadOptions load;
   std::string model;
   std::vector<std::string> inputs;
   bool json = false;
@@ -31,7 +31,7 @@ bool is_campaign(const std::string& path) {
 }
 
 void run(const EvaluateArgs& a) {
-  const CompensationModel model = load_compensation_model(a.model, {a.allow_edited});
+  const CompensationModel model = load_compensation_model(a.model, a.load);
   const eval::EvaluationOptions options{.guarded = !a.no_guard, .allan = a.allan};
   eval::Evaluation e;
   std::string source;
@@ -140,9 +140,7 @@ void add_evaluate(CLI::App& app) {
       "  fogdrift evaluate model.json run1.csv run2.csv --json\n"
       "  fogdrift evaluate model.json cal --allan      # datasheet noise terms before and after");
   cmd->add_option("model", args->model, "Model file written by `fogdrift train`")->required();
-  cmd->add_flag("--allow-edited", args->allow_edited,
-                "Load a model file whose content no longer matches its checksum (an edit made on "
-                "purpose); its fields are still checked");
+  add_model_load_flags(cmd, &args->load);
   cmd->add_option("inputs", args->inputs, "A campaign folder, or recording CSV files")->required();
   cmd->add_flag("--json", args->json, "Print the metrics as JSON");
   cmd->add_flag("--no-guard", args->no_guard,

@@ -17,7 +17,7 @@ namespace fogdrift::app {
 namespace {
 
 struct ExportArgs {
-  bool allow_edited = false;
+  ModelLoadOptions load;
   std::string model;
   std::string output;
   std::string prefix = "fogdrift_model";
@@ -29,7 +29,7 @@ struct ExportArgs {
 
 void run(const ExportArgs& given, const CLI::App& cmd) {
   ExportArgs a = given;  // fault timings not given come from the model
-  const CompensationModel model = load_compensation_model(a.model, {a.allow_edited});
+  const CompensationModel model = load_compensation_model(a.model, a.load);
   fault_timings_from_model(cmd, model, a.faults);
   with_flags(fault_flags(), [&] { validate(a.faults); });
   if (!(a.stream_rate_hz >= 0) || a.stream_rate_hz > 10000)
@@ -103,9 +103,7 @@ void add_export_c(CLI::App& app) {
       "  fogdrift export-c causal.json -o unit42.h --stream-rate-hz 100 --precision float\n"
       "      # a 1 Hz model on a 100 Hz logger, in float for a Cortex-M4F");
   cmd->add_option("model", args->model, "Model file written by `fogdrift train`")->required();
-  cmd->add_flag("--allow-edited", args->allow_edited,
-                "Load a model file whose content no longer matches its checksum (an edit made on "
-                "purpose); its fields are still checked");
+  add_model_load_flags(cmd, &args->load);
   cmd->add_option("-o,--output", args->output, "Header to write (atomically)")->required();
   cmd->add_option("--prefix", args->prefix, "C name prefix of every symbol")->capture_default_str();
   cmd->add_option("--stream-rate-hz", args->stream_rate_hz,

@@ -19,7 +19,7 @@ namespace fogdrift::app {
 namespace {
 
 struct NorthfindArgs {
-  bool allow_edited = false;
+  ModelLoadOptions load;
   std::string campaign;
   std::string model;
   bool json = false;
@@ -34,7 +34,7 @@ double wrap360(double deg) {
 void run(const NorthfindArgs& a) {
   const Campaign campaign = read_campaign(a.campaign);
   std::optional<CompensationModel> model;
-  if (!a.model.empty()) model = load_compensation_model(a.model, {a.allow_edited});
+  if (!a.model.empty()) model = load_compensation_model(a.model, a.load);
   const eval::CampaignFindings f =
       eval::find_north(campaign, model ? &*model : nullptr, !a.no_guard);
   if (a.json) {
@@ -105,9 +105,7 @@ void add_northfind(CLI::App& app) {
       "  fogdrift simulate northfind --out nf && fogdrift northfind nf --model model.json");
   cmd->add_option("campaign", args->campaign, "Campaign folder (or its campaign.json)")->required();
   cmd->add_option("--model", args->model, "Compensation model written by `fogdrift train`");
-  cmd->add_flag("--allow-edited", args->allow_edited,
-                "Load a model file whose content no longer matches its checksum (an edit made on "
-                "purpose); its fields are still checked");
+  add_model_load_flags(cmd, &args->load);
   cmd->add_flag("--json", args->json, "Print the findings and Table 3 as JSON");
   cmd->add_flag("--no-guard", args->no_guard,
                 "Apply the model's full correction even where its inputs are novel");

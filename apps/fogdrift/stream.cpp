@@ -26,7 +26,7 @@ namespace fogdrift::app {
 namespace {
 
 struct StreamArgs {
-  bool allow_edited = false;
+  ModelLoadOptions load;
   std::string model;
   std::string input = "-";
   double rate_hz = 0;
@@ -75,7 +75,7 @@ void run(const StreamArgs& given, const CLI::App& cmd) {
   StreamArgs a = given;  // fault timings not given come from the model
   if (!(a.rate_hz > 0) || a.rate_hz > 10000)
     throw OptionError("--rate-hz", fmt::format("{} is outside (0, 10000] Hz", a.rate_hz));
-  const CompensationModel model = load_compensation_model(a.model, {a.allow_edited});
+  const CompensationModel model = load_compensation_model(a.model, a.load);
   fault_timings_from_model(cmd, model, a.faults);
   with_flags(fault_flags(), [&] { validate(a.faults); });
   // Streamed, a model trained on centred rates sees causal ones, noisier than those it learned:
@@ -211,9 +211,7 @@ void add_stream(CLI::App& app) {
           "  fogdrift stream causal.json cal/cal_r4_20C.csv --rate-hz 1",
           bits));
   cmd->add_option("model", args->model, "Model file written by `fogdrift train`")->required();
-  cmd->add_flag("--allow-edited", args->allow_edited,
-                "Load a model file whose content no longer matches its checksum (an edit made on "
-                "purpose); its fields are still checked");
+  add_model_load_flags(cmd, &args->load);
   cmd->add_option("input", args->input, "Recording CSV, or - for standard input")
       ->capture_default_str();
   cmd->add_option("--rate-hz", args->rate_hz, "The logger's fixed sample rate, Hz")->required();

@@ -110,14 +110,18 @@ inline constexpr int kCompensationModelVersion = 3;
 std::string to_json(const CompensationModel& model);
 
 struct ModelLoadOptions {
-  /// Load a version-3 file whose content no longer matches its checksum (an edit the user made
-  /// on purpose). The fields are still validated.
+  /// Load a file whose content no longer matches its checksum (an edit the user made on
+  /// purpose). The fields are still validated.
   bool allow_edited = false;
+  /// Load a file of format version 1 or 2, written before model files carried a checksum (and,
+  /// version 1, before the novelty guard): nothing shows whether it was edited since.
+  bool allow_old_format = false;
 };
 
 /// Parses to_json's text; `source` names it in errors. A newer version, another format, a
-/// missing or mistyped field, sizes that do not agree, or (version 3) content that does not match
-/// its checksum is an InputError naming the field.
+/// missing or mistyped field, sizes that do not agree, a checksum the content does not match
+/// (whatever version the file claims), or a version before 3 without allow_old_format is an
+/// InputError naming the field.
 CompensationModel compensation_model_from_json(const std::string& text, const std::string& source,
                                                const ModelLoadOptions& options = {});
 void save(const CompensationModel& model, const std::filesystem::path& path);  ///< atomic

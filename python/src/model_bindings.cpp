@@ -49,17 +49,18 @@ void bind_model(py::module_& m) {
                                 "guard and provenance, as `fogdrift train` writes it.")
       .def_static(
           "load",
-          [](const std::filesystem::path& path, bool allow_edited) {
-            return load_compensation_model(path, {allow_edited});
+          [](const std::filesystem::path& path, bool allow_edited, bool allow_old_format) {
+            return load_compensation_model(path, {allow_edited, allow_old_format});
           },
-          py::arg("path"), py::arg("allow_edited") = false,
-          "Reads and checks a model file (its checksum too, unless allow_edited).")
+          py::arg("path"), py::arg("allow_edited") = false, py::arg("allow_old_format") = false,
+          "Reads and checks a model file (its checksum too, unless allow_edited); a file of "
+          "format version 1 or 2, which has no checksum, only with allow_old_format.")
       .def_static(
           "from_json",
-          [](const std::string& text, bool allow_edited) {
-            return compensation_model_from_json(text, "(text)", {allow_edited});
+          [](const std::string& text, bool allow_edited, bool allow_old_format) {
+            return compensation_model_from_json(text, "(text)", {allow_edited, allow_old_format});
           },
-          py::arg("text"), py::arg("allow_edited") = false)
+          py::arg("text"), py::arg("allow_edited") = false, py::arg("allow_old_format") = false)
       .def(
           "to_json", [](const CompensationModel& self) { return to_json(self); },
           "The model file's text, byte for byte what save() writes.")

@@ -326,6 +326,15 @@ check "an edited model is refused" run 1 "$fd" evaluate "$work/edited.json" "$wo
 check "edited model message" err_has "edited.json: checksum: the content does not match its checksum"
 check "the edited model, on purpose" run 1 "$fd" evaluate "$work/edited.json" "$work/small" --allow-edited
 check "its fields are still checked" err_has "block_s"
+sed 's/"version": 3/"version": 2/; s/"rho": \(-*\)0/"rho": \19/' "$work/svr.json" >"$work/lowered.json"
+check "a lowered version does not bypass the checksum" run 1 "$fd" compensate "$work/lowered.json" \
+  "$work/small/cal_r4_20C.csv" -o "$work/x.csv" --allow-old-format
+check "lowered version message" err_has "lowered.json: checksum: the content does not match"
+check "a version-2 model needs its flag" run 1 "$fd" compensate "$data/models/bp_v2.json" \
+  "$work/small/cal_r4_20C.csv" -o "$work/x.csv"
+check "version-2 message names the flag" err_has "bp_v2.json: version: format version 2 carries no checksum"
+check "version-2 model with its flag" run 0 "$fd" compensate "$data/models/bp_v2.json" \
+  "$work/small/cal_r4_20C.csv" -o "$work/x.csv" --allow-old-format -q
 check "the model's checksum in one line of Python" python3 -c 'import hashlib,json,sys; t=open(sys.argv[1]).read(); i=t.rindex("\"checksum\""); p=t[:i].rstrip()[:-1]; assert json.loads(t)["checksum"] == "sha256:" + hashlib.sha256(p.replace("\r", "").encode()).hexdigest()' "$work/svr.json"
 check "svr model is not a compensation model" run 1 "$fd" evaluate "$work/dia.json" "$work/small"
 check "format message" err_has 'format: must be "fogdrift-compensation-model"'

@@ -101,6 +101,14 @@ def test_bad_input_is_a_value_error_naming_the_file_and_rule(trained, tmp_path):
     with pytest.raises(ValueError, match="checksum"):
         fogdrift.Model.from_json(edited)
     assert fogdrift.Model.from_json(edited, allow_edited=True).method == "svr"
+    # A file of format version 2 has no checksum: it loads only when asked for.
+    import json
+    old = json.loads((d / "m.json").read_text())
+    old["version"] = 2
+    del old["checksum"]
+    with pytest.raises(ValueError, match="version: format version 2 carries no checksum"):
+        fogdrift.Model.from_json(json.dumps(old))
+    assert fogdrift.Model.from_json(json.dumps(old), allow_old_format=True).method == "svr"
     with pytest.raises(ValueError, match="nothing.json"):
         fogdrift.Model.load(tmp_path / "nothing.json")
 
