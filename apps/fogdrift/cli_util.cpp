@@ -5,8 +5,10 @@
 #include <CLI/CLI.hpp>
 
 #include <cerrno>
+#include <cstdio>
 #include <cstring>
 #include <fstream>
+#include <iostream>
 #include <map>
 #include <sstream>
 
@@ -85,6 +87,19 @@ void with_model_settings(const std::string& model_path, const std::function<void
 
 bool stderr_is_terminal() {
   return ::isatty(STDERR_FILENO) == 1;
+}
+
+void check_standard_output() {
+  int error = errno;  // the reason of a write that already failed, if one did
+  if (std::cout) {
+    errno = 0;
+    std::cout.flush();
+    if (std::cout && std::fflush(stdout) == 0 && !std::ferror(stdout)) return;
+    if (errno != 0) error = errno;
+  }
+  throw InputError("standard output", 0, 0,
+                   fmt::format("write failed ({}); the output is incomplete",
+                               error != 0 ? std::strerror(error) : "an I/O error"));
 }
 
 void add_model_load_flags(CLI::App* cmd, ModelLoadOptions* options) {

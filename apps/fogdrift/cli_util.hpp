@@ -47,6 +47,11 @@ void with_model_settings(const std::string& model_path, const std::function<void
 /// described once.
 void add_model_load_flags(CLI::App* cmd, ModelLoadOptions* options);
 
+/// Flushes standard output and throws InputError("standard output: …") when a write to it
+/// failed (a full disk, /dev/full, a closed file): a command whose output is incomplete must not
+/// exit 0 (docs/reliability.md, "Standard output").
+void check_standard_output();
+
 /// True when standard error is a terminal (progress lines are shown only then).
 bool stderr_is_terminal();
 

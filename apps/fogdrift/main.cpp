@@ -5,6 +5,7 @@
 #include <exception>
 #include <iostream>
 
+#include "cli_util.hpp"
 #include "commands.hpp"
 #include "fogdrift/error.hpp"
 #include "fogdrift/svr/svr.hpp"
@@ -16,6 +17,7 @@ int main(int argc, char** argv) {
   app.parse_complete_callback([] { fogdrift::svr::instruction_set(); });
   try {
     app.parse(argc, argv);
+    fogdrift::app::check_standard_output();
   } catch (const CLI::ParseError& e) {
     return app.exit(e);
   } catch (const fogdrift::InputError& e) {

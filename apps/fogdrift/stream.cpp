@@ -124,6 +124,7 @@ void run(const StreamArgs& given, const CLI::App& cmd) {
       throw InputError(
           name, 1, 0, fmt::format("already has a {} column; stream the original recording", added));
   std::cout << line << ",drift_dph,gyro_comp_dph,novelty,guard_weight,fault_flags\n" << std::flush;
+  check_standard_output();
 
   std::size_t line_no = 1, samples = 0, flagged = 0, skipped = 0;
   std::array<std::size_t, fault::count> per_flag{};
@@ -171,6 +172,7 @@ void run(const StreamArgs& given, const CLI::App& cmd) {
               << csv::format_number(compensator.novelty()) << ','
               << csv::format_number(compensator.weight()) << ',' << out.flags << '\n'
               << std::flush;
+    if (!std::cout) check_standard_output();  // stop at the first line that could not be written
   }
   if (flagged == 0 && skipped == 0) return;
   std::vector<std::string> counts;

@@ -368,6 +368,14 @@ check "stream equals compensate" bash -c "cut -d, -f1-14 '$work/streamed.csv' | 
 check "stream flags column" bash -c "head -1 '$work/streamed.csv' | grep -q ',guard_weight,fault_flags\$'"
 check "stream clean recording unflagged" bash -c "awk -F, 'NR>1 && \$15!=0{bad=1} END{exit bad}' '$work/streamed.csv'"
 check "stream from a file" run 0 "$fd" stream "$work/causal.json" "$rec20" --rate-hz 1
+# Found by attack (issue 36, "silent truncation"): a failed write to standard output exited 0.
+if [ -w /dev/full ]; then
+  for c in "stream $work/causal.json $rec20 --rate-hz 1" "inspect --json $rec20" \
+    "evaluate $work/causal.json $work/small" "simulate --print-instrument"; do
+    check "$c > /dev/full fails" bash -c "'$fd' $c >/dev/full 2>'$work/full.err'; [ \$? = 1 ]"
+    check "$c > /dev/full says so" grep -q "fogdrift: error: standard output: write failed (No space left on device)" "$work/full.err"
+  done
+fi
 check "stream file output equals stdin's" cmp -s "$work/out" "$work/streamed.csv"
 check "stream clean: nothing on stderr" test ! -s "$work/err"
 # A model trained on centred rates streams, with a warning.
