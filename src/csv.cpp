@@ -204,4 +204,34 @@ std::string quote(std::string_view field, char delimiter) {
   return out;
 }
 
+bool LineReader::next(std::string& line) {
+  line.clear();
+  std::streambuf* in = in_.rdbuf();
+  using traits = std::char_traits<char>;
+  bool any = false;
+  for (;;) {
+    const int c = in->sbumpc();
+    if (traits::eq_int_type(c, traits::eof())) {
+      in_.setstate(std::ios::eofbit);
+      break;
+    }
+    if (after_cr_) {
+      after_cr_ = false;
+      if (c == '\n') continue;  // the LF of a CRLF
+    }
+    any = true;
+    if (c == '\n') break;
+    if (c == '\r') {
+      after_cr_ = true;
+      break;
+    }
+    line.push_back(traits::to_char_type(c));
+  }
+  if (first_ && any) {
+    first_ = false;
+    if (line.rfind("\xEF\xBB\xBF", 0) == 0) line.erase(0, 3);
+  }
+  return any;
+}
+
 }  // namespace fogdrift::csv

@@ -4,6 +4,9 @@
 
 #include <cmath>
 #include <limits>
+#include <sstream>
+#include <string>
+#include <vector>
 
 #include "fogdrift/error.hpp"
 #include "fogdrift/random.hpp"
@@ -70,6 +73,25 @@ TEST(Quote, OnlyWhenNeeded) {
   EXPECT_EQ(quote("a,b"), "\"a,b\"");
   EXPECT_EQ(quote("say \"hi\""), "\"say \"\"hi\"\"\"");
   EXPECT_EQ(quote(" edge"), "\" edge\"");
+}
+
+// Found by attack (issue 36, "stream input"): stream echoed the CR of CRLF lines into its output,
+// read a CR-only file as one line and refused a byte-order mark. Its lines are read() sees.
+TEST(LineReader, EndsLinesAtLfCrlfOrCrAndDropsTheByteOrderMark) {
+  const std::string bom = "\xEF\xBB\xBF";
+  for (const std::string& text :
+       {bom + "a,b\n1,2\n\n3,4", bom + "a,b\r\n1,2\r\n\r\n3,4\r\n", bom + "a,b\r1,2\r\r3,4\r"}) {
+    std::istringstream in(text);
+    LineReader lines(in);
+    std::vector<std::string> got;
+    std::string line;
+    while (lines.next(line)) got.push_back(line);
+    EXPECT_EQ(got, (std::vector<std::string>{"a,b", "1,2", "", "3,4"})) << text;
+  }
+  EXPECT_EQ(parse(bom + "a,b\r\n1,2\r\n", "t.csv").header, (std::vector<std::string>{"a", "b"}));
+  std::istringstream empty("");
+  std::string line;
+  EXPECT_FALSE(LineReader(empty).next(line));
 }
 
 }  // namespace

@@ -102,8 +102,9 @@ void run(const StreamArgs& given, const CLI::App& cmd) {
   std::istream& in = a.input == "-" ? std::cin : file;
   const std::string name = a.input == "-" ? "<stdin>" : a.input;
 
+  csv::LineReader lines(in);  // LF, CRLF or CR line ends and a byte-order mark, as compensate
   std::string line;
-  if (!std::getline(in, line)) throw InputError(name, 1, 0, "is empty; a header line is needed");
+  if (!lines.next(line)) throw InputError(name, 1, 0, "is empty; a header line is needed");
   const std::vector<std::string> header = split(line);
   constexpr std::array<const char*, 5> kNeeded = {"time_s", "gyro_dph", "temp_fog_degc",
                                                   "temp_acc1_degc", "temp_acc2_degc"};
@@ -129,9 +130,9 @@ void run(const StreamArgs& given, const CLI::App& cmd) {
   std::size_t line_no = 1, samples = 0, flagged = 0, skipped = 0;
   std::array<std::size_t, fault::count> per_flag{};
   double previous_time = std::nan("");
-  while (std::getline(in, line)) {
+  while (lines.next(line)) {
     ++line_no;
-    if (line.empty() || line == "\r") continue;
+    if (line.empty()) continue;
     const std::vector<std::string> fields = split(line);
     if (fields.size() != header.size()) {
       // A torn line cannot carry its outputs; the next sample sees the gap it leaves.
@@ -174,6 +175,8 @@ void run(const StreamArgs& given, const CLI::App& cmd) {
               << std::flush;
     if (!std::cout) check_standard_output();  // stop at the first line that could not be written
   }
+  if (samples == 0)
+    throw InputError(name, line_no, 0, "has no sample after its header: nothing was compensated");
   if (flagged == 0 && skipped == 0) return;
   std::vector<std::string> counts;
   for (std::size_t k = 0; k < fault::count; ++k)

@@ -7,6 +7,7 @@
 #pragma once
 
 #include <cstddef>
+#include <istream>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -51,5 +52,21 @@ std::string format_number(double value);
 
 /// `field` quoted when it holds the delimiter, a quote, a line break or edge spaces.
 std::string quote(std::string_view field, char delimiter = ',');
+
+/// The lines of a CSV arriving piece by piece (standard input, a pipe, a logger), as `stream`
+/// reads them: a line ends at LF, CRLF or a lone CR, and none of them is kept; the first line
+/// loses a UTF-8 byte-order mark. A line is returned as soon as its end arrives (a CR is not held
+/// back to see whether an LF follows). The same lines read() sees in a file with LF or CRLF ends.
+class LineReader {
+ public:
+  explicit LineReader(std::istream& in) : in_(in) {}
+  /// The next line into `line`; false at the end of the input with nothing left.
+  bool next(std::string& line);
+
+ private:
+  std::istream& in_;
+  bool first_ = true;
+  bool after_cr_ = false;  ///< the last line ended at a CR: an LF next is its CRLF's
+};
 
 }  // namespace fogdrift::csv

@@ -378,6 +378,18 @@ if [ -w /dev/full ]; then
 fi
 check "stream file output equals stdin's" cmp -s "$work/out" "$work/streamed.csv"
 check "stream clean: nothing on stderr" test ! -s "$work/err"
+# Found by attack (issue 36, "stream input"): CRLF came out as "…\r,drift_dph", a BOM was
+# refused, CR-only lines and a header alone exited 0 with nothing written.
+printf '\xEF\xBB\xBF' >"$work/crlf.csv"
+sed 's/$/\r/' "$rec20" >>"$work/crlf.csv"
+tr '\n' '\r' <"$rec20" >"$work/cr.csv"
+for f in crlf cr; do
+  check "stream $f lines" run 0 "$fd" stream "$work/causal.json" "$work/$f.csv" --rate-hz 1
+  check "stream $f lines as LF's" cmp -s "$work/out" "$work/streamed.csv"
+done
+head -1 "$rec20" >"$work/header_only.csv"
+check "stream a header alone" run 1 "$fd" stream "$work/causal.json" "$work/header_only.csv" --rate-hz 1
+check "header alone message" err_has "header_only.csv:1: has no sample after its header"
 # A model trained on centred rates streams, with a warning.
 check "stream a centred model" run 0 "$fd" stream "$work/svr.json" "$rec20" --rate-hz 1
 check "stream centred warning" err_has "svr.json was trained with centred temperature rates"
