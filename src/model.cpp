@@ -40,6 +40,20 @@ Method parse_method(const std::string& text, const std::string& option) {
   return parse_in(kMethodNames, text, option, "a method");
 }
 
+namespace {
+
+// A batch prediction never writes a drift that is not finite (docs/reliability.md, "Finite
+// values"): readings inside the reader's ranges and a model as fogdrift writes it cannot give one,
+// so an edited model (--allow-edited) or data that bypassed the reader did.
+std::string non_finite_drift(double drift_dph, double time_s) {
+  return fmt::format(
+      "at time_s {} the model gives a drift of {} °/h, not a finite number: its "
+      "coefficients or these readings are beyond what it can compute with",
+      time_s, drift_dph);
+}
+
+}  // namespace
+
 DriftPrediction CompensationModel::predict(std::span<const double> features, std::span<double> work,
                                            bool warming) const {
   const std::size_t d = inputs();
@@ -80,6 +94,9 @@ std::vector<double> CompensationModel::predict_dph(const Dataset& data, bool gua
     in_group = (i == 0 || data.group[i] != data.group[i - 1]) ? 0 : in_group + 1;
     const bool warming = in_group < data.groups[data.group[i]].warm_rows;
     const DriftPrediction p = predict(data.row(i), work, warming);
+    if (!std::isfinite(p.drift_dph))
+      throw InputError(data.groups[data.group[i]].file, 0, 0,
+                       non_finite_drift(p.drift_dph, data.time_s[i]));
     out[i] = p.drift_dph;
     if (guarded && !guard.empty()) {
       if (in_group == 0) filter.reset();
@@ -131,6 +148,8 @@ RecordingPrediction CompensationModel::predict(const Recording& recording, bool 
   for (std::size_t i = 0; i < table.rows; ++i) {
     const DriftPrediction p =
         predict(std::span<const double>(table.x.data() + i * d, d), work, i < table.warm_rows);
+    if (!std::isfinite(p.drift_dph))
+      throw InputError(recording.source, 0, 0, non_finite_drift(p.drift_dph, table.time_s[i]));
     out.model_drift_dph[i] = p.drift_dph;
     out.novelty[i] = p.novelty;
     out.weight[i] = 1.0;

@@ -5,6 +5,7 @@
 
 #include <cctype>
 #include <cmath>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
 
@@ -65,6 +66,25 @@ void check_time(const std::vector<double>& time_s, const std::string& file,
                       csv::format_number(time_s[i]), csv::format_number(time_s[i - 1])));
     }
   }
+}
+
+// The range a known column's readings must lie in (docs/formats.md): wide enough for any
+// instrument and chamber, narrow enough that nothing computed from a reading (rates, gradients,
+// sums of squares) can overflow a double. A temperature of 1e308 °C is finite, and turned a
+// compensation into inf before the rule.
+struct Plausible {
+  double min, max;
+  const char* rule;
+};
+
+std::optional<Plausible> plausible_range(std::string_view name) {
+  if (name == "time_s") return Plausible{-1e12, 1e12, "is beyond ±1e12 s"};
+  if (name.ends_with("_degc"))
+    return Plausible{-273.15, 1000, "is not a temperature from -273.15 to 1000 °C"};
+  if (name == "gyro_dph") return Plausible{-1e9, 1e9, "is beyond ±1e9 °/h"};
+  if (name.ends_with("_g")) return Plausible{-1e4, 1e4, "is beyond ±1e4 g"};
+  if (name == "table_deg") return Plausible{-1e9, 1e9, "is beyond ±1e9°"};
+  return std::nullopt;
 }
 
 }  // namespace
@@ -148,6 +168,10 @@ Recording read_recording(const std::filesystem::path& path) {
           throw InputError(file, table.row_line[i], c + 1,
                            fmt::format("column '{}': value '{}' {}", name, cell, why));
         }
+        if (const auto range = plausible_range(name);
+            range && !(*v >= range->min && *v <= range->max))
+          throw InputError(file, table.row_line[i], c + 1,
+                           fmt::format("column '{}': value '{}' {}", name, cell, range->rule));
         col->push_back(*v);
       }
     } else {
@@ -193,6 +217,10 @@ void validate(const Recording& r) {
       if (!std::isfinite(col[i])) {
         throw InputError(file, i + 2, 0, fmt::format("column '{}' is not finite", name));
       }
+      if (const auto range = plausible_range(name);
+          range && !(col[i] >= range->min && col[i] <= range->max))
+        throw InputError(file, i + 2, 0,
+                         fmt::format("column '{}': value {} {}", name, col[i], range->rule));
     }
   };
   for (const auto& name : required_columns()) check(name, *known_column(r, name));

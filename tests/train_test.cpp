@@ -194,6 +194,23 @@ TEST(ModelFile, RejectsWhatItCannotRead) {
   EXPECT_NE(error_of("{\"format\": ").find("m.json:1:"), std::string::npos);
 }
 
+// Found by attack (issue 36, "infinity"): a model edited to coefficients of 1e308 wrote
+// drift_dph = inf. A batch prediction that is not finite is an error naming the recording.
+TEST(ModelFile, ADriftThatIsNotFiniteIsAnErrorNotAnOutput) {
+  const Dataset d = test::synthetic();
+  auto j = nlohmann::ordered_json::parse(to_json(train(d, {}, quick(Method::poly)).model));
+  for (auto& scale : j["scalers"]["features"]["scale"]) scale = 1e-300;
+  const CompensationModel edited = compensation_model_from_json(j.dump(), "m.json", {true});
+  try {
+    edited.predict_dph(d, false);
+    ADD_FAILURE() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find(d.groups[0].file + ": at time_s"), std::string::npos)
+        << e.what();
+    EXPECT_NE(std::string(e.what()).find("not a finite number"), std::string::npos) << e.what();
+  }
+}
+
 TEST(Train, RejectsImpossibleOptions) {
   const Dataset d = test::synthetic();
   TrainOptions o = quick(Method::poly);
