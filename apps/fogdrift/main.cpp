@@ -2,6 +2,7 @@
 #include <fmt/format.h>
 
 #include <CLI/CLI.hpp>
+#include <csignal>
 #include <exception>
 #include <iostream>
 
@@ -11,6 +12,9 @@
 #include "fogdrift/svr/svr.hpp"
 
 int main(int argc, char** argv) {
+  // Over the file-size limit (ulimit -f) a write fails with EFBIG instead of killing the process
+  // with SIGXFSZ, so the atomic writer removes its temporary and says why (docs/reliability.md).
+  std::signal(SIGXFSZ, SIG_IGN);
   CLI::App app;
   fogdrift::app::add_commands(app);
   // A bad FOGDRIFT_ISA is reported before any command starts work, and --help still works.
