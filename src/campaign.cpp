@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+
 #include <cmath>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -131,6 +133,15 @@ Campaign parse_manifest(const std::string& text, const std::string& file, const 
     if (fs::path(e.file).is_absolute()) {
       fail(file, path_i + ".file", "must be relative to the campaign folder");
     }
+    // Found by attack (issue 36, "reader leniency"): a NUL made "a.csv\u0000x" name a.csv, a
+    // second entry for one file; "../" reached outside the campaign, as an absolute path may not.
+    if (std::any_of(e.file.begin(), e.file.end(),
+                    [](char ch) { return static_cast<unsigned char>(ch) < 0x20; }))
+      fail(file, path_i + ".file", "must not hold a control character (a NUL, a line break, …)");
+    for (const fs::path& part : fs::path(e.file))
+      if (part == "..")
+        fail(file, path_i + ".file",
+             fmt::format("\"{}\" leaves the campaign folder; recordings lie inside it", e.file));
     if (!seen_files.insert(fs::path(e.file).lexically_normal().string()).second) {
       fail(file, path_i + ".file", fmt::format("\"{}\" is listed twice", e.file));
     }
@@ -166,8 +177,12 @@ Campaign parse_manifest(const std::string& text, const std::string& file, const 
     if (r.contains("notes")) e.notes_json = r["notes"].dump();
     const fs::path rec_path = c.dir / e.file;
     if (files_exist && !fs::is_regular_file(rec_path)) {
+      std::error_code ec;
       fail(file, path_i + ".file",
-           fmt::format("recording \"{}\" does not exist", rec_path.string()));
+           fmt::format("recording \"{}\" {}", rec_path.string(),
+                       fs::exists(rec_path, ec)
+                           ? "is not a regular file (a folder, a pipe, a device)"
+                           : "does not exist"));
     }
     if (!c.latitude_deg &&
         (e.scenario != Scenario::calibration || (e.true_azimuth_deg && !e.input_rate_dph))) {

@@ -204,6 +204,12 @@ std::string quote(std::string_view field, char delimiter) {
   return out;
 }
 
+std::string excerpt(std::string_view field) {
+  constexpr std::size_t kShown = 40;
+  if (field.size() <= kShown) return std::string(field);
+  return fmt::format("{}…({} characters)", field.substr(0, kShown), field.size());
+}
+
 bool LineReader::next(std::string& line) {
   line.clear();
   std::streambuf* in = in_.rdbuf();

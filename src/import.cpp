@@ -231,7 +231,7 @@ std::vector<Recording> import_recordings(const std::filesystem::path& path,
           throw InputError(file, table.row_line[i], c + 1,
                            fmt::format("column '{}' (for {}): '{}' is not a date and time "
                                        "(YYYY-MM-DD HH:MM:SS[.fff], T allowed, Z or ±HH:MM)",
-                                       table.header[c], target, cell));
+                                       table.header[c], target, csv::excerpt(cell)));
         }
         values.push_back(*seconds);
         continue;
@@ -240,17 +240,17 @@ std::vector<Recording> import_recordings(const std::filesystem::path& path,
       if (!v) {
         throw InputError(file, table.row_line[i], c + 1,
                          fmt::format("column '{}' (for {}): '{}' is not a finite number",
-                                     table.header[c], target, cell));
+                                     table.header[c], target, csv::excerpt(cell)));
       }
       double raw = *v;
       if (conv.signed_bits > 0) {
         const double range = std::ldexp(1.0, conv.signed_bits);  // 2^N
         if (raw != std::floor(raw) || raw < -range / 2 || raw >= range) {
-          throw InputError(
-              file, table.row_line[i], c + 1,
-              fmt::format("column '{}' (for {}): '{}' is not an int{} register value "
-                          "(a whole number in [{}, {}])",
-                          table.header[c], target, cell, conv.signed_bits, -range / 2, range - 1));
+          throw InputError(file, table.row_line[i], c + 1,
+                           fmt::format("column '{}' (for {}): '{}' is not an int{} register value "
+                                       "(a whole number in [{}, {}])",
+                                       table.header[c], target, csv::excerpt(cell),
+                                       conv.signed_bits, -range / 2, range - 1));
         }
         if (raw >= range / 2) raw -= range;  // the unsigned bit pattern of a negative value
       }

@@ -116,9 +116,9 @@ std::vector<double> Recording::numeric_column(std::string_view name) const {
     for (std::size_t i = 0; i < extra[c].cells.size(); ++i) {
       const auto v = csv::parse_number(extra[c].cells[i]);
       if (!v) {
-        throw InputError(
-            source, i + 2, 0,
-            fmt::format("column '{}': '{}' is not a finite number", name, extra[c].cells[i]));
+        throw InputError(source, i + 2, 0,
+                         fmt::format("column '{}': '{}' is not a finite number", name,
+                                     csv::excerpt(extra[c].cells[i])));
       }
       values.push_back(*v);
     }
@@ -165,13 +165,15 @@ Recording read_recording(const std::filesystem::path& path) {
           const char* why = cell.empty() ? "is empty"
                             : non_finite ? "is not finite (NaN and Inf are not allowed)"
                                          : "is not a number";
-          throw InputError(file, table.row_line[i], c + 1,
-                           fmt::format("column '{}': value '{}' {}", name, cell, why));
+          throw InputError(
+              file, table.row_line[i], c + 1,
+              fmt::format("column '{}': value '{}' {}", name, csv::excerpt(cell), why));
         }
         if (const auto range = plausible_range(name);
             range && !(*v >= range->min && *v <= range->max))
-          throw InputError(file, table.row_line[i], c + 1,
-                           fmt::format("column '{}': value '{}' {}", name, cell, range->rule));
+          throw InputError(
+              file, table.row_line[i], c + 1,
+              fmt::format("column '{}': value '{}' {}", name, csv::excerpt(cell), range->rule));
         col->push_back(*v);
       }
     } else {

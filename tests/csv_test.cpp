@@ -75,6 +75,13 @@ TEST(Quote, OnlyWhenNeeded) {
   EXPECT_EQ(quote(" edge"), "\" edge\"");
 }
 
+// Found by attack (issue 36, "reader leniency"): a 10 MB number was echoed whole in its error.
+TEST(Excerpt, ShowsAFieldWholeUpTo40CharactersElseItsStartAndLength) {
+  EXPECT_EQ(excerpt("12.5x"), "12.5x");
+  EXPECT_EQ(excerpt(std::string(40, '7')), std::string(40, '7'));
+  EXPECT_EQ(excerpt(std::string(10'000'000, '9')), std::string(40, '9') + "…(10000000 characters)");
+}
+
 // Found by attack (issue 36, "stream input"): stream echoed the CR of CRLF lines into its output,
 // read a CR-only file as one line and refused a byte-order mark. Its lines are read() sees.
 TEST(LineReader, EndsLinesAtLfCrlfOrCrAndDropsTheByteOrderMark) {

@@ -150,9 +150,9 @@ void run(const StreamArgs& given, const CLI::App& cmd) {
       if (column[k] == kAbsent) continue;
       const auto value = csv::parse_number(fields[column[k]]);
       if (a.strict && (!value || !std::isfinite(*value)))
-        throw InputError(
-            name, line_no, column[k] + 1,
-            fmt::format("{} '{}' is not a finite number", kNeeded[k], fields[column[k]]));
+        throw InputError(name, line_no, column[k] + 1,
+                         fmt::format("{} '{}' is not a finite number", kNeeded[k],
+                                     csv::excerpt(fields[column[k]])));
       v[k] = value ? *value : std::nan("");
     }
     // --strict keeps the fixed interval to 1 %: a sample off it would bend every rate after it.

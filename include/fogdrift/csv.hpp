@@ -53,6 +53,10 @@ std::string format_number(double value);
 /// `field` quoted when it holds the delimiter, a quote, a line break or edge spaces.
 std::string quote(std::string_view field, char delimiter = ',');
 
+/// A field as an error message shows it: whole up to 40 characters, else its first 40 and its
+/// length ("123456…(10000000 characters)"), so that a 10 MB cell is not echoed whole.
+std::string excerpt(std::string_view field);
+
 /// The lines of a CSV arriving piece by piece (standard input, a pipe, a logger), as `stream`
 /// reads them: a line ends at LF, CRLF or a lone CR, and none of them is kept; the first line
 /// loses a UTF-8 byte-order mark. A line is returned as soon as its end arrives (a CR is not held

@@ -56,19 +56,20 @@ class LineReader {
     double v = 0;
     const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
     if (ec != std::errc() || end != text.data() + text.size() || text.empty())
-      fail(fmt::format("{} '{}' is not a number", what, text));
+      fail(fmt::format("{} '{}' is not a number", what, csv::excerpt(text)));
     if (!std::isfinite(v)) fail(fmt::format("{} '{}' is not finite", what, text));
     return v;
   }
   // "INDEX:VALUE" with INDEX > previous.
   std::pair<std::size_t, double> feature(std::string_view tok, std::size_t previous) {
     const auto colon = tok.find(':');
-    if (colon == std::string_view::npos) fail(fmt::format("'{}' is not INDEX:VALUE", tok));
+    if (colon == std::string_view::npos)
+      fail(fmt::format("'{}' is not INDEX:VALUE", csv::excerpt(tok)));
     std::size_t index = 0;
     const auto idx = tok.substr(0, colon);
     const auto [end, ec] = std::from_chars(idx.data(), idx.data() + idx.size(), index);
     if (ec != std::errc() || end != idx.data() + idx.size() || idx.empty() || index == 0)
-      fail(fmt::format("feature index '{}' is not a positive integer", idx));
+      fail(fmt::format("feature index '{}' is not a positive integer", csv::excerpt(idx)));
     if (index > kMaxFeatures)
       fail(
           fmt::format("feature index {} is above the {} features fogdrift reads (it holds "

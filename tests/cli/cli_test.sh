@@ -507,6 +507,12 @@ check "bad warm-off message" err_has "option --warm-off-s: -5 s is outside [0, 1
 check "warm restarts" run 0 "$fd" simulate northfind --out "$work/nfw" --approach warm --temps 10 --findings 1
 check "warm manifest" python3 -c 'import json,sys; assert json.load(open(sys.argv[1]))["generator"]["approach"] == "warm"' "$work/nfw/campaign.json"
 
+# Found by attack (issue 36, "reader leniency"): a 10 MB number was echoed whole in its error.
+python3 -c 'import sys; open(sys.argv[1], "w").write("time_s,gyro_dph,temp_fog_degc\n1,2," + "3" * 10**7 + "x\n2,3,4\n")' "$work/big_cell.csv"
+check "a 10 MB cell" run 1 "$fd" inspect "$work/big_cell.csv"
+check "a 10 MB cell: its start and length" err_has "big_cell.csv:2:3: column 'temp_fog_degc': value '3333333333333333333333333333333333333333…(10000001 characters)' is not a number"
+check "a 10 MB cell: a short message" test "$(wc -c <"$work/err")" -lt 300
+
 # Found by attack (issue 36, "crash"): notes nested 100,000 deep overflowed the stack.
 cp -r "$work/nfw" "$work/nested"
 python3 - "$work/nested/campaign.json" <<'PY'
