@@ -175,7 +175,7 @@ Mlp mlp_from_json(const std::string& text, const std::string& source) {
     where = "b2";
     n.b2 = r.at("b2").get<double>();
   } catch (const nlohmann::json::exception& e) {
-    fail(where, fmt::format("missing or mistyped field ({})", e.what()));
+    fail(where, fmt::format("missing or mistyped field ({})", json_error_text(e)));
   }
   if (n.w1.size() != n.hidden * n.inputs || n.b1.size() != n.hidden || n.w2.size() != n.hidden)
     fail("w1",

@@ -366,7 +366,7 @@ CompensationModel compensation_model_from_json(const std::string& text, const st
           {f.at("path").get<std::string>(), f.at("sha256").get<std::string>()});
     m.provenance.fogdrift_version = p.at("fogdrift_version").get<std::string>();
   } catch (const ojson::exception& e) {
-    fail(where, fmt::format("missing or mistyped field ({})", e.what()));
+    fail(where, fmt::format("missing or mistyped field ({})", json_error_text(e)));
   } catch (const OptionError& e) {
     fail(where, e.what());
   }

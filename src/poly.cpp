@@ -107,7 +107,7 @@ Poly poly_from_json(const std::string& text, const std::string& source) {
     where = "exponents";
     exps = r.at("exponents").get<std::vector<std::vector<int>>>();
   } catch (const nlohmann::json::exception& e) {
-    fail(where, fmt::format("missing or mistyped field ({})", e.what()));
+    fail(where, fmt::format("missing or mistyped field ({})", json_error_text(e)));
   }
   if (exps.size() != p.coef.size()) fail("exponents", "must hold one row per coefficient");
   for (const auto& e : exps) {

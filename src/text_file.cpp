@@ -70,6 +70,15 @@ void throw_json_number_error(const std::string& file, const std::string& text,
                                number.empty() ? std::string("here") : number));
 }
 
+std::string json_error_text(const std::exception& e) {
+  const std::string_view what = e.what();
+  if (what.starts_with("[json.exception.")) {
+    const auto close = what.find("] ");
+    if (close != std::string_view::npos) return std::string(what.substr(close + 2));
+  }
+  return std::string(what);
+}
+
 void check_json_nesting(const std::string& file, const std::string& text, std::size_t max_depth) {
   std::size_t depth = 0;
   bool in_string = false;

@@ -189,6 +189,9 @@ TEST(ModelFile, RejectsWhatItCannotRead) {
   }
   EXPECT_NE(error_of(edit([](auto& j) { j["provenance"].erase("seed"); })).find("provenance"),
             std::string::npos);
+  // Found by attack (issue 36, "reader leniency"): the JSON library's tag was shown raw.
+  EXPECT_EQ(error_of(edit([](auto& j) { j["provenance"].erase("seed"); })),
+            "m.json: provenance: missing or mistyped field (key 'seed' not found)");
   EXPECT_NE(error_of(edit([](auto& j) { j["features"]["spec"] = "T,bogus"; })).find("features"),
             std::string::npos);
   EXPECT_NE(error_of("{\"format\": ").find("m.json:1:"), std::string::npos);

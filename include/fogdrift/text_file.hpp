@@ -2,6 +2,7 @@
 #pragma once
 
 #include <cstddef>
+#include <exception>
 #include <filesystem>
 #include <string>
 #include <utility>
@@ -24,6 +25,10 @@ std::pair<std::size_t, std::size_t> line_column_of(const std::string& text, std:
 /// number is found in `text`, its line and column.
 [[noreturn]] void throw_json_number_error(const std::string& file, const std::string& text,
                                           const std::string& what);
+
+/// A JSON library exception's text without its "[json.exception.out_of_range.403] " tag, as an
+/// error message shows it: "key 'seed' not found".
+std::string json_error_text(const std::exception& e);
 
 /// Arrays and objects nested deeper than this are refused by every JSON reader of fogdrift: no
 /// file it writes nests deeper than 6, and the JSON library writes and destroys nested values

@@ -365,7 +365,7 @@ Model model_from_json(const std::string& text, const std::string& source) {
       m.support_vectors.insert(m.support_vectors.end(), v.begin(), v.end());
     }
   } catch (const ojson::exception& e) {
-    fail("(model)", fmt::format("missing or mistyped field ({})", e.what()));
+    fail("(model)", fmt::format("missing or mistyped field ({})", json_error_text(e)));
   }
   for (double v : m.coef)
     if (!std::isfinite(v)) fail("coef", "must be finite numbers");
