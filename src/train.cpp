@@ -69,6 +69,7 @@ TrainResult train(const Dataset& data, const DatasetOptions& dataset, const Trai
         else
           params.kernel = svr::Kernel::rbf_gamma(1.0 / static_cast<double>(data.cols()));
         params.tolerance = t.tolerance;
+        params.cache_mb = t.cache_mb;  // the user's kernel cache (--cache-mb), as the searches use
         s.fitness_value = tune::svr_loss(data, params, t);
       } else {
         t.optimizer.algorithm = algorithm_of(options.method);  // tune_svr validates with it

@@ -5,6 +5,7 @@
 #include <csignal>
 #include <exception>
 #include <iostream>
+#include <new>
 
 #include "cli_util.hpp"
 #include "commands.hpp"
@@ -29,6 +30,12 @@ int main(int argc, char** argv) {
     return 1;
   } catch (const fogdrift::OptionError& e) {
     std::cerr << "fogdrift: error: " << e.what() << "\n";
+    return 1;
+  } catch (const std::bad_alloc&) {
+    // An allocation the up-front memory checks did not foresee (docs/reliability.md).
+    std::cerr << "fogdrift: error: out of memory: this machine, or its limit (ulimit -v, a "
+                 "container), has less memory than the run needs; fewer threads, a smaller "
+                 "kernel cache or fewer rows would need less (train: --threads, --cache-mb)\n";
     return 1;
   } catch (const std::exception& e) {
     std::cerr << "fogdrift: error: " << e.what() << "\n";

@@ -40,6 +40,7 @@ struct TrainArgs {
   std::size_t iterations = kRun.iterations;
   std::uint64_t seed = kRun.seed;
   unsigned threads = 0;
+  double cache_mb = kTrain.tune.cache_mb;
   double c_min = tune::SearchSpace{}.c_min, c_max = tune::SearchSpace{}.c_max,
          sigma_min = tune::SearchSpace{}.sigma_min, sigma_max = tune::SearchSpace{}.sigma_max,
          epsilon = tune::SearchSpace{}.epsilon;
@@ -70,7 +71,8 @@ const FlagTable kTrainFlags = {{"population", "--population"},
                                {"block_s", "--block-s"},
                                {"window_s", "--rate-window-s"},
                                {"poly_order", "--rate-degree"},
-                               {"denoise", "--no-denoise"}};
+                               {"denoise", "--no-denoise"},
+                               {"cache_mb", "--cache-mb"}};
 
 /// "auto" or a positive number of seconds.
 std::optional<double> seconds_or_auto(const std::string& text, const std::string& flag) {
@@ -109,6 +111,7 @@ void run(const TrainArgs& a) {
   options.tune.optimizer.run.population = a.population;
   options.tune.optimizer.run.iterations = a.iterations;
   options.tune.optimizer.run.seed = a.seed;
+  options.tune.cache_mb = a.cache_mb;
   options.tune.space.c_min = a.c_min;
   options.tune.space.c_max = a.c_max;
   options.tune.space.sigma_min = a.sigma_min;
@@ -330,6 +333,10 @@ void add_train(CLI::App& app) {
       ->capture_default_str();
   cmd->add_option("--threads", args->threads,
                   "Threads (0: one per core); results do not depend on it")
+      ->capture_default_str();
+  cmd->add_option("--cache-mb", args->cache_mb,
+                  "Kernel-row cache of each SVR fit, MB (one fit per thread): less memory, "
+                  "slower fits")
       ->capture_default_str();
   cmd->add_option("--c-min", args->c_min, "Smallest C searched")->capture_default_str();
   cmd->add_option("--c-max", args->c_max, "Largest C searched")->capture_default_str();

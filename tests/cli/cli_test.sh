@@ -222,7 +222,12 @@ fi
 # A small campaign (3 temperatures × 4 repetitions) keeps these runs short under the sanitizers.
 check "small campaign" run 0 "$fd" simulate calibration --out "$work/small" --temps -20,20,60 --seed 3
 check "train help teaches" run 0 "$fd" train --help
+# Found by attack (issue 36, "memory limits"): the memory advice named a kernel cache train had
+# no option for.
+check "train has the kernel cache the memory advice names" out_has "--cache-mb"
 check "train help lists methods" out_has "ssa-svr  ε-SVR, C and σ tuned by sparrow search"
+check "a negative kernel cache" run 1 "$fd" train "$work/small" --cache-mb -1 -o "$work/x.json"
+check "kernel cache message" err_has "option --cache-mb: -1 must be finite and ≥ 0"
 check "train ssa-svr" run 0 "$fd" train "$work/small" --population 5 --iterations 2 --c-max 10 \
   --threads 1 -o "$work/m1.json"
 check "train prints the fitness" out_has "cv RMSE"
