@@ -184,6 +184,15 @@ Recording read_recording(const std::filesystem::path& path) {
     }
   }
   check_time(rec.time_s, file, &table.row_line, *table.find("time_s") + 1);
+  // The simulator's true drift is the one extra column fogdrift computes with (the floor of
+  // northfind and paper): it must be numbers from the start, not when it is first used.
+  if (const auto c = table.find("drift_true_dph")) {
+    for (std::size_t i = 0; i < n; ++i)
+      if (!csv::parse_number(table.rows[i][*c]))
+        throw InputError(file, table.row_line[i], *c + 1,
+                         fmt::format("column 'drift_true_dph': '{}' is not a finite number",
+                                     csv::excerpt(table.rows[i][*c])));
+  }
   return rec;
 }
 
