@@ -26,10 +26,15 @@ check "nothing written" test ! -e "$work/x.csv"
 check "plain counts read negatives wrong" run 0 "$fd" import "$raw" -o "$work/counts.csv" --split-at-reset \
   --map time_s=millis --unit time_s=ms --map gyro_dph=gx_dps --unit gyro_dph=deg/s \
   --map temp_fog_degc=temp_raw --unit temp_fog_degc=counts:0.00390625:25 \
-  --map temp_acc1_degc=temp_raw --map temp_acc2_degc=temp_raw
+  --map temp_acc1_degc=temp_raw --unit temp_acc1_degc=counts:0.00390625:25 \
+  --map temp_acc2_degc=temp_raw --unit temp_acc2_degc=counts:0.00390625:25
 check "unsigned reading of -10 °C is 246 °C" bash -c "awk -F, 'NR==2{exit !(\$3 > 200)}' '$work/counts_1.csv'"
 check "campaign catches the wrong unit" run 1 "$fd" campaign "$work/wrong" "$work"/counts_*.csv --input-rate-dph 0
 check "wrong unit message" err_has "counts_1.csv:2: temp_fog_degc starts at 246 °C, outside [-70, 100]: check its unit"
+check "raw counts with no unit" run 1 "$fd" import "$raw" -o "$work/raw.csv" --split-at-reset \
+  --map time_s=millis --unit time_s=ms --map gyro_dph=gx_dps --unit gyro_dph=deg/s \
+  --map temp_fog_degc=temp_raw
+check "raw counts are not a temperature" err_has "column 'temp_fog_degc': value 56579 is not a temperature from -273.15 to 1000 °C"
 check "import without a grid" run 0 "$fd" import "$raw" -o "$work/nogrid.csv" --split-at-reset "${map[@]}"
 check "import says the steps are not uniform" out_has "note: the time steps are not uniform (within 1 %); train needs that: import again with --rate-hz R"
 check "inspect a jittery recording" run 0 "$fd" inspect "$work/nogrid_1.csv"
