@@ -627,15 +627,19 @@ std::string to_c_header(const CompensationModel& model, const std::string& prefi
                      prefix, c_number(m->kernel.gamma), prefix, c_number(m->rho));
     const bool rbf = m->kernel.type == svr::KernelType::rbf;
     body = fmt::format(
-        "  @REAL@ z = -{0}_rho;\n"
+        "  @REAL@ z = -{0}_rho, carry = 0.0; /* compensated sum (Kahan): terms of C in the\n"
+        "                                      hundreds cancel to a z of order 1 */\n"
         "  int i, k;\n"
         "  for (i = 0; i < {1}_N_SV; ++i) {{\n"
         "    const @REAL@* s = {0}_sv + i * {1}_N_FEATURES;\n"
-        "    @REAL@ acc = 0.0;\n"
+        "    @REAL@ acc = 0.0, term, sum;\n"
         "    for (k = 0; k < {1}_N_FEATURES; ++k) {{\n"
         "{2}"
         "    }}\n"
-        "    z += {0}_coef[i] * {3};\n"
+        "    term = {0}_coef[i] * {3} - carry;\n"
+        "    sum = z + term;\n"
+        "    carry = (sum - z) - term;\n"
+        "    z = sum;\n"
         "  }}\n",
         prefix, upper,
         rbf ? "      const @REAL@ e = x[k] - s[k];\n      acc += e * e;\n"
