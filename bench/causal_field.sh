@@ -7,7 +7,7 @@
 # largest novelty_reduced_share on the calibration's test repetition.
 # Usage: bench/causal_field.sh [BUILD_DIR] [SEEDS] [TRAIN_FLAGS...]
 #   (default build/, 5 seeds); extra flags go to `fogdrift train`, e.g. --rate-degree 2.
-# Prints a Markdown table; about 9 minutes a seed on one core with train's default search.
+# Prints a Markdown table; 6 to 16 minutes a seed on one core with train's default search.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 fd=${1:-$root/build}/apps/fogdrift/fogdrift

@@ -153,6 +153,7 @@ Recording read_recording(const std::filesystem::path& path) {
     const std::string& name = table.header[c];
     if (std::vector<double>* col = known_column(rec, name, true)) {
       col->reserve(n);
+      const std::optional<Plausible> range = plausible_range(name);
       for (std::size_t i = 0; i < n; ++i) {
         const std::string& cell = table.rows[i][c];
         const auto v = csv::parse_number(cell);
@@ -169,8 +170,7 @@ Recording read_recording(const std::filesystem::path& path) {
               file, table.row_line[i], c + 1,
               fmt::format("column '{}': value '{}' {}", name, csv::excerpt(cell), why));
         }
-        if (const auto range = plausible_range(name);
-            range && !(*v >= range->min && *v <= range->max))
+        if (range && !(*v >= range->min && *v <= range->max))
           throw InputError(
               file, table.row_line[i], c + 1,
               fmt::format("column '{}': value '{}' {}", name, csv::excerpt(cell), range->rule));
@@ -224,12 +224,12 @@ void validate(const Recording& r) {
           file, 0, 0,
           fmt::format("column '{}' has {} values but time_s has {}", name, col.size(), n));
     }
+    const std::optional<Plausible> range = plausible_range(name);
     for (std::size_t i = 0; i < n; ++i) {
       if (!std::isfinite(col[i])) {
         throw InputError(file, i + 2, 0, fmt::format("column '{}' is not finite", name));
       }
-      if (const auto range = plausible_range(name);
-          range && !(col[i] >= range->min && col[i] <= range->max))
+      if (range && !(col[i] >= range->min && col[i] <= range->max))
         throw InputError(file, i + 2, 0,
                          fmt::format("column '{}': value {} {}", name, col[i], range->rule));
     }

@@ -83,7 +83,7 @@ TEST(Excerpt, ShowsAFieldWholeUpTo40CharactersElseItsStartAndLength) {
 }
 
 // Found by attack (issue 36, "stream input"): stream echoed the CR of CRLF lines into its output,
-// read a CR-only file as one line and refused a byte-order mark. Its lines are read() sees.
+// read a CR-only file as one line and refused a byte-order mark. Its lines are those read() sees.
 TEST(LineReader, EndsLinesAtLfCrlfOrCrAndDropsTheByteOrderMark) {
   const std::string bom = "\xEF\xBB\xBF";
   for (const std::string& text :

@@ -57,7 +57,7 @@ class LineReader {
     const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
     if (ec != std::errc() || end != text.data() + text.size() || text.empty())
       fail(fmt::format("{} '{}' is not a number", what, csv::excerpt(text)));
-    if (!std::isfinite(v)) fail(fmt::format("{} '{}' is not finite", what, text));
+    if (!std::isfinite(v)) fail(fmt::format("{} '{}' is not finite", what, csv::excerpt(text)));
     return v;
   }
   // "INDEX:VALUE" with INDEX > previous.
