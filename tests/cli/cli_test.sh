@@ -518,6 +518,14 @@ check "a 10 MB cell" run 1 "$fd" inspect "$work/big_cell.csv"
 check "a 10 MB cell: its start and length" err_has "big_cell.csv:2:3: column 'temp_fog_degc': value '3333333333333333333333333333333333333333…(10000001 characters)' is not a number"
 check "a 10 MB cell: a short message" test "$(wc -c <"$work/err")" -lt 300
 
+# Found by attack (issue 36, "reader leniency"): a recording that is not a file was said not to
+# exist.
+cp -r "$work/nfw" "$work/folder_rec"
+first=$(python3 -c 'import json,sys; print(json.load(open(sys.argv[1]))["recordings"][0]["file"])' "$work/folder_rec/campaign.json")
+rm "$work/folder_rec/$first" && mkdir "$work/folder_rec/$first"
+check "a recording that is a folder" run 1 "$fd" inspect "$work/folder_rec"
+check "a folder is not a regular file" err_has "$first\" is not a regular file (a folder, a pipe, a device)"
+
 # Found by attack (issue 36, "crash"): notes nested 100,000 deep overflowed the stack.
 cp -r "$work/nfw" "$work/nested"
 python3 - "$work/nested/campaign.json" <<'PY'
