@@ -5,7 +5,7 @@
 namespace fogdrift::sim {
 
 DriftTerms thermal_drift(const FogParams& f, double coil_mean_degc, double coil_mean_rate,
-                         double gradient_rate) {
+                         double gradient_rate, const HiddenState& hidden) {
   const double dt = coil_mean_degc - f.reference_temp_degc;
   DriftTerms d;
   d.static_dph =
@@ -13,6 +13,10 @@ DriftTerms thermal_drift(const FogParams& f, double coil_mean_degc, double coil_
   d.rate_dph = f.rate_r0_dph_per_kps * (1.0 + f.rate_r1_per_k * dt) * coil_mean_rate;
   d.shupe_dph = f.shupe_s0_dph_per_kps * (1.0 + dt * (f.shupe_s1_per_k + dt * f.shupe_s2_per_k2)) *
                 gradient_rate;
+  if (f.filtered_rate_dph_per_kps != 0.0)
+    d.filtered_dph = f.filtered_rate_dph_per_kps * hidden.filtered_rate_k_per_s;
+  if (f.electronics_dph_per_k != 0.0)
+    d.electronics_dph = f.electronics_dph_per_k * (hidden.electronics_degc - f.reference_temp_degc);
   return d;
 }
 

@@ -21,6 +21,8 @@ void add_thermometer(std::vector<InstrumentField>& f, const std::string& name, T
   f.push_back({name + ".resolution_degc", "°C", 0, 10, false, "quantisation step (0: none)",
                &t.resolution_degc});
   f.push_back({name + ".offset_degc", "°C", -50, 50, false, "calibration offset", &t.offset_degc});
+  f.push_back({name + ".housing_share", "1", 0, 1, false,
+               "placement: share of the housing temperature in the reading", &t.housing_share});
 }
 
 void add_accel(std::vector<InstrumentField>& f, const std::string& name, AccelerometerParams& a) {
@@ -96,6 +98,14 @@ std::vector<InstrumentField> instrument_fields(Instrument& in) {
                &g.shupe_s1_per_k});
   f.push_back({"fog.shupe_s2_per_k2", "1/K²", -1, 1, false, "relative change of D_∇ per K²",
                &g.shupe_s2_per_k2});
+  f.push_back({"fog.filtered_rate_dph_per_kps", "(°/h)/(K/s)", -1e4, 1e4, false,
+               "filtered-rate coefficient F: drift F·ds/dt, s the coil mean low-passed with τ_F",
+               &g.filtered_rate_dph_per_kps});
+  f.push_back({"fog.filtered_rate_tau_s", "s", 0, 1e6, true, "τ_F of the filtered-rate term",
+               &g.filtered_rate_tau_s});
+  f.push_back({"fog.electronics_dph_per_k", "°/h/K", -1, 1, false,
+               "drift per K of the electronics node from T_ref (no thermometer reads it)",
+               &g.electronics_dph_per_k});
   f.push_back(
       {"fog.arw_deg_per_rth", "°/√h", 0, 10, false, "angle random walk N", &g.arw_deg_per_rth});
   f.push_back({"fog.bias_gm_sigma_dph", "°/h", 0, 100, false, "bias instability: Gauss–Markov σ",

@@ -13,6 +13,15 @@ namespace fogdrift::sim {
 namespace {
 
 constexpr std::array<Node, 3> kThermometerNode = {Node::coil_outer, Node::acc1, Node::acc2};
+using ThermometerOf = const ThermometerParams* (*)(const Instrument&);
+constexpr std::array<ThermometerOf, 3> kThermometers = {
+    [](const Instrument& in) { return &in.thermometer_fog; },
+    [](const Instrument& in) { return &in.thermometer_acc1; },
+    [](const Instrument& in) { return &in.thermometer_acc2; }};
+
+double coil_mean_degc(const NodeTemps& t) {
+  return 0.5 * (t[node_index(Node::coil_inner)] + t[node_index(Node::coil_outer)]);
+}
 
 // `value` rounded to a multiple of `step`, computed so that 0.01-type steps print exactly
 // ("-39.73", not "-39.730000000000004"): divide by 1/step when that is a whole number.
@@ -51,7 +60,15 @@ int substeps(double interval_s, double fine_step_s) {
 NfsSimulator::NfsSimulator(const Instrument& instrument, const NodeTemps& initial, double time_s)
     : instrument_(instrument), network_(instrument.thermal), temps_(initial), time_s_(time_s) {
   validate(instrument_);
-  for (int i = 0; i < 3; ++i) thermometer_state_degc_[i] = temps_[node_index(kThermometerNode[i])];
+  for (int i = 0; i < 3; ++i) thermometer_state_degc_[i] = read_node(i);
+  filtered_coil_degc_ = coil_mean_degc(temps_);
+}
+
+double NfsSimulator::read_node(int thermometer) const {
+  const ThermometerParams& p = *kThermometers[thermometer](instrument_);
+  const double node = temps_[node_index(kThermometerNode[thermometer])];
+  if (p.housing_share == 0.0) return node;
+  return (1.0 - p.housing_share) * node + p.housing_share * temps_[node_index(Node::housing)];
 }
 
 void NfsSimulator::step(double dt, const AirProfile& air, bool powered, const NodeTemps* rate) {
@@ -60,14 +77,18 @@ void NfsSimulator::step(double dt, const AirProfile& air, bool powered, const No
   } else {
     network_.step(temps_, dt, air(time_s_), air(time_s_ + dt), powered);
   }
-  const std::array<const ThermometerParams*, 3> therm = {
-      &instrument_.thermometer_fog, &instrument_.thermometer_acc1, &instrument_.thermometer_acc2};
-  for (int i = 0; i < 3; ++i) {
-    const double target = temps_[node_index(kThermometerNode[i])];
-    const double lag = therm[i]->lag_s;
-    const double a = lag > 0.0 ? 1.0 - std::exp(-dt / lag) : 1.0;
-    thermometer_state_degc_[i] += a * (target - thermometer_state_degc_[i]);
+  // The lags' step responses for this dt, computed once per dt (every step of a run shares it).
+  if (dt != lag_dt_s_) {
+    for (int i = 0; i < 3; ++i) {
+      const double lag = kThermometers[i](instrument_)->lag_s;
+      lag_gain_[i] = lag > 0.0 ? 1.0 - std::exp(-dt / lag) : 1.0;
+    }
+    lag_gain_[3] = 1.0 - std::exp(-dt / instrument_.fog.filtered_rate_tau_s);
+    lag_dt_s_ = dt;
   }
+  for (int i = 0; i < 3; ++i)
+    thermometer_state_degc_[i] += lag_gain_[i] * (read_node(i) - thermometer_state_degc_[i]);
+  filtered_coil_degc_ += lag_gain_[3] * (coil_mean_degc(temps_) - filtered_coil_degc_);
   time_s_ += dt;
 }
 
@@ -116,13 +137,16 @@ Recording NfsSimulator::record(const RecordSetup& setup, const AirProfile& air,
     for (int j = 0; j < n_sub; ++j) {
       const double t_rel = (time_s_ - start) + 0.5 * dt;  // mid-step, relative to the recording
       const NodeTemps rate = network_.derivative(temps_, air(time_s_), true);
-      const double coil_mean =
-          0.5 * (temps_[node_index(Node::coil_inner)] + temps_[node_index(Node::coil_outer)]);
+      const double coil_mean = coil_mean_degc(temps_);
       const double coil_rate =
           0.5 * (rate[node_index(Node::coil_inner)] + rate[node_index(Node::coil_outer)]);
       const double gradient_rate =
           rate[node_index(Node::coil_inner)] - rate[node_index(Node::coil_outer)];
-      const double drift = thermal_drift(fog, coil_mean, coil_rate, gradient_rate).total_dph();
+      // ds/dt of the low-passed coil mean s: (T̄ − s)/τ_F.
+      const HiddenState hidden{(coil_mean - filtered_coil_degc_) / fog.filtered_rate_tau_s,
+                               temps_[node_index(Node::electronics)]};
+      const double drift =
+          thermal_drift(fog, coil_mean, coil_rate, gradient_rate, hidden).total_dph();
       const double input = dot(earth, setup.platform.body_x(setup.table.angle_deg(t_rel)));
       angle_arcsec += (input + turn_on_bias_dph + drift) * dt + noise.angle_increment_arcsec(dt);
       drift_integral += drift * dt;

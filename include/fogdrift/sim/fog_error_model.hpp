@@ -20,13 +20,26 @@ struct DriftTerms {
   double static_dph = 0;  ///< B(T̄)
   double rate_dph = 0;    ///< D_Ṫ·dT̄/dt
   double shupe_dph = 0;   ///< D_∇·d(T_in − T_out)/dt
-  double total_dph() const { return static_dph + rate_dph + shupe_dph; }
+  /// Terms outside the paper's form (FogParams): F·ds/dt and e1·(T_electronics − T_ref).
+  double filtered_dph = 0;
+  double electronics_dph = 0;
+  double total_dph() const {
+    return static_dph + rate_dph + shupe_dph + filtered_dph + electronics_dph;
+  }
+};
+
+/// The state the terms outside the paper's form read, beyond the coil: the filtered coil mean
+/// s's rate, K/s, and the electronics node's temperature, °C.
+struct HiddenState {
+  double filtered_rate_k_per_s = 0;
+  double electronics_degc = 0;
 };
 
 /// The thermal drift for coil mean temperature `coil_mean_degc`, its rate `coil_mean_rate_k_per_s`
 /// and the rate of the inner-minus-outer coil gradient `gradient_rate_k_per_s`.
+/// `hidden` feeds the terms outside the paper's form; they are 0 when their coefficients are.
 DriftTerms thermal_drift(const FogParams& fog, double coil_mean_degc, double coil_mean_rate_k_per_s,
-                         double gradient_rate_k_per_s);
+                         double gradient_rate_k_per_s, const HiddenState& hidden = {});
 
 /// Stochastic part of the FOG output, integrated at the fine step: angle random walk (white rate
 /// noise), bias instability (first-order Gauss–Markov), rate random walk, plus the quantiser of

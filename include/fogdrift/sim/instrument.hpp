@@ -46,6 +46,9 @@ struct ThermometerParams {
   double noise_degc = 0.01;       ///< white noise standard deviation per sample, °C
   double resolution_degc = 0.01;  ///< quantisation step, °C (0 = none)
   double offset_degc = 0.0;       ///< calibration offset, °C
+  /// Placement: the share of the housing temperature in what it reads (0: its node alone; a
+  /// sensor mounted near the wall reads partly the housing).
+  double housing_share = 0.0;
 };
 
 /// FOG output = Earth-rate projection + turn-on bias + thermal drift (IEEE Std 952) + noise.
@@ -64,6 +67,14 @@ struct FogParams {
   double shupe_s0_dph_per_kps = -70.0;
   double shupe_s1_per_k = -0.008;
   double shupe_s2_per_k2 = 1.0e-4;
+  // Terms outside the paper's form, 0 in the default instrument (docs/simulator.md §2, "Other
+  // instruments"). A filtered-rate term F·ṡ, s the coil mean temperature low-passed with time
+  // constant τ_F (a slow stress relaxation of the coil's potting), in (°/h)/(°C/s):
+  double filtered_rate_dph_per_kps = 0.0;
+  double filtered_rate_tau_s = 600.0;
+  /// An electronics term e1·(T_electronics − T_ref): the light source's wavelength and the
+  /// modulation electronics drift with a temperature no thermometer reads, °/h/K.
+  double electronics_dph_per_k = 0.0;
   // Noise (IEEE Std 952 Allan terms).
   double arw_deg_per_rth = 0.0005;    ///< angle random walk N, °/√h
   double bias_gm_sigma_dph = 0.0015;  ///< bias instability as a Gauss–Markov process: σ, °/h

@@ -46,11 +46,18 @@ class NfsSimulator {
   /// One fine step; `rate` is the network's derivative at the current state when the caller
   /// already has it (it is the first Runge–Kutta stage), or null.
   void step(double dt_s, const AirProfile& air, bool powered, const NodeTemps* rate = nullptr);
+  /// What thermometer 0 (fog), 1 (acc1) or 2 (acc2) senses before its lag: its node, mixed
+  /// with the housing by its placement (ThermometerParams::housing_share).
+  double read_node(int thermometer) const;
 
   Instrument instrument_;
   ThermalNetwork network_;
   NodeTemps temps_;
   std::array<double, 3> thermometer_state_degc_;  // fog, acc1, acc2 after their lags
+  double filtered_coil_degc_;  // the coil mean low-passed with fog.filtered_rate_tau_s
+  // 1 − exp(−dt/τ) of the three thermometers' lags and of the filter, for the step lag_dt_s_.
+  std::array<double, 4> lag_gain_{};
+  double lag_dt_s_ = -1.0;
   double time_s_;
 };
 
