@@ -7,8 +7,10 @@
 
 #include "cli_util.hpp"
 #include "commands.hpp"
+#include "fogdrift/atomic_file.hpp"
 #include "fogdrift/error.hpp"
 #include "fogdrift/sim/instrument.hpp"
+#include "fogdrift/sim/population.hpp"
 #include "fogdrift/sim/scenarios.hpp"
 
 namespace fogdrift::app {
@@ -52,6 +54,7 @@ struct SimulateArgs {
   double soak_s = 1200.0;
   double ramp_degc_per_min = 1.0;
   double warm_off_s = 600.0;
+  int count = 20;
 };
 
 /// What northfind and stable share: temperatures, findings, timing, seed and site.
@@ -125,14 +128,20 @@ void add_simulate(CLI::App& app) {
   auto args = std::make_shared<SimulateArgs>();
   auto print = std::make_shared<bool>(false);
   auto print_table = std::make_shared<bool>(false);
+  auto print_population = std::make_shared<bool>(false);
   cmd->add_flag("--print-instrument", *print,
                 "Print the default instrument parameters as JSON and exit");
   cmd->add_flag("--print-parameter-table", *print_table,
                 "Print the parameters as a Markdown table (units, ranges, meaning) and exit");
+  cmd->add_flag("--print-population-table", *print_population,
+                "Print the ranges 'simulate population' draws instruments from (Markdown) and "
+                "exit");
   cmd->require_subcommand(0, 1);
-  cmd->callback([cmd, print, print_table] {
+  cmd->callback([cmd, print, print_table, print_population] {
     if (*print_table) {
       std::cout << sim::parameter_table_markdown();
+    } else if (*print_population) {
+      std::cout << sim::population_table_markdown();
     } else if (*print) {
       std::cout << sim::to_json(sim::Instrument{});
     } else if (cmd->get_subcommands().empty()) {
@@ -232,6 +241,35 @@ void add_simulate(CLI::App& app) {
       finish(*args, sim::simulate_stable(load_instrument(args->instrument_file), o), start,
              "stable");
     });
+  });
+
+  auto* pop = cmd->add_subcommand(
+      "population",
+      "Draw instruments at random from documented ranges around the default one (thermal\n"
+      "network, heat sources, thermometer lags and placement, every drift-law coefficient of\n"
+      "either sign, a filtered-rate term and a term no thermometer reads, noise levels) and\n"
+      "write each as an instrument file, unit_01.json, unit_02.json, ... The same seed gives the\n"
+      "same instruments; unit k does not depend on --count. The ranges are in docs/simulator.md\n"
+      "(fogdrift simulate --print-population-table). Example, a unit unlike the default:\n"
+      "  fogdrift simulate population --out units --count 20 --seed 1\n"
+      "  fogdrift simulate calibration --out cal --instrument units/unit_03.json");
+  pop->add_option("--out,-o", args->out, "Folder to create (must not exist or be empty)")
+      ->required();
+  pop->add_option("--count", args->count, "Instruments to draw, 1..999")->capture_default_str();
+  pop->add_option("--seed", args->seed, "Seed of the population")->capture_default_str();
+  pop->add_flag("--force", args->force, "Replace --out if it exists (only after success)");
+  pop->callback([args] {
+    if (args->count < 1 || args->count > 999)
+      throw OptionError("--count", fmt::format("{} is outside 1..999", args->count));
+    fill_directory_atomically(args->out, args->force, [&](const std::filesystem::path& dir) {
+      for (int k = 1; k <= args->count; ++k)
+        write_text_atomically(
+            dir / fmt::format("unit_{:02}.json", k),
+            sim::to_json(sim::draw_instrument(args->seed, static_cast<std::uint64_t>(k))));
+    });
+    std::cout << fmt::format(
+        "wrote {} instruments unit_01.json … unit_{:02}.json to {} (seed {})\n", args->count,
+        args->count, args->out, args->seed);
   });
 }
 

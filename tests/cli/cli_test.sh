@@ -52,6 +52,16 @@ check "several imports message" err_has "must be an existing folder"
 check "parameter table" run 0 "$fd" simulate --print-parameter-table
 contains_file() { [[ "$(cat "$1")" == *"$(cat "$2")"* ]]; }
 check "docs/simulator.md holds the current parameter table" contains_file "$data/../../docs/simulator.md" "$work/out"
+check "population table" run 0 "$fd" simulate --print-population-table
+check "docs/simulator.md holds the current population table" contains_file "$data/../../docs/simulator.md" "$work/out"
+check "population of three" run 0 "$fd" simulate population --out "$work/units" --count 3 --seed 4
+check "three instrument files" test "$(ls "$work/units"/unit_0*.json | wc -l)" -eq 3
+check "population again" run 0 "$fd" simulate population --out "$work/units2" --count 2 --seed 4
+check "unit k does not depend on the count" cmp "$work/units/unit_02.json" "$work/units2/unit_02.json"
+check "a drawn unit simulates" run 0 "$fd" simulate stable --out "$work/st3" --findings 2 --instrument "$work/units/unit_03.json"
+check "a drawn unit is another instrument" bash -c "! diff -rq '$work/st' '$work/st3' >/dev/null"
+check "population of none" run 1 "$fd" simulate population --out "$work/x" --count 0
+check "population count message" err_has "--count: 0 is outside 1..999"
 
 # --- malformed inputs: every case in the corpus --------------------------------------------
 while IFS=$'\t' read -r name expected; do
