@@ -21,11 +21,10 @@ double squared_distance(const double* a, const double* b, std::size_t d) noexcep
 }
 
 // The 90th percentile over (at most kSpacingRows evenly spread) rows of the distance to the
-// nearest such row of another label; 0 with fewer than two labels.
-double spacing_of_labels(std::span<const double> z, std::size_t dims,
-                         std::span<const std::size_t> labels) {
+// nearest row that `other(i, j)` admits; 0 when no row has one.
+template <class Other>
+double spacing(std::span<const double> z, std::size_t dims, std::size_t n, Other other) {
   constexpr std::size_t kSpacingRows = 4000;
-  const std::size_t n = labels.size();
   const std::size_t step = (n + kSpacingRows - 1) / kSpacingRows;
   std::vector<std::size_t> rows;
   for (std::size_t i = 0; i < n; i += step) rows.push_back(i);
@@ -33,7 +32,7 @@ double spacing_of_labels(std::span<const double> z, std::size_t dims,
   for (std::size_t i : rows) {
     double best = std::numeric_limits<double>::infinity();
     for (std::size_t j : rows)
-      if (labels[j] != labels[i])
+      if (other(i, j))
         best = std::min(best, squared_distance(z.data() + i * dims, z.data() + j * dims, dims));
     if (std::isfinite(best)) nearest.push_back(std::sqrt(best));
   }
@@ -60,7 +59,9 @@ void validate(const GuardSettings& s) {
 }
 
 NoveltyGuard NoveltyGuard::fit(std::span<const double> z, std::size_t dims,
-                               std::span<const std::size_t> labels, const GuardSettings& settings) {
+                               std::span<const std::size_t> labels,
+                               std::span<const std::size_t> conditions,
+                               const GuardSettings& settings) {
   validate(settings);
   if (dims == 0 || z.size() < dims || z.size() % dims != 0)
     throw OptionError("guard", "needs at least one training row of the model's inputs");
@@ -87,7 +88,18 @@ NoveltyGuard NoveltyGuard::fit(std::span<const double> z, std::size_t dims,
   }
   if (!labels.empty()) {
     if (labels.size() != n) throw OptionError("guard", "needs one label per training row");
-    g.radius = std::max(g.radius, spacing_of_labels(z, dims, labels));
+    const double between_labels =
+        spacing(z, dims, n, [&](std::size_t i, std::size_t j) { return labels[j] != labels[i]; });
+    g.radius = std::max(g.radius, between_labels);
+    // Conditions widen the unit only where the labels span one: a model calibrated at one
+    // temperature knows nothing of another, however its start-ups differed there.
+    if (!conditions.empty() && conditions.size() != n)
+      throw OptionError("guard", "needs one condition per training row");
+    if (!conditions.empty() && between_labels > 0) {
+      g.radius = std::max(g.radius, spacing(z, dims, n, [&](std::size_t i, std::size_t j) {
+                            return labels[j] == labels[i] && conditions[j] != conditions[i];
+                          }));
+    }
   }
   // With as many prototypes as rows (or repeated rows) the cover radius is 0; a floor keeps ν
   // finite and says "only these points" (1e-3 standard deviations).

@@ -18,8 +18,7 @@ std::vector<std::size_t> all_rows(const Dataset& data) {
   return rows;
 }
 
-std::string describe_folds(const Dataset& data, const tune::CvOptions& cv) {
-  const auto folds = tune::grouped_folds(data, cv);
+std::string describe_folds(const std::vector<tune::Fold>& folds) {
   const std::string& first = folds.front().name;
   const char* kind = first.starts_with("repetition")     ? "leave one repetition out"
                      : first.starts_with("temperatures") ? "whole initial temperatures"
@@ -56,6 +55,10 @@ TrainResult train(const Dataset& data, const DatasetOptions& dataset, const Trai
   m.x_scaler = full.x_scaler;
   m.y_scaler = full.y_scaler;
 
+  // The folds the model is scored on for the held-out report, and its RMSE there.
+  std::vector<tune::Fold> held_folds;
+  FoldPredictor held_predict;  // the chosen model refitted on a fold (held_out.hpp)
+
   switch (options.method) {
     case Method::ssa_svr:
     case Method::pso_svr:
@@ -88,7 +91,19 @@ TrainResult train(const Dataset& data, const DatasetOptions& dataset, const Trai
         p.iterations = t.optimizer.run.iterations;
       }
       s.fitness = tune::to_string(t.fitness);
-      if (t.fitness == tune::Fitness::cv) p.cv = describe_folds(data, t.cv);
+      if (t.fitness == tune::Fitness::cv) p.cv = describe_folds(tune::grouped_folds(data, t.cv));
+      if (options.held_out) {
+        // The paper's training fitness holds nothing out: its model is scored on the folds too.
+        try {
+          held_folds = tune::grouped_folds(data, t.cv);
+        } catch (const OptionError& e) {
+          s.held_out_missing = fmt::format("no held-out rows: {}", e.what());
+        }
+        held_predict = [params](const tune::ScaledSplit& split, std::size_t) {
+          svr::TrainingSet set(split.train);
+          return svr::fit(set, params).model.predict(split.test);
+        };
+      }
       svr::TrainingSet set(full.train);
       m.regressor = svr::fit(set, params).model;
       s.hyperparameters = {{"C", params.c},
@@ -120,6 +135,13 @@ TrainResult train(const Dataset& data, const DatasetOptions& dataset, const Trai
       s.fitness = "validation";
       s.fitness_value = fit.summary.validation_rmse;
       p.cv = fmt::format("early stopping on {}", f.name);
+      held_folds = {f};
+      const Mlp net = fit.model;  // trained on this fold's rows, with its scalers
+      held_predict = [net](const tune::ScaledSplit& split, std::size_t) {
+        std::vector<double> out(split.test.rows);
+        for (std::size_t r = 0; r < split.test.rows; ++r) out[r] = net.predict(split.test.row(r));
+        return out;
+      };
       s.hyperparameters = {{"hidden", static_cast<double>(mo.hidden)},
                            {"learning_rate", mo.learning_rate},
                            {"epochs", static_cast<double>(fit.summary.best_epoch)}};
@@ -155,7 +177,14 @@ TrainResult train(const Dataset& data, const DatasetOptions& dataset, const Trai
       m.regressor = fit_poly(full.train, best);
       s.fitness = "cv";
       s.fitness_value = s.poly_cv_rmse[best - 1];
-      p.cv = describe_folds(data, options.tune.cv);
+      p.cv = describe_folds(folds);
+      held_folds = folds;
+      held_predict = [best](const tune::ScaledSplit& split, std::size_t) {
+        const Poly poly = fit_poly(split.train, best);
+        std::vector<double> out(split.test.rows);
+        for (std::size_t r = 0; r < split.test.rows; ++r) out[r] = poly.predict(split.test.row(r));
+        return out;
+      };
       s.hyperparameters = {{"degree", static_cast<double>(best)}};
       break;
     }
@@ -166,14 +195,20 @@ TrainResult train(const Dataset& data, const DatasetOptions& dataset, const Trai
   m.x_scaler.apply(z);
   std::vector<double> temps;
   for (const GroupInfo& g : data.groups) temps.push_back(g.initial_temp_degc);
-  std::vector<std::size_t> labels(data.rows);
+  std::vector<std::size_t> labels(data.rows), conditions(data.rows);
   for (std::size_t i = 0; i < data.rows; ++i) {
+    conditions[i] = static_cast<std::size_t>(data.groups[data.group[i]].repetition);
     std::size_t k = 0;
     while (temps[k] != temps[data.group[i]]) ++k;  // the first group of the same temperature
     labels[i] = k;
   }
-  m.guard = NoveltyGuard::fit(z, data.cols(), labels, options.guard);
+  m.guard = NoveltyGuard::fit(z, data.cols(), labels, conditions, options.guard);
   m.guard.set_warmup_inputs(m.dataset.features.rate_inputs());
+  if (options.held_out && !held_folds.empty()) {
+    const std::string how =
+        options.method == Method::bp ? held_folds.front().name : describe_folds(held_folds);
+    s.held_out = held_out_report(data, held_folds, held_predict, how);
+  }
   p.fitness = s.fitness;
   p.fitness_value = s.fitness_value;
   p.hyperparameters = s.hyperparameters;

@@ -18,7 +18,7 @@ TEST(NoveltyGuard, FarthestPointsAndCoverRadiusInClosedForm) {
   for (int i = 0; i <= 10; ++i) z.push_back(i);
   GuardSettings s;
   s.prototypes = 3;
-  const NoveltyGuard g = NoveltyGuard::fit(z, 1, {}, s);
+  const NoveltyGuard g = NoveltyGuard::fit(z, 1, {}, {}, s);
   EXPECT_EQ(g.prototypes, (std::vector<double>{0, 10, 5}));
   EXPECT_DOUBLE_EQ(g.radius, 2.0);  // 2 → 0 is 2, 3 → 5 is 2, 7 → 5 is 2, 8 → 10 is 2
   const double outside[] = {16.0};
@@ -76,6 +76,39 @@ TEST(NoveltyGuard, UnitIsTheSpacingBetweenLabels) {
   EXPECT_DOUBLE_EQ(g.novelty(midway), 0.5);
   EXPECT_THROW(NoveltyGuard::fit(z, 2, std::span<const std::size_t>(labels).first(3), {}),
                OptionError);
+}
+
+// The unit also follows the spacing of the start-up conditions calibrated at one temperature:
+// two labels 4 apart, and at each label two conditions (repetitions) 6 apart, so r = 6 and a
+// start-up between two calibrated conditions is familiar. Conditions that coincide (the paper's
+// protocol: every repetition alike) leave r at the labels' spacing.
+TEST(NoveltyGuard, UnitIsAlsoTheSpacingBetweenConditions) {
+  auto lines = [](double condition_gap) {
+    std::vector<double> z;
+    std::vector<std::size_t> labels, conditions;
+    for (std::size_t label = 0; label < 2; ++label)
+      for (std::size_t condition = 0; condition < 2; ++condition)
+        for (int i = 0; i <= 100; ++i) {
+          z.push_back(0.01 * i);
+          z.push_back(4.0 * static_cast<double>(label));
+          z.push_back(condition_gap * static_cast<double>(condition));
+          labels.push_back(label);
+          conditions.push_back(condition);
+        }
+    return NoveltyGuard::fit(z, 3, labels, conditions, {});
+  };
+  EXPECT_DOUBLE_EQ(lines(6.0).radius, 6.0);
+  EXPECT_DOUBLE_EQ(lines(0.0).radius, 4.0);
+  // One label: the cover radius, whatever the conditions.
+  std::vector<double> one;
+  for (int i = 0; i <= 100; ++i) one.insert(one.end(), {0.01 * i, 0.0, 0.0, 0.01 * i, 0.0, 6.0});
+  const std::vector<std::size_t> same(202, 0);
+  std::vector<std::size_t> two(202);
+  for (std::size_t i = 0; i < 202; ++i) two[i] = i % 2;
+  EXPECT_LT(NoveltyGuard::fit(one, 3, same, two, {}).radius, 1.0);
+  const std::vector<double> z(6, 0.0);
+  const std::vector<std::size_t> labels = {0, 1}, conditions = {0};
+  EXPECT_THROW(NoveltyGuard::fit(z, 3, labels, conditions, {}), OptionError);
 }
 
 TEST(NoveltyGuard, PolicyIsFullThenLinearThenNone) {

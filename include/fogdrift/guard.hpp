@@ -10,10 +10,15 @@
 // Unit. How far is far? A start-up at a calibration temperature the model was not trained on
 // lies between the trajectories of its neighbours, and should count as familiar. So the unit r
 // is set by the training data's own spacing: for each training row, the distance to the nearest
-// row of another calibration temperature (its label); r is the 90th percentile of those
-// distances (over at most 4000 evenly spread rows), and at least the prototypes' cover radius
-// (the largest distance of a training row to its nearest prototype). Without two labels, r is
-// the cover radius.
+// row of another calibration temperature (its label); the 90th percentile of those distances
+// (over at most 4000 evenly spread rows). Likewise a start-up between two start-up conditions
+// the calibration held at one temperature (its repetitions, when each repetition starts up
+// another way: docs/field.md) should count as familiar: the 90th percentile of the distance to
+// the nearest row of the same temperature and another condition. r is the larger of the two,
+// and at least the prototypes' cover radius (the largest distance of a training row to its
+// nearest prototype). Repetitions that start up alike (the paper's protocol) lie close together
+// and leave r at the temperatures' spacing. Without two labels, r is the cover radius (the
+// conditions then widen nothing: a model calibrated at one temperature knows nothing of another).
 //
 // Novelty of a sample with standardised inputs z:   ν = min_p ‖z − p‖ / r.
 // A start-up like calibration's at a new temperature has ν of about 1 or less.
@@ -79,9 +84,11 @@ struct NoveltyGuard {
   std::vector<unsigned char> warmup_inputs;
 
   /// Fits the region to `z`, rows × dims standardised training inputs (rows ≥ 1); `labels`
-  /// (one per row, e.g. the index of its calibration temperature, or empty) set the unit r.
+  /// (one per row, e.g. the index of its calibration temperature, or empty) and `conditions`
+  /// (one per row, e.g. its repetition, or empty) set the unit r.
   static NoveltyGuard fit(std::span<const double> z, std::size_t dims,
                           std::span<const std::size_t> labels = {},
+                          std::span<const std::size_t> conditions = {},
                           const GuardSettings& settings = {});
   bool empty() const { return prototypes.empty(); }
   std::size_t size() const { return dims ? prototypes.size() / dims : 0; }

@@ -16,6 +16,7 @@
 
 #include <optional>
 
+#include "fogdrift/held_out.hpp"
 #include "fogdrift/mlp.hpp"
 #include "fogdrift/model.hpp"
 #include "fogdrift/tune.hpp"
@@ -35,6 +36,8 @@ struct TrainOptions {
   /// Tuned SVRs: when the best C, σ or ε lies on an edge of its box, widen the box by a decade
   /// there and search again, at most this many times (0: never; tune::box_edges()).
   std::size_t auto_box_rounds = 0;
+  /// Score the model and the baselines on held-out rows (TrainSummary::held_out).
+  bool held_out = true;
 };
 
 struct TrainSummary {
@@ -49,6 +52,12 @@ struct TrainSummary {
   std::vector<tune::BoxEdge> box_edges;
   MlpSummary mlp;                    ///< bp
   std::vector<double> poly_cv_rmse;  ///< poly: CV RMSE of degree 1, 2, …
+  /// How sure train is (held_out.hpp): the model's held-out RMSE beside the baselines' on the
+  /// same folds, and the share it is expected to remove. SVRs searched on the training loss are
+  /// scored on the grouped folds for it (one more fit per fold); absent, with the reason in
+  /// held_out_missing, when the data cannot be split into folds.
+  std::optional<HeldOutReport> held_out;
+  std::string held_out_missing;
   std::size_t rows = 0;
   double seconds = 0;
 };

@@ -149,7 +149,31 @@ py::dict train(const py::object& campaign, const std::string& method, const std:
   py::list notes;
   for (const auto& n : r->notes) notes.append(py::make_tuple(n.field, n.text));
   summary["notes"] = notes;
-  summary["warnings"] = r->data.warnings;
+  std::vector<std::string> warnings = r->data.warnings;
+  if (s.held_out) {
+    const HeldOutReport& h = *s.held_out;
+    py::list base;
+    for (const Baseline& b : h.baselines) {
+      py::dict d;
+      d["name"] = b.name;
+      d["rmse"] = b.rmse;
+      base.append(d);
+    }
+    py::dict held;
+    held["folds"] = h.folds;
+    held["model_rmse"] = h.model_rmse;
+    held["expected_share"] = h.expected_share;
+    held["expected_startup_share"] = h.expected_startup_share;
+    held["baselines"] = base;
+    summary["held_out"] = held;
+    warnings.insert(warnings.end(), h.warnings.begin(), h.warnings.end());
+    // A model that does not beat the baselines is a warning a Python user sees, not only a key.
+    for (const std::string& w : h.warnings)
+      if (PyErr_WarnEx(PyExc_UserWarning, w.c_str(), 1) != 0) throw py::error_already_set();
+  } else {
+    summary["held_out"] = py::none();
+  }
+  summary["warnings"] = warnings;
   summary["fits"] = s.tuning.fits;
   summary["seconds"] = s.seconds;
   py::dict out;

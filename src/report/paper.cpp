@@ -90,6 +90,7 @@ TrainOptions train_options(const PaperOptions& o, Method method, std::uint64_t s
   to.tune.space.epsilon = o.epsilon;
   to.tune.space.search_epsilon = o.search_epsilon;
   to.mlp = o.mlp;
+  to.held_out = false;  // the paper scores its models on its own test data
   return to;
 }
 

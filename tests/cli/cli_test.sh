@@ -242,6 +242,17 @@ check "train ssa-svr" run 0 "$fd" train "$work/small" --population 5 --iteration
   --threads 1 -o "$work/m1.json"
 check "train prints the fitness" out_has "cv RMSE"
 check "train names the folds" out_has "whole initial temperatures (3 folds)"
+check "train says what it expects to remove" out_has "expected to remove"
+check "train scores the baselines" out_has "mean "
+check "train scores a line in each thermometer" out_has "line in T_acc2_degc "
+# A gyro whose drift has no temperature signal (issue 32): train must say so.
+printf '{"fog": {"static_d1_dph_per_k": 0, "static_d2_dph_per_k2": 0, "static_d3_dph_per_k3": 0, "rate_r0_dph_per_kps": 0, "shupe_s0_dph_per_kps": 0}}' >"$work/flat.json"
+check "a unit without thermal drift" run 0 "$fd" simulate calibration --out "$work/flat" --temps -20,0,20,40 \
+  --repetitions 2 --seed 3 --instrument "$work/flat.json"
+check "train on it" run 0 "$fd" train "$work/flat" --population 5 --iterations 2 --threads 1 \
+  -o "$work/flat_model.json"
+check "train says the model removes little" out_has "it would remove"
+check "train says there is no temperature signal" out_has "the data show no temperature signal"
 check "train again on two threads" run 0 "$fd" train "$work/small" --population 5 --iterations 2 \
   --c-max 10 --threads 2 -q -o "$work/m2.json"
 check "one seed, one model file" cmp "$work/m1.json" "$work/m2.json"

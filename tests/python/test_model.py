@@ -128,6 +128,15 @@ def test_train_gives_the_command_lines_model_byte_for_byte(trained, tmp_path, cl
     assert [i for i, _ in seen] == [0, 1, 2, 3]
     assert all(b >= a for (_, a), (_, b) in zip(seen[1:], seen))  # best so far never worsens
     assert tuned["summary"]["fitness_rmse"] == seen[-1][1]
+    # How sure train is, as the command line's --json says it.
+    held = cli("train", d / "cal", "--population", "8", "--iterations", "3", "--seed", "5", "-o",
+               tmp_path / "t2.json", "--json")
+    import json
+    expected = json.loads(held)["held_out"]
+    assert tuned["summary"]["held_out"]["expected_share"] == expected["expected_share"]
+    assert tuned["summary"]["held_out"]["expected_startup_share"] == \
+        expected["expected_startup_share"]
+    assert [b["name"] for b in tuned["summary"]["held_out"]["baselines"]][0] == "mean"
 
 
 def test_train_options_and_errors_use_the_librarys_names(trained):
