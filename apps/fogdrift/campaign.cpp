@@ -37,6 +37,7 @@ struct CampaignArgs {
   double plateau_rate_degc_per_min = CutOptions{}.plateau_rate_degc_per_min;
   double plateau_min_s = CutOptions{}.plateau_min_s;
   bool force = false;
+  bool quiet = false;
 };
 
 /// The 1-based positions named by --test: "last", "none", or a list such as 3 or 2,5.
@@ -74,10 +75,13 @@ void run(const CampaignArgs& a) {
   cut_options.plateau_rate_degc_per_min = a.plateau_rate_degc_per_min;
   cut_options.plateau_min_s = a.plateau_min_s;
   std::vector<Recording> pieces;
+  std::size_t plateau_cuts = 0;
   for (const auto& input : a.inputs) {
     const Recording rec = read_recording(input);
     try {
-      for (auto& p : cut(rec, cut_options)) pieces.push_back(std::move(p));
+      CutSummary summary;
+      for (auto& p : cut(rec, cut_options, &summary)) pieces.push_back(std::move(p));
+      plateau_cuts += summary.plateaus;
     } catch (const OptionError& e) {
       const std::string flag = e.option() == "gap_s"      ? "--cut-gap-s"
                                : e.option() == "window_s" ? "--cut-window-s"
@@ -88,7 +92,21 @@ void run(const CampaignArgs& a) {
     }
   }
   const std::set<std::size_t> tests = test_positions(a.test, pieces.size());
-  if (tests.size() == pieces.size()) throw OptionError("--test", "leaves no recording to train on");
+  // Plateaus asked for and none found: the cut, not --test, is what left too few recordings.
+  const bool no_plateau = a.cut_plateaus && plateau_cuts == 0;
+  const std::string plateau_note = fmt::format(
+      "no plateau ended in {} (a plateau: at least {} s with |rate| below {} °C/min, then a "
+      "change); loosen --plateau-rate-degc-per-min or --plateau-min-s, or cut with --cut-gap-s "
+      "or --cut-window-s",
+      a.inputs.size() == 1 ? a.inputs.front() : fmt::format("any of the {} logs", a.inputs.size()),
+      a.plateau_min_s, a.plateau_rate_degc_per_min);
+  if (tests.size() == pieces.size()) {
+    if (no_plateau)
+      throw OptionError("--cut-plateaus",
+                        fmt::format("{}: {} recording(s), and --test {} leaves none to train on",
+                                    plateau_note, pieces.size(), a.test));
+    throw OptionError("--test", "leaves no recording to train on");
+  }
   std::vector<double> reps;
   if (!a.repetitions.empty()) {
     reps = parse_number_list(a.repetitions, "--repetitions");
@@ -135,6 +153,8 @@ void run(const CampaignArgs& a) {
     for (const auto& e : back.recordings) read_recording(back.path_of(e));
   });
 
+  if (a.quiet) return;
+  if (no_plateau) std::cout << "note: --cut-plateaus: " << plateau_note << "\n";
   std::cout << fmt::format("{}: campaign of {} recordings ({} train, {} test)\n", a.out,
                            pieces.size(), pieces.size() - tests.size(), tests.size());
   std::cout << fmt::format("  {:<28}  {:<5}  {:>3}  {:>8}  {:>8}  {:>9}\n", "file", "role", "rep",
@@ -200,6 +220,7 @@ void add_campaign(CLI::App& app) {
   cmd->add_option("--plateau-min-s", a->plateau_min_s, "Shortest plateau, s")
       ->capture_default_str();
   cmd->add_flag("--force", a->force, "Replace OUT if it exists (only after success)");
+  cmd->add_flag("-q,--quiet", a->quiet, "Print nothing on success");
   cmd->callback([a] { run(*a); });
 }
 

@@ -173,11 +173,23 @@ void run(const TrainArgs& a) {
     const std::string flag = e.parameter == "C"       ? (e.upper ? "--c-max" : "--c-min")
                              : e.parameter == "sigma" ? (e.upper ? "--sigma-max" : "--sigma-min")
                                                       : "--search-epsilon bounds";
+    // With --auto-box the box was widened already: say how often, and only name what is left.
+    const std::string advice =
+        !a.auto_box ? fmt::format("a wider box may do better: {} or --auto-box", flag)
+        : tune::widened(s.boxes.back(), {e}) == s.boxes.back()
+            ? fmt::format(
+                  "--auto-box widened it {} times, to fogdrift's limit for {}: the data "
+                  "do not bound it",
+                  s.boxes.size() - 1, e.parameter)
+            : fmt::format(
+                  "--auto-box widened it {} times, its most; a wider box may still do "
+                  "better: {}",
+                  s.boxes.size() - 1, flag);
     edge_notes.push_back(fmt::format(
         "{} = {:.6g} is at the {} edge of its box [{:.6g}, {:.6g}]; the fitness there is {:.1f} % "
-        "better than further inside, so a wider box may do better: {} or --auto-box",
+        "better than further inside; {}",
         e.parameter, e.value, e.upper ? "upper" : "lower", e.low, e.high, 100.0 * e.improvement,
-        flag));
+        advice));
   }
   if (a.json) {
     nlohmann::ordered_json j;
@@ -224,7 +236,23 @@ void run(const TrainArgs& a) {
     for (const auto& b : s.boxes)
       boxes.push_back({{"c", {b.c_min, b.c_max}}, {"sigma", {b.sigma_min, b.sigma_max}}});
     j["boxes_searched"] = boxes;
-    j["warnings"] = data.warnings;
+    if (s.held_out) {
+      const HeldOutReport& h = *s.held_out;
+      nlohmann::ordered_json base = nlohmann::ordered_json::array();
+      for (const Baseline& b : h.baselines) base.push_back({{"name", b.name}, {"rmse", b.rmse}});
+      j["held_out"] = {{"folds", h.folds},
+                       {"model_rmse", h.model_rmse},
+                       {"expected_share", h.expected_share},
+                       {"expected_startup_share", h.expected_startup_share},
+                       {"baselines", base},
+                       {"warnings", h.warnings}};
+    } else {
+      j["held_out"] = {{"missing", s.held_out_missing}};
+    }
+    nlohmann::ordered_json warnings = data.warnings;
+    if (s.held_out)
+      for (const auto& w : s.held_out->warnings) warnings.push_back(w);
+    j["warnings"] = warnings;
     j["block_s"] = dataset.preprocessing.block.block_s;
     j["rate_window_s"] = dataset.preprocessing.rates.window_s;
     j["seconds"] = s.seconds;
@@ -250,7 +278,22 @@ void run(const TrainArgs& a) {
           "[{:.6g}, {:.6g}]\n",
           s.boxes.size(), b.c_min, b.c_max, b.sigma_min, b.sigma_max);
     }
+    if (s.held_out) {
+      const HeldOutReport& h = *s.held_out;
+      std::cout << fmt::format(
+          "  expected to remove {:.0f} % of the drift on held-out rows, {:.0f} % of its variation "
+          "within a start-up: {}\n",
+          100.0 * h.expected_share, 100.0 * h.expected_startup_share, h.folds);
+      std::string base;
+      for (const Baseline& b : h.baselines) base += fmt::format(", {} {:.4f}", b.name, b.rmse);
+      std::cout << fmt::format("  held-out RMSE (standardised): model {:.4f}{}\n", h.model_rmse,
+                               base);
+    } else if (!s.held_out_missing.empty()) {
+      std::cout << fmt::format("  expected share: n/a ({})\n", s.held_out_missing);
+    }
     for (const auto& n : notes) std::cout << "  note: " << n << "\n";
+    if (s.held_out)
+      for (const auto& w : s.held_out->warnings) std::cout << "  warning: " << w << "\n";
     for (const auto& n : edge_notes) std::cout << "  warning: " << n << "\n";
     for (const auto& w : data.warnings) std::cout << "  warning: " << w << "\n";
     std::cout << fmt::format("  wrote {} in {:.1f} s\n", a.output, s.seconds);

@@ -68,6 +68,12 @@ check "campaign lists four" test "$(grep -c '^  tvac_' "$work/out")" -eq 4
 check "initial temperatures from the thermometer" grep -qE '^  tvac_2_02.csv +test +1 +5.0 +60 ' "$work/out"
 check "a warm-up is one plateau: no cut" run 0 "$fd" campaign "$work/plateaus" "$work"/tvac_?.csv --input-rate-dph 0 --cut-plateaus
 check "plateaus left four recordings" test "$(grep -c '^  tvac_' "$work/out")" -eq 4
+check "no plateau is said" out_has "note: --cut-plateaus: no plateau ended in any of the 4 logs"
+# Found by a new user (issue 32): one log without a plateau blamed --test.
+check "one log without a plateau" run 1 "$fd" campaign "$work/one_plateau" "$work/tvac_1.csv" --input-rate-dph 0 --cut-plateaus
+check "no-plateau message names the cut" err_has "option --cut-plateaus: no plateau ended in $work/tvac_1.csv"
+check "campaign -q" run 0 "$fd" campaign "$work/quiet" "$work"/tvac_?.csv --input-rate-dph 0 -q
+check "campaign -q prints nothing" test ! -s "$work/out"
 check "an impossible plateau" run 1 "$fd" campaign "$work/bad_plateau" "$work"/tvac_?.csv --input-rate-dph 0 --cut-plateaus --plateau-min-s 0
 check "plateau message names the flag" err_has "option --plateau-min-s: 0 s is not a positive duration"
 check "inspect accepts it" run 0 "$fd" inspect "$work/camp"
@@ -83,6 +89,9 @@ check "train adapts the rate window" out_has "temperature rates over 300 s, not 
 check "train says the box stopped it" out_has "sigma = 20 is at the upper edge of its box [0.05, 20]"
 check "train --auto-box" run 0 "$fd" train "$work/camp" -o "$work/m.json" --features "T(fog),dT(fog)" --auto-box --json
 check "auto-box widened sigma" python3 -c 'import json,sys; d=json.load(open(sys.argv[1])); assert len(d["boxes_searched"]) >= 2 and d["hyperparameters"]["sigma"] > 20, d' "$work/out"
+check "train --auto-box, text" run 0 "$fd" train "$work/camp" -o "$work/m.json" --features "T(fog),dT(fog)" --auto-box
+# Found by a new user (issue 32): after three widenings the warning still advised --auto-box.
+check "auto-box does not advise itself" bash -c "! grep -q 'or --auto-box' '$work/out'"
 check "an impossible block names its flag" run 1 "$fd" train "$work/camp" -o "$work/b.json" --features "T(fog),dT(fog)" --block-s 90
 check "block message" err_has "option --block-s: 90.000000 s is not a whole multiple of the sample interval"
 
