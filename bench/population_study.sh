@@ -1,0 +1,127 @@
+#!/usr/bin/env bash
+# Defaults on a population of instruments (docs/field.md, "Instruments unlike ours"): draws N
+# instruments (fogdrift simulate population), and for each one runs the recommended field
+# calibration (5 repetitions: calibration, soaked, warm, ramping start-ups), trains with train's
+# defaults, batch (centred rates) and causal, and measures on four north-finding campaigns, one
+# per start-up condition, the share of the removable north-finding error removed, guard on and
+# off, and train's own held-out expectation. Prints one Markdown row per instrument and the
+# distribution (median, 10th percentile, worst) per condition, path and guard.
+# Usage: bench/population_study.sh [BUILD_DIR] [N] [SEED] [JOBS] [TRAIN_FLAGS...]
+#   (default build/, 20 instruments, seed 1, 2 instruments at a time); extra flags go to
+#   `fogdrift train` (the study in docs/field.md passed a smaller search budget,
+#   --population 10 --iterations 15, to fit a 2-core session: say so when quoting it).
+# Each instrument's rows also land in $POPULATION_OUT (default: a temporary folder) as JSON.
+set -euo pipefail
+root=$(cd "$(dirname "$0")/.." && pwd)
+fd=${1:-$root/build}/apps/fogdrift/fogdrift
+count=${2:-20}
+seed=${3:-1}
+jobs=${4:-2}
+shift $(($# < 4 ? $# : 4))
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+out=${POPULATION_OUT:-$work/results}
+mkdir -p "$out"
+"$fd" simulate population --out "$work/units" --count "$count" --seed "$seed" >/dev/null
+
+one() { # one instrument: $1 = its number
+  local k=$1 unit d
+  unit=$(printf 'unit_%02d' "$k")
+  d="$work/$unit"
+  mkdir -p "$d"
+  local inst="$work/units/$unit.json" start=$SECONDS
+  "$fd" simulate calibration --out "$d/cal" --seed "$k" --repetitions 5 \
+    --approach calibration,soaked,warm,ramping --instrument "$inst" >/dev/null
+  for a in calibration soaked warm ramping; do
+    "$fd" simulate northfind --out "$d/nf_$a" --seed "$k" --approach "$a" \
+      --instrument "$inst" >/dev/null
+  done
+  local sim_s=$((SECONDS - start))
+  for path in centred causal; do
+    start=$SECONDS
+    "$fd" train "$d/cal" --differentiator "$path" --seed "$k" --threads 1 --json \
+      -o "$d/$path.json" "${TRAIN_FLAGS[@]}" >"$d/$path.train.json"
+    echo $((SECONDS - start)) >"$d/$path.seconds"
+    for a in calibration soaked warm ramping; do
+      "$fd" northfind "$d/nf_$a" --model "$d/$path.json" --json >"$d/$path.$a.on.json"
+      "$fd" northfind "$d/nf_$a" --model "$d/$path.json" --json --no-guard \
+        >"$d/$path.$a.off.json"
+    done
+  done
+  python3 - "$d" "$k" "$sim_s" >"$out/$unit.json" <<'PY'
+import json, sys
+d, k, sim_s = sys.argv[1], int(sys.argv[2]), int(sys.argv[3])
+row = {"unit": k, "simulate_s": sim_s}
+for path in ("centred", "causal"):
+    t = json.load(open(f"{d}/{path}.train.json"))
+    row[f"{path}.train_s"] = int(open(f"{d}/{path}.seconds").read())
+    row[f"{path}.expected"] = t["held_out"].get("expected_share")
+    row[f"{path}.expected_startup"] = t["held_out"].get("expected_startup_share")
+    for a in ("calibration", "soaked", "warm", "ramping"):
+        for g in ("on", "off"):
+            n = json.load(open(f"{d}/{path}.{a}.{g}.json"))
+            row[f"{path}.{a}.{g}"] = n["table3"].get("removable_error_removed")
+        # How much of the raw error the drift makes: (raw² − floor²) / raw², pooled as the
+        # share is. Near 0 the share removed is a ratio of two small numbers.
+        t3 = n["table3"]
+        raw = sum(t3["raw_rmse_deg"]) / len(t3["raw_rmse_deg"])
+        floor = sum(t3["true_drift_subtracted_rmse_deg"]) / len(t3["raw_rmse_deg"])
+        row[f"{path}.{a}.drift_part"] = (raw * raw - floor * floor) / (raw * raw)
+print(json.dumps(row))
+PY
+  echo "unit $k done" >&2
+}
+export -f one
+export fd work out
+TRAIN_FLAGS=("$@")
+export TRAIN_FLAGS_STR="${*:-}"
+seq "$count" | xargs -P "$jobs" -I{} bash -c 'TRAIN_FLAGS=($TRAIN_FLAGS_STR); one {}'
+
+python3 - "$out" <<'PY'
+import glob, json, math, sys
+rows = sorted((json.load(open(f)) for f in glob.glob(sys.argv[1] + "/unit_*.json")),
+              key=lambda r: r["unit"])
+conds = ("calibration", "soaked", "warm", "ramping")
+def pct(v):
+    return "n/a" if v is None or (isinstance(v, float) and math.isnan(v)) else f"{100 * v:.0f}"
+print("| unit | path | expected (start-up) | " + " | ".join(f"{c} on / off (drift part)" for c in conds)
+      + " | train, s |")
+print("|---|---|---|" + "---|" * len(conds) + "---|")
+for r in rows:
+    for path in ("centred", "causal"):
+        cells = [f"{pct(r[f'{path}.{c}.on'])} / {pct(r[f'{path}.{c}.off'])} ({pct(r[f'{path}.{c}.drift_part'])})"
+                 for c in conds]
+        print(f"| {r['unit']} | {path} | {pct(r[f'{path}.expected'])} ({pct(r[f'{path}.expected_startup'])}) | "
+              + " | ".join(cells) + f" | {r[f'{path}.train_s']} |")
+print()
+def quantile(v, q):  # linear interpolation between order statistics
+    v = sorted(v)
+    x = q * (len(v) - 1)
+    i = int(math.floor(x))
+    return v[i] if i + 1 >= len(v) else v[i] + (x - i) * (v[i + 1] - v[i])
+def table(title, keep):
+    print(title)
+    print()
+    print("| path | guard | " + " | ".join(conds) + " | worse than raw |")
+    print("|---|---|" + "---|" * len(conds) + "---|")
+    for path in ("centred", "causal"):
+        for g in ("on", "off"):
+            cells, worse = [], 0
+            for c in conds:
+                v = [r[f"{path}.{c}.{g}"] for r in rows
+                     if r[f"{path}.{c}.{g}"] is not None and keep(r, path, c)]
+                worse += sum(x < 0 for x in v)
+                cells.append(f"{pct(quantile(v, .5))} / {pct(quantile(v, .1))} / {pct(min(v))} (n = {len(v)})"
+                             if v else "n/a")
+            print(f"| {path} | {g} | " + " | ".join(cells) + f" | {worse} |")
+    print()
+table(f"Share of the removable north-finding error removed over {len(rows)} instruments, %"
+      " (median / 10th percentile / worst):", lambda r, p, c: True)
+table("The same where the drift makes at least a quarter of the raw error's square"
+      " ((raw² − floor²) / raw² ≥ 0.25):", lambda r, p, c: r[f"{p}.{c}.drift_part"] >= 0.25)
+table("The same where train expects to remove at least half the drift's variation within a"
+      " start-up (no warning):", lambda r, p, c: r[f"{p}.expected_startup"] >= 0.5)
+t = [r[f"{p}.train_s"] for r in rows for p in ("centred", "causal")]
+print(f"train: median {quantile(t, .5):.0f} s, longest {max(t)} s (one thread); simulate: median "
+      f"{quantile([r['simulate_s'] for r in rows], .5):.0f} s per instrument")
+PY
