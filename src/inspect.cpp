@@ -38,9 +38,27 @@ RecordingSummary summarize(const Recording& rec) {
   if (!steps.empty()) {
     s.sample_interval_s = median_time_step_s(rec.time_s);
     s.sample_rate_hz = s.sample_interval_s > 0 ? 1.0 / s.sample_interval_s : 0.0;
-    for (double d : steps) {
-      if (d > 1.5 * s.sample_interval_s) ++s.gaps;
-      s.longest_gap_s = std::max(s.longest_gap_s, d);
+    std::vector<double> starts = {rec.time_s.front()};  // of the runs the gaps separate
+    for (std::size_t i = 0; i < steps.size(); ++i) {
+      if (steps[i] > 1.5 * s.sample_interval_s) {
+        ++s.gaps;
+        starts.push_back(rec.time_s[i + 1]);
+      }
+      s.longest_gap_s = std::max(s.longest_gap_s, steps[i]);
+    }
+    if (s.gaps >= 2) {
+      std::vector<double> periods;
+      for (std::size_t k = 1; k < starts.size(); ++k) periods.push_back(starts[k] - starts[k - 1]);
+      std::vector<double> sorted = periods;
+      std::nth_element(sorted.begin(), sorted.begin() + sorted.size() / 2, sorted.end());
+      const double period = sorted[sorted.size() / 2];
+      bool regular = true;
+      // A lost burst makes one period twice as long: a whole number of periods still counts.
+      for (double p : periods) {
+        const double n = std::round(p / period);
+        regular = regular && n >= 1 && std::abs(p - n * period) <= 0.1 * period;
+      }
+      if (regular) s.bursts = starts.size(), s.burst_period_s = period;
     }
   }
   s.uniformly_sampled = is_uniformly_sampled(rec);

@@ -26,6 +26,32 @@ TEST(Inspect, RateGapsAndRanges) {
   EXPECT_DOUBLE_EQ(s.columns[1].min, -9.0);
 }
 
+// Found by a new user (issue 32): a log of 50 Hz bursts every 305 s was reported as "24 gaps".
+TEST(Inspect, BurstsAreSaidToBeBursts) {
+  auto log = [](const std::vector<double>& burst_starts) {
+    Recording r;
+    for (double start : burst_starts)
+      for (int k = 0; k < 10; ++k) {
+        r.time_s.push_back(start + 0.02 * k);
+        r.gyro_dph.push_back(0);
+        r.temp_fog_degc.push_back(20);
+      }
+    return summarize(r);
+  };
+  const RecordingSummary bursty = log({0, 305, 610, 915.5, 1220});
+  EXPECT_EQ(bursty.gaps, 4u);
+  EXPECT_EQ(bursty.bursts, 5u);
+  EXPECT_DOUBLE_EQ(bursty.burst_period_s, 305.0);
+  EXPECT_NEAR(bursty.sample_rate_hz, 50.0, 1e-9);
+  // A lost burst leaves a burst log.
+  EXPECT_EQ(log({0, 305, 915, 1220}).bursts, 4u);
+  // Gaps at irregular times are gaps, not bursts.
+  const RecordingSummary gappy = log({0, 305, 400, 1220});
+  EXPECT_EQ(gappy.gaps, 3u);
+  EXPECT_EQ(gappy.bursts, 0u);
+  EXPECT_EQ(gappy.burst_period_s, 0.0);
+}
+
 TEST(Inspect, ColumnRangeStdIsTheSampleStd) {
   const ColumnRange r = column_range("x", {2, 4, 4, 4, 5, 5, 7, 9});
   EXPECT_DOUBLE_EQ(r.mean, 5.0);

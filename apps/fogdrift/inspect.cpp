@@ -26,6 +26,8 @@ nlohmann::ordered_json summary_json(const RecordingSummary& s) {
   j["sample_rate_hz"] = s.sample_rate_hz;
   j["gaps"] = s.gaps;
   j["longest_step_s"] = s.longest_gap_s;
+  j["bursts"] = s.bursts;
+  j["burst_period_s"] = s.burst_period_s;
   for (const auto& c : s.columns) {
     j["columns"][c.name] = {{"min", c.min}, {"max", c.max}, {"mean", c.mean}, {"std", c.std}};
   }
@@ -38,10 +40,16 @@ void print_recording(const std::string& path, const RecordingSummary& s) {
   std::cout << fmt::format("{}: valid fogdrift recording\n", path);
   std::cout << fmt::format("  samples     {}\n  time        {} .. {} s ({:.1f} min)\n", s.samples,
                            s.start_s, s.end_s, s.duration_s / 60.0);
-  std::cout << fmt::format(
-      "  sampling    {:.6g} Hz (median step {:.6g} s), {} gaps > 1.5 steps, "
-      "longest step {:.6g} s\n",
-      s.sample_rate_hz, s.sample_interval_s, s.gaps, s.longest_gap_s);
+  if (s.bursts > 0)
+    std::cout << fmt::format(
+        "  sampling    bursts: {} of them, one every {:.6g} s (median); {:.6g} Hz within a burst "
+        "(median step {:.6g} s), longest step {:.6g} s\n",
+        s.bursts, s.burst_period_s, s.sample_rate_hz, s.sample_interval_s, s.longest_gap_s);
+  else
+    std::cout << fmt::format(
+        "  sampling    {:.6g} Hz (median step {:.6g} s), {} gaps > 1.5 steps, "
+        "longest step {:.6g} s\n",
+        s.sample_rate_hz, s.sample_interval_s, s.gaps, s.longest_gap_s);
   std::cout << fmt::format("  {:<16}{:>14}{:>14}{:>14}{:>14}\n", "column", "min", "max", "mean",
                            "std");
   for (const auto& c : s.columns) {
@@ -50,6 +58,11 @@ void print_recording(const std::string& path, const RecordingSummary& s) {
   }
   if (s.uniformly_sampled)
     std::cout << "  training    usable as it stands (uniform time steps)\n";
+  else if (s.bursts > 0)
+    std::cout << fmt::format(
+        "  training    not usable as it stands: a burst every {0:.6g} s; make one sample of each "
+        "burst, its mean, with 'fogdrift import FILE --step-s {0:.6g}' (docs/logs.md)\n",
+        s.burst_period_s);
   else
     std::cout << fmt::format(
         "  training    not usable as it stands: time steps vary by more than 1 % (median {1:.6g} "

@@ -17,10 +17,15 @@ struct ColumnRange {
 struct RecordingSummary {
   std::size_t samples = 0;
   double start_s = 0, end_s = 0, duration_s = 0;
-  double sample_interval_s = 0;      ///< median time step, s
-  double sample_rate_hz = 0;         ///< 1 / median step
-  std::size_t gaps = 0;              ///< steps longer than 1.5 × the median
-  double longest_gap_s = 0;          ///< longest step, s
+  double sample_interval_s = 0;  ///< median time step, s
+  double sample_rate_hz = 0;     ///< 1 / median step
+  std::size_t gaps = 0;          ///< steps longer than 1.5 × the median
+  double longest_gap_s = 0;      ///< longest step, s
+  /// A bursty log: at least two gaps, and the bursts they separate start at regular times (every
+  /// start-to-start period within 10 % of a whole number of their median: a lost burst is still a
+  /// burst log). Then the number of bursts and that median period, s; else 0 and 0.
+  std::size_t bursts = 0;
+  double burst_period_s = 0;
   bool uniformly_sampled = false;    ///< every step within 1 % of the median (train needs it)
   std::vector<ColumnRange> columns;  ///< every known numeric column except time_s
   std::vector<std::string> extra_columns;

@@ -38,7 +38,9 @@ check "raw counts are not a temperature" err_has "column 'temp_fog_degc': value 
 check "import without a grid" run 0 "$fd" import "$raw" -o "$work/nogrid.csv" --split-at-reset "${map[@]}"
 check "import says the steps are not uniform" out_has "note: the time steps are not uniform (within 1 %); train needs that: import again with --rate-hz R"
 check "inspect a jittery recording" run 0 "$fd" inspect "$work/nogrid_1.csv"
-check "inspect says it is not usable for training, and the fix" out_has "not usable as it stands: time steps vary by more than 1 %"
+check "inspect says it is not usable for training, and the fix" out_has "not usable as it stands: a burst every 60 s; make one sample of each burst, its mean, with 'fogdrift import FILE --step-s 60'"
+# Found by a new user (issue 32): a burst log was reported as gaps.
+check "inspect says the log is bursts" out_has "sampling    bursts: 60 of them, one every 60 s (median); 50 Hz within a burst"
 check "campaign of jittery bursts" run 0 "$fd" campaign "$work/jitter" "$work"/nogrid_*.csv --input-rate-dph 0
 check "train refuses non-uniform time" run 1 "$fd" train "$work/jitter" -o "$work/j.json" --method svr
 check "non-uniform message names the fix" err_has "put the log on a uniform grid first with 'fogdrift import --rate-hz'"
