@@ -55,7 +55,7 @@ TrainResult train(const Dataset& data, const DatasetOptions& dataset, const Trai
   m.x_scaler = full.x_scaler;
   m.y_scaler = full.y_scaler;
 
-  // The folds the model is scored on for the held-out report, and its RMSE there.
+  // The folds the held-out report scores the model on, and how the model is refitted on one.
   std::vector<tune::Fold> held_folds;
   FoldPredictor held_predict;  // the chosen model refitted on a fold (held_out.hpp)
 
