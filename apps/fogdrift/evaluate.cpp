@@ -2,10 +2,12 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <iostream>
 #include <limits>
 #include <memory>
+#include <optional>
 
 #include "cli_util.hpp"
 #include "commands.hpp"
@@ -24,7 +26,17 @@ struct EvaluateArgs {
   bool json = false;
   bool allan = false;
   bool no_guard = false;
+  std::optional<double> input_rate_dph;
 };
+
+/// A metric as printed: n/a where it does not apply (eval::kNotApplicable).
+std::string figure(double value, const char* format = "{:.4f}") {
+  return std::isfinite(value) ? fmt::format(fmt::runtime(format), value) : "n/a";
+}
+
+/// An Allan term is read from the output at the recording's rate; fewer samples than this give
+/// a deviation whose short-τ point alone scatters by more than ±10 % (1/√N).
+constexpr std::size_t kAllanMinSamples = 100;
 
 bool is_campaign(const std::string& path) {
   return std::filesystem::is_directory(path) || path.ends_with(".json");
@@ -36,6 +48,10 @@ void run(const EvaluateArgs& a) {
   eval::Evaluation e;
   std::string source;
   if (a.inputs.size() == 1 && is_campaign(a.inputs[0])) {
+    if (a.input_rate_dph)
+      throw OptionError("--input-rate-dph",
+                        "applies to recording files; a campaign says its input rate in "
+                        "campaign.json (fogdrift campaign --input-rate-dph)");
     e = eval::evaluate(model, read_campaign(a.inputs[0]), options, a.model);
     source = a.inputs[0] + " (recordings with role \"test\")";
   } else {
@@ -48,6 +64,7 @@ void run(const EvaluateArgs& a) {
       RecordingInput in;
       in.recording = read_recording(path);
       in.info.file = path;
+      in.input_rate_dph = a.input_rate_dph;
       inputs.push_back(std::move(in));
     }
     e = eval::evaluate(model, inputs, options, a.model);
@@ -61,8 +78,13 @@ void run(const EvaluateArgs& a) {
   const auto& per = e.recordings;
   std::cout << fmt::format("{} on {}: {} rows of {} recording{}\n\n", e.method, source, e.rows,
                            per.size(), per.size() == 1 ? "" : "s");
-  std::cout << "Before (the denoised drift) → after compensation, °/h:\n"
-               "| recording | T0 (°C) | MAE | STD |\n"
+  // Before is what the model was trained to remove: the denoised drift, or the gyro less its
+  // input as logged when the model was trained with --no-denoise.
+  std::cout << (model.dataset.denoise_target
+                    ? "Before (the denoised drift) → after compensation, °/h:\n"
+                    : "Before (the drift as logged, not denoised: the model was trained with "
+                      "--no-denoise) → after compensation, °/h:\n")
+            << "| recording | T0 (°C) | MAE | STD |\n"
                "|---|---|---|---|\n";
   for (const eval::RecordingEvaluation& r : per)
     std::cout << fmt::format("| {} | {:g} | {:.4f} → {:.4f} | {:.4f} → {:.4f} |\n", r.info.file,
@@ -84,23 +106,42 @@ void run(const EvaluateArgs& a) {
   std::cout << "\nWhere north-finding needs it (docs/field.md), before → after, °/h:\n"
                "| recording | first 5 min residual | opposite positions 180 s apart | guard |\n"
                "|---|---|---|---|\n";
-  for (const eval::RecordingEvaluation& r : per)
-    std::cout << fmt::format("| {} | {:.4f} → {:.4f} | {:.4f} → {:.4f} | {} |\n", r.info.file,
-                             r.metrics.startup_before_dph, r.metrics.startup_after_dph,
-                             r.metrics.opposite_before_dph, r.metrics.opposite_after_dph,
+  bool late = false, sparse = false;
+  for (const eval::RecordingEvaluation& r : per) {
+    const eval::CompensationMetrics& m = r.metrics;
+    late = late || !std::isfinite(m.startup_before_dph);
+    sparse = sparse || !std::isfinite(m.opposite_before_dph);
+    std::cout << fmt::format("| {} | {} → {} | {} → {} | {} |\n", r.info.file,
+                             figure(m.startup_before_dph), figure(m.startup_after_dph),
+                             figure(m.opposite_before_dph), figure(m.opposite_after_dph),
                              r.novelty.line().substr(9));
-  std::cout << fmt::format("| **all** | **{:.4f} → {:.4f}** | **{:.4f} → {:.4f}** | {} |\n",
-                           all.startup_before_dph, all.startup_after_dph, all.opposite_before_dph,
-                           all.opposite_after_dph, e.guarded ? "on" : "off (--no-guard)");
+  }
+  std::cout << fmt::format("| **all** | **{} → {}** | **{} → {}** | {} |\n",
+                           figure(all.startup_before_dph), figure(all.startup_after_dph),
+                           figure(all.opposite_before_dph), figure(all.opposite_after_dph),
+                           e.guarded ? "on" : "off (--no-guard)");
+  if (late)
+    std::cout << "(n/a first 5 min: the recording starts 5 minutes or more after power-on, its "
+                 "time_s; there is no start-up to show)\n";
+  if (sparse)
+    std::cout << "(n/a opposite positions: the modelling rows are more than 180 s apart, or the "
+                 "recording is shorter than three 90 s positions; a four-position finding cannot "
+                 "be read from it)\n";
   if (a.allan) {
     std::cout
         << "\nAllan deviation of the gyro output at the recording's rate, raw → compensated:\n"
            "| recording | ARW (°/√h) | bias instability (°/h) | RRW (°/h/√h) |\n"
            "|---|---|---|---|\n";
     double shortest = std::numeric_limits<double>::infinity(), longest = 0;
+    std::size_t few = 0;
     for (const eval::RecordingEvaluation& rec : per) {
       const auto& r = rec.allan->raw;
       const auto& c = rec.allan->compensated;
+      if (rec.samples < kAllanMinSamples) {
+        ++few;
+        std::cout << fmt::format("| {} | n/a | n/a | n/a |\n", rec.info.file);
+        continue;
+      }
       std::cout << fmt::format("| {} | {:.5f} → {:.5f} | {:.4f} → {:.4f} | {:.4f} → {:.4f} |\n",
                                rec.info.file, r.arw_deg_per_rt_h, c.arw_deg_per_rt_h,
                                r.bias_instability_dph, c.bias_instability_dph, r.rrw_dph_per_rt_h,
@@ -108,14 +149,21 @@ void run(const EvaluateArgs& a) {
       shortest = std::min(shortest, rec.duration_s);
       longest = std::max(longest, rec.duration_s);
     }
-    const std::string span =
-        std::lround(shortest / 60) == std::lround(longest / 60)
-            ? fmt::format("{:.0f}-minute", shortest / 60)
-            : fmt::format("{:.0f}- to {:.0f}-minute", shortest / 60, longest / 60);
-    std::cout << fmt::format(
-        "({} recordings read bias instability and RRW from clusters of at most {:.0f} minutes; "
-        "compare before and after, not with a datasheet's hours-long runs)\n",
-        span, shortest / 120);
+    if (few < per.size()) {
+      const std::string span =
+          std::lround(shortest / 60) == std::lround(longest / 60)
+              ? fmt::format("{:.0f}-minute", shortest / 60)
+              : fmt::format("{:.0f}- to {:.0f}-minute", shortest / 60, longest / 60);
+      std::cout << fmt::format(
+          "({} recordings read bias instability and RRW from clusters of at most {:.0f} minutes; "
+          "compare before and after, not with a datasheet's hours-long runs)\n",
+          span, shortest / 120);
+    }
+    if (few)
+      std::cout << fmt::format(
+          "(n/a: {} recording{} of fewer than {} samples, whose Allan deviation scatters by more "
+          "than ±10 % at its shortest τ)\n",
+          few, few == 1 ? "" : "s", kAllanMinSamples);
   }
   for (const auto& w : e.warnings) std::cout << "warning: " << w << "\n";
 }
@@ -142,6 +190,10 @@ void add_evaluate(CLI::App& app) {
   cmd->add_option("model", args->model, "Model file written by `fogdrift train`")->required();
   add_model_load_flags(cmd, &args->load);
   cmd->add_option("inputs", args->inputs, "A campaign folder, or recording CSV files")->required();
+  cmd->add_option("--input-rate-dph", args->input_rate_dph,
+                  "Recording files only: the rate the gyro sensed, °/h (0 for an axis that sees "
+                  "no rotation); without it the target subtracts each recording's mean, and the "
+                  "turn-on bias is lost (a campaign says it in campaign.json)");
   cmd->add_flag("--json", args->json, "Print the metrics as JSON");
   cmd->add_flag("--no-guard", args->no_guard,
                 "Apply the model's full correction even where its inputs are novel");

@@ -70,6 +70,7 @@ Evaluation evaluate(const CompensationModel& model, const std::vector<RecordingI
     r.novelty = summarize_novelty(p.novelty, p.weight);
     if (options.allan) r.allan = allan_comparison(rec, p.drift_dph);
     r.duration_s = rec.time_s.back() - rec.time_s.front();
+    r.samples = rec.time_s.size();
     e.recordings.push_back(std::move(r));
   }
   return e;

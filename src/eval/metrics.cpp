@@ -66,10 +66,6 @@ CompensationMetrics pool(std::span<const CompensationMetrics> recordings) {
     sq_sum += r.rmse_dph * r.rmse_dph * static_cast<double>(r.rows);
     before += r.std_before_dph * r.std_before_dph;
     after += r.std_after_dph * r.std_after_dph;
-    p.startup_before_dph += r.startup_before_dph * r.startup_before_dph;
-    p.startup_after_dph += r.startup_after_dph * r.startup_after_dph;
-    p.opposite_before_dph += r.opposite_before_dph * r.opposite_before_dph;
-    p.opposite_after_dph += r.opposite_after_dph * r.opposite_after_dph;
   }
   if (p.rows == 0) return p;
   p.mae_dph = abs_sum / static_cast<double>(p.rows);
@@ -94,29 +90,42 @@ CompensationMetrics pool(std::span<const CompensationMetrics> recordings) {
   p.rmse_dph = std::sqrt(sq_sum / static_cast<double>(p.rows));
   p.std_before_dph = std::sqrt(before / static_cast<double>(k));
   p.std_after_dph = std::sqrt(after / static_cast<double>(k));
-  for (double* v :
-       {&p.startup_before_dph, &p.startup_after_dph, &p.opposite_before_dph, &p.opposite_after_dph})
-    *v = std::sqrt(*v / static_cast<double>(k));
+  // The north-finding metrics pool over the recordings they apply to (n/a is NaN): n/a when
+  // they apply to none.
+  for (double CompensationMetrics::*v :
+       {&CompensationMetrics::startup_before_dph, &CompensationMetrics::startup_after_dph,
+        &CompensationMetrics::opposite_before_dph, &CompensationMetrics::opposite_after_dph}) {
+    double sum = 0;
+    std::size_t count = 0;
+    for (const auto& r : recordings)
+      if (r.rows > 0 && std::isfinite(r.*v)) sum += r.*v * r.*v, ++count;
+    p.*v = count ? std::sqrt(sum / static_cast<double>(count)) : kNotApplicable;
+  }
   return p;
 }
 
 std::pair<double, double> finding_metrics(std::span<const double> time_s, std::span<const double> r,
                                           const FindingWindows& w) {
   const std::size_t n = r.size();
-  if (n < 2 || time_s.size() != n) return {0.0, 0.0};
+  if (n < 2 || time_s.size() != n) return {kNotApplicable, kNotApplicable};
   double mean = 0;
   for (double v : r) mean += v;
   mean /= static_cast<double>(n);
-  // Start-up residual: the rows within startup_s of the first.
-  double ss = 0;
-  std::size_t m = 0;
-  for (std::size_t i = 0; i < n && time_s[i] - time_s[0] < w.startup_s; ++i, ++m)
-    ss += (r[i] - mean) * (r[i] - mean);
-  const double startup = m ? std::sqrt(ss / static_cast<double>(m)) : 0.0;
-  // Opposite difference over windows of P rows, 2P apart, by prefix sums.
+  // Start-up residual: the rows within startup_s of the first, when the first is within
+  // startup_s of power-on (time 0); a recording that starts later has no start-up to show.
+  double startup = kNotApplicable;
+  if (time_s[0] < w.startup_s) {
+    double ss = 0;
+    std::size_t m = 0;
+    for (std::size_t i = 0; i < n && time_s[i] - time_s[0] < w.startup_s; ++i, ++m)
+      ss += (r[i] - mean) * (r[i] - mean);
+    startup = std::sqrt(ss / static_cast<double>(m));
+  }
+  // Opposite difference over windows of P rows, 2P apart, by prefix sums: n/a when a window
+  // holds no row (rows more than 2 positions apart) or the recording is shorter than 3 windows.
   const double dt = (time_s[n - 1] - time_s[0]) / static_cast<double>(n - 1);
   const auto p = static_cast<std::size_t>(std::lround(w.position_s / dt));
-  if (p == 0 || 3 * p > n) return {startup, 0.0};
+  if (p == 0 || 3 * p > n) return {startup, kNotApplicable};
   std::vector<double> prefix(n + 1, 0.0);
   for (std::size_t i = 0; i < n; ++i) prefix[i + 1] = prefix[i] + r[i];
   double dd = 0;

@@ -100,7 +100,16 @@ check "block message" err_has "option --block-s: 90.000000 s is not a whole mult
 check "evaluate" run 0 "$fd" evaluate "$work/m.json" "$work/camp" --allan
 check "evaluate before and after" out_has "| tvac_2_02.csv | 5 | "
 check "no paper figures on user data" bash -c "! grep -q 'paper:' '$work/out'"
-check "Allan note states the real length" out_has "(59-minute recordings read bias instability"
+# Found by a new user (issue 32): Allan terms were printed from a handful of burst means.
+check "Allan terms n/a on 60 burst means" out_has "(n/a: 1 recording of fewer than 100 samples, whose Allan deviation scatters"
+# Found by a new user (issue 32): a bare file could not say its input rate, so the turn-on bias
+# was lost and compensation looked 200 times worse.
+check "evaluate a bare file without its input rate" run 0 "$fd" evaluate "$work/m.json" "$work/camp/tvac_2_02.csv"
+check "the lost bias is said" out_has "the turn-on bias is lost"
+check "evaluate a bare file with its input rate" run 0 "$fd" evaluate "$work/m.json" "$work/camp/tvac_2_02.csv" --input-rate-dph 0
+check "no bias lost with the input rate" bash -c "! grep -q 'turn-on bias is lost' '$work/out'"
+check "input rate on a campaign" run 1 "$fd" evaluate "$work/m.json" "$work/camp" --input-rate-dph 0
+check "input rate message" err_has "option --input-rate-dph: applies to recording files"
 check "compensation lowers the error" python3 - "$fd" "$work" <<'PY'
 import json, subprocess, sys
 fd, work = sys.argv[1], sys.argv[2]

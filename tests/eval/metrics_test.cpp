@@ -112,11 +112,30 @@ TEST(FindingMetrics, StartupResidualIsTheFirstMinutesAgainstTheWholeMean) {
     r.push_back(t.back() < 300.0 ? 1.0 : 0.0);
   }
   EXPECT_NEAR(finding_metrics(t, r).first, 5.0 / 6.0, 1e-12);
-  // Shorter than three positions: no opposite difference.
-  EXPECT_EQ(
+  // Shorter than three positions: no opposite difference (n/a, not 0).
+  EXPECT_TRUE(std::isnan(
       finding_metrics(std::span<const double>(t).first(20), std::span<const double>(r).first(20))
-          .second,
-      0.0);
+          .second));
+  // Found by a new user (issue 32): a window that starts 51 minutes after power-on has no
+  // start-up residual, and rows 305 s apart no opposite difference.
+  std::vector<double> late = t, sparse;
+  for (double& v : late) v += 51 * 60.0;
+  EXPECT_TRUE(std::isnan(finding_metrics(late, r).first));
+  for (int i = 0; i < 10; ++i) sparse.push_back(305.0 * i);
+  EXPECT_TRUE(std::isnan(finding_metrics(sparse, std::span<const double>(r).first(10)).second));
+  EXPECT_TRUE(std::isfinite(finding_metrics(sparse, std::span<const double>(r).first(10)).first));
+}
+
+TEST(FindingMetrics, PoolingSkipsRecordingsTheyDoNotApplyTo) {
+  CompensationMetrics a, b;
+  a.rows = b.rows = 10;
+  a.startup_before_dph = 3.0;
+  b.startup_before_dph = kNotApplicable;
+  a.opposite_before_dph = b.opposite_before_dph = kNotApplicable;
+  const std::vector<CompensationMetrics> both = {a, b};
+  const CompensationMetrics p = pool(both);
+  EXPECT_EQ(p.startup_before_dph, 3.0);
+  EXPECT_TRUE(std::isnan(p.opposite_before_dph));
 }
 
 }  // namespace

@@ -37,7 +37,8 @@ struct RecordingEvaluation {
   CompensationMetrics metrics;  ///< at the model's block rate
   NoveltySummary novelty;       ///< at the recording's own rate
   std::optional<AllanComparison> allan;
-  double duration_s = 0;  ///< last minus first time stamp
+  double duration_s = 0;    ///< last minus first time stamp
+  std::size_t samples = 0;  ///< at the recording's own rate
 };
 
 struct Evaluation {

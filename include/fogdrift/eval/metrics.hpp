@@ -20,10 +20,14 @@
 //                         with P = position_s: the difference between two opposite positions of
 //                         a four-position finding, the part of the drift the azimuth sees
 //                         (δψ ≈ difference / (2 Ω_ie cos φ), docs/simulator.md §5)
-// Both pool as the root mean square over recordings.
+// Both pool as the root mean square over the recordings they apply to. They do not apply, and are
+// NaN (kNotApplicable; null in JSON, "n/a" in print), when a recording starts startup_s or more
+// after power-on (no start-up residual), or when its rows are more than 2·position_s apart or
+// it is shorter than three positions (no opposite difference).
 #pragma once
 
 #include <cstddef>
+#include <limits>
 #include <span>
 #include <utility>
 #include <vector>
@@ -47,6 +51,9 @@ struct CompensationMetrics {
   double startup_before_dph = 0, startup_after_dph = 0;
   double opposite_before_dph = 0, opposite_after_dph = 0;
 };
+
+/// A metric that does not apply to the data (see the file comment).
+inline constexpr double kNotApplicable = std::numeric_limits<double>::quiet_NaN();
 
 /// The windows of the north-finding metrics.
 struct FindingWindows {
