@@ -20,26 +20,47 @@ double squared_distance(const double* a, const double* b, std::size_t d) noexcep
   return s;
 }
 
-// The 90th percentile over (at most kSpacingRows evenly spread) rows of the distance to the
-// nearest row that `other(i, j)` admits; 0 when no row has one.
-template <class Other>
-double spacing(std::span<const double> z, std::size_t dims, std::size_t n, Other other) {
-  constexpr std::size_t kSpacingRows = 4000;
-  const std::size_t step = (n + kSpacingRows - 1) / kSpacingRows;
-  std::vector<std::size_t> rows;
-  for (std::size_t i = 0; i < n; i += step) rows.push_back(i);
-  std::vector<double> nearest;
-  for (std::size_t i : rows) {
-    double best = std::numeric_limits<double>::infinity();
-    for (std::size_t j : rows)
-      if (other(i, j))
-        best = std::min(best, squared_distance(z.data() + i * dims, z.data() + j * dims, dims));
-    if (std::isfinite(best)) nearest.push_back(std::sqrt(best));
-  }
+// The 90th percentile of `nearest`; 0 when empty.
+double percentile_90(std::vector<double>& nearest) {
   if (nearest.empty()) return 0.0;
   const auto at = nearest.begin() + static_cast<std::ptrdiff_t>(0.9 * double(nearest.size() - 1));
   std::nth_element(nearest.begin(), at, nearest.end());
   return *at;
+}
+
+struct Spacings {
+  double labels = 0;      ///< to the nearest row of another label
+  double conditions = 0;  ///< to the nearest row of the same label and another condition
+};
+
+// The 90th percentiles over (at most kSpacingRows evenly spread) rows of the distance to the
+// nearest row of another label, and of the same label and another condition (0 without
+// conditions, or where no row has such a neighbour). One pass: each distance is computed once.
+Spacings spacings(std::span<const double> z, std::size_t dims, std::span<const std::size_t> labels,
+                  std::span<const std::size_t> conditions) {
+  constexpr std::size_t kSpacingRows = 4000;
+  const std::size_t n = labels.size();
+  const std::size_t step = (n + kSpacingRows - 1) / kSpacingRows;
+  std::vector<std::size_t> rows;
+  for (std::size_t i = 0; i < n; i += step) rows.push_back(i);
+  std::vector<double> nearest_label, nearest_condition;
+  for (std::size_t i : rows) {
+    double label = std::numeric_limits<double>::infinity(), condition = label;
+    for (std::size_t j : rows) {
+      const bool other_label = labels[j] != labels[i];
+      const bool other_condition =
+          !other_label && !conditions.empty() && conditions[j] != conditions[i];
+      if (!other_label && !other_condition) continue;
+      const double d2 = squared_distance(z.data() + i * dims, z.data() + j * dims, dims);
+      if (other_label)
+        label = std::min(label, d2);
+      else
+        condition = std::min(condition, d2);
+    }
+    if (std::isfinite(label)) nearest_label.push_back(std::sqrt(label));
+    if (std::isfinite(condition)) nearest_condition.push_back(std::sqrt(condition));
+  }
+  return {percentile_90(nearest_label), percentile_90(nearest_condition)};
 }
 
 }  // namespace
@@ -88,18 +109,13 @@ NoveltyGuard NoveltyGuard::fit(std::span<const double> z, std::size_t dims,
   }
   if (!labels.empty()) {
     if (labels.size() != n) throw OptionError("guard", "needs one label per training row");
-    const double between_labels =
-        spacing(z, dims, n, [&](std::size_t i, std::size_t j) { return labels[j] != labels[i]; });
-    g.radius = std::max(g.radius, between_labels);
-    // Conditions widen the unit only where the labels span one: a model calibrated at one
-    // temperature knows nothing of another, however its start-ups differed there.
     if (!conditions.empty() && conditions.size() != n)
       throw OptionError("guard", "needs one condition per training row");
-    if (!conditions.empty() && between_labels > 0) {
-      g.radius = std::max(g.radius, spacing(z, dims, n, [&](std::size_t i, std::size_t j) {
-                            return labels[j] == labels[i] && conditions[j] != conditions[i];
-                          }));
-    }
+    const Spacings spacing = spacings(z, dims, labels, conditions);
+    g.radius = std::max(g.radius, spacing.labels);
+    // Conditions widen the unit only where the labels span one: a model calibrated at one
+    // temperature knows nothing of another, however its start-ups differed there.
+    if (spacing.labels > 0) g.radius = std::max(g.radius, spacing.conditions);
   }
   // With as many prototypes as rows (or repeated rows) the cover radius is 0; a floor keeps ν
   // finite and says "only these points" (1e-3 standard deviations).

@@ -44,14 +44,16 @@ std::vector<std::size_t> temperature_inputs(std::span<const std::string> feature
   return out;
 }
 
-std::vector<Baseline> baseline_scores(const Dataset& data, std::span<const tune::Fold> folds) {
-  if (folds.empty()) throw OptionError("folds", "there are no folds to score the baselines on");
+namespace {
+
+// The baselines over folds already split and standardised.
+std::vector<Baseline> baselines_of(const Dataset& data, std::span<const tune::ScaledSplit> splits) {
+  if (splits.empty()) throw OptionError("folds", "there are no folds to score the baselines on");
   const std::vector<std::size_t> temps = temperature_inputs(data.feature_names);
   std::vector<double> sse(1 + temps.size(), 0.0);
   std::size_t count = 0;
   const std::size_t d = data.cols();
-  for (const tune::Fold& f : folds) {
-    const tune::ScaledSplit s = tune::scale_split(data, f.train_rows, f.test_rows);
+  for (const tune::ScaledSplit& s : splits) {
     // Standardised training columns have mean 0, so the least-squares line through them has
     // intercept 0 and slope Σxy / Σx².
     for (std::size_t r = 0; r < s.test.rows; ++r) sse[0] += s.test.y[r] * s.test.y[r];
@@ -81,6 +83,19 @@ std::vector<Baseline> baseline_scores(const Dataset& data, std::span<const tune:
   return out;
 }
 
+std::vector<tune::ScaledSplit> split_all(const Dataset& data, std::span<const tune::Fold> folds) {
+  std::vector<tune::ScaledSplit> splits;
+  for (const tune::Fold& f : folds)
+    splits.push_back(tune::scale_split(data, f.train_rows, f.test_rows));
+  return splits;
+}
+
+}  // namespace
+
+std::vector<Baseline> baseline_scores(const Dataset& data, std::span<const tune::Fold> folds) {
+  return baselines_of(data, split_all(data, folds));
+}
+
 HeldOutReport held_out_report(const Dataset& data, std::span<const tune::Fold> folds,
                               const FoldPredictor& predict, std::string folds_description) {
   HeldOutReport r;
@@ -89,9 +104,10 @@ HeldOutReport held_out_report(const Dataset& data, std::span<const tune::Fold> f
   // deviation of the error and of the target from their means over that recording's rows.
   double sse = 0, within_error = 0, within_target = 0;
   std::size_t count = 0;
+  // Each fold split and standardised once, for the model and the baselines alike.
+  const std::vector<tune::ScaledSplit> splits = split_all(data, folds);
   for (std::size_t k = 0; k < folds.size(); ++k) {
-    const tune::ScaledSplit split =
-        tune::scale_split(data, folds[k].train_rows, folds[k].test_rows);
+    const tune::ScaledSplit& split = splits[k];
     const std::vector<double> p = predict(split, k);
     if (p.size() != split.test.rows)
       throw OptionError("held_out", "the model predicted another number of rows than held out");
@@ -114,7 +130,7 @@ HeldOutReport held_out_report(const Dataset& data, std::span<const tune::Fold> f
   r.model_rmse = model_rmse;
   r.expected_startup_share =
       within_target > 0 ? 1.0 - std::sqrt(within_error / within_target) : 0.0;
-  r.baselines = baseline_scores(data, folds);
+  r.baselines = baselines_of(data, splits);
   const Baseline& mean = r.baselines.front();
   r.expected_share = mean.rmse > 0 ? 1.0 - model_rmse / mean.rmse : 0.0;
   const Baseline* best_line = nullptr;

@@ -47,14 +47,12 @@ RecordingSummary summarize(const Recording& rec) {
       s.longest_gap_s = std::max(s.longest_gap_s, steps[i]);
     }
     if (s.gaps >= 2) {
-      std::vector<double> periods;
-      for (std::size_t k = 1; k < starts.size(); ++k) periods.push_back(starts[k] - starts[k - 1]);
-      std::vector<double> sorted = periods;
-      std::nth_element(sorted.begin(), sorted.begin() + sorted.size() / 2, sorted.end());
-      const double period = sorted[sorted.size() / 2];
+      // The median start-to-start period, as the median step of the burst starts.
+      const double period = median_time_step_s(starts);
       bool regular = true;
       // A lost burst makes one period twice as long: a whole number of periods still counts.
-      for (double p : periods) {
+      for (std::size_t k = 1; k < starts.size(); ++k) {
+        const double p = starts[k] - starts[k - 1];
         const double n = std::round(p / period);
         regular = regular && n >= 1 && std::abs(p - n * period) <= 0.1 * period;
       }

@@ -91,14 +91,18 @@ TrainResult train(const Dataset& data, const DatasetOptions& dataset, const Trai
         p.iterations = t.optimizer.run.iterations;
       }
       s.fitness = tune::to_string(t.fitness);
-      if (t.fitness == tune::Fitness::cv) p.cv = describe_folds(tune::grouped_folds(data, t.cv));
-      if (options.held_out) {
-        // The paper's training fitness holds nothing out: its model is scored on the folds too.
+      if (t.fitness == tune::Fitness::cv || options.held_out) {
+        // The paper's training fitness holds nothing out: its model is scored on the folds too,
+        // and data that cannot be split say so instead of failing.
         try {
           held_folds = tune::grouped_folds(data, t.cv);
         } catch (const OptionError& e) {
+          if (t.fitness == tune::Fitness::cv) throw;
           s.held_out_missing = fmt::format("no held-out rows: {}", e.what());
         }
+      }
+      if (t.fitness == tune::Fitness::cv) p.cv = describe_folds(held_folds);
+      if (options.held_out) {
         held_predict = [params](const tune::ScaledSplit& split, std::size_t) {
           svr::TrainingSet set(split.train);
           return svr::fit(set, params).model.predict(split.test);

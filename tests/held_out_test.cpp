@@ -7,6 +7,7 @@
 #include <cmath>
 #include <map>
 
+#include "fogdrift/error.hpp"
 #include "fogdrift/random.hpp"
 #include "fogdrift/train.hpp"
 #include "synthetic_dataset.hpp"
@@ -105,6 +106,15 @@ FoldPredictor line_in_t_fog() {
     for (std::size_t r = 0; r < split.test.rows; ++r) p[r] = sxy / sxx * split.test.x[r * d];
     return p;
   };
+}
+
+TEST(HeldOut, ImpossibleInputsAreErrors) {
+  const Dataset d = thermal(0.01, 0.001);
+  EXPECT_THROW(baseline_scores(d, {}), OptionError);
+  const FoldPredictor one_short = [](const tune::ScaledSplit& split, std::size_t) {
+    return std::vector<double>(split.test.rows - 1, 0.0);
+  };
+  EXPECT_THROW(held_out_report(d, temperature_folds(d), one_short, "test folds"), OptionError);
 }
 
 TEST(HeldOut, APerfectModelRemovesEverythingAndIsNotWarnedOf) {
