@@ -1,6 +1,7 @@
 #include "fogdrift/csv.hpp"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <cctype>
 #include <cerrno>
@@ -75,6 +76,45 @@ std::vector<std::string> split_line(std::string_view line, char delimiter, const
   return fields;
 }
 
+bool all_blank(const std::vector<std::string>& fields) {
+  for (const auto& f : fields)
+    if (!trim(f).empty()) return false;
+  return true;
+}
+
+// drop_empty: removes the header's nameless columns (indices in increasing order) from the table;
+// one that holds a value anywhere is an error naming its first such cell.
+void drop_nameless(Table& table, const std::vector<std::size_t>& nameless) {
+  for (std::size_t c : nameless) {
+    for (std::size_t i = 0; i < table.rows.size(); ++i) {
+      if (!trim(table.rows[i][c]).empty()) {
+        throw InputError(table.file, table.row_line[i], c + 1,
+                         fmt::format("'{}' is in a column with no name in the header; name the "
+                                     "column, or empty it",
+                                     excerpt(table.rows[i][c])));
+      }
+    }
+  }
+  auto keep = [&](std::vector<std::string>& fields) {
+    std::vector<std::string> kept;
+    kept.reserve(fields.size() - nameless.size());
+    for (std::size_t c = 0, next = 0; c < fields.size(); ++c) {
+      if (next < nameless.size() && nameless[next] == c) {
+        ++next;
+        continue;
+      }
+      kept.push_back(std::move(fields[c]));
+    }
+    fields = std::move(kept);
+  };
+  keep(table.header);
+  for (auto& row : table.rows) keep(row);
+  std::vector<std::string> where;
+  for (std::size_t c : nameless) where.push_back(std::to_string(c + 1));
+  table.notes.push_back(fmt::format("dropped {} empty column(s) with no name (column {})",
+                                    nameless.size(), fmt::join(where, ", ")));
+}
+
 }  // namespace
 
 std::optional<std::size_t> Table::find(std::string_view name) const {
@@ -103,6 +143,8 @@ Table parse(std::string_view text, const std::string& file, const ReadOptions& o
   std::size_t line_no = 0;
   std::size_t pending_blank_line = 0;  // first blank line seen after the header, if any
   bool have_header = false;
+  std::vector<std::size_t> nameless;  // drop_empty: header fields with no name, in file order
+  std::size_t blank_rows = 0;         // drop_empty: rows of empty fields dropped
   while (pos < text.size()) {
     std::size_t end = text.find('\n', pos);
     if (end == std::string_view::npos) end = text.size();
@@ -124,10 +166,18 @@ Table parse(std::string_view text, const std::string& file, const ReadOptions& o
       throw InputError(file, pending_blank_line, 0, "empty line between data rows");
     }
     std::vector<std::string> fields = split_line(line, options.delimiter, file, line_no);
+    if (have_header && options.drop_empty && all_blank(fields)) {
+      ++blank_rows;  // a spreadsheet's row of empty cells (",,,,")
+      continue;
+    }
     if (!have_header) {
       std::unordered_set<std::string> seen;
       for (std::size_t c = 0; c < fields.size(); ++c) {
         std::string name(trim(fields[c]));
+        if (name.empty() && options.drop_empty) {
+          nameless.push_back(c);
+          continue;
+        }
         if (name.empty()) throw InputError(file, line_no, c + 1, "empty column name in the header");
         if (!seen.insert(name).second) {
           throw InputError(file, line_no, c + 1,
@@ -135,7 +185,7 @@ Table parse(std::string_view text, const std::string& file, const ReadOptions& o
         }
         fields[c] = std::move(name);
       }
-      table.header = std::move(fields);
+      table.header = std::move(fields);  // nameless ones included until the rows are read
       have_header = true;
       continue;
     }
@@ -148,6 +198,9 @@ Table parse(std::string_view text, const std::string& file, const ReadOptions& o
     table.row_line.push_back(line_no);
   }
   if (!have_header) throw InputError(file, 0, 0, "empty file: a header row is required");
+  if (!nameless.empty()) drop_nameless(table, nameless);
+  if (blank_rows > 0)
+    table.notes.push_back(fmt::format("dropped {} row(s) with every field empty", blank_rows));
   return table;
 }
 

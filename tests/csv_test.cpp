@@ -37,6 +37,41 @@ TEST(CsvParse, TrailingDelimiterMakesAnEmptyField) {
   EXPECT_THROW(parse("a,b\n1,2,\n", "x.csv"), InputError);
 }
 
+TEST(CsvParse, DropEmptyRemovesASpreadsheetsPaddingWithANote) {
+  // A chamber sheet as a spreadsheet exports it: trailing nameless empty columns, a nameless
+  // empty column between two named ones, and rows of empty cells at the end.
+  const std::string text =
+      "\xEF\xBB\xBFTime,T1 (F),,T2 (C),,\n15:40,70.1,,21.0,,\n15:45,70.3,,21.1,,\n,,,,,\n , ,,,,\n";
+  EXPECT_THROW(parse(text, "sheet.csv"), InputError);  // strict by default
+  ReadOptions tolerant;
+  tolerant.drop_empty = true;
+  const Table t = parse(text, "sheet.csv", tolerant);
+  ASSERT_EQ(t.header, (std::vector<std::string>{"Time", "T1 (F)", "T2 (C)"}));
+  ASSERT_EQ(t.rows.size(), 2u);
+  EXPECT_EQ(t.rows[1], (std::vector<std::string>{"15:45", "70.3", "21.1"}));
+  EXPECT_EQ(t.row_line[1], 3u);
+  ASSERT_EQ(t.notes.size(), 2u);
+  EXPECT_EQ(t.notes[0], "dropped 3 empty column(s) with no name (column 3, 5, 6)");
+  EXPECT_EQ(t.notes[1], "dropped 2 row(s) with every field empty");
+}
+
+TEST(CsvParse, DropEmptyKeepsANamelessColumnThatHoldsAValueAnError) {
+  ReadOptions tolerant;
+  tolerant.drop_empty = true;
+  try {
+    parse("Time,,T1\n1,,5\n2,oops,6\n", "sheet.csv", tolerant);
+    FAIL() << "a nameless column with a value must be an error";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.line(), 3u);
+    EXPECT_EQ(e.column(), 2u);
+    EXPECT_NE(std::string(e.what()).find("no name in the header"), std::string::npos);
+  }
+  // A row of blanks in the middle is dropped too; nothing else changes.
+  const Table t = parse("a,b\n1,2\n,\n3,4\n", "x.csv", tolerant);
+  EXPECT_EQ(t.rows.size(), 2u);
+  EXPECT_EQ(t.row_line[1], 4u);
+}
+
 TEST(ParseNumber, AcceptsDecimalForms) {
   EXPECT_EQ(*parse_number("1.5"), 1.5);
   EXPECT_EQ(*parse_number(" -2e-3 "), -2e-3);

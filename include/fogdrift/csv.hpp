@@ -21,6 +21,8 @@ struct Table {
   std::vector<std::string> header;             ///< column names, in file order, unique
   std::vector<std::vector<std::string>> rows;  ///< data rows
   std::vector<std::size_t> row_line;           ///< 1-based line of each data row in the file
+  /// What a tolerant read (ReadOptions::drop_empty) dropped, one sentence each, for people.
+  std::vector<std::string> notes;
 
   /// Index of the column named `name`, if present.
   std::optional<std::size_t> find(std::string_view name) const;
@@ -32,11 +34,16 @@ struct ReadOptions {
   std::size_t skip_lines = 0;
   /// Lines whose first non-blank character is this one are comments, skipped anywhere; 0: none.
   char comment = 0;
+  /// A spreadsheet export's padding is dropped, with a note in Table::notes, instead of being an
+  /// error: columns with no name and no value in any row, and rows whose every field is blank.
+  /// A nameless column that holds a value is still an error, naming its line and column.
+  bool drop_empty = false;
 };
 
 /// Reads and tokenises `path`. Throws InputError for: a missing or unreadable file, an empty file,
-/// an empty or duplicated column name, a row with a different number of fields than the header,
-/// an empty line between data rows, an unterminated quote. Trailing empty lines are allowed.
+/// an empty (unless dropped by drop_empty) or duplicated column name, a row with a different number
+/// of fields than the header, an empty line between data rows, an unterminated quote. Trailing
+/// empty lines are allowed.
 Table read(const std::string& path, const ReadOptions& options = {});
 
 /// Same as read(), from text already in memory; `file` names it in error messages.
