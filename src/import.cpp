@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <set>
@@ -22,6 +23,24 @@ bool is_fogdrift_column(std::string_view name) {
   for (const auto& n : optional_columns())
     if (n == name) return true;
   return false;
+}
+
+/// A further channel a unit logs, named by what it is so that its unit is known: another gyro
+/// axis (gyro_NAME_dph), thermometer (temp_NAME_degc) or accelerometer (accel_NAME_g). Kept as a
+/// numeric extra column.
+bool is_channel_column(std::string_view name) {
+  if (is_fogdrift_column(name) || name.empty()) return false;
+  for (char ch : name)
+    if (!((ch >= 'a' && ch <= 'z') || (ch >= '0' && ch <= '9') || ch == '_')) return false;
+  auto between = [&](std::string_view prefix, std::string_view suffix) {
+    return name.size() > prefix.size() + suffix.size() && starts_with(name, prefix) &&
+           name.substr(name.size() - suffix.size()) == suffix;
+  };
+  return between("gyro_", "_dph") || between("temp_", "_degc") || between("accel_", "_g");
+}
+
+bool is_target(std::string_view name) {
+  return is_fogdrift_column(name) || is_channel_column(name);
 }
 
 // Days since 1970-01-01 of a proleptic Gregorian date (the civil-from-days inverse).
@@ -48,16 +67,18 @@ std::optional<double> parse_datetime(std::string_view t) {
     }
     return v;
   };
+  // Seconds may be left out ("2020-03-07 15:45", a spreadsheet's default).
+  const bool with_seconds = t.size() > 16 && t[16] == ':';
   const auto y = digits(0, 4), mo = digits(5, 2), d = digits(8, 2), h = digits(11, 2),
-             mi = digits(14, 2), se = digits(17, 2);
+             mi = digits(14, 2), se = with_seconds ? digits(17, 2) : std::optional<int>(0);
   if (!y || !mo || !d || !h || !mi || !se || t[4] != '-' || t[7] != '-' ||
-      (t[10] != 'T' && t[10] != ' ') || t[13] != ':' || t[16] != ':')
+      (t[10] != 'T' && t[10] != ' ') || t[13] != ':')
     return std::nullopt;
   if (*mo < 1 || *mo > 12 || *d < 1 || *d > 31 || *h > 23 || *mi > 59 || *se > 60)
     return std::nullopt;
-  std::size_t pos = 19;
+  std::size_t pos = with_seconds ? 19 : 16;
   double fraction = 0;
-  if (pos < t.size() && (t[pos] == '.' || t[pos] == ',')) {
+  if (with_seconds && pos < t.size() && (t[pos] == '.' || t[pos] == ',')) {
     double scale = 0.1;
     ++pos;
     if (pos >= t.size() || t[pos] < '0' || t[pos] > '9') return std::nullopt;
@@ -85,6 +106,42 @@ std::optional<double> parse_datetime(std::string_view t) {
   return static_cast<double>(whole) + fraction;
 }
 
+std::optional<double> parse_clock(std::string_view t) {
+  while (!t.empty() && t.front() == ' ') t.remove_prefix(1);
+  while (!t.empty() && t.back() == ' ') t.remove_suffix(1);
+  auto number = [&](std::size_t& at, std::size_t min, std::size_t max) -> std::optional<int> {
+    std::size_t n = 0;
+    int v = 0;
+    while (at < t.size() && n < max && t[at] >= '0' && t[at] <= '9') {
+      v = v * 10 + (t[at++] - '0');
+      ++n;
+    }
+    if (n < min) return std::nullopt;
+    return v;
+  };
+  std::size_t pos = 0;
+  const auto h = number(pos, 1, 2);
+  if (!h || pos >= t.size() || t[pos++] != ':') return std::nullopt;
+  const auto mi = number(pos, 2, 2);
+  std::optional<int> se = 0;
+  double fraction = 0;
+  if (mi && pos < t.size() && t[pos] == ':') {
+    ++pos;
+    se = number(pos, 2, 2);
+    if (se && pos < t.size() && (t[pos] == '.' || t[pos] == ',')) {
+      ++pos;
+      double scale = 0.1;
+      if (pos >= t.size()) return std::nullopt;
+      while (pos < t.size() && t[pos] >= '0' && t[pos] <= '9') {
+        fraction += scale * (t[pos++] - '0');
+        scale /= 10;
+      }
+    }
+  }
+  if (!mi || !se || pos != t.size() || *h > 23 || *mi > 59 || *se > 60) return std::nullopt;
+  return *h * 3600.0 + *mi * 60.0 + *se + fraction;
+}
+
 LinearConversion parse_unit(std::string_view column, std::string_view unit) {
   const std::string option = fmt::format("--unit {}={}", column, unit);
   constexpr double kRadToDeg = 180.0 / std::numbers::pi;
@@ -92,8 +149,10 @@ LinearConversion parse_unit(std::string_view column, std::string_view unit) {
     throw OptionError(
         option, fmt::format("unknown unit '{}' for {} (accepted: {})", unit, column, accepted));
   };
-  if (!is_fogdrift_column(column))
-    throw OptionError(option, fmt::format("'{}' is not a fogdrift column", column));
+  if (!is_target(column))
+    throw OptionError(option, fmt::format("'{}' is not a fogdrift column, nor a channel named "
+                                          "gyro_NAME_dph, temp_NAME_degc or accel_NAME_g",
+                                          column));
   // Raw counts and signed registers, for any column: value = raw·SCALE + OFFSET in the column's
   // own unit (°/h, °C, g, °, s).
   if (starts_with(unit, "counts:")) {
@@ -136,14 +195,16 @@ LinearConversion parse_unit(std::string_view column, std::string_view unit) {
     if (unit == "s") return {1.0, 0.0};
     if (unit == "ms") return {1e-3, 0.0};
     if (unit == "us") return {1e-6, 0.0};
-    if (unit == "iso8601") {
+    if (unit == "iso8601" || unit == "clock") {
       LinearConversion c;
-      c.datetime = true;
+      (unit == "clock" ? c.clock : c.datetime) = true;
       return c;
     }
-    return unknown("s, ms, us, iso8601 (2024-03-01 12:00:00.125, counted from the first stamp)");
+    return unknown(
+        "s, ms, us, iso8601 (2024-03-01 12:00:00.125), clock (15:45 or 15:45:30.5, a time of "
+        "day); stamps count from the first one, or from --time-zero");
   }
-  if (column == "gyro_dph") {
+  if (column == "gyro_dph" || starts_with(column, "gyro_")) {
     if (unit == "deg/h") return {1.0, 0.0};
     if (unit == "deg/s") return {3600.0, 0.0};
     if (unit == "rad/s") return {kRadToDeg * 3600.0, 0.0};
@@ -157,7 +218,7 @@ LinearConversion parse_unit(std::string_view column, std::string_view unit) {
     if (unit == "degF") return {5.0 / 9.0, -32.0 * 5.0 / 9.0};
     return unknown("degC, K, degF, counts:SCALE:OFFSET, intN:SCALE:OFFSET");
   }
-  if (column == "accel_x_g" || column == "accel_y_g") {
+  if (starts_with(column, "accel_")) {
     if (unit == "g") return {1.0, 0.0};
     if (unit == "mg") return {1e-3, 0.0};
     if (unit == "m/s2") return {1.0 / 9.80665, 0.0};
@@ -177,23 +238,57 @@ std::vector<Recording> import_recordings(const std::filesystem::path& path,
     throw OptionError("--decimal-comma", "needs a delimiter other than ',' (use --delimiter ';')");
   }
   for (const auto& [target, source] : options.columns) {
-    if (!is_fogdrift_column(target)) {
+    if (!is_target(target)) {
       throw OptionError(fmt::format("--map {}={}", target, source),
                         fmt::format("'{}' is not a fogdrift column (known: time_s, gyro_dph, "
                                     "temp_fog_degc, temp_acc1_degc, temp_acc2_degc, accel_x_g, "
-                                    "accel_y_g, table_deg, chamber_degc)",
+                                    "accel_y_g, table_deg, chamber_degc), nor a further channel "
+                                    "(gyro_NAME_dph, temp_NAME_degc, accel_NAME_g: lower case, "
+                                    "digits and _)",
                                     target));
     }
   }
   for (const auto& [target, conversion] : options.conversions) {
-    if (!is_fogdrift_column(target)) {
+    if (!is_target(target)) {
       throw OptionError(fmt::format("--unit {}", target), "not a fogdrift column");
+    }
+    if (is_channel_column(target) && !options.columns.count(target)) {
+      throw OptionError(
+          fmt::format("--unit {}", target),
+          fmt::format("a further channel needs its column too: --map {}=COLUMN", target));
     }
   }
 
+  const auto time_conv = options.conversions.find("time_s");
+  const bool stamps = time_conv != options.conversions.end() &&
+                      (time_conv->second.datetime || time_conv->second.clock);
+  std::optional<double> zero;  // the instant the stamps count from, when given
+  if (!options.time_zero.empty()) {
+    if (!stamps)
+      throw OptionError("--time-zero",
+                        "needs stamps: --unit time_s=iso8601 or --unit time_s=clock");
+    if (time_conv->second.datetime) {
+      zero = parse_datetime(options.time_zero);
+      if (!zero)
+        throw OptionError("--time-zero",
+                          fmt::format("'{}' is not a date and time (YYYY-MM-DD HH:MM[:SS[.fff]]), "
+                                      "as the time column's iso8601 stamps are",
+                                      csv::excerpt(options.time_zero)));
+    } else {
+      zero = parse_clock(options.time_zero);
+      if (!zero)
+        throw OptionError("--time-zero",
+                          fmt::format("'{}' is not a time of day (HH:MM[:SS[.fff]]), as the time "
+                                      "column's clock stamps are",
+                                      csv::excerpt(options.time_zero)));
+    }
+  }
+
+  // A spreadsheet's padding (nameless empty columns, rows of empty cells) is dropped with a note.
   const csv::Table table =
-      csv::read(path.string(), {options.delimiter, options.skip_lines, options.comment});
+      csv::read(path.string(), {options.delimiter, options.skip_lines, options.comment, true});
   const std::string& file = table.file;
+  if (report) report->notes = table.notes;
   std::string available;
   for (const auto& h : table.header) available += (available.empty() ? "'" : ", '") + h + "'";
 
@@ -230,10 +325,26 @@ std::vector<Recording> import_recordings(const std::filesystem::path& path,
         if (!seconds) {
           throw InputError(file, table.row_line[i], c + 1,
                            fmt::format("column '{}' (for {}): '{}' is not a date and time "
-                                       "(YYYY-MM-DD HH:MM:SS[.fff], T allowed, Z or ±HH:MM)",
-                                       table.header[c], target, csv::excerpt(cell)));
+                                       "(YYYY-MM-DD HH:MM[:SS[.fff]], T allowed, Z or ±HH:MM; "
+                                       "a time of day alone is --unit {}=clock)",
+                                       table.header[c], target, csv::excerpt(cell), target));
         }
         values.push_back(*seconds);
+        continue;
+      }
+      if (conv.clock) {
+        const auto seconds = parse_clock(cell);
+        if (!seconds) {
+          throw InputError(file, table.row_line[i], c + 1,
+                           fmt::format("column '{}' (for {}): '{}' is not a time of day "
+                                       "(HH:MM, HH:MM:SS or HH:MM:SS.fff; a date and time is "
+                                       "--unit {}=iso8601)",
+                                       table.header[c], target, csv::excerpt(cell), target));
+        }
+        // A log through midnight: a stamp more than 12 h before the one above is the next day.
+        double day = values.empty() ? 0.0 : std::floor(values.back() / 86400.0) * 86400.0;
+        if (!values.empty() && day + *seconds < values.back() - 43200.0) day += 86400.0;
+        values.push_back(day + *seconds);
         continue;
       }
       const auto v = csv::parse_number(cell, options.decimal_comma);
@@ -269,9 +380,14 @@ std::vector<Recording> import_recordings(const std::filesystem::path& path,
     if (options.columns.count("time_s"))
       throw OptionError("--time-from-rate-hz", "the file's time column is mapped too; give one");
   }
+  std::vector<std::string> missing;
   for (const auto& target : required_columns()) {
     if (target == "time_s" && synthetic_time) continue;
     const auto c = column_for(target);
+    if (!c && options.allow_partial && target != "time_s") {
+      missing.push_back(target);
+      continue;
+    }
     if (!c) {
       throw OptionError(
           fmt::format("--map {}=COLUMN", target),
@@ -280,9 +396,12 @@ std::vector<Recording> import_recordings(const std::filesystem::path& path,
                       file, target, available,
                       target == "time_s" ? "; a file without time stamps takes them from its "
                                            "sample rate with --time-from-rate-hz R"
-                                         : ""));
+                                         : "; a log without it (a chamber sheet, a separate "
+                                           "thermometer logger) imports with --partial and is "
+                                           "joined into a recording with 'fogdrift join'"));
     }
   }
+  if (report) report->missing = missing;
   if (table.rows.size() < 2) {
     throw InputError(
         file, 0, 0,
@@ -294,21 +413,39 @@ std::vector<Recording> import_recordings(const std::filesystem::path& path,
   } else {
     rec.time_s = convert("time_s", *column_for("time_s"));
   }
-  rec.gyro_dph = convert("gyro_dph", *column_for("gyro_dph"));
-  rec.temp_fog_degc = convert("temp_fog_degc", *column_for("temp_fog_degc"));
+  rec.partial = !missing.empty();
+  if (const auto c = column_for("gyro_dph")) rec.gyro_dph = convert("gyro_dph", *c);
+  if (const auto c = column_for("temp_fog_degc")) rec.temp_fog_degc = convert("temp_fog_degc", *c);
   for (const auto& name : optional_columns())  // the second and third thermometers among them
     if (auto c = column_for(name)) *known_column(rec, name, true) = convert(name, *c);
 
+  // Further channels (another gyro axis, thermometer or accelerometer): numbers in their units.
+  for (const auto& [target, source] : options.columns) {
+    if (!is_channel_column(target)) continue;
+    ExtraColumn channel{target, {}};
+    for (double v : convert(target, *column_for(target)))
+      channel.cells.push_back(csv::format_number(v));
+    rec.extra.push_back(std::move(channel));
+  }
   if (options.keep_extra) {
     for (std::size_t c = 0; c < table.header.size(); ++c) {
       if (used.count(c)) continue;
       ExtraColumn extra;
-      extra.name =
-          is_fogdrift_column(table.header[c]) ? "source_" + table.header[c] : table.header[c];
+      extra.name = is_fogdrift_column(table.header[c]) || options.columns.count(table.header[c])
+                       ? "source_" + table.header[c]
+                       : table.header[c];
       extra.cells.reserve(table.rows.size());
       for (const auto& row : table.rows) extra.cells.push_back(row[c]);
       rec.extra.push_back(std::move(extra));
     }
+  }
+
+  if (rec.partial && rec.temp_fog_degc.empty() && rec.gyro_dph.empty() && rec.extra.empty() &&
+      std::none_of(optional_columns().begin(), optional_columns().end(),
+                   [&](const std::string& name) { return known_column(rec, name) != nullptr; })) {
+    throw OptionError(
+        "--partial",
+        fmt::format("{} has no column to join besides the time (columns: {})", file, available));
   }
 
   // Power cycles: a time smaller than the one before starts a new recording.
@@ -328,8 +465,13 @@ std::vector<Recording> import_recordings(const std::filesystem::path& path,
   }
   starts.push_back(rec.time_s.size());
 
-  const auto time_conv = options.conversions.find("time_s");
-  const bool stamps = time_conv != options.conversions.end() && time_conv->second.datetime;
+  if (zero && time_conv->second.clock) {
+    // The time of day within 12 h of the first stamp (a zero just before midnight, or after).
+    const double first = rec.time_s.front();
+    *zero += std::floor(first / 86400.0) * 86400.0;
+    if (*zero < first - 43200.0) *zero += 86400.0;
+    if (*zero > first + 43200.0) *zero -= 86400.0;
+  }
   std::vector<Recording> cycles;
   for (std::size_t k = 0; k + 1 < starts.size(); ++k) {
     const std::size_t first = starts[k];
@@ -341,7 +483,8 @@ std::vector<Recording> import_recordings(const std::filesystem::path& path,
     if (options.outliers) {
       std::vector<std::string> columns = options.outlier_columns;
       if (columns.empty()) {
-        columns = {"gyro_dph", "temp_fog_degc"};
+        for (const char* name : {"gyro_dph", "temp_fog_degc"})
+          if (!known_column(cycle, name)->empty()) columns.emplace_back(name);
         if (!cycle.temp_acc1_degc.empty()) columns.emplace_back("temp_acc1_degc");
         if (!cycle.temp_acc2_degc.empty()) columns.emplace_back("temp_acc2_degc");
       }
@@ -350,7 +493,7 @@ std::vector<Recording> import_recordings(const std::filesystem::path& path,
         // A signal the cycle has: not the time or the turntable position.
         std::vector<double>* x =
             name == "time_s" || name == "table_deg" ? nullptr : known_column(cycle, name);
-        if (!x) {
+        if (!x || x->empty()) {
           throw OptionError("--outlier-columns",
                             fmt::format("'{}' is not a signal column of {} (gyro_dph, "
                                         "temp_*_degc, and chamber_degc or accel_*_g when present)",
@@ -376,13 +519,15 @@ std::vector<Recording> import_recordings(const std::filesystem::path& path,
       }
     }
     if (options.time_from_zero || stamps) {  // dates and times count from the first stamp
-      const double t0 = cycle.time_s.front();
+      const double t0 = zero ? *zero : cycle.time_s.front();
       for (double& t : cycle.time_s) t -= t0;
     }
-    if (cycle.time_s.front() < 0.0) {
+    if (cycle.time_s.front() < 0.0 && !cycle.partial) {
       throw InputError(file, table.row_line[first], time_col,
-                       "time is negative after conversion (use --time-from-zero for loggers "
-                       "that do not count from power-on)");
+                       zero ? "the first stamp is before --time-zero; a recording's time counts "
+                              "from power-on (only a log to join, --partial, may start before)"
+                            : "time is negative after conversion (use --time-from-zero for "
+                              "loggers that do not count from power-on)");
     }
     validate(cycle);
     cycles.push_back(std::move(cycle));

@@ -50,9 +50,9 @@ bool is_known(std::string_view name) {
 }
 
 void check_time(const std::vector<double>& time_s, const std::string& file,
-                const std::vector<std::size_t>* lines, std::size_t column) {
+                const std::vector<std::size_t>* lines, std::size_t column, bool partial) {
   auto line_of = [&](std::size_t i) { return lines ? (*lines)[i] : i + 2; };
-  if (!time_s.empty() && time_s[0] < 0.0) {
+  if (!partial && !time_s.empty() && time_s[0] < 0.0) {
     throw InputError(file, line_of(0), column,
                      fmt::format("time_s = {} is negative (time is seconds since power-on)",
                                  csv::format_number(time_s[0])));
@@ -127,16 +127,20 @@ std::vector<double> Recording::numeric_column(std::string_view name) const {
   throw std::out_of_range(fmt::format("{}: no column '{}'", source, name));
 }
 
-Recording read_recording(const std::filesystem::path& path) {
+namespace {
+
+Recording read_table(const std::filesystem::path& path, bool partial) {
   const csv::Table table = csv::read(path.string());
   const std::string& file = table.file;
   for (const auto& name : required_columns()) {
+    if (partial && name != "time_s") continue;
     if (!table.find(name)) {
       throw InputError(file, 1, 0,
                        fmt::format("missing required column '{}' (required: time_s, gyro_dph, "
                                    "temp_fog_degc; temp_acc1_degc and temp_acc2_degc when the "
                                    "unit has them; use 'fogdrift import' for other names or "
-                                   "units)",
+                                   "units, and 'fogdrift join' to add columns from a log of "
+                                   "their own)",
                                    name));
     }
   }
@@ -148,6 +152,7 @@ Recording read_recording(const std::filesystem::path& path) {
 
   Recording rec;
   rec.source = path.string();
+  rec.partial = partial;
   const std::size_t n = table.rows.size();
   for (std::size_t c = 0; c < table.header.size(); ++c) {
     const std::string& name = table.header[c];
@@ -183,7 +188,7 @@ Recording read_recording(const std::filesystem::path& path) {
       rec.extra.push_back(std::move(extra));
     }
   }
-  check_time(rec.time_s, file, &table.row_line, *table.find("time_s") + 1);
+  check_time(rec.time_s, file, &table.row_line, *table.find("time_s") + 1, partial);
   // The simulator's true drift is the one extra column fogdrift computes with (the floor of
   // northfind and paper): it must be numbers from the start, not when it is first used.
   if (const auto c = table.find("drift_true_dph")) {
@@ -196,6 +201,23 @@ Recording read_recording(const std::filesystem::path& path) {
   return rec;
 }
 
+}  // namespace
+
+Recording read_recording(const std::filesystem::path& path) {
+  return read_table(path, false);
+}
+
+Recording read_log(const std::filesystem::path& path) {
+  return read_table(path, true);
+}
+
+std::vector<std::string> missing_required(const Recording& r) {
+  std::vector<std::string> missing;
+  for (const auto& name : required_columns())
+    if (known_column(r, name)->empty()) missing.push_back(name);
+  return missing;
+}
+
 Recording slice(const Recording& r, std::size_t begin, std::size_t end) {
   if (begin > end || end > r.size()) throw std::out_of_range("slice: range outside the recording");
   const auto b = static_cast<std::ptrdiff_t>(begin), e = static_cast<std::ptrdiff_t>(end);
@@ -203,7 +225,7 @@ Recording slice(const Recording& r, std::size_t begin, std::size_t end) {
   for (const auto* names : {&required_columns(), &optional_columns()}) {
     for (const auto& name : *names) {
       const std::vector<double>* col = known_column(r, name);  // absent stays absent
-      if (col)
+      if (col && !col->empty())
         *known_column(out, name, true) = std::vector<double>(col->begin() + b, col->begin() + e);
     }
   }
@@ -211,6 +233,7 @@ Recording slice(const Recording& r, std::size_t begin, std::size_t end) {
     out.extra.push_back(
         {x.name, std::vector<std::string>(x.cells.begin() + b, x.cells.begin() + e)});
   out.source = r.source;
+  out.partial = r.partial;
   return out;
 }
 
@@ -234,7 +257,11 @@ void validate(const Recording& r) {
                          fmt::format("column '{}': value {} {}", name, col[i], range->rule));
     }
   };
-  for (const auto& name : required_columns()) check(name, *known_column(r, name));
+  for (const auto& name : required_columns()) {
+    const std::vector<double>& col = *known_column(r, name);
+    if (r.partial && name != "time_s" && col.empty()) continue;  // a log to join may lack it
+    check(name, col);
+  }
   for (const auto& name : optional_columns()) {
     if (const auto* col = known_column(r, name)) check(name, *col);
   }
@@ -248,13 +275,14 @@ void validate(const Recording& r) {
           fmt::format("column '{}' has {} values but time_s has {}", e.name, e.cells.size(), n));
     }
   }
-  check_time(r.time_s, file, nullptr, 0);
+  check_time(r.time_s, file, nullptr, 0, r.partial);
 }
 
 std::string to_csv(const Recording& r) {
   validate(r);
   std::vector<std::pair<std::string, const std::vector<double>*>> numeric;
-  for (const auto& name : required_columns()) numeric.emplace_back(name, known_column(r, name));
+  for (const auto& name : required_columns())
+    if (!known_column(r, name)->empty()) numeric.emplace_back(name, known_column(r, name));
   for (const auto& name : optional_columns()) {
     if (const auto* col = known_column(r, name)) numeric.emplace_back(name, col);
   }

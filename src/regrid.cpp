@@ -7,6 +7,7 @@
 #include <functional>
 #include <string>
 
+#include "fogdrift/csv.hpp"
 #include "fogdrift/enum_names.hpp"
 #include "fogdrift/error.hpp"
 
@@ -19,12 +20,34 @@ constexpr std::array<EnumName<RegridMethod>, 3> kRegridMethodNames = {
      {RegridMethod::linear, "linear"}}};
 
 /// The columns a grid averages or interpolates: every numeric column the recording has but the
-/// time and the turntable position (which takes a sample's value, regrid.hpp).
-std::vector<std::string> signal_columns(const Recording& r) {
+/// time and the turntable position (which takes a sample's value, regrid.hpp), known columns
+/// first; their values in `numbers` (known columns point into the recording, extras into
+/// `parsed`). An extra column with a cell that is not a number is text and is left out.
+std::vector<std::string> signal_columns(const Recording& r,
+                                        std::vector<const std::vector<double>*>& numbers,
+                                        std::vector<std::vector<double>>& parsed) {
   std::vector<std::string> out;
   for (const auto* names : {&required_columns(), &optional_columns()})
-    for (const auto& name : *names)
-      if (name != "time_s" && name != "table_deg" && known_column(r, name)) out.push_back(name);
+    for (const auto& name : *names) {
+      const std::vector<double>* col = known_column(r, name);
+      if (name == "time_s" || name == "table_deg" || !col || col->empty()) continue;
+      out.push_back(name);
+      numbers.push_back(col);
+    }
+  parsed.reserve(r.extra.size());  // stable addresses for `numbers`
+  for (const ExtraColumn& e : r.extra) {
+    std::vector<double> values;
+    values.reserve(e.cells.size());
+    for (const std::string& cell : e.cells) {
+      const auto v = csv::parse_number(cell);
+      if (!v) break;
+      values.push_back(*v);
+    }
+    if (values.size() != e.cells.size()) continue;
+    parsed.push_back(std::move(values));
+    out.push_back(e.name);
+    numbers.push_back(&parsed.back());
+  }
   return out;
 }
 
@@ -52,7 +75,12 @@ std::vector<Recording> fill(const std::vector<std::vector<GridPoint>>& segments,
   for (const auto& seg : segments) {
     Recording r;
     std::vector<std::vector<double>*> cols;
-    for (const auto& name : src.names) cols.push_back(known_column(r, name, true));
+    std::vector<std::vector<double>> extras;  // numeric extra columns, written as text below
+    extras.reserve(src.names.size());
+    for (const auto& name : src.names) {
+      std::vector<double>* col = known_column(r, name, true);
+      cols.push_back(col ? col : &extras.emplace_back());
+    }
     if (src.table) r.table_deg.emplace();
     for (const GridPoint& p : seg) {
       r.time_s.push_back(static_cast<double>(p.k) * h);
@@ -61,6 +89,14 @@ std::vector<Recording> fill(const std::vector<std::vector<GridPoint>>& segments,
         cols[c]->push_back(p.exact ? x[p.i] : x[p.i] + p.w * (x[p.i + 1] - x[p.i]));
       }
       if (src.table) r.table_deg->push_back(src.table(p));
+    }
+    for (std::size_t c = 0, x = 0; c < src.names.size() && x < extras.size(); ++c) {
+      if (cols[c] != &extras[x]) continue;  // a known column
+      ExtraColumn e{src.names[c], {}};
+      e.cells.reserve(extras[x].size());
+      for (double v : extras[x]) e.cells.push_back(csv::format_number(v));
+      r.extra.push_back(std::move(e));
+      ++x;
     }
     out.push_back(std::move(r));
   }
@@ -109,7 +145,7 @@ RegridResult regrid(const Recording& rec, const RegridOptions& options) {
   s.method = options.method != RegridMethod::automatic ? options.method
              : s.input_median_step_s <= 0.5 * h        ? RegridMethod::mean
                                                        : RegridMethod::linear;
-  for (const auto& e : rec.extra) s.dropped_columns.push_back(e.name);
+
   for (std::size_t j = 0; j + 1 < n; ++j) {
     const double step = t[j + 1] - t[j];
     if (step <= 1.5 * s.input_median_step_s)
@@ -124,7 +160,12 @@ RegridResult regrid(const Recording& rec, const RegridOptions& options) {
   };
 
   Source src;
-  src.names = signal_columns(rec);
+  std::vector<const std::vector<double>*> numbers;
+  std::vector<std::vector<double>> parsed_extras;
+  src.names = signal_columns(rec, numbers, parsed_extras);
+  for (const auto& e : rec.extra)
+    if (std::find(src.names.begin(), src.names.end(), e.name) == src.names.end())
+      s.dropped_columns.push_back(e.name);
   // The mean method's bins (in time order: consecutive samples with the same k = round(t / h)),
   // their means, and the samples that give their turntable positions.
   struct Bin {
@@ -142,7 +183,7 @@ RegridResult regrid(const Recording& rec, const RegridOptions& options) {
       ++bins.back().count;
     }
     for (std::size_t c = 0; c < src.names.size(); ++c) {
-      const std::vector<double>& x = *known_column(rec, src.names[c]);
+      const std::vector<double>& x = *numbers[c];
       for (const Bin& bin : bins) {
         double sum = 0;
         for (std::size_t j = bin.first; j < bin.first + bin.count; ++j) sum += x[j];
@@ -188,7 +229,7 @@ RegridResult regrid(const Recording& rec, const RegridOptions& options) {
     }
   } else {
     // Linear: gaps are input steps longer than 1.5 × the median step.
-    for (const auto& name : src.names) src.values.push_back(known_column(rec, name));
+    src.values = numbers;
     if (rec.table_deg)
       src.table = [&](const GridPoint& p) { return (*rec.table_deg)[p.w < 0.5 ? p.i : p.i + 1]; };
     const double gap_step = 1.5 * s.input_median_step_s;
@@ -227,6 +268,7 @@ RegridResult regrid(const Recording& rec, const RegridOptions& options) {
       continue;
     }
     seg.source = rec.source;
+    seg.partial = rec.partial;
     s.output_samples += seg.size();
     kept.push_back(std::move(seg));
   }

@@ -113,8 +113,10 @@ TEST(ParseDatetime, AgainstPythonsDatetime) {
   // 12:34:56.5 at +02:00 is 10:34:56.5 UTC on a leap day.
   EXPECT_EQ(parse_datetime("2024-02-29T12:34:56.5+02:00"), 1709202896.5);
   EXPECT_EQ(parse_datetime(" 2024-02-29 10:34:56,500 "), 1709202896.5);
-  for (const char* bad : {"2024-02-29", "2024-13-01 00:00:00", "2024-02-29 10:34", "yesterday",
-                          "2024-02-29 10:34:56.", "2024-02-29 10:34:56+2"})
+  EXPECT_EQ(parse_datetime("2024-02-29 10:34"), 1709202840.0);  // seconds left out: :00
+  for (const char* bad :
+       {"2024-02-29", "2024-13-01 00:00:00", "2024-02-29 10:3", "yesterday", "2024-02-29 10:34:5",
+        "2024-02-29 10:34.5", "2024-02-29 10:34:56.", "2024-02-29 10:34:56+2"})
     EXPECT_FALSE(parse_datetime(bad).has_value()) << bad;
 }
 
@@ -224,6 +226,119 @@ TEST(Import, BadRegistersStampsAndCyclesNameTheirCell) {
   o.columns["time_s"] = "g";
   test::write_file(dir / "both.csv", "g,t\n0,100\n0,100\n");
   EXPECT_THROW(import_recording(dir / "both.csv", o), OptionError);
+}
+
+TEST(ParseClock, TimesOfDayAgainstHandComputedSeconds) {
+  EXPECT_DOUBLE_EQ(*parse_clock("15:45"), 15 * 3600.0 + 45 * 60.0);
+  EXPECT_DOUBLE_EQ(*parse_clock("7:05"), 7 * 3600.0 + 5 * 60.0);
+  EXPECT_DOUBLE_EQ(*parse_clock(" 00:00:30 "), 30.0);
+  EXPECT_DOUBLE_EQ(*parse_clock("23:59:59.25"), 86399.25);
+  for (const char* bad : {"", "15", "15:4", "24:00", "12:60", "12:00:61", "12:00:00.", "1545",
+                          "12:00 PM", "2020-03-07 15:45"})
+    EXPECT_FALSE(parse_clock(bad).has_value()) << bad;
+  // A date and time without seconds, as spreadsheets write it.
+  EXPECT_DOUBLE_EQ(*parse_datetime("2020-03-07 15:45") - *parse_datetime("2020-03-07 15:44:30"),
+                   30.0);
+  EXPECT_DOUBLE_EQ(*parse_datetime("2020-03-07T15:45Z"), *parse_datetime("2020-03-07 15:45:00"));
+}
+
+// A chamber sheet as a test house keeps it: HH:MM every 5 minutes through midnight, thermometers
+// in °F, a BOM, trailing empty columns and rows, and no gyro.
+constexpr const char* kSheet =
+    "\xEF\xBB\xBFTime,Case (F),Air (C),,\n"
+    "23:50,68.0,20.0,,\n"
+    "23:55,69.8,21.0,,\n"
+    "00:00,71.6,22.0,,\n"
+    "00:05,73.4,23.0,,\n"
+    ",,,,\n";
+
+TEST(Import, AChamberSheetBecomesALogToJoin) {
+  test::TempDir dir;
+  test::write_file(dir / "sheet.csv", kSheet);
+  ImportOptions o;
+  o.columns = {{"time_s", "Time"}, {"temp_acc1_degc", "Case (F)"}, {"chamber_degc", "Air (C)"}};
+  o.conversions = {{"time_s", parse_unit("time_s", "clock")},
+                   {"temp_acc1_degc", parse_unit("temp_acc1_degc", "degF")}};
+  try {
+    import_recording(dir / "sheet.csv", o);
+    FAIL() << "a sheet without a gyro is refused unless it is a log to join";
+  } catch (const OptionError& e) {
+    EXPECT_EQ(e.option(), "--map gyro_dph=COLUMN");
+    EXPECT_NE(std::string(e.what()).find("--partial"), std::string::npos) << e.what();
+  }
+  o.allow_partial = true;
+  o.time_zero = "23:57";  // the unit's power-on, on the same clock
+  ImportReport report;
+  const Recording sheet = import_recording(dir / "sheet.csv", o, &report);
+  EXPECT_TRUE(sheet.partial);
+  EXPECT_TRUE(sheet.gyro_dph.empty());
+  EXPECT_EQ(report.missing, (std::vector<std::string>{"gyro_dph", "temp_fog_degc"}));
+  ASSERT_EQ(report.notes.size(), 2u);
+  EXPECT_EQ(report.notes[0], "dropped 2 empty column(s) with no name (column 4, 5)");
+  // Through midnight, counted from 23:57: -7, -2, 3 and 8 minutes.
+  EXPECT_EQ(sheet.time_s, (std::vector<double>{-420.0, -120.0, 180.0, 480.0}));
+  EXPECT_NEAR(sheet.temp_acc1_degc[1], 21.0, 1e-12);  // 69.8 °F
+  EXPECT_EQ(*sheet.chamber_degc, (std::vector<double>{20.0, 21.0, 22.0, 23.0}));
+  // Written and read back as a log; a recording reader refuses it and names join.
+  write_recording(dir / "sheet_fd.csv", sheet);
+  EXPECT_EQ(read_log(dir / "sheet_fd.csv").time_s, sheet.time_s);
+  try {
+    read_recording(dir / "sheet_fd.csv");
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("fogdrift join"), std::string::npos) << e.what();
+  }
+}
+
+TEST(Import, TimeZeroIsValidatedAndAWholeRecordingMayNotStartBeforeIt) {
+  test::TempDir dir;
+  test::write_file(dir / "unit.csv",
+                   "stamp,rate,t\n2020-03-07 15:41:00,1,20\n2020-03-07 15:41:01,1,20\n");
+  ImportOptions o;
+  o.columns = {{"time_s", "stamp"}, {"gyro_dph", "rate"}, {"temp_fog_degc", "t"}};
+  o.conversions = {{"time_s", parse_unit("time_s", "iso8601")}};
+  o.time_zero = "2020-03-07 15:40:50";
+  EXPECT_EQ(import_recording(dir / "unit.csv", o).time_s, (std::vector<double>{10.0, 11.0}));
+  o.time_zero = "15:40:50";  // a time of day for date-and-time stamps
+  EXPECT_THROW(import_recording(dir / "unit.csv", o), OptionError);
+  o.time_zero = "2020-03-07 15:41:00.5";  // after the first stamp: negative time
+  try {
+    import_recording(dir / "unit.csv", o);
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.line(), 2u);
+    EXPECT_NE(std::string(e.what()).find("--time-zero"), std::string::npos) << e.what();
+  }
+  o.conversions.clear();
+  o.time_zero = "15:40";
+  EXPECT_THROW(import_recording(dir / "unit.csv", o), OptionError);  // stamps read as numbers
+}
+
+TEST(Import, FurtherGyroAxesAndThermometersAreMappedWithTheirUnits) {
+  test::TempDir dir;
+  test::write_file(dir / "imu.csv",
+                   "ms,gx,gy,gz,t\n0,0.001,0.002,-0.5,20\n20,0.001,0.004,-0.25,20\n");
+  ImportOptions o;
+  o.columns = {{"time_s", "ms"},
+               {"gyro_dph", "gx"},
+               {"gyro_y_dph", "gy"},
+               {"gyro_z_dph", "gz"},
+               {"temp_fog_degc", "t"}};
+  o.conversions = {{"time_s", parse_unit("time_s", "ms")},
+                   {"gyro_dph", parse_unit("gyro_dph", "deg/s")},
+                   {"gyro_y_dph", parse_unit("gyro_y_dph", "deg/s")},
+                   {"gyro_z_dph", parse_unit("gyro_z_dph", "rad/s")}};
+  const Recording r = import_recording(dir / "imu.csv", o);
+  EXPECT_EQ(r.numeric_column("gyro_y_dph"), (std::vector<double>{7.2, 14.4}));
+  const double rad = 180.0 / std::numbers::pi * 3600.0;
+  EXPECT_NEAR(r.numeric_column("gyro_z_dph")[1], -0.25 * rad, 1e-9);
+  ASSERT_EQ(r.extra.size(), 2u);  // the mapped columns are not kept twice
+  for (const char* bad : {"gyro_y", "Gyro_Y_dph", "gyro__dph", "temp_degc", "gyro_y_degc"})
+    EXPECT_THROW(parse_unit(bad, "deg/s"), OptionError) << bad;
+  EXPECT_NO_THROW(parse_unit("temp_tc3_degc", "degF"));
+  EXPECT_THROW(parse_unit("temp_tc3_degc", "deg/s"), OptionError);        // not a temperature unit
+  o.conversions["temp_board_degc"] = parse_unit("temp_board_degc", "K");  // unit, no --map
+  EXPECT_THROW(import_recording(dir / "imu.csv", o), OptionError);
 }
 
 }  // namespace

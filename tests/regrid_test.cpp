@@ -5,6 +5,7 @@
 #include <cmath>
 #include <random>
 
+#include "fogdrift/csv.hpp"
 #include "fogdrift/error.hpp"
 
 namespace fogdrift {
@@ -76,6 +77,11 @@ TEST(Regrid, BurstsBecomeTheirMeans) {
     means.push_back(sum / 250);
   }
   rec.extra.push_back({"status", std::vector<std::string>(rec.size(), "OK")});
+  // A second gyro axis as numbers: carried onto the grid like gyro_dph, as a burst mean.
+  std::vector<std::string> gyro_y;
+  for (std::size_t i = 0; i < rec.size(); ++i)
+    gyro_y.push_back(csv::format_number(2.0 * rec.gyro_dph[i] - 1.0));
+  rec.extra.push_back({"gyro_y_dph", gyro_y});
   const RegridResult r = regrid(rec, {305.0});
   EXPECT_EQ(r.summary.method, RegridMethod::mean);
   ASSERT_EQ(r.segments.size(), 1u);
@@ -87,6 +93,30 @@ TEST(Regrid, BurstsBecomeTheirMeans) {
     EXPECT_NEAR(out.time_s[b], 305.0 * static_cast<double>(b), 1e-9);
   }
   EXPECT_EQ(r.summary.dropped_columns, std::vector<std::string>{"status"});
+  ASSERT_EQ(out.extra.size(), 1u);
+  EXPECT_EQ(out.extra[0].name, "gyro_y_dph");
+  for (std::size_t b = 0; b < 10; ++b)
+    EXPECT_NEAR(*csv::parse_number(out.extra[0].cells[b]), 2.0 * means[b] - 1.0, 1e-12);
+}
+
+TEST(Regrid, PutsALogWithoutAGyroOnTheGrid) {
+  // A chamber sheet read every 300 s from 60 s before power-on: no gyro, no FOG thermometer.
+  Recording sheet;
+  sheet.partial = true;
+  sheet.source = "sheet.csv";
+  sheet.chamber_degc.emplace();
+  for (int i = 0; i < 5; ++i) {
+    sheet.time_s.push_back(-60.0 + 300.0 * i);
+    sheet.chamber_degc->push_back(20.0 + i);
+  }
+  const RegridResult r = regrid(sheet, {60.0});
+  ASSERT_EQ(r.segments.size(), 1u);
+  const Recording& out = r.segments[0];
+  EXPECT_TRUE(out.partial);
+  EXPECT_TRUE(out.gyro_dph.empty());
+  EXPECT_DOUBLE_EQ(out.time_s.front(), -60.0);
+  ASSERT_EQ(out.size(), 21u);
+  EXPECT_NEAR((*out.chamber_degc)[1], 20.2, 1e-12);  // t = 0, a fifth of the way to 21 °C
 }
 
 TEST(Regrid, BridgesShortGapsAndSplitsAtLongOnes) {

@@ -29,6 +29,13 @@ std::vector<std::string> split_list(const std::string& text) {
   return out;
 }
 
+std::filesystem::path piece_path(const std::filesystem::path& target, std::size_t index,
+                                 std::size_t count) {
+  if (count == 1) return target;
+  return target.parent_path() /
+         fmt::format("{}_{}{}", target.stem().string(), index + 1, target.extension().string());
+}
+
 std::vector<double> parse_number_list(const std::string& text, const std::string& option) {
   std::vector<double> values;
   for (const std::string& item : split_list(text)) {

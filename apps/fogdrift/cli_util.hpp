@@ -1,6 +1,7 @@
 // Small helpers shared by the subcommands: parsing lists, reading files, terminal detection.
 #pragma once
 
+#include <filesystem>
 #include <functional>
 #include <map>
 #include <string>
@@ -17,6 +18,11 @@ namespace fogdrift::app {
 
 /// "a,b,c" -> {"a", "b", "c"} (an empty text is one empty item).
 std::vector<std::string> split_list(const std::string& text);
+
+/// The output path of piece `index` of `count` a command splits its result into: out.csv itself
+/// for one piece, else out_1.csv, out_2.csv, ...
+std::filesystem::path piece_path(const std::filesystem::path& target, std::size_t index,
+                                 std::size_t count);
 
 /// "-40,-30,25" -> {-40, -30, 25}; throws OptionError naming `option` on a bad element.
 std::vector<double> parse_number_list(const std::string& text, const std::string& option);

@@ -1,5 +1,6 @@
 // fogdrift import: turn a foreign logger CSV into a fogdrift recording.
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <algorithm>
 #include <cmath>
@@ -32,6 +33,8 @@ struct ImportArgs {
   bool drop_extra = false;
   std::size_t skip_lines = 0;
   double time_from_rate_hz = 0;
+  std::string time_zero;
+  bool partial = false;
   std::string comment;
   bool hold_empty = false;
   bool split_at_reset = false;
@@ -46,15 +49,14 @@ struct ImportArgs {
   bool quiet = false;
 };
 
-/// out.csv -> out_1.csv, out_2.csv, ... for the segments of a split recording.
-fs::path segment_path(const fs::path& target, std::size_t index, std::size_t count) {
-  if (count == 1) return target;
-  return target.parent_path() /
-         fmt::format("{}_{}{}", target.stem().string(), index + 1, target.extension().string());
-}
-
 /// How import treated one file, for people: spikes, grid, gaps and segments.
 void report(const ImportReport& imported, const std::vector<RegridSummary>& grids) {
+  for (const std::string& note : imported.notes) std::cout << fmt::format("  note: {}\n", note);
+  if (!imported.missing.empty())
+    std::cout << fmt::format(
+        "  a log to join: it has no {}; 'fogdrift join RECORDING LOG -o OUT' brings its columns "
+        "into a recording by time\n",
+        fmt::join(imported.missing, " and no "));
   for (const auto& [column, count] : imported.held)
     std::cout << fmt::format("  empty cells: {} in {} took the value before\n", count, column);
   for (const auto& r : imported.outliers) {
@@ -129,7 +131,8 @@ void add_import(CLI::App& app) {
       "  fogdrift import run7.csv -o run7_fd.csv --map time_s=\"t [ms]\" --unit time_s=ms \\\n"
       "    --map gyro_dph=\"Rate X [rad/s]\" --unit gyro_dph=rad/s \\\n"
       "    --map temp_fog_degc=T0 --unit temp_fog_degc=counts:0.0625:-40 ...\n"
-      "Units: time_s s|ms|us|iso8601; gyro_dph deg/h|deg/s|rad/s|mrad/s|arcsec/s; temperatures\n"
+      "Units: time_s s|ms|us|iso8601|clock; gyro_dph deg/h|deg/s|rad/s|mrad/s|arcsec/s; "
+      "temperatures\n"
       "degC|K|degF; accel_*_g g|mg|m/s2; table_deg deg|rad; any column counts:SCALE:OFFSET\n"
       "(value = counts·SCALE + OFFSET) or intN:SCALE:OFFSET (a signed register, also when logged\n"
       "as its unsigned bit pattern).\n"
@@ -155,6 +158,14 @@ void add_import(CLI::App& app) {
       ->capture_default_str();
   cmd->add_option("--time-from-rate-hz", a->time_from_rate_hz,
                   "The file has no time column: time_s = row index / this rate, Hz");
+  cmd->add_option("--time-zero", a->time_zero,
+                  "With --unit time_s=iso8601 or clock: time_s counts from this instant (e.g. "
+                  "the unit's power-on, '2020-03-07 15:41:07' or '15:41:07') instead of from the "
+                  "first stamp, so that logs of one test share a time axis");
+  cmd->add_flag("--partial", a->partial,
+                "The file lacks gyro_dph or temp_fog_degc (a chamber sheet, a thermometer "
+                "logger): write it as a log to join into a recording with 'fogdrift join'; its "
+                "time may start before --time-zero");
   cmd->add_option("--comment", a->comment,
                   "Lines starting with this character are comments, skipped (e.g. '#')");
   cmd->add_flag("--hold-empty", a->hold_empty,
@@ -207,6 +218,8 @@ void add_import(CLI::App& app) {
     o.split_at_reset = a->split_at_reset;
     o.skip_lines = a->skip_lines;
     o.time_from_rate_hz = a->time_from_rate_hz;
+    o.time_zero = a->time_zero;
+    o.allow_partial = a->partial;
     o.hold_empty = a->hold_empty;
     if (a->comment.size() > 1)
       throw OptionError("--comment", fmt::format("'{}' is not a single character", a->comment));
@@ -278,7 +291,7 @@ void add_import(CLI::App& app) {
     }
     for (const auto& c : converted) {
       for (std::size_t k = 0; k < c.segments.size(); ++k) {
-        const fs::path path = segment_path(c.target, k, c.segments.size());
+        const fs::path path = piece_path(c.target, k, c.segments.size());
         write_recording(path, c.segments[k]);
         if (!a->quiet)
           std::cout << fmt::format("{} -> {} ({} samples, {:.6g} .. {:.6g} s)\n",
@@ -286,7 +299,8 @@ void add_import(CLI::App& app) {
                                    c.segments[k].time_s.front(), c.segments[k].time_s.back());
       }
       if (!a->quiet) report(c.report, c.grids);
-      if (!a->quiet && c.grids.empty() && !is_uniformly_sampled(c.segments.front()))
+      if (!a->quiet && c.grids.empty() && !c.segments.front().partial &&
+          !is_uniformly_sampled(c.segments.front()))
         std::cout << "  note: the time steps are not uniform (within 1 %); train needs that: "
                      "import again with --rate-hz R\n";
     }

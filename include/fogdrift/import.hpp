@@ -3,7 +3,8 @@
 // Real loggers name their columns their own way and log rates in rad/s or °/s, time in ms, and
 // temperatures as raw sensor counts. Every conversion here is linear, value = raw·scale + offset,
 // and is given per fogdrift column by a unit name (docs/formats.md lists them all):
-//   time_s          s | ms | us | iso8601 (date and time, counted from the first stamp)
+//   time_s          s | ms | us | iso8601 (date and time) | clock (time of day, HH:MM[:SS[.f]]),
+//                   counted from the first stamp or from ImportOptions::time_zero
 //   gyro_dph        deg/h | deg/s | rad/s | mrad/s | arcsec/s
 //   temp_*_degc, chamber_degc   degC | K | degF
 //   any column      counts:SCALE:OFFSET (value = counts·SCALE + OFFSET in the column's unit)
@@ -11,6 +12,10 @@
 //                     32, logged signed or as its unsigned bit pattern)
 //   accel_*_g       g | mg | m/s2
 //   table_deg       deg | rad
+// Besides fogdrift's own columns, a unit's further channels are mapped by names that say what they
+// are: gyro_NAME_dph (another gyro axis, rate units), temp_NAME_degc (another thermometer) and
+// accel_NAME_g. They are kept as numeric extra columns, in fogdrift units, and put on a grid like
+// the known ones (regrid.hpp).
 #pragma once
 
 #include <filesystem>
@@ -32,19 +37,26 @@ struct LinearConversion {
   double offset = 0.0;
   int signed_bits = 0;    ///< 0: the raw value as it is; N: an N-bit signed register
   bool datetime = false;  ///< time_s only: an ISO 8601 date and time, read as seconds
+  /// time_s only: a time of day, read as seconds since midnight; a stamp more than 12 h before
+  /// the one above it is on the next day (a log through midnight).
+  bool clock = false;
 };
 
-/// Seconds since 1970-01-01 00:00:00 UTC of "YYYY-MM-DD[T| ]HH:MM:SS[.fraction][Z|±HH:MM]"
+/// Seconds since 1970-01-01 00:00:00 UTC of "YYYY-MM-DD[T| ]HH:MM[:SS[.fraction]][Z|±HH:MM]"
 /// (no zone: read as UTC); nothing for any other text.
 std::optional<double> parse_datetime(std::string_view text);
+
+/// Seconds since midnight of a time of day "H:MM", "HH:MM", "HH:MM:SS" or "HH:MM:SS.fraction"
+/// (hours 0-23); nothing for any other text.
+std::optional<double> parse_clock(std::string_view text);
 
 /// The conversion named by `unit` for fogdrift column `column` (e.g. "gyro_dph", "rad/s").
 /// Throws OptionError naming "--unit COLUMN=UNIT" and the units that column accepts.
 LinearConversion parse_unit(std::string_view column, std::string_view unit);
 
 struct ImportOptions {
-  /// fogdrift column -> foreign column name. A fogdrift column not in the map is taken from a
-  /// foreign column of the same name, if there is one.
+  /// fogdrift column or further channel -> foreign column name. A fogdrift column not in the map
+  /// is taken from a foreign column of the same name, if there is one.
   std::map<std::string, std::string> columns;
   /// fogdrift column -> conversion; columns not listed are already in fogdrift units.
   std::map<std::string, LinearConversion> conversions;
@@ -54,6 +66,14 @@ struct ImportOptions {
   std::size_t skip_lines = 0;   ///< lines before the header to skip (a logger's preamble)
   /// A file with no time column: time_s = row index / this rate, Hz (0: the file has time_s).
   double time_from_rate_hz = 0;
+  /// With iso8601 or clock stamps: the instant time_s counts from, in the column's form (a date
+  /// and time, or a time of day, taken within 12 h of the first stamp), instead of the first
+  /// stamp. Two logs of one test imported with the same time zero share a time axis; a log that
+  /// starts before it has negative times, which only a log to join may have.
+  std::string time_zero;
+  /// A file with no gyro column or no FOG thermometer is imported as a log to join
+  /// (Recording::partial; fogdrift join) instead of being refused.
+  bool allow_partial = false;
   char comment = 0;  ///< lines starting with this character are skipped; 0: none
   /// An empty cell in a mapped column takes the value of the row before (channels logged slower
   /// than the others); without this it is an error.
@@ -81,6 +101,10 @@ struct ImportReport {
   std::vector<Replaced> outliers;  ///< one entry per column looked at, in outlier_columns order
   /// With hold_empty: per fogdrift column, the number of empty cells that took the value before.
   std::map<std::string, std::size_t> held;
+  /// What the CSV reading dropped (a spreadsheet's empty columns and rows), one sentence each.
+  std::vector<std::string> notes;
+  /// With allow_partial: the required columns the file lacks (the log is then one to join).
+  std::vector<std::string> missing;
 };
 
 /// Reads the foreign file `path` and returns a validated recording. Throws InputError naming the

@@ -40,6 +40,11 @@ struct Recording {
   std::vector<ExtraColumn> extra;
   /// Where the recording was read from (for messages); empty for one made in memory.
   std::string source;
+  /// A log to join into a recording (docs/logs.md, "Temperatures from another file"), such as a
+  /// chamber sheet: gyro_dph and temp_fog_degc may be absent (empty) and time may be negative,
+  /// counted from an instant the user chose. Made by import and read_log(); read_recording()
+  /// never makes one.
+  bool partial = false;
 
   std::size_t size() const { return time_s.size(); }
 
@@ -68,6 +73,14 @@ double median_time_step_s(const std::vector<double>& time_s);
 /// increase, a negative time, fewer than 2 samples, and every CSV-level fault of csv::read.
 Recording read_recording(const std::filesystem::path& path);
 
+/// Reads a log to join (Recording::partial): time_s is the one required column, and it may be
+/// negative; everything else read_recording() checks is checked the same way.
+Recording read_log(const std::filesystem::path& path);
+
+/// The known columns a partial log lacks of the required ones (gyro_dph, temp_fog_degc); empty
+/// for a whole recording.
+std::vector<std::string> missing_required(const Recording& recording);
+
 /// Checks the invariants read_recording() enforces on a recording built in memory (equal column
 /// lengths, finite values, strictly increasing time). Throws InputError naming `source`.
 void validate(const Recording& recording);
@@ -76,7 +89,8 @@ void validate(const Recording& recording);
 /// Throws std::out_of_range when the range is not inside the recording.
 Recording slice(const Recording& recording, std::size_t begin, std::size_t end);
 
-/// Writes the recording atomically: known columns in the canonical order, then the extras.
+/// Writes the recording atomically: known columns in the canonical order, then the extras (a
+/// partial log without the required columns it lacks).
 void write_recording(const std::filesystem::path& path, const Recording& recording);
 
 /// The recording as CSV text (what write_recording() writes).

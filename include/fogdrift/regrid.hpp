@@ -16,9 +16,10 @@
 // would invent minutes of drift the instrument never logged. Times keep their origin (seconds
 // since power-on), so a later segment starts where it was logged.
 //
-// gyro_dph, the thermometers, accel_*_g and chamber_degc are averaged or interpolated;
-// table_deg, a position rather than a signal, takes the value of the sample nearest t_k. Extra
-// columns are text and are not carried over (the summary lists them).
+// gyro_dph, the thermometers, accel_*_g, chamber_degc and every extra column that holds numbers
+// only (another gyro axis, an accelerometer, a thermometer of the unit's own) are averaged or
+// interpolated; table_deg, a position rather than a signal, takes the value of the sample nearest
+// t_k. Extra columns with text are not carried over (the summary lists them).
 #pragma once
 
 #include <cstddef>
@@ -66,7 +67,7 @@ struct RegridSummary {
   std::size_t output_samples = 0;  ///< over all kept segments
   std::vector<RegridGap> gaps;
   std::size_t dropped_segments = 0;          ///< shorter than min_segment_samples
-  std::vector<std::string> dropped_columns;  ///< extra columns not carried over
+  std::vector<std::string> dropped_columns;  ///< extra columns with text, not carried over
 };
 
 struct RegridResult {
