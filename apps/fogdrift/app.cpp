@@ -23,6 +23,7 @@ void add_commands(CLI::App& app) {
   add_simulate(app);
   add_inspect(app);
   add_import(app);
+  add_join(app);
   add_campaign(app);
   add_denoise(app);
   add_svr(app);

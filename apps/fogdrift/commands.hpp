@@ -17,6 +17,7 @@ void add_commands(CLI::App& app);
 void add_simulate(CLI::App& app);
 void add_inspect(CLI::App& app);
 void add_import(CLI::App& app);
+void add_join(CLI::App& app);
 void add_campaign(CLI::App& app);
 void add_denoise(CLI::App& app);
 void add_demo(CLI::App& app);

@@ -1,0 +1,88 @@
+#!/usr/bin/env bash
+# A three-axis IMU log and the chamber sheet kept beside it on another machine (made by
+# scripts/make_chamber_fixture.py), taken to a model with the commands of docs/logs.md,
+# "Temperatures from another file", only: every axis through the grid, the sheet's HH:MM stamps,
+# °F, spreadsheet padding and clock offset, and the messages a new user meets on the way.
+# Usage: chamber_test.sh PATH/TO/fogdrift
+set -u
+fd=$(cd "$(dirname "$1")" && pwd)/$(basename "$1")
+source "$(dirname "$0")/common.sh"
+root=$(cd "$(dirname "$0")/../.." && pwd)
+check "fixture" python3 "$root/scripts/make_chamber_fixture.py" "$work"
+check "fixture is deterministic" bash -c "mkdir '$work/again' && python3 '$root/scripts/make_chamber_fixture.py' '$work/again' && cmp -s '$work/imu3.csv' '$work/again/imu3.csv' && cmp -s '$work/sheet.csv' '$work/again/sheet.csv'"
+cd "$work" || exit 1
+
+u=int16:0.00390625:25
+imu=(--map time_s=millis --unit time_s=ms
+     --map gyro_dph=gx_dps --unit gyro_dph=deg/s
+     --map gyro_y_dph=gy_dps --unit gyro_y_dph=deg/s
+     --map gyro_z_dph=gz_dps --unit gyro_z_dph=deg/s
+     --map temp_fog_degc=temp_raw --unit temp_fog_degc=$u)
+sheet=(--map time_s=Time --unit time_s=clock
+       --map chamber_degc="Air (C)"
+       --map temp_case_degc="TC1 case (F)" --unit temp_case_degc=degF
+       --map temp_acc1_degc="TC2 far side (F)" --unit temp_acc1_degc=degF
+       --map temp_acc2_degc="TC3 plate (F)" --unit temp_acc2_degc=degF)
+
+# --- the IMU: every axis onto the grid ---------------------------------------------------------
+check "import three axes" run 0 "$fd" import imu3.csv -o imu.csv "${imu[@]}" --step-s 60
+check "bursts averaged" out_has "-> 360 samples every 60 s by mean"
+check "only the text column is left behind" out_has "not carried onto the grid (text columns): status"
+check "every axis carried" bash -c "head -1 imu.csv | grep -qx 'time_s,gyro_dph,temp_fog_degc,gyro_y_dph,gyro_z_dph'"
+check "a channel needs a telling name" run 1 "$fd" import imu3.csv -o x.csv "${imu[@]}" --map gyroY=gy_dps
+check "channel name message" err_has "nor a further channel (gyro_NAME_dph, temp_NAME_degc, accel_NAME_g"
+
+# --- the sheet: what a new user meets first ----------------------------------------------------
+check "no gyro in the sheet" run 1 "$fd" import sheet.csv -o s.csv --map time_s=Time
+check "no gyro message names --partial" err_has "imports with --partial and is joined into a recording with 'fogdrift join'"
+check "HH:MM as a date" run 1 "$fd" import sheet.csv -o s.csv --partial --map time_s=Time --unit time_s=iso8601 --map chamber_degc="Air (C)"
+check "HH:MM message names clock" err_has "'08:45' is not a date and time (YYYY-MM-DD HH:MM[:SS[.fff]], T allowed, Z or ±HH:MM; a time of day alone is --unit time_s=clock)"
+check "time zero without stamps" run 1 "$fd" import sheet.csv -o s.csv --partial --map time_s=Time --time-zero 09:12
+check "time zero message" err_has "option --time-zero: needs stamps: --unit time_s=iso8601 or --unit time_s=clock"
+check "time zero of the wrong form" run 1 "$fd" import sheet.csv -o s.csv --partial "${sheet[@]}" --time-zero "2020-03-07 09:12:40"
+check "time zero form message" err_has "is not a time of day (HH:MM[:SS[.fff]]), as the time column's clock stamps are"
+check "nothing written" test ! -e s.csv
+
+# --- the documented path ------------------------------------------------------------------------
+check "import the sheet" run 0 "$fd" import sheet.csv -o sheet_fd.csv --partial "${sheet[@]}" --time-zero 09:12:40
+check "padding columns dropped with a note" out_has "note: dropped 2 empty column(s) with no name (column 6, 7)"
+check "padding rows dropped with a note" out_has "note: dropped 2 row(s) with every field empty"
+check "said to be a log to join" out_has "a log to join: it has no gyro_dph and no temp_fog_degc"
+check "the sheet starts before power-on" bash -c "awk -F, 'NR==2{exit !(\$1 < 0)}' sheet_fd.csv"
+check "a log is not a recording" run 1 "$fd" inspect sheet_fd.csv
+check "log message names join" err_has "'fogdrift join' to add columns from a log of their own"
+
+check "join, estimating the clock offset" run 0 "$fd" join imu.csv sheet_fd.csv -o joined.csv --offset-from temp_fog_degc=temp_case_degc
+check "offset printed" out_has "clock offset: "
+check "offset within 10 s of the truth, 250 s" bash -c "grep -o 'clock offset: [0-9.-]*' '$work/out' | awk '{d = \$3 - 250; exit !(d < 10 && d > -10)}'"
+check "overlap reported" out_has "joined temp_acc1_degc, temp_acc2_degc, chamber_degc, temp_case_degc by linear (limit 450 s): 360 of 360 rows kept"
+check "joined columns and every axis" bash -c "head -1 joined.csv | grep -qx 'time_s,gyro_dph,temp_fog_degc,temp_acc1_degc,temp_acc2_degc,chamber_degc,gyro_y_dph,gyro_z_dph,temp_case_degc'"
+check "inspect the joined recording" run 0 "$fd" inspect joined.csv
+
+check "a column twice" run 1 "$fd" join imu.csv imu.csv -o x.csv --columns gyro_dph
+check "twice message" err_has "option --columns: the recording imu.csv has a column 'gyro_dph' already"
+check "age limit on linear" run 1 "$fd" join imu.csv sheet_fd.csv -o x.csv --max-age-s 60
+check "age limit message" err_has "option --max-age-s: applies to the nearest method; linear takes max_step_s"
+check "a range without an estimate" run 1 "$fd" join imu.csv sheet_fd.csv -o x.csv --offset-range-s 600
+check "range message" err_has "option --offset-range-s: has no effect without --offset-from"
+check "clocks a day apart" run 1 "$fd" join imu.csv sheet_fd.csv -o x.csv --offset-s 86400
+check "no overlap message" err_has "import both with the same --time-zero, or give the clock offset"
+check "nothing written by failed joins" test ! -e x.csv
+
+check "campaign" run 0 "$fd" campaign camp joined.csv --cut-window-s 3600 --input-rate-dph 0 --test 5 -q
+check "train the x axis" run 0 "$fd" train camp -o mx.json
+check "train on all three thermometers and their rates" out_has "(9 features)"
+check "compensate the held-out hour" run 0 "$fd" compensate mx.json camp/joined_05.csv -o comp.csv
+# The model's drift against the fixture's known law, at the grid times, °/h: within 3 °/h RMS,
+# where one burst mean's noise is 15 °/h and the drift itself 208 °/h.
+check "compensation agrees with the known drift law" python3 - <<'EOF'
+import csv, math
+truth = {row["time_s"]: float(row["drift_x_dph"]) for row in csv.DictReader(open("truth.csv"))}
+errors = [float(r["drift_dph"]) - truth[r["time_s"]] for r in csv.DictReader(open("comp.csv"))]
+rms = math.sqrt(sum(e * e for e in errors) / len(errors))
+print(f"model drift against the law: RMS {rms:.3f} °/h over {len(errors)} rows")
+raise SystemExit(0 if len(errors) == 60 and rms < 3.0 else 1)
+EOF
+
+echo "chamber: $passed passed, $failed failed"
+[ "$failed" -eq 0 ]
