@@ -8,6 +8,7 @@
 
 #include <cmath>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -39,11 +40,15 @@ bool is_campaign(const py::object& o) {
 }
 
 py::object evaluate(const CompensationModel& model, const py::object& data, bool guarded,
-                    bool allan) {
+                    bool allan, std::optional<double> input_rate_dph) {
   const eval::EvaluationOptions options{.guarded = guarded, .allan = allan};
   eval::Evaluation e;
   std::string source;
   if (is_campaign(data)) {
+    if (input_rate_dph)
+      throw OptionError("input_rate_dph",
+                        "applies to recordings; a campaign says its input rate in campaign.json "
+                        "(fogdrift campaign --input-rate-dph)");
     const Campaign campaign = read_campaign(data.cast<std::filesystem::path>());
     py::gil_scoped_release release;
     e = eval::evaluate(model, campaign, options);
@@ -61,6 +66,7 @@ py::object evaluate(const CompensationModel& model, const py::object& data, bool
       in.info.file = is_path(items[i]) ? items[i].cast<std::filesystem::path>().string()
                                        : "recording " + std::to_string(i + 1);
       in.recording = to_recording(items[i], in.info.file);
+      in.input_rate_dph = input_rate_dph;
       inputs.push_back(std::move(in));
     }
     if (inputs.empty()) throw OptionError("data", "no recordings to evaluate on");
@@ -174,10 +180,13 @@ py::dict noise_terms(const py::object& rate, double dt_s) {
 
 void bind_eval(py::module_& m) {
   m.def("evaluate", &evaluate, py::arg("model"), py::arg("data"), py::kw_only(),
-        py::arg("guarded") = true, py::arg("allan") = false,
+        py::arg("guarded") = true, py::arg("allan") = false, py::arg("input_rate_dph") = py::none(),
         "The paper's Table 2 view of a Model on test data, as `fogdrift evaluate --json` prints "
         "it: data is a campaign folder (its recordings with role 'test'), a recording (a path or "
-        "a mapping of columns) or a list of them. Returns a dict: 'method', 'source', "
+        "a mapping of columns) or a list of them. Recordings have no manifest to say what rate "
+        "the gyro sensed: give it as input_rate_dph (°/h; 0 for an axis that sees no rotation), "
+        "or the target subtracts each recording's mean and the turn-on bias is lost. Returns a "
+        "dict: 'method', 'source', "
         "'overall' and one entry per recording in 'recordings' (MAE, RMSE, STD before and "
         "after, start-up residual, opposite-position difference, all °/h; novelty shares; with "
         "allan=True the Allan noise terms raw and compensated), 'guard', 'warnings'.");

@@ -150,6 +150,14 @@ def test_evaluate_is_the_command_lines_table_2(campaign, cli):
         assert without(a, "file") == without(b, "file")
     assert got["overall"] == expected["overall"]
     assert got["overall"]["std_compensated_dph"] < got["overall"]["std_denoised_dph"]
+    # The rate the gyro sensed, for recordings without a manifest: as --input-rate-dph.
+    expected = json.loads(cli("evaluate", d / "m.json", *files, "--json", "--input-rate-dph", "7.5"))
+    got = fogdrift.evaluate(m, files, input_rate_dph=7.5)
+    assert got["overall"] == expected["overall"]
+    without_rate = fogdrift.evaluate(m, files)
+    assert got["overall"]["mae_before_dph"] != without_rate["overall"]["mae_before_dph"]
+    with pytest.raises(ValueError, match="input_rate_dph: applies to recordings"):
+        fogdrift.evaluate(m, d / "cal", input_rate_dph=0.0)
     with pytest.raises(ValueError, match="no calibration recordings with role test"):
         fogdrift.evaluate(m, d / "nf")
 
