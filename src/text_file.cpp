@@ -12,6 +12,11 @@
 namespace fogdrift {
 
 std::string read_text_file(const std::filesystem::path& path) {
+  // A folder opens as an empty stream on Linux; given for a file (a campaign where a model file
+  // belongs, say), it would read as an empty file.
+  std::error_code dir_ec;
+  if (std::filesystem::is_directory(path, dir_ec))
+    throw InputError(path.string(), 0, 0, "is a folder, not a file");
   std::ifstream in(path, std::ios::binary);
   if (!in)
     throw InputError(path.string(), 0, 0, fmt::format("cannot open ({})", std::strerror(errno)));

@@ -1,10 +1,11 @@
-// JSON nesting: every reader refuses arrays and objects nested deeper than kMaxJsonDepth, with the
-// file, line and column, before the JSON library can recurse through them
-// (docs/reliability.md, "JSON files").
+// Reading text files: a folder is not a file; JSON nesting: every reader refuses arrays and objects
+// nested deeper than kMaxJsonDepth, with the file, line and column, before the JSON library can
+// recurse through them (docs/reliability.md, "JSON files").
 #include "fogdrift/text_file.hpp"
 
 #include <gtest/gtest.h>
 
+#include <filesystem>
 #include <functional>
 #include <string>
 
@@ -27,6 +28,14 @@ std::string error_of(const std::function<void()>& read) {
     return e.what();
   }
   return "(no error)";
+}
+
+TEST(ReadTextFile, AFolderIsSaidToBeOneNotReadAsAnEmptyFile) {
+  const auto dir = std::filesystem::temp_directory_path();
+  EXPECT_EQ(error_of([&] { read_text_file(dir); }), dir.string() + ": is a folder, not a file");
+  // A campaign folder given where a model file belongs (fogdrift evaluate CAMPAIGN MODEL).
+  EXPECT_NE(error_of([&] { load_compensation_model(dir); }).find("is a folder, not a file"),
+            std::string::npos);
 }
 
 TEST(JsonNesting, SixtyFourLevelsPassAndTheSixtyFifthIsNamed) {

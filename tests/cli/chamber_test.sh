@@ -72,6 +72,8 @@ check "nothing written by failed joins" test ! -e x.csv
 check "campaign" run 0 "$fd" campaign camp joined.csv --cut-window-s 3600 --input-rate-dph 0 --test 5 -q
 check "train the x axis" run 0 "$fd" train camp -o mx.json
 check "train on all three thermometers and their rates" out_has "(9 features)"
+check "model and campaign swapped" run 1 "$fd" evaluate camp mx.json
+check "swapped message" err_has "camp: is a folder, not a file"
 check "compensate the held-out hour" run 0 "$fd" compensate mx.json camp/joined_05.csv -o comp.csv
 # The model's drift against the fixture's known law, at the grid times, °/h: within 3 °/h RMS,
 # where one burst mean's noise is 15 °/h and the drift itself 208 °/h.
