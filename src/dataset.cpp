@@ -1,6 +1,7 @@
 #include "fogdrift/dataset.hpp"
 
 #include <fmt/format.h>
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <numbers>
@@ -42,10 +43,36 @@ Dataset Dataset::select_groups(std::span<const std::size_t> group_indices) const
   return out;
 }
 
+bool is_target_column(std::string_view name) {
+  if (name == "gyro_dph") return true;
+  constexpr std::string_view prefix = "gyro_", suffix = "_dph";
+  if (name.size() <= prefix.size() + suffix.size() || name.substr(0, prefix.size()) != prefix ||
+      name.substr(name.size() - suffix.size()) != suffix)
+    return false;
+  return std::all_of(name.begin(), name.end(), [](char ch) {
+    return (ch >= 'a' && ch <= 'z') || (ch >= '0' && ch <= '9') || ch == '_';
+  });
+}
+
+Recording with_target(const Recording& recording, const std::string& column) {
+  if (column == "gyro_dph") return recording;
+  if (!recording.has_column(column) || known_column(recording, column)) {
+    throw InputError(recording.source, 1, 0,
+                     fmt::format("has no column '{}', the gyro the model compensates (import it "
+                                 "with --map {}=COLUMN)",
+                                 column, column));
+  }
+  Recording out = recording;
+  out.gyro_dph = recording.numeric_column(column);
+  return out;
+}
+
 std::vector<double> drift_target(const RecordingInput& input, const DatasetOptions& options,
                                  GroupInfo& info, std::vector<std::string>& warnings) {
   const Recording& rec = input.recording;
-  std::vector<double> gyro = rec.gyro_dph;
+  std::vector<double> gyro = options.target_column == "gyro_dph"
+                                 ? rec.gyro_dph
+                                 : with_target(rec, options.target_column).gyro_dph;
   if (options.denoise_target) {
     try {
       gyro = signal::denoise(gyro, options.denoise).signal;
@@ -62,6 +89,12 @@ std::vector<double> drift_target(const RecordingInput& input, const DatasetOptio
     info.target = "input_rate";
     std::fill(input_rate.begin(), input_rate.end(), *input.input_rate_dph);
   } else if (input.latitude_deg && input.true_azimuth_deg) {
+    if (options.target_column != "gyro_dph")
+      throw InputError(rec.source, 0, 0,
+                       fmt::format("the Earth rate a true azimuth gives is the FOG axis's "
+                                   "(gyro_dph), not {}'s; give the rate every axis sensed with "
+                                   "fogdrift campaign --input-rate-dph",
+                                   options.target_column));
     info.target = "earth_rate";
     const double horizontal = kEarthRateDph * std::cos(*input.latitude_deg * kDegToRad);
     for (std::size_t i = 0; i < n; ++i) {

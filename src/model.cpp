@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include "fogdrift/atomic_file.hpp"
+#include "fogdrift/csv.hpp"
 #include "fogdrift/decimate.hpp"
 #include "fogdrift/enum_names.hpp"
 #include "fogdrift/error.hpp"
@@ -211,6 +212,8 @@ std::string to_json(const CompensationModel& m) {
                  {"threshold", std::string(signal::to_string(d.denoise.threshold))},
                  {"mode", std::string(signal::to_string(d.denoise.shrinkage))},
                  {"extension", std::string(signal::to_string(d.denoise.extension))}};
+  // Another axis names its column; a gyro_dph model's file stays as it was (its checksum too).
+  if (d.target_column != "gyro_dph") j["target"]["column"] = d.target_column;
   j["scalers"] = {{"features", {{"mean", m.x_scaler.mean}, {"scale", m.x_scaler.scale}}},
                   {"drift_dph", {{"mean", m.y_scaler.mean[0]}, {"scale", m.y_scaler.scale[0]}}}};
   j["regressor"] = regressor_json(m.regressor);
@@ -313,6 +316,12 @@ CompensationModel compensation_model_from_json(const std::string& text, const st
         signal::parse_threshold_rule(t.at("threshold").get<std::string>());
     m.dataset.denoise.shrinkage = signal::parse_shrinkage(t.at("mode").get<std::string>());
     m.dataset.denoise.extension = signal::parse_extension(t.at("extension").get<std::string>());
+    if (t.contains("column")) {
+      m.dataset.target_column = t.at("column").get<std::string>();
+      if (!is_target_column(m.dataset.target_column))
+        fail("target.column", fmt::format("'{}' is not gyro_dph or gyro_NAME_dph",
+                                          csv::excerpt(m.dataset.target_column)));
+    }
     where = "scalers";
     const ojson& s = doc.at("scalers");
     m.x_scaler.names = m.feature_names;

@@ -17,6 +17,7 @@
 #include <optional>
 #include <span>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "fogdrift/campaign.hpp"
@@ -31,7 +32,19 @@ struct DatasetOptions {
   FeatureOptions preprocessing;    ///< differentiator and block averaging
   bool denoise_target = true;      ///< wavelet-denoise the gyro before forming the target
   signal::DenoiseOptions denoise;  ///< used when denoise_target
+  /// The gyro the target is formed from: gyro_dph, or another axis a recording carries as a
+  /// further channel, gyro_NAME_dph (docs/logs.md, "Every axis").
+  std::string target_column = "gyro_dph";
 };
+
+/// Whether `name` can be a model's target column: gyro_dph or gyro_NAME_dph (NAME of lower-case
+/// letters, digits and _).
+bool is_target_column(std::string_view name);
+
+/// `recording` with gyro_dph taken from `column` (a further channel it carries), so that every
+/// path written for gyro_dph serves another axis; the recording itself for gyro_dph. Throws
+/// InputError naming the recording when it lacks the column or a cell is not a number.
+Recording with_target(const Recording& recording, const std::string& column);
 
 /// Where a group of rows came from.
 struct GroupInfo {

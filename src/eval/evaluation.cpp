@@ -62,7 +62,12 @@ Evaluation evaluate(const CompensationModel& model, const std::vector<RecordingI
       metrics_per_recording(data, model.predict_dph(data, options.guarded));
   e.overall = pool(per);
   for (std::size_t g = 0; g < per.size(); ++g) {
-    const Recording& rec = inputs[g].recording;
+    // The gyro the model compensates: gyro_dph, or another axis (dataset.hpp, with_target).
+    Recording other_axis;
+    const Recording& rec =
+        model.dataset.target_column == "gyro_dph"
+            ? inputs[g].recording
+            : (other_axis = with_target(inputs[g].recording, model.dataset.target_column));
     RecordingEvaluation r;
     r.info = data.groups[g];
     r.metrics = per[g];
