@@ -14,6 +14,7 @@
 
 #include "fogdrift/csv.hpp"
 #include "fogdrift/error.hpp"
+#include "fogdrift/model_set.hpp"
 
 namespace fogdrift::app {
 
@@ -27,6 +28,18 @@ std::vector<std::string> split_list(const std::string& text) {
     pos = comma + 1;
   }
   return out;
+}
+
+CompensationModel load_one_model(const std::string& path, const ModelLoadOptions& load,
+                                 const std::optional<std::string>& target) {
+  return choose_model(load_model_set(path, load), target, "--target");
+}
+
+std::vector<std::string> compensated_columns(const std::string& target) {
+  if (target == "gyro_dph") return {"drift_dph", "gyro_comp_dph", "novelty", "guard_weight"};
+  const std::string name = target.substr(5, target.size() - 9);  // gyro_NAME_dph
+  return {"drift_" + name + "_dph", "gyro_" + name + "_comp_dph", "novelty_" + name,
+          "guard_weight_" + name};
 }
 
 std::filesystem::path piece_path(const std::filesystem::path& target, std::size_t index,

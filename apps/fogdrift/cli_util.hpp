@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <functional>
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -18,6 +19,16 @@ namespace fogdrift::app {
 
 /// "a,b,c" -> {"a", "b", "c"} (an empty text is one empty item).
 std::vector<std::string> split_list(const std::string& text);
+
+/// The one model a command that compensates one gyro uses: the model file's, or the model set's
+/// for the axis `target` (--target; model_set.hpp).
+CompensationModel load_one_model(const std::string& path, const ModelLoadOptions& load,
+                                 const std::optional<std::string>& target);
+
+/// The columns compensate and stream add for one axis: drift_dph, gyro_comp_dph, novelty and
+/// guard_weight for gyro_dph; drift_NAME_dph, gyro_NAME_comp_dph, novelty_NAME and
+/// guard_weight_NAME for gyro_NAME_dph.
+std::vector<std::string> compensated_columns(const std::string& target);
 
 /// The output path of piece `index` of `count` a command splits its result into: out.csv itself
 /// for one piece, else out_1.csv, out_2.csv, ...

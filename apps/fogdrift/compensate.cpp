@@ -14,6 +14,7 @@
 #include "fogdrift/error.hpp"
 #include "fogdrift/eval/metrics.hpp"
 #include "fogdrift/model.hpp"
+#include "fogdrift/model_set.hpp"
 
 namespace fogdrift::app {
 namespace {
@@ -28,20 +29,60 @@ struct CompensateArgs {
   bool no_guard = false;
 };
 
+/// One axis compensated.
+struct Axis {
+  const CompensationModel* model = nullptr;
+  std::vector<std::string> columns;
+  RecordingPrediction prediction;
+  std::vector<double> gyro, compensated;
+  NoveltySummary novelty;
+  eval::CompensationMetrics metrics;
+};
+
+nlohmann::ordered_json axis_json(const CompensateArgs& a, const Axis& x) {
+  nlohmann::ordered_json j;
+  const std::vector<double>& drift = x.prediction.drift_dph;
+  j["method"] = to_string(x.model->provenance.method);
+  j["samples"] = drift.size();
+  j["gyro_std_dph"] = x.metrics.std_before_dph;
+  j["gyro_comp_std_dph"] = x.metrics.std_after_dph;
+  j["drift_first_dph"] = drift.front();
+  j["drift_last_dph"] = drift.back();
+  j["guard"] = !a.no_guard;
+  j["novelty_outside_share"] =
+      static_cast<double>(x.novelty.outside) / static_cast<double>(x.novelty.samples);
+  j["novelty_reduced_share"] =
+      static_cast<double>(x.novelty.reduced) / static_cast<double>(x.novelty.samples);
+  j["novelty_max"] = std::isnan(x.novelty.max_novelty)
+                         ? nlohmann::ordered_json(nullptr)
+                         : nlohmann::ordered_json(x.novelty.max_novelty);
+  return j;
+}
+
 void run(const CompensateArgs& a) {
-  const CompensationModel model = load_compensation_model(a.model, a.load);
+  const ModelSet set = load_model_set(a.model, a.load);
   const csv::Table table = csv::read(a.input);
-  for (const char* name : {"drift_dph", "gyro_comp_dph", "novelty", "guard_weight"})
-    if (table.find(name))
-      throw InputError(
-          table.file, 1, *table.find(name) + 1,
-          fmt::format("already has a {} column; compensate the original recording", name));
   const Recording recording = read_recording(a.input);
-  const RecordingPrediction prediction = model.predict(recording, !a.no_guard);
-  const std::vector<double>& drift = prediction.drift_dph;
-  const NoveltySummary novelty = summarize_novelty(prediction.novelty, prediction.weight);
-  std::vector<double> compensated(drift.size());
-  for (std::size_t i = 0; i < drift.size(); ++i) compensated[i] = recording.gyro_dph[i] - drift[i];
+  std::vector<Axis> axes;
+  for (const CompensationModel& model : set.models) {
+    Axis x;
+    x.model = &model;
+    x.columns = compensated_columns(model.dataset.target_column);
+    for (const std::string& name : x.columns)
+      if (table.find(name))
+        throw InputError(
+            table.file, 1, *table.find(name) + 1,
+            fmt::format("already has a {} column; compensate the original recording", name));
+    x.gyro = with_target(recording, model.dataset.target_column).gyro_dph;
+    x.prediction = model.predict(recording, !a.no_guard);
+    const std::vector<double>& drift = x.prediction.drift_dph;
+    x.novelty = summarize_novelty(x.prediction.novelty, x.prediction.weight);
+    x.compensated.resize(drift.size());
+    for (std::size_t i = 0; i < drift.size(); ++i) x.compensated[i] = x.gyro[i] - drift[i];
+    // STD of the gyro before and after (gyro − drift), as evaluate computes them.
+    x.metrics = eval::compensation_metrics(x.gyro, drift);
+    axes.push_back(std::move(x));
+  }
 
   std::string text;
   auto add_fields = [&text](const std::vector<std::string>& fields) {
@@ -51,49 +92,60 @@ void run(const CompensateArgs& a) {
     }
   };
   add_fields(table.header);
-  text += "drift_dph,gyro_comp_dph,novelty,guard_weight\n";
+  for (const Axis& x : axes) add_fields(x.columns);
+  text.back() = '\n';
   for (std::size_t i = 0; i < table.rows.size(); ++i) {
     add_fields(table.rows[i]);
-    for (double v : {drift[i], compensated[i], prediction.novelty[i], prediction.weight[i]}) {
-      text += csv::format_number(v);
-      text += ',';
+    for (const Axis& x : axes) {
+      for (double v : {x.prediction.drift_dph[i], x.compensated[i], x.prediction.novelty[i],
+                       x.prediction.weight[i]}) {
+        text += csv::format_number(v);
+        text += ',';
+      }
     }
     text.back() = '\n';
   }
   write_text_atomically(a.output, text);
-  // STD of the gyro before and after (gyro − drift), as evaluate computes them.
-  const eval::CompensationMetrics m = eval::compensation_metrics(recording.gyro_dph, drift);
 
   if (a.json) {
     nlohmann::ordered_json j;
     j["model"] = a.model;
-    j["method"] = to_string(model.provenance.method);
-    j["input"] = a.input;
-    j["output"] = a.output;
-    j["samples"] = drift.size();
-    j["gyro_std_dph"] = m.std_before_dph;
-    j["gyro_comp_std_dph"] = m.std_after_dph;
-    j["drift_first_dph"] = drift.front();
-    j["drift_last_dph"] = drift.back();
-    j["guard"] = !a.no_guard;
-    j["novelty_outside_share"] =
-        static_cast<double>(novelty.outside) / static_cast<double>(novelty.samples);
-    j["novelty_reduced_share"] =
-        static_cast<double>(novelty.reduced) / static_cast<double>(novelty.samples);
-    j["novelty_max"] = std::isnan(novelty.max_novelty)
-                           ? nlohmann::ordered_json(nullptr)
-                           : nlohmann::ordered_json(novelty.max_novelty);
+    if (axes.size() == 1) {
+      j["method"] = to_string(axes[0].model->provenance.method);
+      j["input"] = a.input;
+      j["output"] = a.output;
+      const nlohmann::ordered_json axis = axis_json(a, axes[0]);
+      for (const auto& [k, v] : axis.items())
+        if (k != "method") j[k] = v;
+    } else {
+      j["input"] = a.input;
+      j["output"] = a.output;
+      j["axes"] = nlohmann::ordered_json::array();
+      for (const Axis& x : axes) {
+        nlohmann::ordered_json one;
+        one["target"] = x.model->dataset.target_column;
+        one.update(axis_json(a, x));
+        j["axes"].push_back(one);
+      }
+    }
     std::cout << j.dump(2) << "\n";
   } else if (!a.quiet) {
-    std::cout << fmt::format(
-        "{}: {} samples compensated with {} ({})\n"
-        "  predicted drift {:.4f} → {:.4f} °/h from first to last sample\n"
-        "  gyro STD {:.4f} °/h, compensated {:.4f} °/h (sample rate, noise included)\n"
-        "  {}{}\n"
-        "  wrote {}\n",
-        a.input, drift.size(), a.model, to_string(model.provenance.method), drift.front(),
-        drift.back(), m.std_before_dph, m.std_after_dph, novelty.line(),
-        a.no_guard ? " (guard off: full correction everywhere)" : "", a.output);
+    for (const Axis& x : axes) {
+      const std::vector<double>& drift = x.prediction.drift_dph;
+      std::cout << fmt::format(
+          "{}: {} samples{} compensated with {} ({})\n"
+          "  predicted drift {:.4f} → {:.4f} °/h from first to last sample\n"
+          "  gyro STD {:.4f} °/h, compensated {:.4f} °/h (sample rate, noise included)\n"
+          "  {}{}\n",
+          a.input, drift.size(),
+          axes.size() > 1 || x.model->dataset.target_column != "gyro_dph"
+              ? " of " + x.model->dataset.target_column
+              : std::string(),
+          a.model, to_string(x.model->provenance.method), drift.front(), drift.back(),
+          x.metrics.std_before_dph, x.metrics.std_after_dph, x.novelty.line(),
+          a.no_guard ? " (guard off: full correction everywhere)" : "");
+    }
+    std::cout << fmt::format("  wrote {}\n", a.output);
   }
 }
 

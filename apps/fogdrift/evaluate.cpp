@@ -7,6 +7,7 @@
 #include <iostream>
 #include <limits>
 #include <memory>
+#include <nlohmann/json.hpp>
 #include <optional>
 
 #include "cli_util.hpp"
@@ -15,6 +16,7 @@
 #include "fogdrift/error.hpp"
 #include "fogdrift/eval/evaluation.hpp"
 #include "fogdrift/model.hpp"
+#include "fogdrift/model_set.hpp"
 
 namespace fogdrift::app {
 namespace {
@@ -42,20 +44,24 @@ bool is_campaign(const std::string& path) {
   return std::filesystem::is_directory(path) || path.ends_with(".json");
 }
 
+void print_evaluation(const EvaluateArgs& a, const CompensationModel& model,
+                      const eval::Evaluation& e, const std::string& source,
+                      const std::string& heading);
+
 void run(const EvaluateArgs& a) {
-  const CompensationModel model = load_compensation_model(a.model, a.load);
+  const ModelSet set = load_model_set(a.model, a.load);
   const eval::EvaluationOptions options{.guarded = !a.no_guard, .allan = a.allan};
-  eval::Evaluation e;
+  std::optional<Campaign> campaign;
+  std::vector<RecordingInput> inputs;
   std::string source;
   if (a.inputs.size() == 1 && is_campaign(a.inputs[0])) {
     if (a.input_rate_dph)
       throw OptionError("--input-rate-dph",
                         "applies to recording files; a campaign says its input rate in "
                         "campaign.json (fogdrift campaign --input-rate-dph)");
-    e = eval::evaluate(model, read_campaign(a.inputs[0]), options, a.model);
+    campaign = read_campaign(a.inputs[0]);
     source = a.inputs[0] + " (recordings with role \"test\")";
   } else {
-    std::vector<RecordingInput> inputs;
     for (const auto& path : a.inputs) {
       if (is_campaign(path))
         throw OptionError("inputs", fmt::format("{} is a campaign; give one campaign or recording "
@@ -67,17 +73,47 @@ void run(const EvaluateArgs& a) {
       in.input_rate_dph = a.input_rate_dph;
       inputs.push_back(std::move(in));
     }
-    e = eval::evaluate(model, inputs, options, a.model);
     source = fmt::format("{} recording file{}", inputs.size(), inputs.size() == 1 ? "" : "s");
   }
-  if (a.json) {
-    std::cout << eval::to_json(e, a.model, source) << "\n";
-    return;
+  // One evaluation per axis the model compensates (model_set.hpp).
+  std::vector<std::string> axes;  // --json: each axis's evaluation
+  for (const CompensationModel& model : set.models) {
+    const eval::Evaluation e = campaign ? eval::evaluate(model, *campaign, options, a.model)
+                                        : eval::evaluate(model, inputs, options, a.model);
+    const std::string& target = model.dataset.target_column;
+    if (a.json) {
+      axes.push_back(eval::to_json(e, a.model, source));
+    } else {
+      print_evaluation(a, model, e, source,
+                       set.models.size() > 1 || target != "gyro_dph" ? target + ": " : "");
+    }
   }
+  if (a.json && axes.size() == 1) {
+    std::cout << axes.front() << "\n";
+  } else if (a.json) {
+    nlohmann::ordered_json j;
+    j["model"] = a.model;
+    j["source"] = source;
+    j["targets"] = set.targets();
+    j["axes"] = nlohmann::ordered_json::array();
+    for (std::size_t i = 0; i < axes.size(); ++i) {
+      nlohmann::ordered_json one = {{"target", set.models[i].dataset.target_column}};
+      const nlohmann::ordered_json axis = nlohmann::ordered_json::parse(axes[i]);
+      for (const auto& [k, v] : axis.items())
+        if (k != "model" && k != "source") one[k] = v;
+      j["axes"].push_back(one);
+    }
+    std::cout << j.dump(2) << "\n";
+  }
+}
+
+void print_evaluation(const EvaluateArgs& a, const CompensationModel& model,
+                      const eval::Evaluation& e, const std::string& source,
+                      const std::string& heading) {
   const eval::CompensationMetrics& all = e.overall;
   const auto& per = e.recordings;
-  std::cout << fmt::format("{} on {}: {} rows of {} recording{}\n\n", e.method, source, e.rows,
-                           per.size(), per.size() == 1 ? "" : "s");
+  std::cout << fmt::format("{}{} on {}: {} rows of {} recording{}\n\n", heading, e.method, source,
+                           e.rows, per.size(), per.size() == 1 ? "" : "s");
   // Before is what the model was trained to remove: the denoised drift, or the gyro less its
   // input as logged when the model was trained with --no-denoise.
   std::cout << (model.dataset.denoise_target

@@ -3,6 +3,7 @@
 
 #include <iostream>
 #include <memory>
+#include <optional>
 
 #include "cli_util.hpp"
 #include "commands.hpp"
@@ -19,6 +20,7 @@ namespace {
 struct ExportArgs {
   ModelLoadOptions load;
   std::string model;
+  std::optional<std::string> target;  ///< the axis of a model set
   std::string output;
   std::string prefix = "fogdrift_model";
   double stream_rate_hz = 0;
@@ -29,7 +31,7 @@ struct ExportArgs {
 
 void run(const ExportArgs& given, const CLI::App& cmd) {
   ExportArgs a = given;  // fault timings not given come from the model
-  const CompensationModel model = load_compensation_model(a.model, a.load);
+  const CompensationModel model = load_one_model(a.model, a.load, a.target);
   fault_timings_from_model(cmd, model, a.faults);
   with_flags(fault_flags(), [&] { validate(a.faults); });
   if (!(a.stream_rate_hz >= 0) || a.stream_rate_hz > 10000)
@@ -106,6 +108,9 @@ void add_export_c(CLI::App& app) {
   add_model_load_flags(cmd, &args->load);
   cmd->add_option("-o,--output", args->output, "Header to write (atomically)")->required();
   cmd->add_option("--prefix", args->prefix, "C name prefix of every symbol")->capture_default_str();
+  cmd->add_option("--target", args->target,
+                  "With a model of several axes (train --targets): the one to export, e.g. "
+                  "gyro_y_dph; give each axis its own --prefix");
   cmd->add_option("--stream-rate-hz", args->stream_rate_hz,
                   "Also write PREFIX_update() for samples at this fixed rate, Hz (0: none)")
       ->capture_default_str();

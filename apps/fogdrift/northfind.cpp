@@ -14,6 +14,7 @@
 #include "fogdrift/eval/findings.hpp"
 #include "fogdrift/eval/northfind.hpp"
 #include "fogdrift/model.hpp"
+#include "fogdrift/model_set.hpp"
 
 namespace fogdrift::app {
 namespace {
@@ -34,7 +35,15 @@ double wrap360(double deg) {
 void run(const NorthfindArgs& a) {
   const Campaign campaign = read_campaign(a.campaign);
   std::optional<CompensationModel> model;
-  if (!a.model.empty()) model = load_compensation_model(a.model, a.load);
+  if (!a.model.empty()) {
+    // North-finding reads gyro_dph, the FOG axis: of a model set, its gyro_dph model.
+    const ModelSet set = load_model_set(a.model, a.load);
+    model = set.models.size() == 1 ? set.models.front() : choose_model(set, "gyro_dph", "model");
+    if (model->dataset.target_column != "gyro_dph")
+      throw OptionError("model", fmt::format("{} compensates {}; north-finding reads gyro_dph, the "
+                                             "FOG axis",
+                                             a.model, model->dataset.target_column));
+  }
   const eval::CampaignFindings f =
       eval::find_north(campaign, model ? &*model : nullptr, !a.no_guard);
   if (a.json) {

@@ -2,6 +2,7 @@
 // (StreamingCompensator, compensator.hpp), one CSV line in, one line out, flushed, as firmware
 // would run it.
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <algorithm>
 #include <array>
@@ -28,6 +29,7 @@ namespace {
 struct StreamArgs {
   ModelLoadOptions load;
   std::string model;
+  std::optional<std::string> target;  ///< the axis of a model set
   std::string input = "-";
   double rate_hz = 0;
   bool no_guard = false;
@@ -50,21 +52,20 @@ std::vector<std::string> split(const std::string& line) {
 // file for training would. Values that are not numbers and steps off the interval are caught
 // before the compensator sees them; this names the rule of the fault policy the sample broke.
 void stop_at_fault(const std::string& name, std::size_t line_no, std::uint32_t flags,
+                   const std::array<std::string, 5>& names,
                    const std::array<std::size_t, 5>& column, const std::array<double, 5>& v,
                    const FaultPolicy& policy) {
-  constexpr std::array<const char*, 5> kNames = {"time_s", "gyro_dph", "temp_fog_degc",
-                                                 "temp_acc1_degc", "temp_acc2_degc"};
   constexpr std::size_t kAbsent = static_cast<std::size_t>(-1);
   if (flags & fault::gyro_bad)
     throw InputError(name, line_no, column[1] + 1,
-                     fmt::format("gyro_dph {} is beyond ±{} °/h (--gyro-limit-dph)",
+                     fmt::format("{} {} is beyond ±{} °/h (--gyro-limit-dph)", names[1],
                                  csv::format_number(v[1]), policy.gyro_limit_dph));
   for (std::size_t k = 2; k < 5 && (flags & fault::temp_bad); ++k)
     if (column[k] != kAbsent && (v[k] < policy.temp_min_degc || v[k] > policy.temp_max_degc))
       throw InputError(name, line_no, column[k] + 1,
                        fmt::format("{} {} is outside [{}, {}] °C (--temp-min-degc, "
                                    "--temp-max-degc)",
-                                   kNames[k], csv::format_number(v[k]), policy.temp_min_degc,
+                                   names[k], csv::format_number(v[k]), policy.temp_min_degc,
                                    policy.temp_max_degc));
   throw InputError(
       name, line_no, 0,
@@ -75,7 +76,7 @@ void run(const StreamArgs& given, const CLI::App& cmd) {
   StreamArgs a = given;  // fault timings not given come from the model
   if (!(a.rate_hz > 0) || a.rate_hz > 10000)
     throw OptionError("--rate-hz", fmt::format("{} is outside (0, 10000] Hz", a.rate_hz));
-  const CompensationModel model = load_compensation_model(a.model, a.load);
+  const CompensationModel model = load_one_model(a.model, a.load, a.target);
   fault_timings_from_model(cmd, model, a.faults);
   with_flags(fault_flags(), [&] { validate(a.faults); });
   // Streamed, a model trained on centred rates sees causal ones, noisier than those it learned:
@@ -106,8 +107,10 @@ void run(const StreamArgs& given, const CLI::App& cmd) {
   std::string line;
   if (!lines.next(line)) throw InputError(name, 1, 0, "is empty; a header line is needed");
   const std::vector<std::string> header = split(line);
-  constexpr std::array<const char*, 5> kNeeded = {"time_s", "gyro_dph", "temp_fog_degc",
-                                                  "temp_acc1_degc", "temp_acc2_degc"};
+  // The gyro the model compensates: gyro_dph, or the axis of a model set that --target names.
+  const std::array<std::string, 5> kNeeded = {"time_s", model.dataset.target_column,
+                                              "temp_fog_degc", "temp_acc1_degc", "temp_acc2_degc"};
+  const std::vector<std::string> outputs = compensated_columns(model.dataset.target_column);
   // The accelerometers' thermometers are needed only when the model reads them.
   const FeatureSpec& spec = model.dataset.features;
   const std::array<bool, 5> needed = {true, true, true, spec.reads(Thermometer::acc1),
@@ -120,11 +123,14 @@ void run(const StreamArgs& given, const CLI::App& cmd) {
       throw InputError(name, 1, 0, fmt::format("has no {} column", kNeeded[k]));
     column[k] = it == header.end() ? kAbsent : static_cast<std::size_t>(it - header.begin());
   }
-  for (const char* added : {"drift_dph", "gyro_comp_dph", "novelty", "guard_weight", "fault_flags"})
-    if (std::find(header.begin(), header.end(), added) != header.end())
+  std::vector<std::string> added = outputs;
+  added.emplace_back("fault_flags");
+  for (const std::string& column_name : added)
+    if (std::find(header.begin(), header.end(), column_name) != header.end())
       throw InputError(
-          name, 1, 0, fmt::format("already has a {} column; stream the original recording", added));
-  std::cout << line << ",drift_dph,gyro_comp_dph,novelty,guard_weight,fault_flags\n" << std::flush;
+          name, 1, 0,
+          fmt::format("already has a {} column; stream the original recording", column_name));
+  std::cout << line << "," << fmt::format("{}", fmt::join(added, ",")) << "\n" << std::flush;
   check_standard_output();
 
   std::size_t line_no = 1, samples = 0, flagged = 0, skipped = 0;
@@ -162,7 +168,8 @@ void run(const StreamArgs& given, const CLI::App& cmd) {
                        fmt::format("time_s steps by {} s, not the {} s of --rate-hz {}",
                                    v[0] - previous_time, dt_s, a.rate_hz));
     const StreamOutput out = compensator.update({v[0], v[1], v[2], v[3], v[4]});
-    if (a.strict && out.flags != 0) stop_at_fault(name, line_no, out.flags, column, v, a.faults);
+    if (a.strict && out.flags != 0)
+      stop_at_fault(name, line_no, out.flags, kNeeded, column, v, a.faults);
     previous_time = v[0];
     ++samples;
     if (out.flags != 0) ++flagged;
@@ -220,6 +227,9 @@ void add_stream(CLI::App& app) {
   cmd->add_option("input", args->input, "Recording CSV, or - for standard input")
       ->capture_default_str();
   cmd->add_option("--rate-hz", args->rate_hz, "The logger's fixed sample rate, Hz")->required();
+  cmd->add_option("--target", args->target,
+                  "With a model of several axes (train --targets): the one to stream, e.g. "
+                  "gyro_y_dph; its output columns are then drift_y_dph, gyro_y_comp_dph, ...");
   cmd->add_flag("--no-guard", args->no_guard,
                 "Apply the model's full correction even where its inputs are novel");
   cmd->add_flag("--strict", args->strict,

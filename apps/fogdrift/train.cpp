@@ -13,6 +13,7 @@
 #include "fogdrift/campaign.hpp"
 #include "fogdrift/csv.hpp"
 #include "fogdrift/error.hpp"
+#include "fogdrift/model_set.hpp"
 #include "fogdrift/thread_pool.hpp"
 #include "fogdrift/train_campaign.hpp"
 
@@ -30,8 +31,7 @@ struct TrainArgs {
   std::string fitness = tune::to_string(kTrain.tune.fitness);
   std::string features = "auto";
   std::string cv = tune::to_string(kTrain.tune.cv.scheme);
-  std::string differentiator =
-      std::string(signal::to_string(DatasetOptions{}.preprocessing.rates.causality));
+  std::string differentiator = std::string(signal::to_string(FeatureOptions{}.rates.causality));
   std::string block_s = "auto";
   std::string rate_window_s = "auto";
   std::string rate_degree = "auto";
@@ -49,6 +49,7 @@ struct TrainArgs {
   bool no_denoise = false;
   std::size_t hidden = kTrain.mlp.hidden;
   std::size_t max_degree = kTrain.poly_max_degree;
+  std::string targets = "gyro_dph";
   bool json = false;
   bool quiet = false;
 };
@@ -94,80 +95,16 @@ std::optional<int> degree_or_auto(const std::string& text) {
   return static_cast<int>(*v);
 }
 
-void run(const TrainArgs& a) {
-  TrainOptions options;
-  DatasetOptions dataset;
-  try {
-    options.method = parse_method(a.method, "--method");
-    options.tune.fitness = tune::parse_fitness(a.fitness, "--fitness");
-    options.tune.cv.scheme = tune::parse_cv_scheme(a.cv, "--cv");
-    if (a.features != "auto") dataset.features = FeatureSpec::parse(a.features);
-    dataset.preprocessing.rates.causality =
-        signal::parse_causality(a.differentiator, "--differentiator");
-  } catch (const OptionError& e) {
-    throw as_flag(e, kTrainFlags);
-  }
-  options.tune.cv.folds = a.folds;
-  options.tune.optimizer.run.population = a.population;
-  options.tune.optimizer.run.iterations = a.iterations;
-  options.tune.optimizer.run.seed = a.seed;
-  options.tune.cache_mb = a.cache_mb;
-  options.tune.space.c_min = a.c_min;
-  options.tune.space.c_max = a.c_max;
-  options.tune.space.sigma_min = a.sigma_min;
-  options.tune.space.sigma_max = a.sigma_max;
-  options.tune.space.epsilon = a.epsilon;
-  options.tune.space.search_epsilon = a.search_epsilon;
-  options.auto_box_rounds = a.auto_box ? 3 : 0;
-  dataset.denoise_target = !a.no_denoise;
-  options.mlp.hidden = a.hidden;
-  options.poly_max_degree = a.max_degree;
-  ThreadPool pool(a.threads);
-  options.tune.pool = &pool;
-
-  const bool show_progress = !a.quiet && !a.json && stderr_is_terminal();
-  const auto start = std::chrono::steady_clock::now();
-  if (show_progress) {
-    options.tune.optimizer.run.progress = [&](const opt::IterationRecord& r) {
-      const double s =
-          std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-      std::cerr << fmt::format(
-                       "\r{}: iteration {}/{}, best {} RMSE {:.5f}, {} evaluations, {:.0f} s ",
-                       a.method, r.iteration, a.iterations, a.fitness, r.best_fitness,
-                       r.evaluations, s)
-                << std::flush;
-      return true;
-    };
-  }
-
-  CampaignTrainOptions campaign_options;
-  campaign_options.train = options;
-  campaign_options.dataset = dataset;
-  campaign_options.auto_features = a.features == "auto";
-  campaign_options.block_s = seconds_or_auto(a.block_s, "--block-s");
-  campaign_options.rate_window_s = seconds_or_auto(a.rate_window_s, "--rate-window-s");
-  campaign_options.rate_degree = degree_or_auto(a.rate_degree);
-  const Campaign campaign = read_campaign(a.campaign);
-  CampaignTrainResult trained;
-  try {
-    trained = train_campaign(campaign, campaign_options);
-  } catch (const OptionError& e) {
-    if (show_progress) std::cerr << "\n";
-    throw as_flag(e, kTrainFlags);
-  }
-  if (show_progress) std::cerr << "\n";
-  const TrainResult& result = trained.trained;
-  const Dataset& data = trained.data;
-  dataset = trained.dataset;
-  // The choices made for the user, each with the flag that would change it.
+/// The choices made for the user, each with the flag that would change it.
+std::vector<std::string> notes_of(const CampaignTrainResult& trained) {
   std::vector<std::string> notes;
   for (const CampaignNote& n : trained.notes)
     notes.push_back(fmt::format("{} ({})", n.text, flag_for(n.field, kTrainFlags)));
-  const Provenance& p = result.model.provenance;
-  save(result.model, a.output);
+  return notes;
+}
 
-  const TrainSummary& s = result.summary;
-  // A best value on the edge of its box: the box, not the data, may have stopped the search.
+/// A best value on the edge of its box: the box, not the data, may have stopped the search.
+std::vector<std::string> edge_notes_of(const TrainArgs& a, const TrainSummary& s) {
   std::vector<std::string> edge_notes;
   for (const auto& e : s.box_edges) {
     const std::string flag = e.parameter == "C"       ? (e.upper ? "--c-max" : "--c-min")
@@ -191,7 +128,17 @@ void run(const TrainArgs& a) {
         e.parameter, e.value, e.upper ? "upper" : "lower", e.low, e.high, 100.0 * e.improvement,
         advice));
   }
-  if (a.json) {
+  return edge_notes;
+}
+
+/// `fogdrift train --json`'s summary of one model.
+nlohmann::ordered_json summary_json(const TrainArgs& a, const CampaignTrainResult& trained) {
+  const TrainSummary& s = trained.trained.summary;
+  const Dataset& data = trained.data;
+  const DatasetOptions& dataset = trained.dataset;
+  const Provenance& p = trained.trained.model.provenance;
+  const std::vector<std::string> notes = notes_of(trained);
+  {
     nlohmann::ordered_json j;
     j["model"] = a.output;
     j["method"] = to_string(s.method);
@@ -256,13 +203,24 @@ void run(const TrainArgs& a) {
     j["block_s"] = dataset.preprocessing.block.block_s;
     j["rate_window_s"] = dataset.preprocessing.rates.window_s;
     j["seconds"] = s.seconds;
-    std::cout << j.dump(2) << "\n";
-  } else if (!a.quiet) {
+    return j;
+  }
+}
+
+/// The text summary of one model; `heading` prefixes its first line (the axis of a model set).
+void print_summary(const TrainArgs& a, const CampaignTrainResult& trained,
+                   const std::string& heading) {
+  const TrainSummary& s = trained.trained.summary;
+  const Dataset& data = trained.data;
+  const Provenance& p = trained.trained.model.provenance;
+  const std::vector<std::string> notes = notes_of(trained);
+  const std::vector<std::string> edge_notes = edge_notes_of(a, s);
+  {
     std::string hyper;
     for (const auto& [k, v] : s.hyperparameters)
       hyper += fmt::format("{}{} = {:.6g}", hyper.empty() ? "" : ", ", k, v);
-    std::cout << fmt::format("{}: {} on {} rows of {} training recordings ({} features)\n",
-                             a.campaign, to_string(s.method), s.rows, data.groups.size(),
+    std::cout << fmt::format("{}{}: {} on {} rows of {} training recordings ({} features)\n",
+                             heading, a.campaign, to_string(s.method), s.rows, data.groups.size(),
                              data.cols());
     std::cout << fmt::format("  {}\n", hyper);
     std::cout << fmt::format("  {} RMSE {:.5f} (standardised drift){}\n", s.fitness,
@@ -296,7 +254,120 @@ void run(const TrainArgs& a) {
       for (const auto& w : s.held_out->warnings) std::cout << "  warning: " << w << "\n";
     for (const auto& n : edge_notes) std::cout << "  warning: " << n << "\n";
     for (const auto& w : data.warnings) std::cout << "  warning: " << w << "\n";
-    std::cout << fmt::format("  wrote {} in {:.1f} s\n", a.output, s.seconds);
+  }
+}
+
+void run(const TrainArgs& a) {
+  TrainOptions options;
+  DatasetOptions dataset;
+  try {
+    options.method = parse_method(a.method, "--method");
+    options.tune.fitness = tune::parse_fitness(a.fitness, "--fitness");
+    options.tune.cv.scheme = tune::parse_cv_scheme(a.cv, "--cv");
+    if (a.features != "auto") dataset.features = FeatureSpec::parse(a.features);
+    dataset.preprocessing.rates.causality =
+        signal::parse_causality(a.differentiator, "--differentiator");
+  } catch (const OptionError& e) {
+    throw as_flag(e, kTrainFlags);
+  }
+  options.tune.cv.folds = a.folds;
+  options.tune.optimizer.run.population = a.population;
+  options.tune.optimizer.run.iterations = a.iterations;
+  options.tune.optimizer.run.seed = a.seed;
+  options.tune.cache_mb = a.cache_mb;
+  options.tune.space.c_min = a.c_min;
+  options.tune.space.c_max = a.c_max;
+  options.tune.space.sigma_min = a.sigma_min;
+  options.tune.space.sigma_max = a.sigma_max;
+  options.tune.space.epsilon = a.epsilon;
+  options.tune.space.search_epsilon = a.search_epsilon;
+  options.auto_box_rounds = a.auto_box ? 3 : 0;
+  dataset.denoise_target = !a.no_denoise;
+  options.mlp.hidden = a.hidden;
+  options.poly_max_degree = a.max_degree;
+  ThreadPool pool(a.threads);
+  options.tune.pool = &pool;
+
+  const bool show_progress = !a.quiet && !a.json && stderr_is_terminal();
+  const auto start = std::chrono::steady_clock::now();
+  if (show_progress) {
+    options.tune.optimizer.run.progress = [&](const opt::IterationRecord& r) {
+      const double s =
+          std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      std::cerr << fmt::format(
+                       "\r{}: iteration {}/{}, best {} RMSE {:.5f}, {} evaluations, {:.0f} s ",
+                       a.method, r.iteration, a.iterations, a.fitness, r.best_fitness,
+                       r.evaluations, s)
+                << std::flush;
+      return true;
+    };
+  }
+
+  CampaignTrainOptions campaign_options;
+  campaign_options.train = options;
+  campaign_options.dataset = dataset;
+  campaign_options.auto_features = a.features == "auto";
+  campaign_options.block_s = seconds_or_auto(a.block_s, "--block-s");
+  campaign_options.rate_window_s = seconds_or_auto(a.rate_window_s, "--rate-window-s");
+  campaign_options.rate_degree = degree_or_auto(a.rate_degree);
+  const Campaign campaign = read_campaign(a.campaign);
+  // One model per target column, each with its own search and guard (docs/logs.md, "Every
+  // axis"), written as one file.
+  const std::vector<std::string> targets = split_list(a.targets);
+  for (std::size_t i = 0; i < targets.size(); ++i) {
+    if (!is_target_column(targets[i]))
+      throw OptionError("--targets", fmt::format("'{}' is not gyro_dph or gyro_NAME_dph, a gyro "
+                                                 "axis the recordings carry",
+                                                 targets[i]));
+    if (std::find(targets.begin(), targets.begin() + static_cast<std::ptrdiff_t>(i), targets[i]) !=
+        targets.begin() + static_cast<std::ptrdiff_t>(i))
+      throw OptionError("--targets", fmt::format("'{}' is named twice", targets[i]));
+  }
+  if (targets.empty()) throw OptionError("--targets", "names no gyro column");
+  std::vector<CampaignTrainResult> results;
+  for (const std::string& target : targets) {
+    campaign_options.dataset.target_column = target;
+    if (show_progress && targets.size() > 1) std::cerr << target << ": ";
+    try {
+      results.push_back(train_campaign(campaign, campaign_options));
+    } catch (const OptionError& e) {
+      if (show_progress) std::cerr << "\n";
+      throw as_flag(e, kTrainFlags);
+    }
+    if (show_progress) std::cerr << "\n";
+  }
+  if (results.size() == 1) {
+    save(results.front().trained.model, a.output);
+  } else {
+    ModelSet set;
+    for (const auto& r : results) set.models.push_back(r.trained.model);
+    save(set, a.output);
+  }
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  if (a.json && results.size() == 1) {
+    std::cout << summary_json(a, results.front()).dump(2) << "\n";
+  } else if (a.json) {
+    nlohmann::ordered_json j;
+    j["model"] = a.output;
+    j["targets"] = targets;
+    j["axes"] = nlohmann::ordered_json::array();
+    for (std::size_t i = 0; i < results.size(); ++i) {
+      nlohmann::ordered_json one;
+      one["target"] = targets[i];
+      const nlohmann::ordered_json summary = summary_json(a, results[i]);
+      for (const auto& [k, v] : summary.items())
+        if (k != "model") one[k] = v;
+      j["axes"].push_back(one);
+    }
+    j["seconds"] = seconds;
+    std::cout << j.dump(2) << "\n";
+  } else if (!a.quiet) {
+    for (std::size_t i = 0; i < results.size(); ++i)
+      print_summary(a, results[i], results.size() > 1 ? targets[i] + ": " : "");
+    std::cout << fmt::format("  wrote {}{} in {:.1f} s\n", a.output,
+                             results.size() > 1 ? fmt::format(" ({} axes)", results.size()) : "",
+                             seconds);
   }
 }
 
@@ -397,6 +468,11 @@ void add_train(CLI::App& app) {
                 "there and search again (at most 3 times); train warns of such edges either way");
   cmd->add_option("--hidden", args->hidden, "bp: hidden tanh units")->capture_default_str();
   cmd->add_option("--max-degree", args->max_degree, "poly: highest degree tried")
+      ->capture_default_str();
+  cmd->add_option("--targets", args->targets,
+                  "The gyro columns to compensate, comma-separated: gyro_dph and further axes the "
+                  "recordings carry (gyro_y_dph, ... from fogdrift import); several give one "
+                  "model file with a model per axis, each with its own search and guard")
       ->capture_default_str();
   cmd->add_flag("--json", args->json, "Print the training summary as JSON");
   cmd->add_flag("-q,--quiet", args->quiet, "Print nothing on success");

@@ -6,6 +6,7 @@
 #include <pybind11/stl.h>
 #include <pybind11/stl/filesystem.h>
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -13,6 +14,7 @@
 #include "convert.hpp"
 #include "fogdrift/error.hpp"
 #include "fogdrift/model.hpp"
+#include "fogdrift/model_set.hpp"
 #include "fogdrift/recording.hpp"
 
 namespace py = pybind11;
@@ -49,12 +51,17 @@ void bind_model(py::module_& m) {
                                 "guard and provenance, as `fogdrift train` writes it.")
       .def_static(
           "load",
-          [](const std::filesystem::path& path, bool allow_edited, bool allow_old_format) {
-            return load_compensation_model(path, {allow_edited, allow_old_format});
+          [](const std::filesystem::path& path, bool allow_edited, bool allow_old_format,
+             const std::optional<std::string>& target) {
+            return choose_model(load_model_set(path, {allow_edited, allow_old_format}), target,
+                                "target");
           },
           py::arg("path"), py::arg("allow_edited") = false, py::arg("allow_old_format") = false,
+          py::arg("target") = py::none(),
           "Reads and checks a model file (its checksum too, unless allow_edited); a file of "
-          "format version 1 or 2, which has no checksum, only with allow_old_format.")
+          "format version 1 or 2, which has no checksum, only with allow_old_format. Of a model "
+          "with several axes (fogdrift train --targets), target names the one to load, e.g. "
+          "'gyro_y_dph'.")
       .def_static(
           "from_json",
           [](const std::string& text, bool allow_edited, bool allow_old_format) {
@@ -72,6 +79,9 @@ void bind_model(py::module_& m) {
           py::arg("path"), "Writes the model file atomically.")
       .def_property_readonly(
           "method", [](const CompensationModel& self) { return to_string(self.provenance.method); })
+      .def_property_readonly(
+          "target", [](const CompensationModel& self) { return self.dataset.target_column; },
+          "The gyro column the model compensates: gyro_dph, or another axis (gyro_NAME_dph).")
       .def_property_readonly("feature_names",
                              [](const CompensationModel& self) { return self.feature_names; })
       .def_property_readonly("hyperparameters", &hyperparameters)

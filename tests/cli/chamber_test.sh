@@ -86,5 +86,38 @@ print(f"model drift against the law: RMS {rms:.3f} °/h over {len(errors)} rows"
 raise SystemExit(0 if len(errors) == 60 and rms < 3.0 else 1)
 EOF
 
+# --- every axis in one model file ----------------------------------------------------------------
+check "train every axis" run 0 "$fd" train camp -o m3.json --targets gyro_dph,gyro_y_dph,gyro_z_dph
+check "one search per axis" out_has "gyro_z_dph: camp: ssa-svr on 300 rows of 5 training recordings (9 features)"
+check "one file" out_has "wrote m3.json (3 axes)"
+check "the same x model as alone" bash -c "python3 -c \"import json,sys; a=json.load(open('m3.json'))['models'][0]; b=json.load(open('mx.json')); sys.exit(a!=b)\""
+check "an axis that is not there" run 1 "$fd" train camp -o x.json --targets gyro_dph,gyro_q_dph
+check "missing axis message" err_has "has no column 'gyro_q_dph', the gyro the model compensates (import it with --map gyro_q_dph=COLUMN)"
+check "an axis by another name" run 1 "$fd" train camp -o x.json --targets gyroY
+check "axis name message" err_has "option --targets: 'gyroY' is not gyro_dph or gyro_NAME_dph"
+check "compensate every axis" run 0 "$fd" compensate m3.json camp/joined_05.csv -o comp3.csv
+check "every axis compensated" out_has "60 samples of gyro_z_dph compensated with m3.json"
+check "every axis agrees with its known law" python3 - <<'EOF2'
+import csv, math
+truth = {row["time_s"]: row for row in csv.DictReader(open("truth.csv"))}
+rows = list(csv.DictReader(open("comp3.csv")))
+ok = len(rows) == 60
+for model_column, law in (("drift_dph", "drift_x_dph"), ("drift_y_dph", "drift_y_dph"),
+                          ("drift_z_dph", "drift_z_dph")):
+    errors = [float(r[model_column]) - float(truth[r["time_s"]][law]) for r in rows]
+    rms = math.sqrt(sum(e * e for e in errors) / len(errors))
+    print(f"{model_column} against {law}: RMS {rms:.3f} °/h")
+    ok = ok and rms < 3.0
+raise SystemExit(0 if ok else 1)
+EOF2
+check "evaluate every axis" run 0 "$fd" evaluate m3.json camp --json
+check "an evaluation per axis" python3 -c "import json; j=json.load(open('$work/out')); assert [a['target'] for a in j['axes']] == ['gyro_dph','gyro_y_dph','gyro_z_dph']; assert all(a['overall']['mae_dph'] < 0.1 * a['overall']['mae_before_dph'] for a in j['axes'])"
+check "stream needs the axis" run 1 "$fd" stream m3.json camp/joined_05.csv --rate-hz 0.016666666666666666
+check "stream axis message" err_has "option --target: the model compensates 3 axes (gyro_dph, gyro_y_dph, gyro_z_dph); this command takes one: choose it with --target NAME"
+check "stream one axis" run 0 "$fd" stream m3.json camp/joined_05.csv --rate-hz 0.016666666666666666 --target gyro_y_dph
+check "streamed axis columns" bash -c "head -1 '$work/out' | grep -q ',drift_y_dph,gyro_y_comp_dph,novelty_y,guard_weight_y,fault_flags$'"
+check "export one axis" run 0 "$fd" export-c m3.json --target gyro_z_dph --prefix imu_z -o imu_z.h
+check "its header" grep -q "imu_z_predict_dph" imu_z.h
+
 echo "chamber: $passed passed, $failed failed"
 [ "$failed" -eq 0 ]

@@ -38,6 +38,23 @@ def test_a_model_file_reads_and_writes_byte_for_byte(trained):
     assert "fogdrift.Model svr" in repr(m)
 
 
+def test_a_model_set_loads_one_axis_by_its_target(trained, tmp_path):
+    # A model set holds model files verbatim (docs/tuning.md): written here by hand, as any tool
+    # may write one.
+    d, _, _ = trained
+    text = (d / "m.json").read_text()
+    (tmp_path / "set.json").write_text(
+        '{\n "format": "fogdrift-model-set",\n "version": 1,\n "targets": ["gyro_dph"],\n'
+        ' "models": [\n' + text.rstrip("\n") + "\n ]\n}\n")
+    m = fogdrift.Model.load(tmp_path / "set.json")
+    assert m.target == "gyro_dph"
+    assert m.to_json() == text
+    assert fogdrift.Model.load(tmp_path / "set.json", target="gyro_dph").to_json() == text
+    with pytest.raises(ValueError, match="target: the model has no axis 'gyro_y_dph' "
+                                         "\\(it compensates gyro_dph\\)"):
+        fogdrift.Model.load(tmp_path / "set.json", target="gyro_y_dph")
+
+
 def test_drift_and_compensation_are_the_command_lines(trained):
     d, recording, expected = trained
     m = fogdrift.Model.load(str(d / "m.json"))
