@@ -5,11 +5,13 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
 
 #include "fogdrift/c_header.hpp"
+#include "fogdrift/model_set.hpp"
 #include "fogdrift/random.hpp"
 #include "fogdrift/sim/scenarios.hpp"
 #include "fogdrift/train.hpp"
@@ -141,6 +143,71 @@ TEST(StreamingCompensator, EqualsTheBatchPath) {
     }
     EXPECT_LE(worst, 1e-12 * scale) << to_string(method);
   }
+}
+
+// Every axis in one header (to_c_header of a model set): one update gives each axis's drift as
+// that axis's StreamingCompensator does, and the compensated gyros follow.
+TEST(StreamingCompensator, OneUpdateForEveryAxisInTheHeader) {
+  ModelSet set;
+  set.models = {causal_model({-20, 30}, 2, Method::poly), causal_model({-20, 30}, 2, Method::svr)};
+  set.models[1].dataset.target_column = "gyro_y_dph";
+  const Recording test = sim::simulate_calibration(sim::Instrument{},
+                                                   [] {
+                                                     sim::CalibrationOptions co;
+                                                     co.temps_degc = {10};
+                                                     co.repetitions = 1;
+                                                     co.powered_s = 600;
+                                                     return co;
+                                                   }())
+                             .recordings.front();
+  test::TempDir dir;
+  test::write_file(dir / "imu.h", to_c_header(set, "imu", 1.0));
+  test::write_file(dir / "driver.c", R"(#include <stdio.h>
+#include "imu.h"
+int main(void) {
+  imu_state s;
+  double t, fog, acc1, acc2, drift[IMU_N_AXES], gyro[IMU_N_AXES] = {1.0, -2.0}, comp[IMU_N_AXES];
+  imu_reset(&s);
+  printf("%s %s\n", imu_axis_names[0], imu_axis_names[1]);
+  while (scanf("%lf %lf %lf %lf", &t, &fog, &acc1, &acc2) == 4) {
+    imu_update(&s, t, fog, acc1, acc2, drift);
+    imu_compensated_dph(&s, gyro, comp);
+    printf("%.17g %.17g %.17g %.17g\n", drift[0], drift[1], comp[0], comp[1]);
+  }
+  return 0;
+}
+)");
+  std::ostringstream samples;
+  samples.precision(17);
+  for (std::size_t i = 0; i < test.size(); ++i)
+    samples << test.time_s[i] << ' ' << test.temp_fog_degc[i] << ' ' << test.temp_acc1_degc[i]
+            << ' ' << test.temp_acc2_degc[i] << '\n';
+  std::istringstream in(test::compile_and_run_c(dir, samples.str()));
+  std::string x_name, y_name;
+  in >> x_name >> y_name;
+  EXPECT_EQ(x_name, "gyro_dph");
+  EXPECT_EQ(y_name, "gyro_y_dph");
+  StreamingCompensator x(set.models[0], 1.0), y(set.models[1], 1.0);
+  double worst = 0, scale = 0;
+  std::size_t rows = 0;
+  for (double dx, dy, cx, cy; in >> dx >> dy >> cx >> cy; ++rows) {
+    ASSERT_LT(rows, test.size());
+    const Sample sample{test.time_s[rows], 0.0, test.temp_fog_degc[rows], test.temp_acc1_degc[rows],
+                        test.temp_acc2_degc[rows]};
+    const double ex = x.update(sample).drift_dph, ey = y.update(sample).drift_dph;
+    worst = std::max({worst, std::abs(dx - ex), std::abs(dy - ey)});
+    scale = std::max({scale, std::abs(ex), std::abs(ey)});
+    ASSERT_EQ(cx, 1.0 - dx);
+    ASSERT_EQ(cy, -2.0 - dy);
+  }
+  EXPECT_EQ(rows, test.size());
+  EXPECT_GT(scale, 0.0);
+  EXPECT_LE(worst, 1e-12 * scale);
+  // A set of one model is that model's own header.
+  ModelSet one;
+  one.models = {set.models[0]};
+  EXPECT_EQ(to_c_header(one, "imu", 1.0), to_c_header(set.models[0], "imu", 1.0));
+  EXPECT_THROW(to_c_header(set, "2imu", 1.0), OptionError);
 }
 
 // A model trained at 1 Hz runs on a 10 Hz logger on blocks of 10 samples (decimate.hpp): the

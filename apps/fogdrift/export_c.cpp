@@ -1,5 +1,6 @@
 // fogdrift export-c: a compensation model as a self-contained C99 header for firmware.
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <iostream>
 #include <memory>
@@ -31,7 +32,24 @@ struct ExportArgs {
 
 void run(const ExportArgs& given, const CLI::App& cmd) {
   ExportArgs a = given;  // fault timings not given come from the model
-  const CompensationModel model = load_one_model(a.model, a.load, a.target);
+  // One axis (--target, or a model of one), or every axis of a model set in one header.
+  const ModelSet loaded = load_model_set(a.model, a.load);
+  ModelSet set;
+  if (a.target || loaded.models.size() == 1)
+    set.models.push_back(choose_model(loaded, a.target, "--target"));
+  else
+    set = loaded;
+  const CompensationModel& model = set.models.front();
+  for (const CompensationModel& other : set.models) {
+    const FeatureOptions& p = model.dataset.preprocessing;
+    const FeatureOptions& q = other.dataset.preprocessing;
+    if (q.sample_interval_s != p.sample_interval_s || q.rates.window_s != p.rates.window_s ||
+        q.block.block_s != p.block.block_s)
+      throw OptionError("--target",
+                        fmt::format("the axes' models differ in interval, block or rate window "
+                                    "({} against {}); export each with --target NAME",
+                                    other.dataset.target_column, model.dataset.target_column));
+  }
   fault_timings_from_model(cmd, model, a.faults);
   with_flags(fault_flags(), [&] { validate(a.faults); });
   if (!(a.stream_rate_hz >= 0) || a.stream_rate_hz > 10000)
@@ -41,7 +59,7 @@ void run(const ExportArgs& given, const CLI::App& cmd) {
   std::string header;
   try {
     header =
-        to_c_header(model, a.prefix, a.stream_rate_hz > 0 ? 1.0 / a.stream_rate_hz : 0.0, a.faults,
+        to_c_header(set, a.prefix, a.stream_rate_hz > 0 ? 1.0 / a.stream_rate_hz : 0.0, a.faults,
                     a.precision == "float" ? CPrecision::single : CPrecision::double_);
   } catch (const OptionError& e) {
     if (e.option() == "prefix")
@@ -51,7 +69,17 @@ void run(const ExportArgs& given, const CLI::App& cmd) {
     throw OptionError("--stream-rate-hz", e.message());
   }
   write_text_atomically(a.output, header);
-  if (!a.quiet) {
+  if (!a.quiet && set.models.size() > 1) {
+    std::cout << fmt::format(
+        "wrote {}: {} axes ({}) of {}, C99 in {}, no heap; each axis's model as "
+        "{}_AXIS_predict_dph(features){}\n",
+        a.output, set.models.size(), fmt::join(set.targets(), ", "), a.model, a.precision, a.prefix,
+        a.stream_rate_hz > 0
+            ? fmt::format(", and {}_update(&state, time_s, temp_fog, temp_acc1, temp_acc2, "
+                          "drift[{}]) for all of them at {} Hz",
+                          a.prefix, set.models.size(), a.stream_rate_hz)
+            : std::string());
+  } else if (!a.quiet) {
     std::cout << fmt::format(
         "wrote {}: {}_predict_dph(features[{}]) for {} ({}), C99 in {}, no heap\n", a.output,
         a.prefix, model.inputs(), a.model, to_string(model.provenance.method), a.precision);
@@ -109,8 +137,8 @@ void add_export_c(CLI::App& app) {
   cmd->add_option("-o,--output", args->output, "Header to write (atomically)")->required();
   cmd->add_option("--prefix", args->prefix, "C name prefix of every symbol")->capture_default_str();
   cmd->add_option("--target", args->target,
-                  "With a model of several axes (train --targets): the one to export, e.g. "
-                  "gyro_y_dph; give each axis its own --prefix");
+                  "With a model of several axes (train --targets): export this one alone, e.g. "
+                  "gyro_y_dph (default: every axis in one header, with one update for all)");
   cmd->add_option("--stream-rate-hz", args->stream_rate_hz,
                   "Also write PREFIX_update() for samples at this fixed rate, Hz (0: none)")
       ->capture_default_str();

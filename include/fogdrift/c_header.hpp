@@ -5,6 +5,7 @@
 #include <string>
 
 #include "fogdrift/model.hpp"
+#include "fogdrift/model_set.hpp"
 #include "fogdrift/stream_faults.hpp"
 
 namespace fogdrift {
@@ -39,5 +40,21 @@ enum class CPrecision {
 std::string to_c_header(const CompensationModel& model,
                         const std::string& prefix = "fogdrift_model", double stream_dt_s = 0,
                         const FaultPolicy& faults = {}, CPrecision precision = CPrecision::double_);
+
+/// Every axis of a model set in one header (c_header_set.cpp): each axis's model as above under
+/// the prefix PREFIX_AXIS (AXIS = gyro for gyro_dph, NAME for gyro_NAME_dph), PREFIX_N_AXES and
+/// PREFIX_axis_names, and with `stream_dt_s` > 0 one update for all of them:
+///   PREFIX_state s; PREFIX_reset(&s);   at power-on
+///   PREFIX_update(&s, time_s, temp_fog_degc, temp_acc1_degc, temp_acc2_degc, drift_dph);
+///   PREFIX_compensated_dph(&s, gyro_dph, gyro_compensated_dph);
+/// with arrays of PREFIX_N_AXES values in PREFIX_axis_names order. A set of one model gives
+/// to_c_header(model, ...) itself.
+std::string to_c_header(const ModelSet& set, const std::string& prefix = "fogdrift_model",
+                        double stream_dt_s = 0, const FaultPolicy& faults = {},
+                        CPrecision precision = CPrecision::double_);
+
+/// The C name of a target column's axis in a multi-axis header: "gyro" for gyro_dph, NAME for
+/// gyro_NAME_dph.
+std::string c_axis_name(const std::string& target_column);
 
 }  // namespace fogdrift

@@ -118,6 +118,39 @@ check "stream one axis" run 0 "$fd" stream m3.json camp/joined_05.csv --rate-hz 
 check "streamed axis columns" bash -c "head -1 '$work/out' | grep -q ',drift_y_dph,gyro_y_comp_dph,novelty_y,guard_weight_y,fault_flags$'"
 check "export one axis" run 0 "$fd" export-c m3.json --target gyro_z_dph --prefix imu_z -o imu_z.h
 check "its header" grep -q "imu_z_predict_dph" imu_z.h
+check "export every axis" run 0 "$fd" export-c m3.json --prefix imu --stream-rate-hz 0.016666666666666666 -o imu.h
+check "one update for all" out_has "imu_update(&state, time_s, temp_fog, temp_acc1, temp_acc2, drift[3]) for all of them"
+cat > driver.c <<'EOF2'
+#include <stdio.h>
+#include "imu.h"
+int main(void) {
+  imu_state s;
+  double t, fog, acc1, acc2, drift[IMU_N_AXES];
+  imu_reset(&s);
+  while (scanf("%lf %lf %lf %lf", &t, &fog, &acc1, &acc2) == 4) {
+    imu_update(&s, t, fog, acc1, acc2, drift);
+    printf("%.17g,%.17g,%.17g\n", drift[0], drift[1], drift[2]);
+  }
+  return 0;
+}
+EOF2
+check "the header compiles" cc -std=c99 -Wall -Wextra -pedantic -Werror -O2 -o driver driver.c -lm
+check "the header streams every axis" bash -c "awk -F, 'NR > 1 {print \$1, \$3, \$4, \$5}' camp/joined_05.csv | ./driver > c_drift.csv"
+for axis in gyro_dph gyro_y_dph gyro_z_dph; do
+  "$fd" stream m3.json camp/joined_05.csv --rate-hz 0.016666666666666666 --target "$axis" 2>/dev/null > "stream_$axis.csv"
+done
+check "the header's drift is stream's, every axis" python3 - <<'EOF2'
+import csv
+header = [[float(v) for v in line.split(",")] for line in open("c_drift.csv")]
+ok = len(header) == 60
+for k, axis in enumerate(("gyro_dph", "gyro_y_dph", "gyro_z_dph")):
+    rows = list(csv.reader(open(f"stream_{axis}.csv")))
+    drift = [float(r[-5]) for r in rows[1:]]
+    worst = max(abs(a[k] - b) for a, b in zip(header, drift))
+    print(f"{axis}: header against stream, worst {worst:.3g} deg/h")
+    ok = ok and len(drift) == 60 and worst < 1e-9 * max(abs(b) for b in drift)
+raise SystemExit(0 if ok else 1)
+EOF2
 
 echo "chamber: $passed passed, $failed failed"
 [ "$failed" -eq 0 ]
