@@ -76,6 +76,17 @@ void report(const ImportReport& imported, const std::vector<RegridSummary>& grid
                                r.was[order[k]], r.now[order[k]]);
     std::cout << (r.lines.size() > 5 ? ", ...\n" : "\n");
   }
+  // Each column is looked at on its own, so one glitch seen by two channels counts twice, and a
+  // thermometer's spike counts beside the gyro's (docs/logs.md, "Spikes").
+  std::size_t total = 0, columns = 0;
+  for (const auto& r : imported.outliers) {
+    total += r.lines.size();
+    columns += r.lines.empty() ? 0 : 1;
+  }
+  if (columns > 1)
+    std::cout << fmt::format(
+        "  spikes in all: {} samples in {} columns, each column looked at on its own\n", total,
+        columns);
   for (const RegridSummary& g : grids) {
     std::cout << fmt::format(
         "  grid: {} samples (median step {:.6g} s, jitter up to {:.1f} %) -> {} samples every "
