@@ -35,6 +35,26 @@ CompensationModel load_one_model(const std::string& path, const ModelLoadOptions
   return choose_model(load_model_set(path, load), target, "--target");
 }
 
+ModelSet axes_to_run(const ModelSet& set, const std::optional<std::string>& target) {
+  ModelSet out;
+  if (target || set.models.size() == 1) {
+    out.models.push_back(choose_model(set, target, "--target"));
+    return out;
+  }
+  const FeatureOptions& p = set.models.front().dataset.preprocessing;
+  for (const CompensationModel& other : set.models) {
+    const FeatureOptions& q = other.dataset.preprocessing;
+    if (q.sample_interval_s != p.sample_interval_s || q.rates.window_s != p.rates.window_s ||
+        q.rates.poly_order != p.rates.poly_order || q.block.block_s != p.block.block_s)
+      throw OptionError(
+          "--target",
+          fmt::format("the axes' models differ in interval, block or rate window "
+                      "({} against {}); run each with --target NAME",
+                      other.dataset.target_column, set.models.front().dataset.target_column));
+  }
+  return set;
+}
+
 std::vector<std::string> compensated_columns(const std::string& target) {
   if (target == "gyro_dph") return {"drift_dph", "gyro_comp_dph", "novelty", "guard_weight"};
   const std::string name = target.substr(5, target.size() - 9);  // gyro_NAME_dph

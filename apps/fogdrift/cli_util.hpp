@@ -10,6 +10,7 @@
 
 #include "fogdrift/error.hpp"
 #include "fogdrift/model.hpp"
+#include "fogdrift/model_set.hpp"
 
 namespace CLI {
 class App;
@@ -24,6 +25,11 @@ std::vector<std::string> split_list(const std::string& text);
 /// for the axis `target` (--target; model_set.hpp).
 CompensationModel load_one_model(const std::string& path, const ModelLoadOptions& load,
                                  const std::optional<std::string>& target);
+
+/// The axes a command that runs them together (stream, export-c) runs: the one `target` names
+/// (--target), else every axis of the set. Throws OptionError("--target") when the axes' models
+/// differ in sample interval, block or rate window, which one update cannot serve.
+ModelSet axes_to_run(const ModelSet& set, const std::optional<std::string>& target);
 
 /// The columns compensate and stream add for one axis: drift_dph, gyro_comp_dph, novelty and
 /// guard_weight for gyro_dph; drift_NAME_dph, gyro_NAME_comp_dph, novelty_NAME and

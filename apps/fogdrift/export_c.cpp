@@ -33,23 +33,8 @@ struct ExportArgs {
 void run(const ExportArgs& given, const CLI::App& cmd) {
   ExportArgs a = given;  // fault timings not given come from the model
   // One axis (--target, or a model of one), or every axis of a model set in one header.
-  const ModelSet loaded = load_model_set(a.model, a.load);
-  ModelSet set;
-  if (a.target || loaded.models.size() == 1)
-    set.models.push_back(choose_model(loaded, a.target, "--target"));
-  else
-    set = loaded;
+  const ModelSet set = axes_to_run(load_model_set(a.model, a.load), a.target);
   const CompensationModel& model = set.models.front();
-  for (const CompensationModel& other : set.models) {
-    const FeatureOptions& p = model.dataset.preprocessing;
-    const FeatureOptions& q = other.dataset.preprocessing;
-    if (q.sample_interval_s != p.sample_interval_s || q.rates.window_s != p.rates.window_s ||
-        q.block.block_s != p.block.block_s)
-      throw OptionError("--target",
-                        fmt::format("the axes' models differ in interval, block or rate window "
-                                    "({} against {}); export each with --target NAME",
-                                    other.dataset.target_column, model.dataset.target_column));
-  }
   fault_timings_from_model(cmd, model, a.faults);
   with_flags(fault_flags(), [&] { validate(a.faults); });
   if (!(a.stream_rate_hz >= 0) || a.stream_rate_hz > 10000)

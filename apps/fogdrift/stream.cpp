@@ -15,11 +15,13 @@
 #include "cli_util.hpp"
 #include "commands.hpp"
 #include "fault_options.hpp"
+#include "fogdrift/c_header.hpp"
 #include "fogdrift/compensator.hpp"
 #include "fogdrift/csv.hpp"
 #include "fogdrift/error.hpp"
 #include "fogdrift/features.hpp"
 #include "fogdrift/model.hpp"
+#include "fogdrift/model_set.hpp"
 #include "fogdrift/recording.hpp"
 #include "fogdrift/stream_faults.hpp"
 
@@ -76,24 +78,28 @@ void run(const StreamArgs& given, const CLI::App& cmd) {
   StreamArgs a = given;  // fault timings not given come from the model
   if (!(a.rate_hz > 0) || a.rate_hz > 10000)
     throw OptionError("--rate-hz", fmt::format("{} is outside (0, 10000] Hz", a.rate_hz));
-  const CompensationModel model = load_one_model(a.model, a.load, a.target);
-  fault_timings_from_model(cmd, model, a.faults);
+  // Every axis of the model (model_set.hpp), or the one --target names.
+  const ModelSet set = axes_to_run(load_model_set(a.model, a.load), a.target);
+  const CompensationModel& first = set.models.front();
+  fault_timings_from_model(cmd, first, a.faults);
   with_flags(fault_flags(), [&] { validate(a.faults); });
   // Streamed, a model trained on centred rates sees causal ones, noisier than those it learned:
   // a tuned SVR's drift then departs from its batch drift by about the drift's own STD
   // (docs/compensation.md). The stream still runs; the user is told, as export-c tells.
-  if (model.dataset.preprocessing.rates.causality != signal::Causality::causal)
+  if (first.dataset.preprocessing.rates.causality != signal::Causality::causal)
     std::cerr << fmt::format(
         "fogdrift stream: warning: {} was trained with centred temperature rates; streamed, it "
         "sees causal ones and its drift differs from compensate's (train with --differentiator "
         "causal for the instrument)\n",
         a.model);
   const double dt_s = 1.0 / a.rate_hz;
-  std::optional<StreamingCompensator> made;  // a rate the model cannot run at names --rate-hz
+  // One compensator per axis; a rate a model cannot run at names --rate-hz.
+  std::vector<StreamingCompensator> compensators;
+  compensators.reserve(set.models.size());
   with_flags({{"rate", "--rate-hz"}}, [&] {
-    made.emplace(model, dt_s, StreamOptions{!a.no_guard, a.faults});
+    for (const CompensationModel& model : set.models)
+      compensators.emplace_back(model, dt_s, StreamOptions{!a.no_guard, a.faults});
   });
-  StreamingCompensator& compensator = *made;
 
   std::ifstream file;
   if (a.input != "-") {
@@ -107,24 +113,34 @@ void run(const StreamArgs& given, const CLI::App& cmd) {
   std::string line;
   if (!lines.next(line)) throw InputError(name, 1, 0, "is empty; a header line is needed");
   const std::vector<std::string> header = split(line);
-  // The gyro the model compensates: gyro_dph, or the axis of a model set that --target names.
-  const std::array<std::string, 5> kNeeded = {"time_s", model.dataset.target_column,
-                                              "temp_fog_degc", "temp_acc1_degc", "temp_acc2_degc"};
-  const std::vector<std::string> outputs = compensated_columns(model.dataset.target_column);
-  // The accelerometers' thermometers are needed only when the model reads them.
-  const FeatureSpec& spec = model.dataset.features;
-  const std::array<bool, 5> needed = {true, true, true, spec.reads(Thermometer::acc1),
-                                      spec.reads(Thermometer::acc2)};
   constexpr std::size_t kAbsent = static_cast<std::size_t>(-1);
+  auto column_of = [&](const std::string& wanted, bool needed) {
+    const auto it = std::find(header.begin(), header.end(), wanted);
+    if (it == header.end() && needed)
+      throw InputError(name, 1, 0, fmt::format("has no {} column", wanted));
+    return it == header.end() ? kAbsent : static_cast<std::size_t>(it - header.begin());
+  };
+  // Time and the thermometers, shared by every axis; the accelerometers' thermometers are needed
+  // only when a model reads them. Then each axis's gyro.
+  std::array<std::string, 5> names = {"time_s", first.dataset.target_column, "temp_fog_degc",
+                                      "temp_acc1_degc", "temp_acc2_degc"};
+  auto reads = [&](Thermometer t) {
+    return std::any_of(set.models.begin(), set.models.end(),
+                       [&](const CompensationModel& m) { return m.dataset.features.reads(t); });
+  };
   std::array<std::size_t, 5> column{};
-  for (std::size_t k = 0; k < kNeeded.size(); ++k) {
-    const auto it = std::find(header.begin(), header.end(), kNeeded[k]);
-    if (it == header.end() && needed[k])
-      throw InputError(name, 1, 0, fmt::format("has no {} column", kNeeded[k]));
-    column[k] = it == header.end() ? kAbsent : static_cast<std::size_t>(it - header.begin());
+  column[0] = column_of(names[0], true);
+  column[2] = column_of(names[2], true);
+  column[3] = column_of(names[3], reads(Thermometer::acc1));
+  column[4] = column_of(names[4], reads(Thermometer::acc2));
+  std::vector<std::size_t> gyro_column;
+  std::vector<std::string> added;
+  for (const CompensationModel& model : set.models) {
+    const std::string& target = model.dataset.target_column;
+    gyro_column.push_back(column_of(target, true));
+    for (const std::string& out : compensated_columns(target)) added.push_back(out);
+    added.push_back(target == "gyro_dph" ? "fault_flags" : "fault_flags_" + c_axis_name(target));
   }
-  std::vector<std::string> added = outputs;
-  added.emplace_back("fault_flags");
   for (const std::string& column_name : added)
     if (std::find(header.begin(), header.end(), column_name) != header.end())
       throw InputError(
@@ -136,6 +152,7 @@ void run(const StreamArgs& given, const CLI::App& cmd) {
   std::size_t line_no = 1, samples = 0, flagged = 0, skipped = 0;
   std::array<std::size_t, fault::count> per_flag{};
   double previous_time = std::nan("");
+  std::string outputs;
   while (lines.next(line)) {
     ++line_no;
     if (line.empty()) continue;
@@ -151,35 +168,48 @@ void run(const StreamArgs& given, const CLI::App& cmd) {
     }
     // A field that is not a number is a faulty reading, as a NaN is; an absent thermometer the
     // model does not read is 0.
-    std::array<double, 5> v{};
-    for (std::size_t k = 0; k < kNeeded.size(); ++k) {
-      if (column[k] == kAbsent) continue;
-      const auto value = csv::parse_number(fields[column[k]]);
+    auto value_of = [&](std::size_t c, const std::string& what) {
+      if (c == kAbsent) return 0.0;
+      const auto value = csv::parse_number(fields[c]);
       if (a.strict && (!value || !std::isfinite(*value)))
-        throw InputError(name, line_no, column[k] + 1,
-                         fmt::format("{} '{}' is not a finite number", kNeeded[k],
-                                     csv::excerpt(fields[column[k]])));
-      v[k] = value ? *value : std::nan("");
-    }
+        throw InputError(
+            name, line_no, c + 1,
+            fmt::format("{} '{}' is not a finite number", what, csv::excerpt(fields[c])));
+      return value ? *value : std::nan("");
+    };
+    std::array<double, 5> v{};
+    for (std::size_t k : {0, 2, 3, 4}) v[k] = value_of(column[k], names[k]);
     // --strict keeps the fixed interval to 1 %: a sample off it would bend every rate after it.
     if (a.strict && std::isfinite(previous_time) &&
         std::abs(v[0] - previous_time - dt_s) > 0.01 * dt_s)
       throw InputError(name, line_no, column[0] + 1,
                        fmt::format("time_s steps by {} s, not the {} s of --rate-hz {}",
                                    v[0] - previous_time, dt_s, a.rate_hz));
-    const StreamOutput out = compensator.update({v[0], v[1], v[2], v[3], v[4]});
-    if (a.strict && out.flags != 0)
-      stop_at_fault(name, line_no, out.flags, kNeeded, column, v, a.faults);
+    std::uint32_t any = 0;
+    outputs.clear();
+    for (std::size_t x = 0; x < compensators.size(); ++x) {
+      names[1] = set.models[x].dataset.target_column;
+      column[1] = gyro_column[x];
+      v[1] = value_of(column[1], names[1]);
+      StreamingCompensator& compensator = compensators[x];
+      const StreamOutput out = compensator.update({v[0], v[1], v[2], v[3], v[4]});
+      if (a.strict && out.flags != 0)
+        stop_at_fault(name, line_no, out.flags, names, column, v, a.faults);
+      any |= out.flags;
+      for (double value :
+           {out.drift_dph, out.gyro_comp_dph, compensator.novelty(), compensator.weight()}) {
+        outputs += ',';
+        outputs += csv::format_number(value);
+      }
+      outputs += ',';
+      outputs += std::to_string(out.flags);
+    }
     previous_time = v[0];
     ++samples;
-    if (out.flags != 0) ++flagged;
+    if (any != 0) ++flagged;
     for (std::size_t k = 0; k < fault::count; ++k)
-      if (out.flags & (1u << k)) ++per_flag[k];
-    std::cout << line << ',' << csv::format_number(out.drift_dph) << ','
-              << csv::format_number(out.gyro_comp_dph) << ','
-              << csv::format_number(compensator.novelty()) << ','
-              << csv::format_number(compensator.weight()) << ',' << out.flags << '\n'
-              << std::flush;
+      if (any & (1u << k)) ++per_flag[k];
+    std::cout << line << outputs << '\n' << std::flush;
     if (!std::cout) check_standard_output();  // stop at the first line that could not be written
   }
   if (samples == 0)
@@ -228,8 +258,9 @@ void add_stream(CLI::App& app) {
       ->capture_default_str();
   cmd->add_option("--rate-hz", args->rate_hz, "The logger's fixed sample rate, Hz")->required();
   cmd->add_option("--target", args->target,
-                  "With a model of several axes (train --targets): the one to stream, e.g. "
-                  "gyro_y_dph; its output columns are then drift_y_dph, gyro_y_comp_dph, ...");
+                  "With a model of several axes (train --targets): stream this one alone, e.g. "
+                  "gyro_y_dph (default: every axis, each with drift_y_dph, gyro_y_comp_dph, "
+                  "novelty_y, guard_weight_y, fault_flags_y)");
   cmd->add_flag("--no-guard", args->no_guard,
                 "Apply the model's full correction even where its inputs are novel");
   cmd->add_flag("--strict", args->strict,

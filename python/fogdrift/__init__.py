@@ -7,6 +7,7 @@ The package wraps fogdrift's C++ library (docs/python.md):
   ``fogdrift.SVRGridSearchCV`` searches C × gamma by warm-started paths in parallel.
 * ``fogdrift.train(campaign, method=..., ...)`` — a campaign folder to a compensation model, as
   ``fogdrift train`` does it, every option under the library's name, with a progress callback;
+  ``target=`` another gyro axis, and ``save_models`` every axis's model in one file;
 * ``fogdrift.Model`` — a compensation model file as ``fogdrift train`` writes it: load, save,
   predict the drift of a recording and compensate it; ``read_recording`` and
   ``write_recording`` — recordings as dicts of NumPy arrays.
@@ -21,12 +22,12 @@ The package wraps fogdrift's C++ library (docs/python.md):
 """
 from ._fogdrift import (Model, StreamingCompensator, __version__, allan_deviation, denoise,
                         evaluate, features, find_north, noise_terms, northfind, read_recording,
-                        release_memory, simulate, train, write_recording)
+                        release_memory, save_models, simulate, train, write_recording)
 from .fleet import train_fleet
 from .search import SVRGridSearchCV
 from .svr import SVR
 
 __all__ = ["Model", "SVR", "SVRGridSearchCV", "StreamingCompensator", "allan_deviation",
            "denoise", "evaluate", "features", "find_north", "noise_terms", "northfind",
-           "read_recording", "release_memory", "simulate", "train", "train_fleet",
+           "read_recording", "release_memory", "save_models", "simulate", "train", "train_fleet",
            "write_recording", "__version__"]

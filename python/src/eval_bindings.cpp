@@ -65,7 +65,9 @@ py::object evaluate(const CompensationModel& model, const py::object& data, bool
       RecordingInput in;
       in.info.file = is_path(items[i]) ? items[i].cast<std::filesystem::path>().string()
                                        : "recording " + std::to_string(i + 1);
-      in.recording = to_recording(items[i], in.info.file);
+      // Another axis than gyro_dph is a column fogdrift does not know: keep it.
+      in.recording =
+          to_recording(items[i], in.info.file, model.dataset.target_column != "gyro_dph");
       in.input_rate_dph = input_rate_dph;
       inputs.push_back(std::move(in));
     }

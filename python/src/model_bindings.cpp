@@ -123,7 +123,10 @@ void bind_model(py::module_& m) {
       .def(
           "compensate",
           [](const CompensationModel& self, const py::object& recording, bool guarded) {
-            const Recording r = to_recording(recording, "(recording)");
+            // The gyro the model compensates: gyro_dph, or another axis (Model.target).
+            const Recording r = with_target(
+                to_recording(recording, "(recording)", self.dataset.target_column != "gyro_dph"),
+                self.dataset.target_column);
             std::vector<double> out;
             {
               py::gil_scoped_release release;
@@ -133,7 +136,8 @@ void bind_model(py::module_& m) {
             return to_array(std::move(out));
           },
           py::arg("recording"), py::arg("guarded") = true,
-          "gyro_dph − drift_dph: the compensated gyro of a recording, °/h.")
+          "gyro − drift_dph: the compensated gyro of a recording, °/h (the gyro the model "
+          "compensates, Model.target).")
       // Pickled as its file's text: a model crosses to another process (a Dask worker)
       // unchanged and checked again on arrival.
       .def(py::pickle([](const CompensationModel& self) { return to_json(self); },

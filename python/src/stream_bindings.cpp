@@ -26,11 +26,13 @@ const FaultPolicy kFaults;
 struct Stream {
   StreamingCompensator compensator;
   bool reads_acc1, reads_acc2;
+  std::string gyro_column;  ///< the gyro the model compensates (gyro_dph or gyro_NAME_dph)
 
   Stream(const CompensationModel& model, double dt_s, const StreamOptions& options)
       : compensator(model, dt_s, options),
         reads_acc1(model.dataset.features.reads(Thermometer::acc1)),
-        reads_acc2(model.dataset.features.reads(Thermometer::acc2)) {}
+        reads_acc2(model.dataset.features.reads(Thermometer::acc2)),
+        gyro_column(model.dataset.target_column) {}
 
   // A thermometer the model does not read may be absent (0, as `fogdrift stream` takes it).
   double thermometer(const std::optional<double>& value, bool read, const char* name) const {
@@ -107,14 +109,15 @@ py::array_t<double, py::array::forcecast> column(const py::object& columns, cons
 py::dict run(Stream& s, const py::object& recording) {
   std::array<py::array_t<double, py::array::forcecast>, 5> c;
   if (py::isinstance<py::str>(recording) || py::hasattr(recording, "__fspath__")) {
-    const Recording r = to_recording(recording, "(recording)");
+    const Recording r = with_target(
+        to_recording(recording, "(recording)", s.gyro_column != "gyro_dph"), s.gyro_column);
     const std::vector<double>* v[5] = {&r.time_s, &r.gyro_dph, &r.temp_fog_degc, &r.temp_acc1_degc,
                                        &r.temp_acc2_degc};
     for (std::size_t k = 0; k < 5; ++k) c[k] = copy_to_array(*v[k]);
   } else {
     c[0] = column(recording, "time_s", true, 0);
     const auto n = static_cast<std::size_t>(c[0].shape(0));
-    c[1] = column(recording, "gyro_dph", true, n);
+    c[1] = column(recording, s.gyro_column.c_str(), true, n);
     c[2] = column(recording, "temp_fog_degc", true, n);
     c[3] = column(recording, "temp_acc1_degc", s.reads_acc1, n);
     c[4] = column(recording, "temp_acc2_degc", s.reads_acc2, n);

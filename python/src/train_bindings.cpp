@@ -13,6 +13,7 @@
 #include "convert.hpp"
 #include "fogdrift/campaign.hpp"
 #include "fogdrift/error.hpp"
+#include "fogdrift/model_set.hpp"
 #include "fogdrift/signal/differentiate.hpp"
 #include "fogdrift/thread_pool.hpp"
 #include "fogdrift/train_campaign.hpp"
@@ -62,8 +63,13 @@ py::dict train(const py::object& campaign, const std::string& method, const std:
                std::size_t population, std::size_t iterations, std::uint64_t seed, unsigned threads,
                double c_min, double c_max, double sigma_min, double sigma_max, double epsilon,
                bool search_epsilon, bool auto_box, bool denoise, std::size_t hidden,
-               std::size_t max_degree, const py::object& progress) {
+               std::size_t max_degree, const py::object& progress, const std::string& target) {
   CampaignTrainOptions o;
+  if (!is_target_column(target))
+    throw OptionError("target", "'" + target +
+                                    "' is not gyro_dph or gyro_NAME_dph, a gyro axis "
+                                    "the recordings carry");
+  o.dataset.target_column = target;
   TrainOptions& t = o.train;
   t.method = parse_method(method, "method");
   t.tune.fitness = tune::parse_fitness(fitness, "fitness");
@@ -200,12 +206,25 @@ void bind_train(py::module_& m) {
         py::arg("epsilon") = kSpace.epsilon, py::arg("search_epsilon") = false,
         py::arg("auto_box") = false, py::arg("denoise") = true,
         py::arg("hidden") = kTrain.mlp.hidden, py::arg("max_degree") = kTrain.poly_max_degree,
-        py::arg("progress") = py::none(),
+        py::arg("progress") = py::none(), py::arg("target") = "gyro_dph",
         "Trains a compensation model on a campaign's training recordings, as `fogdrift train` "
         "does; returns {'model': Model, 'summary': dict}. campaign: a folder (or its "
         "campaign.json), or a campaign in memory: a dict with the manifest's fields and 'data', "
         "one recording per entry (what fogdrift.simulate returns); the same model bytes either "
-        "way.");
+        "way. target: the gyro column to compensate, gyro_dph or another axis the recordings "
+        "carry (gyro_y_dph, ...); save_models writes the models of every axis as one file, as "
+        "`fogdrift train --targets` does.");
+  m.def(
+      "save_models",
+      [](const std::filesystem::path& path, const std::vector<CompensationModel>& models) {
+        ModelSet set;
+        set.models = models;
+        save(set, path);
+      },
+      py::arg("path"), py::arg("models"),
+      "Writes the models of several gyro axes (each trained with its own target) as one model "
+      "file, atomically, as `fogdrift train --targets` writes it; Model.load(path, target=...) "
+      "reads one back.");
 }
 
 }  // namespace fogdrift::python

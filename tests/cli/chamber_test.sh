@@ -112,10 +112,14 @@ raise SystemExit(0 if ok else 1)
 EOF2
 check "evaluate every axis" run 0 "$fd" evaluate m3.json camp --json
 check "an evaluation per axis" python3 -c "import json; j=json.load(open('$work/out')); assert [a['target'] for a in j['axes']] == ['gyro_dph','gyro_y_dph','gyro_z_dph']; assert all(a['overall']['mae_dph'] < 0.1 * a['overall']['mae_before_dph'] for a in j['axes'])"
-check "stream needs the axis" run 1 "$fd" stream m3.json camp/joined_05.csv --rate-hz 0.016666666666666666
-check "stream axis message" err_has "option --target: the model compensates 3 axes (gyro_dph, gyro_y_dph, gyro_z_dph); this command takes one: choose it with --target NAME"
+check "stream every axis" run 0 "$fd" stream m3.json camp/joined_05.csv --rate-hz 0.016666666666666666
+check "every axis's columns" bash -c "head -1 '$work/out' | grep -q ',drift_dph,gyro_comp_dph,novelty,guard_weight,fault_flags,drift_y_dph,gyro_y_comp_dph,novelty_y,guard_weight_y,fault_flags_y,drift_z_dph,gyro_z_comp_dph,novelty_z,guard_weight_z,fault_flags_z$'"
+cp "$work/out" stream_all.csv
 check "stream one axis" run 0 "$fd" stream m3.json camp/joined_05.csv --rate-hz 0.016666666666666666 --target gyro_y_dph
-check "streamed axis columns" bash -c "head -1 '$work/out' | grep -q ',drift_y_dph,gyro_y_comp_dph,novelty_y,guard_weight_y,fault_flags$'"
+check "one axis's columns" bash -c "head -1 '$work/out' | grep -q 'temp_case_degc,drift_y_dph,gyro_y_comp_dph,novelty_y,guard_weight_y,fault_flags_y$'"
+check "an axis alone is that axis together" bash -c "diff <(cut -d, -f15-19 stream_all.csv) <(cut -d, -f10-14 '$work/out')"
+check "a missing axis" run 1 "$fd" stream m3.json camp/joined_05.csv --rate-hz 0.016666666666666666 --target gyro_q_dph
+check "missing axis names the axes" err_has "option --target: the model has no axis 'gyro_q_dph' (it compensates gyro_dph, gyro_y_dph, gyro_z_dph)"
 check "export one axis" run 0 "$fd" export-c m3.json --target gyro_z_dph --prefix imu_z -o imu_z.h
 check "its header" grep -q "imu_z_predict_dph" imu_z.h
 check "export every axis" run 0 "$fd" export-c m3.json --prefix imu --stream-rate-hz 0.016666666666666666 -o imu.h
@@ -145,7 +149,7 @@ header = [[float(v) for v in line.split(",")] for line in open("c_drift.csv")]
 ok = len(header) == 60
 for k, axis in enumerate(("gyro_dph", "gyro_y_dph", "gyro_z_dph")):
     rows = list(csv.reader(open(f"stream_{axis}.csv")))
-    drift = [float(r[-5]) for r in rows[1:]]
+    drift = [float(r[-5]) for r in rows[1:]]  # drift, comp, novelty, weight, flags
     worst = max(abs(a[k] - b) for a, b in zip(header, drift))
     print(f"{axis}: header against stream, worst {worst:.3g} deg/h")
     ok = ok and len(drift) == 60 and worst < 1e-9 * max(abs(b) for b in drift)

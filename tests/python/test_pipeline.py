@@ -287,6 +287,37 @@ def test_a_campaign_in_memory_trains_the_folders_model(campaign):
         fogdrift.train(dict(py, data=broken))
 
 
+def test_every_axis_trains_its_own_model_and_saves_as_one_file(campaign, cli, tmp_path):
+    d, py = campaign
+    # A second axis that reads as the first turned over: the same drift, negated.
+    data = [dict(r, gyro_y_dph=-r["gyro_dph"]) for r in py["data"]]
+    # The Earth rate of a true azimuth is the FOG axis's; another axis needs its input rate.
+    with pytest.raises(ValueError, match="the Earth rate a true azimuth gives is the FOG axis's"):
+        fogdrift.train(dict(py, data=data), method="poly", target="gyro_y_dph")
+    static = dict(py, data=data, recordings=[dict(r, input_rate_dph=0.0) for r in py["recordings"]])
+    x = fogdrift.train(static, method="poly")["model"]
+    y = fogdrift.train(static, method="poly", target="gyro_y_dph")["model"]
+    assert (x.target, y.target) == ("gyro_dph", "gyro_y_dph")
+    rec = data[-1]
+    assert np.allclose(y.predict(rec)["drift_dph"], -x.predict(rec)["drift_dph"], rtol=1e-9,
+                       atol=1e-12)
+    assert np.allclose(y.compensate(rec), -x.compensate(rec), rtol=1e-9, atol=1e-12)
+    ex = fogdrift.evaluate(x, [rec], input_rate_dph=0.0)["overall"]
+    ey = fogdrift.evaluate(y, [rec], input_rate_dph=0.0)["overall"]
+    assert math.isclose(ey["mae_dph"], ex["mae_dph"], rel_tol=1e-9)
+    fogdrift.save_models(tmp_path / "imu.json", [x, y])
+    assert fogdrift.Model.load(tmp_path / "imu.json", target="gyro_y_dph").to_json() == y.to_json()
+    # The command line reads the file as train --targets writes it: a table per axis.
+    fogdrift.write_recording(tmp_path / "rec.csv", rec)
+    got = json.loads(cli("evaluate", tmp_path / "imu.json", tmp_path / "rec.csv", "--json",
+                         "--input-rate-dph", "0"))
+    assert [a["target"] for a in got["axes"]] == ["gyro_dph", "gyro_y_dph"]
+    with pytest.raises(ValueError, match="target: 'gyroY' is not gyro_dph or gyro_NAME_dph"):
+        fogdrift.train(static, method="poly", target="gyroY")
+    with pytest.raises(ValueError, match="has no column 'gyro_z_dph'"):
+        fogdrift.train(static, method="poly", target="gyro_z_dph")
+
+
 def test_malformed_inputs_are_value_errors_naming_the_rule(campaign):
     d, py = campaign
     m = fogdrift.Model.load(d / "m.json")
