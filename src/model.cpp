@@ -134,10 +134,14 @@ RecordingPrediction CompensationModel::predict(const Recording& recording, bool 
   FeatureOptions options = dataset.preprocessing;
   options.block.block_s = sample_interval_s(recording);
   const FeatureTable table = compute_features(recording, dataset.features, options);
+  // The table's names are the spec's, so a difference is the model's own: names that are not
+  // its spec's, a file edited or corrupted (with --allow-edited), not the recording's fault.
   if (table.names != feature_names)
-    throw InputError(recording.source, 0, 0,
-                     fmt::format("gives features {} but the model expects {}",
-                                 fmt::join(table.names, ","), fmt::join(feature_names, ",")));
+    throw OptionError("model",
+                      fmt::format("its feature names ({}) are not those of its own spec '{}' ({}): "
+                                  "the model file was edited or is corrupt",
+                                  fmt::join(feature_names, ","), dataset.features.to_string(),
+                                  fmt::join(table.names, ",")));
   RecordingPrediction out;
   out.drift_dph.resize(table.rows);
   out.model_drift_dph.resize(table.rows);

@@ -201,6 +201,42 @@ TEST(StreamFaults, TimeThatDoesNotAdvanceIsSkippedAndGoingBackRestarts) {
   EXPECT_EQ(out[700].drift_dph, fresh.update(clean_samples()[1]).drift_dph);
 }
 
+// Found by an attack (issue 36): a time stamp of 1e300 was said to freeze the correction for the
+// rest of the input. At the model's rate and at a logger ten times faster (blocks of ten), the
+// sample is flagged, the stream starts again as at power-on when time comes back, and after one
+// rate window the drift follows the temperatures again.
+TEST(StreamFaults, ATimeJumpToTheFarFutureDoesNotFreezeTheCorrection) {
+  const Recording& r = fixture().test;
+  for (const std::size_t per_second : {std::size_t{1}, std::size_t{10}}) {
+    const double dt = 1.0 / static_cast<double>(per_second);
+    std::vector<Sample> s;
+    for (std::size_t i = 0; i + 1 < r.size(); ++i)
+      for (std::size_t k = 0; k < per_second; ++k) {
+        Sample x = sample_of(r, i);
+        x.time_s = static_cast<double>(i) + static_cast<double>(k) * dt;
+        s.push_back(x);
+      }
+    const std::size_t jump = 600 * per_second;
+    s[jump].time_s = 1e300;
+    CompensationModel at_1_hz = fixture().model;  // its interval recorded, as train records it
+    at_1_hz.dataset.preprocessing.sample_interval_s = 1.0;
+    StreamingCompensator c(at_1_hz, dt);
+    std::vector<StreamOutput> out;
+    for (const Sample& x : s) out.push_back(c.update(x));
+    EXPECT_NE(out[jump].flags & fault::gap, 0u) << per_second;
+    EXPECT_NE(out[jump + 1].flags & fault::restart, 0u) << per_second;
+    const std::size_t settled = jump + (window() + 2) * per_second;
+    std::size_t changes = 0;
+    for (std::size_t i = settled; i < out.size(); ++i) {
+      ASSERT_TRUE(std::isfinite(out[i].drift_dph)) << per_second << " " << i;
+      ASSERT_EQ(out[i].flags, 0u) << per_second << " " << i;
+      changes += out[i].drift_dph != out[i - 1].drift_dph;
+    }
+    // The correction moves with the start-up: once a block (per model sample) at least.
+    EXPECT_GE(changes, (out.size() - settled) / per_second / 2) << per_second;
+  }
+}
+
 TEST(StreamFaults, ABadGyroKeepsTheLastCompensatedValue) {
   std::vector<Sample> s = clean_samples();
   s[50].gyro_dph = kNan;

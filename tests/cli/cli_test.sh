@@ -352,6 +352,12 @@ check "an edited model is refused" run 1 "$fd" evaluate "$work/edited.json" "$wo
 check "edited model message" err_has "edited.json: checksum: the content does not match its checksum"
 check "the edited model, on purpose" run 1 "$fd" evaluate "$work/edited.json" "$work/small" --allow-edited
 check "its fields are still checked" err_has "block_s"
+# Found by an attack (issue 36): a corrupted feature name was blamed on the recording.
+sed '0,/"T_fog_degc"/s//"T_fg_degc"/' "$work/svr.json" >"$work/renamed.json"
+check "a corrupted feature name" run 1 "$fd" compensate "$work/renamed.json" \
+  "$work/small/cal_r4_20C.csv" -o "$work/x.csv" --allow-edited
+check "is the model's fault" err_has "option model: its feature names (T_fg_degc,"
+check "not the recording's" bash -c "! grep -q 'cal_r4_20C.csv' '$work/err'"
 sed 's/"version": 3/"version": 2/; s/"rho": \(-*\)0/"rho": \19/' "$work/svr.json" >"$work/lowered.json"
 check "a lowered version does not bypass the checksum" run 1 "$fd" compensate "$work/lowered.json" \
   "$work/small/cal_r4_20C.csv" -o "$work/x.csv" --allow-old-format
