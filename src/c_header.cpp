@@ -142,7 +142,8 @@ constexpr std::string_view kStreamingC =
  * during the first @W@); the taps for k + 1 samples start at k(k + 1)/2 in the table.
  * Thermometers this model reads: @READS@; pass anything for the others.@NOTE@
  * Sensor faults (fogdrift docs/compensation.md, "Sensor faults"): a thermometer reading that is
- * not a number, outside [@U@_TEMP_MIN_DEGC, @U@_TEMP_MAX_DEGC] or stuck is continued along its
+ * not a number, outside [@U@_TEMP_MIN_DEGC, @U@_TEMP_MAX_DEGC], more than @U@_TEMP_JUMP_DEGC
+ * from its last good reading continued along its rate, or stuck is continued along its
  * last rate for up to @U@_BRIDGE_S, and so is a time gap; beyond that the drift is held at its
  * last good value until the rate window has refilled, and after @U@_HOLD_S the correction stops
  * (the mean drift). A sample whose time does not advance is skipped; time going back by more
@@ -168,6 +169,9 @@ constexpr std::string_view kStreamingC =
 #endif
 #ifndef @U@_STUCK_DELTA_DEGC
 #define @U@_STUCK_DELTA_DEGC (@STUCK_DELTA@)
+#endif
+#ifndef @U@_TEMP_JUMP_DEGC
+#define @U@_TEMP_JUMP_DEGC (@TEMP_JUMP@) /* 0: no jump check */
 #endif
 @FLAGS@
 #define @U@_BLOCK @BLOCK@ /* samples per model sample */
@@ -306,7 +310,16 @@ static inline @REAL@ @P@_step_(@P@_state* s, double time_s, @REAL@ temp_fog_degc
   for (k = 0; k < 3; ++k) {
     if (!@P@_reads[k]) continue;
     good[k] = isfinite(raw[k]) && raw[k] >= @U@_TEMP_MIN_DEGC && raw[k] <= @U@_TEMP_MAX_DEGC;
-    if (!good[k]) s->flags |= @U@_FAULT_TEMP_BAD;
+    if (!good[k]) {
+      s->flags |= @U@_FAULT_TEMP_BAD;
+      continue;
+    }
+    /* A jump, judged within @U@_BRIDGE_S of the last good reading: a longer step is real. */
+    if (@U@_TEMP_JUMP_DEGC > 0 && s->seen_good[k] && t - s->good_time_s[k] <= @U@_BRIDGE_S &&
+        fabs((double)raw[k] - (double)@P@_substitute_(s, k, t)) > @U@_TEMP_JUMP_DEGC) {
+      good[k] = 0;
+      s->flags |= @U@_FAULT_TEMP_JUMP;
+    }
   }
   if (@U@_STUCK_S > 0) {
     for (k = 0; k < 3; ++k) {
@@ -547,6 +560,7 @@ std::string c_streaming_part(const CompensationModel& model, const std::string& 
        {"@HOLD@", c_number(faults.hold_s)},
        {"@STUCK@", c_number(faults.stuck_s)},
        {"@STUCK_DELTA@", c_number(faults.stuck_delta_degc)},
+       {"@TEMP_JUMP@", c_number(faults.temp_jump_degc)},
        // In float, differences from the newest sample keep the rate's rounding that of the change
        // in temperature over the window, not of the temperature itself.
        {"@RATE_REF@", single ? "x[used - 1]" : "0.0"},

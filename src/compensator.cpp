@@ -39,7 +39,9 @@ void StreamingCompensator::reset() noexcept {
 }
 
 // Which thermometers the model reads give a good reading at this sample: a number inside the
-// policy's range, and not stuck (stream_faults.hpp). Raises temp_bad and temp_stuck.
+// policy's range, no jump from its last good reading continued along its rate (judged within
+// bridge_s of that reading: a step that lasts longer is real), and not stuck
+// (stream_faults.hpp). Raises temp_bad, temp_jump and temp_stuck.
 std::array<bool, 3> StreamingCompensator::check_thermometers(const std::array<double, 3>& raw,
                                                              double time_s,
                                                              std::uint32_t& flags) noexcept {
@@ -48,7 +50,16 @@ std::array<bool, 3> StreamingCompensator::check_thermometers(const std::array<do
     if (!thermometers_[k].read) continue;
     good[k] =
         std::isfinite(raw[k]) && raw[k] >= faults_.temp_min_degc && raw[k] <= faults_.temp_max_degc;
-    if (!good[k]) flags |= fault::temp_bad;
+    if (!good[k]) {
+      flags |= fault::temp_bad;
+      continue;
+    }
+    const ThermometerState& th = thermometers_[k];
+    if (faults_.temp_jump_degc > 0 && th.seen_good && time_s - th.good_time_s <= faults_.bridge_s &&
+        std::abs(raw[k] - substitute(k, time_s)) > faults_.temp_jump_degc) {
+      good[k] = false;
+      flags |= fault::temp_jump;
+    }
   }
   if (faults_.stuck_s <= 0) return good;
   const double nan = std::numeric_limits<double>::quiet_NaN();

@@ -41,14 +41,18 @@ void validate(const FaultPolicy& p) {
   if (!(p.stuck_delta_degc > 0) || !finite(p.stuck_delta_degc))
     throw OptionError("faults.stuck_delta_degc",
                       fmt::format("{} °C must be finite and > 0", p.stuck_delta_degc));
+  if (!(p.temp_jump_degc >= 0) || !finite(p.temp_jump_degc))
+    throw OptionError(
+        "faults.temp_jump_degc",
+        fmt::format("{} °C must be finite and ≥ 0 (0: no jump check)", p.temp_jump_degc));
 }
 
 namespace fault {
 
 const std::array<std::string_view, count>& names() {
   static const std::array<std::string_view, count> kNames = {
-      "temp_bad",     "temp_stuck", "gyro_bad", "time_bad", "gap",
-      "out_of_order", "restart",    "bridged",  "held",     "stopped"};
+      "temp_bad", "temp_stuck", "gyro_bad", "time_bad", "gap",      "out_of_order",
+      "restart",  "bridged",    "held",     "stopped",  "temp_jump"};
   return kNames;
 }
 

@@ -237,6 +237,39 @@ TEST(StreamFaults, ATimeJumpToTheFarFutureDoesNotFreezeTheCorrection) {
   }
 }
 
+// Found by an attack (issue 36): a one-sample +100 °C glitch inside the range limits moved the
+// drift by 0.38 °/h for a rate window. It is a jump now, bridged like a bad reading; a step that
+// lasts beyond bridge_s is real, and the thermometer is taken again.
+TEST(StreamFaults, AOneSampleJumpIsBridgedAndALastingStepIsTakenAgain) {
+  std::vector<Sample> s = clean_samples();
+  s[600].temp_fog_degc += 100;  // inside [-60, 125] °C
+  const std::vector<StreamOutput> out = run(s), clean = run(clean_samples());
+  EXPECT_EQ(out[600].flags, fault::temp_jump | fault::bridged);
+  EXPECT_EQ(out[601].flags, 0u);
+  EXPECT_NEAR(out[600].drift_dph, clean[600].drift_dph, 1e-3);
+  for (std::size_t i = 601 + window(); i < out.size(); ++i)
+    ASSERT_EQ(out[i].drift_dph, clean[i].drift_dph) << i;
+  // Without the check the glitch reaches the rates, as before.
+  FaultPolicy off;
+  off.temp_jump_degc = 0;
+  const std::vector<StreamOutput> unchecked = run(s, {true, off});
+  EXPECT_EQ(unchecked[600].flags, 0u);
+  EXPECT_GT(std::abs(unchecked[605].drift_dph - clean[605].drift_dph), 1e-2);
+
+  // A step of +30 °C that lasts: bridged for bridge_s (5 s), then the reading is taken again
+  // and the rates start anew; the output stays finite throughout.
+  std::vector<Sample> step = clean_samples();
+  for (std::size_t i = 700; i < step.size(); ++i) step[i].temp_acc1_degc += 30;
+  const std::vector<StreamOutput> stepped = run(step);
+  for (std::size_t i = 700; i <= 704; ++i)  // 1 to 5 s after the last good reading
+    EXPECT_NE(stepped[i].flags & fault::temp_jump, 0u) << i;
+  for (std::size_t i = 705; i < stepped.size(); ++i) {
+    ASSERT_EQ(stepped[i].flags & (fault::temp_jump | fault::temp_bad), 0u) << i;
+    ASSERT_TRUE(std::isfinite(stepped[i].drift_dph)) << i;
+  }
+  EXPECT_EQ(stepped[705 + window()].flags, 0u);
+}
+
 TEST(StreamFaults, ABadGyroKeepsTheLastCompensatedValue) {
   std::vector<Sample> s = clean_samples();
   s[50].gyro_dph = kNan;
@@ -369,6 +402,7 @@ TEST(StreamFaults, TheCHeaderRunsTheSamePolicy) {
   s[100].temp_fog_degc = kNan;
   for (std::size_t i = 300; i < 420; ++i) s[i].temp_acc1_degc = 999;
   s[500].gyro_dph = kNan;
+  s[550].temp_acc2_degc += 60;  // a jump
   s[600].time_s = kNan;
   s.erase(s.begin() + 700, s.begin() + 703);
   s.erase(s.begin() + 900, s.begin() + 940);

@@ -35,6 +35,12 @@ void add_fault_options(CLI::App* cmd, FaultPolicy& p) {
                   "How far another thermometer must move for --stuck-s to apply, °C")
       ->capture_default_str()
       ->group(group);
+  cmd->add_option("--temp-jump-degc", p.temp_jump_degc,
+                  "A thermometer reading this far from its last good value continued along its "
+                  "rate is a jump, bridged like a bad reading; one lasting beyond --bridge-s is a "
+                  "real step, °C (0: no check)")
+      ->capture_default_str()
+      ->group(group);
 }
 
 void fault_timings_from_model(const CLI::App& cmd, const CompensationModel& model,
@@ -57,7 +63,8 @@ const FlagTable& fault_flags() {
                                    {"faults.bridge_s", "--bridge-s"},
                                    {"faults.hold_s", "--hold-s"},
                                    {"faults.stuck_s", "--stuck-s"},
-                                   {"faults.stuck_delta_degc", "--stuck-delta-degc"}};
+                                   {"faults.stuck_delta_degc", "--stuck-delta-degc"},
+                                   {"faults.temp_jump_degc", "--temp-jump-degc"}};
   return kFlags;
 }
 

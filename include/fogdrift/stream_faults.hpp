@@ -4,9 +4,11 @@
 // An instrument cannot stop compensating because one sample was bad, nor pass a NaN on to the
 // north-finder. The policy in brief (the docs give the full rule; StreamingCompensator and the C
 // header of `export-c --stream-rate-hz` run the same one):
-//  * a thermometer reading that is not a number, lies outside [temp_min_degc, temp_max_degc] or
-//    is stuck is replaced by its last good value continued along its last rate ("bridged"), for
-//    up to bridge_s; a time gap up to bridge_s is bridged by interpolating the missing samples;
+//  * a thermometer reading that is not a number, lies outside [temp_min_degc, temp_max_degc],
+//    jumps by more than temp_jump_degc from its last good value continued along its last rate,
+//    or is stuck is replaced by that continuation ("bridged"), for up to bridge_s; a jump that
+//    lasts longer is a real step, and the reading is taken again; a time gap up to bridge_s is
+//    bridged by interpolating the missing samples;
 //  * beyond bridge_s the thermometer (or the gap) is "out": the rate filters start again, and the
 //    drift is held at its last good value until a full rate window of good samples has come in
 //    ("held"), and if that takes longer than hold_s after the last good drift, the correction
@@ -47,6 +49,11 @@ struct FaultPolicy {
   /// fires.
   double stuck_s = 300;
   double stuck_delta_degc = 2;
+  /// A thermometer reading this far from its last good reading continued along its last rate is
+  /// a jump, °C, bridged like a bad reading; 0 switches the check off. A unit's thermometer moves
+  /// by hundredths of a degree a second, so a bus glitch of +100 °C inside the range limits is
+  /// caught, while a step that lasts beyond bridge_s is taken as real (the rates start again).
+  double temp_jump_degc = 10;
 };
 
 /// Throws OptionError naming the field (faults.temp_min_degc, faults.bridge_s, …) and the rule.
@@ -74,7 +81,8 @@ constexpr std::uint32_t restart = 1u << 6;       ///< time went back: started ag
 constexpr std::uint32_t bridged = 1u << 7;       ///< the drift uses substituted temperatures
 constexpr std::uint32_t held = 1u << 8;          ///< the drift is the last good one, held
 constexpr std::uint32_t stopped = 1u << 9;       ///< the correction stopped: the mean drift
-constexpr std::size_t count = 10;
+constexpr std::uint32_t temp_jump = 1u << 10;    ///< a thermometer jumped (temp_jump_degc)
+constexpr std::size_t count = 11;
 /// The flags' names, bit k at index k: "temp_bad", "temp_stuck", …
 const std::array<std::string_view, count>& names();
 /// "temp_bad|bridged", or "" for no flags.

@@ -45,13 +45,14 @@ struct Stream {
 std::unique_ptr<Stream> make_stream(const CompensationModel& model, double dt_s, bool guarded,
                                     double temp_min_degc, double temp_max_degc,
                                     double gyro_limit_dph, double bridge_s, double hold_s,
-                                    double stuck_s, double stuck_delta_degc) {
+                                    double stuck_s, double stuck_delta_degc,
+                                    double temp_jump_degc) {
   if (!(dt_s > 0) || !std::isfinite(dt_s))
     throw OptionError("dt_s", "must be a finite number of seconds > 0");
   StreamOptions o;
   o.guarded = guarded;
-  o.faults = {temp_min_degc, temp_max_degc, gyro_limit_dph,  bridge_s,
-              hold_s,        stuck_s,       stuck_delta_degc};
+  o.faults = {temp_min_degc, temp_max_degc, gyro_limit_dph,   bridge_s,
+              hold_s,        stuck_s,       stuck_delta_degc, temp_jump_degc};
   try {
     validate(o.faults);
   } catch (const OptionError& e) {  // "faults.bridge_s" is the keyword bridge_s here
@@ -168,7 +169,8 @@ void bind_stream(py::module_& m) {
            py::arg("gyro_limit_dph") = kFaults.gyro_limit_dph,
            py::arg("bridge_s") = kFaults.bridge_s, py::arg("hold_s") = kFaults.hold_s,
            py::arg("stuck_s") = kFaults.stuck_s,
-           py::arg("stuck_delta_degc") = kFaults.stuck_delta_degc, py::keep_alive<1, 2>(),
+           py::arg("stuck_delta_degc") = kFaults.stuck_delta_degc,
+           py::arg("temp_jump_degc") = kFaults.temp_jump_degc, py::keep_alive<1, 2>(),
            "dt_s: the logger's fixed sample interval, s. The fault policy's limits are "
            "`fogdrift stream`'s flags under their field names.")
       .def("update", &update, py::arg("time_s"), py::arg("gyro_dph"), py::arg("temp_fog_degc"),

@@ -446,8 +446,14 @@ check "stream out of range message" err_has "hot.csv:8:3: temp_fog_degc 300 is o
 awk -F, 'BEGIN{OFS=","} NR==7{$2="1e9"} {print}' "$rec20" >"$work/spin.csv"
 check "stream gyro beyond its limit strict" run 1 "$fd" stream "$work/causal.json" "$work/spin.csv" --rate-hz 1 --strict
 check "stream gyro limit message" err_has "spin.csv:7:2: gyro_dph 1e+09 is beyond ±3600000 °/h (--gyro-limit-dph)"
-check "stream range option" run 0 "$fd" stream "$work/causal.json" "$work/hot.csv" --rate-hz 1 --temp-max-degc 400
+check "stream range option" run 0 "$fd" stream "$work/causal.json" "$work/hot.csv" --rate-hz 1 --temp-max-degc 400 --temp-jump-degc 0
 check "stream range option: nothing flagged" test ! -s "$work/err"
+# Found by an attack (issue 36): a one-sample glitch inside the range is a jump.
+check "stream a jump inside the range" run 0 "$fd" stream "$work/causal.json" "$work/hot.csv" --rate-hz 1 --temp-max-degc 400
+check "the jump is flagged" err_has "stream: 1 of"
+check "the jump's flag" err_has "temp_jump 1"
+check "stream a jump strict" run 1 "$fd" stream "$work/causal.json" "$work/hot.csv" --rate-hz 1 --temp-max-degc 400 --strict
+check "stream jump strict message" err_has "hot.csv:8: is a faulty sample (bridged|temp_jump); --strict stops at the first"
 # Any sample rate (docs/compensation.md, "Any sample rate"): a 1 Hz model on a 10 Hz logger runs
 # on blocks of 10 samples; stream and compensate agree byte for byte; a rate the model cannot run
 # at is refused naming the option and the fix.
