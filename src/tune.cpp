@@ -53,9 +53,18 @@ namespace {
 // k folds of `available` whole units (recordings, temperatures) need 2 ≤ k ≤ available.
 std::size_t checked_folds(std::size_t k, std::size_t available, const char* units,
                           const char* counted) {
-  if (k < 2 || k > available)
-    throw OptionError("folds", fmt::format("{} folds of whole {} need 2 to {} (the number of {})",
-                                           k, units, available, counted));
+  if (available < 2)
+    throw OptionError("folds",
+                      fmt::format("folds of whole {} need at least 2 {}, and there {} {}", units,
+                                  counted, available == 1 ? "is" : "are", available));
+  if (k < 2) throw OptionError("folds", fmt::format("{} is not a number of folds: 2 or more", k));
+  if (k > available)
+    throw OptionError("folds",
+                      fmt::format("{} folds of whole {} need {} {}, and there are {}; ask "
+                                  "for {}",
+                                  k, units, k, counted, available,
+                                  available == 2 ? std::string("2 folds")
+                                                 : fmt::format("2 to {} folds", available)));
   return k;
 }
 

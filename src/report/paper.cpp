@@ -316,16 +316,23 @@ void validate(const PaperOptions& o) {
   sim::validate(o.calibration);
   sim::validate(o.northfind, "northfind");
   sim::validate(o.stable, "stable");
-  if (o.cv.scheme == tune::CvScheme::temperature && (o.cv.folds < 2 || o.cv.folds > temps))
-    throw OptionError("cv.folds", fmt::format("{} folds of whole temperatures need 2 to {} (the "
-                                              "calibration temperatures); set --folds, or --cv "
-                                              "repetition to leave one repetition out",
-                                              o.cv.folds, temps));
-  if (o.cv.scheme == tune::CvScheme::recording &&
-      (o.cv.folds < 2 || o.cv.folds > temps * train_reps))
-    throw OptionError("cv.folds", fmt::format("{} folds of whole recordings need 2 to {} (the "
-                                              "training recordings)",
-                                              o.cv.folds, temps * train_reps));
+  // k folds of n whole units (temperatures, recordings) need 2 <= k <= n.
+  auto folds_of = [&](std::size_t n, const char* units, const char* advice) {
+    if (o.cv.folds >= 2 && o.cv.folds <= n) return;
+    const std::string ask = n < 2    ? std::string("there are too few for folds")
+                            : n == 2 ? std::string("ask for 2 folds")
+                                     : fmt::format("ask for 2 to {} folds", n);
+    throw OptionError("cv.folds",
+                      fmt::format("{} folds of whole {} need {} {}, and there are "
+                                  "{}; {}{}",
+                                  o.cv.folds, units, std::max<std::size_t>(o.cv.folds, 2), units, n,
+                                  ask, advice));
+  };
+  if (o.cv.scheme == tune::CvScheme::temperature)
+    folds_of(static_cast<std::size_t>(temps), "calibration temperatures",
+             ", or --cv repetition to leave one repetition out");
+  if (o.cv.scheme == tune::CvScheme::recording)
+    folds_of(static_cast<std::size_t>(temps * train_reps), "training recordings", "");
   if (o.cv.scheme == tune::CvScheme::repetition && train_reps < 2)
     throw OptionError("cv.scheme",
                       "leave one repetition out needs two or more training repetitions");

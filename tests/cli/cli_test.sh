@@ -316,13 +316,13 @@ check "bad fitness" run 1 "$fd" train "$work/small" --fitness loo -o "$work/x.js
 check "fitness message" err_has "option --fitness: 'loo' is not a fitness (cv, train)"
 check "one fold is impossible" run 1 "$fd" train "$work/small" --cv recording --folds 1 \
   --method svr -o "$work/x.json"
-check "folds message" err_has "option --folds"
+check "folds message" err_has "option --folds: 1 is not a number of folds: 2 or more"
 check "train with temperature folds" run 0 "$fd" train "$work/small" --method svr --cv temperature \
   --folds 3 -o "$work/tcv.json"
 check "temperature folds in the model" grep -q '"cv": "whole initial temperatures (3 folds)"' "$work/tcv.json"
 check "more temperature folds than temperatures" run 1 "$fd" train "$work/small" --method svr \
   --cv temperature --folds 4 -o "$work/x.json"
-check "temperature folds message" err_has "option --folds: 4 folds of whole initial temperatures need 2 to 3"
+check "temperature folds message" err_has "option --folds: 4 folds of whole initial temperatures need 4 training temperatures, and there are 3; ask for 2 to 3 folds"
 check "missing campaign" run 1 "$fd" train "$work/nowhere" -o "$work/x.json"
 check "no model written on error" test ! -e "$work/x.json"
 

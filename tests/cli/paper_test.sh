@@ -53,11 +53,11 @@ check "paper bad population message" err_has "option --population"
 check "paper bad cv" run 1 "$fd" paper --cv temperatures
 check "paper bad cv message" err_has "option --cv: 'temperatures' is not a cross-validation scheme"
 check "paper too many temperature folds" run 1 "$fd" paper --cv temperature --folds 12
-check "paper temperature folds message" err_has "option --folds: 12 folds of whole temperatures need 2 to 11"
+check "paper temperature folds message" err_has "option --folds: 12 folds of whole calibration temperatures need 12 calibration temperatures, and there are 11; ask for 2 to 11 folds"
 check "paper temperature folds on stdout" run 0 "$fd" paper --seeds 1 --cal-temps 0,20,40 --nf-temps 20 --findings 1 --population 5 --iterations 1 --no-studies --cv temperature --folds 3
 check "paper temperature folds in the header" out_has "fitness \`cv\` (3 temperature folds)"
 check "paper default folds need three temperatures" run 1 "$fd" paper --cal-temps 0,40
-check "paper default folds message" err_has "option --folds: 3 folds of whole temperatures need 2 to 2 (the calibration temperatures); set --folds, or --cv repetition"
+check "paper default folds message" err_has "option --folds: 3 folds of whole calibration temperatures need 3 calibration temperatures, and there are 2; ask for 2 folds, or --cv repetition"
 check "demo help" run 0 "$fd" demo --help
 check "demo help says what it runs" out_has "fogdrift paper"
 
