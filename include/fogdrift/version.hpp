@@ -1,4 +1,5 @@
-// fogdrift's version, written into every file it produces (provenance).
+// fogdrift's version, written into every file it produces (provenance). The one place it is
+// set: CMakeLists.txt and setup.py read it from here.
 #pragma once
 
 namespace fogdrift {
