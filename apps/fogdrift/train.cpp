@@ -105,30 +105,11 @@ std::vector<std::string> notes_of(const CampaignTrainResult& trained) {
 
 /// A best value on the edge of its box: the box, not the data, may have stopped the search.
 std::vector<std::string> edge_notes_of(const TrainArgs& a, const TrainSummary& s) {
-  std::vector<std::string> edge_notes;
-  for (const auto& e : s.box_edges) {
-    const std::string flag = e.parameter == "C"       ? (e.upper ? "--c-max" : "--c-min")
-                             : e.parameter == "sigma" ? (e.upper ? "--sigma-max" : "--sigma-min")
-                                                      : "--search-epsilon bounds";
-    // With --auto-box the box was widened already: say how often, and only name what is left.
-    const std::string advice =
-        !a.auto_box ? fmt::format("a wider box may do better: {} or --auto-box", flag)
-        : tune::widened(s.boxes.back(), {e}) == s.boxes.back()
-            ? fmt::format(
-                  "--auto-box widened it {} times, to fogdrift's limit for {}: the data "
-                  "do not bound it",
-                  s.boxes.size() - 1, e.parameter)
-            : fmt::format(
-                  "--auto-box widened it {} times, its most; a wider box may still do "
-                  "better: {}",
-                  s.boxes.size() - 1, flag);
-    edge_notes.push_back(fmt::format(
-        "{} = {:.6g} is at the {} edge of its box [{:.6g}, {:.6g}]; the fitness there is {:.1f} % "
-        "better than further inside; {}",
-        e.parameter, e.value, e.upper ? "upper" : "lower", e.low, e.high, 100.0 * e.improvement,
-        advice));
-  }
-  return edge_notes;
+  return box_edge_warnings(s, a.auto_box, [](const std::string& field) {
+    return field == "auto_box"         ? std::string("--auto-box")
+           : field == "search_epsilon" ? std::string("--search-epsilon")
+                                       : flag_for(field, kTrainFlags);
+  });
 }
 
 /// `fogdrift train --json`'s summary of one model.

@@ -70,4 +70,12 @@ struct TrainResult {
 /// Trains on every row of `data`, built with `dataset` (recorded in the model).
 TrainResult train(const Dataset& data, const DatasetOptions& dataset, const TrainOptions& options);
 
+/// One warning for each best value on the edge of its box (summary.box_edges): the box, not the
+/// data, may have stopped the search. The advice names what the user sets, in their own words:
+/// `name_of` turns a field (c_min, c_max, sigma_min, sigma_max, search_epsilon, auto_box) into a
+/// flag (--c-max) or a keyword (c_max); `auto_box` says whether the box was widened already.
+std::vector<std::string> box_edge_warnings(
+    const TrainSummary& summary, bool auto_box,
+    const std::function<std::string(const std::string&)>& name_of);
+
 }  // namespace fogdrift

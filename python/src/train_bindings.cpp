@@ -179,6 +179,51 @@ py::dict train(const py::object& campaign, const std::string& method, const std:
   } else {
     summary["held_out"] = py::none();
   }
+  // What `fogdrift train --json` reports of the search, under the same keys.
+  summary["cv"] = r->trained.model.provenance.cv;
+  py::list edges;
+  for (const auto& e : s.box_edges) {
+    py::dict d;
+    d["parameter"] = e.parameter;
+    d["edge"] = e.upper ? "upper" : "lower";
+    d["value"] = e.value;
+    d["box"] = py::make_tuple(e.low, e.high);
+    d["improvement"] = e.improvement;
+    edges.append(d);
+  }
+  summary["box_edges"] = edges;
+  py::list boxes;
+  for (const auto& b : s.boxes) {
+    py::dict d;
+    d["c"] = py::make_tuple(b.c_min, b.c_max);
+    d["sigma"] = py::make_tuple(b.sigma_min, b.sigma_max);
+    boxes.append(d);
+  }
+  summary["boxes_searched"] = boxes;
+  if (s.method == Method::ssa_svr || s.method == Method::pso_svr || s.method == Method::gwo_svr) {
+    const auto& tr = s.tuning;
+    py::dict search;
+    search["optimizer"] = opt::to_string(tr.optimizer.algorithm);
+    search["population"] = population;
+    search["iterations"] = tr.optimizer.iterations;
+    search["evaluations"] = tr.optimizer.evaluations;
+    search["candidates"] = tr.candidates;
+    search["fits"] = tr.fits;
+    search["initial_best_rmse"] = tr.optimizer.initial_best_fitness;
+    search["seconds"] = tr.seconds;
+    summary["search"] = search;
+  } else {
+    summary["search"] = py::none();
+  }
+  // The box-edge warning the command line prints, in this function's keywords, as a warning.
+  for (const std::string& w : box_edge_warnings(s, auto_box, [](const std::string& field) {
+         return field == "auto_box"         ? std::string("auto_box=True")
+                : field == "search_epsilon" ? std::string("search_epsilon=True")
+                                            : field;
+       })) {
+    warnings.push_back(w);
+    if (PyErr_WarnEx(PyExc_UserWarning, w.c_str(), 1) != 0) throw py::error_already_set();
+  }
   summary["warnings"] = warnings;
   summary["fits"] = s.tuning.fits;
   summary["seconds"] = s.seconds;

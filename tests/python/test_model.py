@@ -154,6 +154,19 @@ def test_train_gives_the_command_lines_model_byte_for_byte(trained, tmp_path, cl
     assert tuned["summary"]["held_out"]["expected_startup_share"] == \
         expected["expected_startup_share"]
     assert [b["name"] for b in tuned["summary"]["held_out"]["baselines"]][0] == "mean"
+    # The search as the command line's --json reports it, under the same keys (issue 35).
+    got = json.loads(held)
+    assert tuned["summary"]["cv"] == got["cv"]
+    assert len(tuned["summary"]["boxes_searched"]) == len(got["boxes_searched"])
+    assert [e["parameter"] for e in tuned["summary"]["box_edges"]] == \
+        [e["parameter"] for e in got["box_edges"]]
+    assert tuned["summary"]["search"]["evaluations"] == got["search"]["evaluations"]
+    # A box too small: the edge warning the command line prints, in this function's words.
+    with pytest.warns(UserWarning, match=r"C = .* upper edge .* a wider box may do better: "
+                                         r"c_max or auto_box=True"):
+        small = fogdrift.train(str(d / "cal"), population=6, iterations=2, seed=5, c_max=0.02)
+    assert small["summary"]["box_edges"][0]["parameter"] == "C"
+    assert any("c_max or auto_box=True" in w for w in small["summary"]["warnings"])
 
 
 def test_train_options_and_errors_use_the_librarys_names(trained):
