@@ -26,7 +26,9 @@ def _train_one(campaign, options, evaluate):
         if evaluate:
             result["evaluation"] = _evaluate(trained["model"], campaign)
     except (ValueError, MemoryError) as e:
-        result["error"] = str(e)
+        # A unit that failed, in training or in its evaluation, gives no model: the docstring's
+        # promise, and what out= writes.
+        result.update(model=None, summary=None, evaluation=None, error=str(e))
     return result
 
 

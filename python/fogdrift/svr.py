@@ -192,7 +192,12 @@ class SVR(RegressorMixin, BaseEstimator):
     # -- internals -----------------------------------------------------------------------------
 
     def _check_params(self):
-        if callable(self.kernel) or self.kernel not in _KERNELS:
+        if callable(self.kernel):
+            raise ValueError(
+                f"kernel must be 'rbf' or 'linear', not a callable ({self.kernel!r}): fogdrift's "
+                "engine computes its kernels itself; for a kernel of your own, pass its Gram "
+                "matrix to sklearn.svm.SVR(kernel='precomputed')")
+        if self.kernel not in _KERNELS:
             raise ValueError(
                 f"kernel must be 'rbf' or 'linear' (got {self.kernel!r}); fogdrift has no "
                 "'poly', 'sigmoid' or 'precomputed' kernel")

@@ -117,4 +117,30 @@ py::object from_json(const std::string& text) {
   return py::module_::import("json").attr("loads")(text);
 }
 
+bool is_held_campaign(const py::object& given) {
+  return py::isinstance<py::dict>(given) && given.cast<py::dict>().contains("recordings");
+}
+
+HeldCampaign held_campaign(const py::object& given) {
+  py::dict manifest;
+  for (const auto& [key, value] : given.cast<py::dict>())
+    if (key.cast<std::string>() != "data") manifest[key] = value;
+  if (!given.contains("data"))
+    throw InputError("campaign", 0, 0,
+                     "data: required in a campaign given as a dict (one recording per entry of "
+                     "recordings, as fogdrift.simulate returns it)");
+  const auto text = py::module_::import("json").attr("dumps")(manifest).cast<std::string>();
+  HeldCampaign h{campaign_from_json(text, "campaign"), {}};
+  std::size_t i = 0;
+  for (const py::handle recording : given["data"]) {
+    const std::string name =
+        i < h.campaign.recordings.size()
+            ? "campaign data[" + std::to_string(i) + "] (" + h.campaign.recordings[i].file + ")"
+            : "campaign data[" + std::to_string(i) + "]";
+    h.recordings.push_back(to_recording(py::reinterpret_borrow<py::object>(recording), name, true));
+    ++i;
+  }
+  return h;
+}
+
 }  // namespace fogdrift::python

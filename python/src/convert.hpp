@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "fogdrift/campaign.hpp"
 #include "fogdrift/recording.hpp"
 
 namespace fogdrift::python {
@@ -40,5 +41,18 @@ std::optional<double> seconds_or_auto(const pybind11::object& value, const char*
 
 /// The Python value of a JSON text (json.loads).
 pybind11::object from_json(const std::string& text);
+
+/// A campaign in memory: the manifest's fields (as campaign.json holds them) with "data", one
+/// recording (a mapping of columns) per entry of "recordings" (what fogdrift.simulate returns).
+struct HeldCampaign {
+  Campaign campaign;
+  std::vector<Recording> recordings;
+};
+
+/// Whether `given` is such a campaign: a dict with "recordings".
+bool is_held_campaign(const pybind11::object& given);
+
+/// The campaign a dict holds; InputError naming "campaign" and the entry for what is wrong.
+HeldCampaign held_campaign(const pybind11::object& given);
 
 }  // namespace fogdrift::python

@@ -44,7 +44,25 @@ py::object evaluate(const CompensationModel& model, const py::object& data, bool
   const eval::EvaluationOptions options{.guarded = guarded, .allan = allan};
   eval::Evaluation e;
   std::string source;
-  if (is_campaign(data)) {
+  if (is_held_campaign(data)) {
+    // A campaign in memory (what fogdrift.simulate returns, what train takes): its calibration
+    // recordings with role test, each with its manifest's input.
+    if (input_rate_dph)
+      throw OptionError("input_rate_dph",
+                        "applies to recordings; a campaign says its input rate in its manifest");
+    const HeldCampaign held = held_campaign(data);
+    std::vector<RecordingInput> inputs;
+    for (std::size_t i = 0; i < held.recordings.size(); ++i) {
+      const CampaignEntry& entry = held.campaign.recordings[i];
+      if (entry.role == Role::test && entry.scenario == Scenario::calibration)
+        inputs.push_back(recording_input(held.campaign, entry, held.recordings[i]));
+    }
+    if (inputs.empty())
+      throw InputError("campaign", 0, 0, "has no calibration recordings with role test");
+    source = "campaign (recordings with role \"test\")";
+    py::gil_scoped_release release;
+    e = eval::evaluate(model, inputs, options);
+  } else if (is_campaign(data)) {
     if (input_rate_dph)
       throw OptionError("input_rate_dph",
                         "applies to recordings; a campaign says its input rate in campaign.json "

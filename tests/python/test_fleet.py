@@ -66,3 +66,19 @@ def test_models_that_would_overwrite_each_other_are_refused_before_training(unit
         train_fleet([paths[0], other], out=tmp_path / "models", method="svr",
                     progress=lambda done, total, r: trained.append(done))
     assert trained == [] and not (tmp_path / "models").exists()
+
+
+def test_a_unit_whose_evaluation_fails_gives_no_model(units, tmp_path):
+    # Found by a new user (issue 35): the unit was reported failed and its model returned and
+    # written all the same.
+    import shutil
+    paths, _ = units
+    unit = tmp_path / "unit5"
+    shutil.copytree(paths[0], unit)
+    manifest = json.loads((unit / "campaign.json").read_text())
+    test_file = next(r["file"] for r in manifest["recordings"] if r["role"] == "test")
+    (unit / test_file).write_text("time_s,gyro_dph\n0,1\n")  # training does not read it
+    [r] = train_fleet([unit], out=tmp_path / "models", method="poly")
+    assert "missing required column" in r["error"]
+    assert r["model"] is None and r["summary"] is None and r["evaluation"] is None
+    assert not (tmp_path / "models" / "unit5.json").exists()

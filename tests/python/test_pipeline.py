@@ -160,6 +160,9 @@ def test_evaluate_is_the_command_lines_table_2(campaign, cli):
         fogdrift.evaluate(m, d / "cal", input_rate_dph=0.0)
     with pytest.raises(ValueError, match="no calibration recordings with role test"):
         fogdrift.evaluate(m, d / "nf")
+    # The campaign fogdrift.simulate returned, as train takes it (issue 35: it was refused).
+    in_memory = fogdrift.evaluate(m, py)
+    assert without(in_memory, "source") == without(fogdrift.evaluate(m, d / "cal"), "source")
 
 
 def test_northfind_is_the_command_lines_table_3(campaign, cli):

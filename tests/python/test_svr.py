@@ -168,6 +168,7 @@ def test_works_in_pipelines_searches_and_pickles(rng):
 
 @pytest.mark.parametrize("params, message", [
     (dict(kernel="poly"), "kernel must be 'rbf' or 'linear'"),
+    (dict(kernel=lambda a, b: a @ b.T), "Gram matrix to sklearn.svm.SVR(kernel='precomputed')"),
     (dict(gamma="wide"), "gamma must be 'scale', 'auto' or a float > 0"),
     (dict(gamma=-1.0), "gamma must be 'scale', 'auto' or a float > 0"),
     (dict(C=0.0), "option C: must be a finite number > 0 (got 0)"),
