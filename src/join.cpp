@@ -236,7 +236,8 @@ JoinResult join(const Recording& recording, const Recording& log, const JoinOpti
   // The columns to bring in.
   const std::vector<std::string> available = numeric_columns(log);
   if (options.columns.empty()) {
-    s.columns = available;
+    for (const std::string& name : available)
+      (holds(recording, name) && !options.replace ? s.kept : s.columns).push_back(name);
     for (const ExtraColumn& e : log.extra)
       if (!numeric(e)) s.skipped.push_back(e.name);
   } else {
@@ -256,8 +257,13 @@ JoinResult join(const Recording& recording, const Recording& log, const JoinOpti
     }
   }
   if (s.columns.empty())
-    throw OptionError("columns",
-                      fmt::format("the log {} has no numeric column besides time_s", log.source));
+    throw OptionError(
+        "columns", s.kept.empty()
+                       ? fmt::format("the log {} has no numeric column besides time_s", log.source)
+                       : fmt::format("every numeric column of the log {} ({}) is in the "
+                                     "recording already; replace them with the log's, or "
+                                     "name the ones to bring in",
+                                     log.source, fmt::join(s.kept, ", ")));
   for (const std::string& name : s.columns) {
     if (holds(recording, name) && !options.replace) {
       throw OptionError("columns",

@@ -170,6 +170,14 @@ TEST(Join, APartialRecordingBecomesWholeWhenTheLogHoldsWhatItLacks) {
 TEST(Join, ImpossibleRequestsNameTheRuleBroken) {
   const Recording rec = unit(10.0, 600.0);
   const Recording log = sheet(60.0, 0.0, 600.0, 0.0, 0.0);
+  auto option_of_for = [](const Recording& r, const Recording& l) -> std::string {
+    try {
+      join(r, l, {});
+    } catch (const OptionError& e) {
+      return e.option();
+    }
+    return "";
+  };
   auto option_of = [&](const JoinOptions& o) -> std::string {
     try {
       join(rec, log, o);
@@ -191,6 +199,14 @@ TEST(Join, ImpossibleRequestsNameTheRuleBroken) {
   EXPECT_THROW(join(has_air, log, o), OptionError);  // the recording has it already
   o.replace = true;
   EXPECT_NEAR((*join(has_air, log, o).segments[0].chamber_degc)[6], 10.06, 1e-12);
+  // With no columns named, the ones the recording has are kept and said so.
+  const JoinResult kept = join(has_air, log, {});
+  EXPECT_EQ(kept.summary.kept, (std::vector<std::string>{"chamber_degc"}));
+  EXPECT_EQ(kept.summary.columns, (std::vector<std::string>{"tc_case_degc"}));
+  EXPECT_EQ((*kept.segments[0].chamber_degc)[6], 20.0);
+  Recording only_air = log;
+  only_air.extra.clear();
+  EXPECT_EQ(option_of_for(has_air, only_air), "columns");  // nothing left to bring in
   JoinOptions age;
   age.max_age_s = 10;  // a nearest-method limit on the linear method
   EXPECT_EQ(option_of(age), "max_age_s");

@@ -66,6 +66,9 @@ void print_summary(const JoinSummary& s, const Recording& recording, const Recor
     std::cout << fmt::format("; dropped {} before the log, {} after it, {} inside its gaps",
                              s.dropped_before, s.dropped_after, s.dropped_inside);
   std::cout << "\n";
+  if (!s.kept.empty())
+    std::cout << fmt::format("  kept the recording's own {} (--replace takes the log's)\n",
+                             fmt::join(s.kept, ", "));
   if (!s.skipped.empty())
     std::cout << fmt::format("  not joined (text columns of {}): {}\n", log.source,
                              fmt::join(s.skipped, ", "));

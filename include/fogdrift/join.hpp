@@ -46,8 +46,9 @@ struct OffsetSearch {
 };
 
 struct JoinOptions {
-  /// The log's columns to bring in; empty: every numeric column but time_s. A column the
-  /// recording has already is an error unless `replace`.
+  /// The log's columns to bring in; empty: every numeric column but time_s and those the
+  /// recording has already. A column named here that the recording has is an error unless
+  /// `replace` (which, with no columns named, also takes the log's value of those).
   std::vector<std::string> columns;
   bool replace = false;
   JoinMethod method = JoinMethod::linear;
@@ -81,6 +82,7 @@ struct JoinSummary {
   double limit_s = 0;                   ///< max_step_s (linear) or max_age_s (nearest) as applied
   std::vector<std::string> columns;     ///< the columns brought in
   std::vector<std::string> skipped;     ///< the log's text columns, not brought in
+  std::vector<std::string> kept;        ///< columns both hold: the recording's kept (no replace)
   double log_from_s = 0, log_to_s = 0;  ///< the log's span on the recording's time axis
   std::size_t rows_in = 0;              ///< the recording's rows
   std::size_t rows_out = 0;             ///< rows written, over all segments
