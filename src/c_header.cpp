@@ -577,8 +577,7 @@ std::string c_streaming_part(const CompensationModel& model, const std::string& 
 
 }  // namespace
 
-std::string to_c_header(const CompensationModel& model, const std::string& prefix,
-                        double stream_dt_s, const FaultPolicy& faults, CPrecision precision) {
+std::string c_macro_prefix(const std::string& prefix) {
   const bool identifier = !prefix.empty() && !std::isdigit(static_cast<unsigned char>(prefix[0])) &&
                           std::all_of(prefix.begin(), prefix.end(), [](char c) {
                             return std::isalnum(static_cast<unsigned char>(c)) || c == '_';
@@ -586,6 +585,12 @@ std::string to_c_header(const CompensationModel& model, const std::string& prefi
   if (!identifier) throw OptionError("prefix", fmt::format("'{}' is not a C identifier", prefix));
   std::string upper = prefix;
   for (char& c : upper) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+  return upper;
+}
+
+std::string to_c_header(const CompensationModel& model, const std::string& prefix,
+                        double stream_dt_s, const FaultPolicy& faults, CPrecision precision) {
+  const std::string upper = c_macro_prefix(prefix);
   const std::size_t d = model.inputs();
   const Provenance& p = model.provenance;
   std::string h;

@@ -3,9 +3,6 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
-#include <algorithm>
-#include <cctype>
-
 #include "fogdrift/c_header.hpp"
 #include "fogdrift/error.hpp"
 
@@ -21,13 +18,7 @@ std::string to_c_header(const ModelSet& set, const std::string& prefix, double s
   if (set.models.empty()) throw OptionError("targets", "a model set needs at least one model");
   if (set.models.size() == 1)
     return to_c_header(set.models.front(), prefix, stream_dt_s, faults, precision);
-  const bool identifier = !prefix.empty() && !std::isdigit(static_cast<unsigned char>(prefix[0])) &&
-                          std::all_of(prefix.begin(), prefix.end(), [](char c) {
-                            return std::isalnum(static_cast<unsigned char>(c)) || c == '_';
-                          });
-  if (!identifier) throw OptionError("prefix", fmt::format("'{}' is not a C identifier", prefix));
-  std::string upper = prefix;
-  for (char& c : upper) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+  const std::string upper = c_macro_prefix(prefix);
   const std::size_t n = set.models.size();
   std::string names, axes;
   for (std::size_t k = 0; k < n; ++k) {

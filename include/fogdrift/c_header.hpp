@@ -53,6 +53,10 @@ std::string to_c_header(const ModelSet& set, const std::string& prefix = "fogdri
                         double stream_dt_s = 0, const FaultPolicy& faults = {},
                         CPrecision precision = CPrecision::double_);
 
+/// The upper-case form of `prefix` that the header's macros carry; OptionError("prefix", …) when
+/// `prefix` is not a C identifier (letters, digits and '_', not starting with a digit).
+std::string c_macro_prefix(const std::string& prefix);
+
 /// The C name of a target column's axis in a multi-axis header: "gyro" for gyro_dph, NAME for
 /// gyro_NAME_dph.
 std::string c_axis_name(const std::string& target_column);
