@@ -101,15 +101,25 @@ py::object evaluate(const CompensationModel& model, const py::object& data, bool
 
 py::object northfind(const py::object& campaign_path, const CompensationModel* model,
                      bool guarded) {
-  if (!is_campaign(campaign_path))
-    throw OptionError("campaign", "must be a campaign folder or its campaign.json");
-  const Campaign campaign = read_campaign(campaign_path.cast<std::filesystem::path>());
   eval::CampaignFindings f;
-  {
+  std::string label;
+  if (is_held_campaign(campaign_path)) {
+    // A campaign in memory, what fogdrift.simulate returns.
+    const HeldCampaign held = held_campaign(campaign_path);
+    label = "campaign";
+    py::gil_scoped_release release;
+    f = eval::find_north(held.campaign, held.recordings, model, guarded);
+  } else {
+    if (!is_campaign(campaign_path))
+      throw OptionError("campaign",
+                        "must be a campaign folder, its campaign.json, or a campaign in memory "
+                        "(what fogdrift.simulate returns)");
+    const Campaign campaign = read_campaign(campaign_path.cast<std::filesystem::path>());
+    label = campaign.dir.string();
     py::gil_scoped_release release;
     f = eval::find_north(campaign, model, guarded);
   }
-  py::dict out = from_json(eval::to_json(f, campaign.dir.string(), "model")).cast<py::dict>();
+  py::dict out = from_json(eval::to_json(f, label, "model")).cast<py::dict>();
   if (out.contains("model")) out.attr("pop")("model");
   return out;
 }

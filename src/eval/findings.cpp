@@ -43,19 +43,23 @@ double CampaignFindings::share_removed() const {
                              floor_mean_rmse_deg());
 }
 
-CampaignFindings find_north(const Campaign& campaign, const CompensationModel* model,
-                            bool guarded) {
+namespace {
+
+// find_north on the recordings given (in memory), or read from the campaign's folder.
+CampaignFindings find_north_in(const Campaign& campaign, const std::vector<Recording>* held,
+                               const CompensationModel* model, bool guarded) {
   const std::string manifest = (campaign.dir / "campaign.json").string();
   CampaignFindings out;
   out.guarded = guarded;
   if (model != nullptr) out.method = std::string(to_string(model->provenance.method));
-  for (const auto& e : campaign.recordings) {
+  for (std::size_t i = 0; i < campaign.recordings.size(); ++i) {
+    const CampaignEntry& e = campaign.recordings[i];
     if (e.scenario == Scenario::calibration) continue;
     if (!e.true_azimuth_deg)
       throw InputError(manifest, 0, 0,
                        fmt::format("{}: a north-finding recording needs true_azimuth_deg", e.file));
     const double latitude = campaign.latitude_deg.value();
-    const Recording rec = read_recording(campaign.path_of(e));
+    const Recording rec = held ? (*held)[i] : read_recording(campaign.path_of(e));
     const double truth = *e.true_azimuth_deg;
     RecordingFindings r{e.file, e.scenario, e.initial_temp_degc, truth, {}, {}, {}};
     r.raw_error_deg = northfind_errors_deg(rec, latitude, truth);
@@ -94,6 +98,21 @@ CampaignFindings find_north(const Campaign& campaign, const CompensationModel* m
                           out.has_floor ? rms(p.floor) : kUnknown});
   }
   return out;
+}
+
+}  // namespace
+
+CampaignFindings find_north(const Campaign& campaign, const CompensationModel* model,
+                            bool guarded) {
+  return find_north_in(campaign, nullptr, model, guarded);
+}
+
+CampaignFindings find_north(const Campaign& campaign, const std::vector<Recording>& recordings,
+                            const CompensationModel* model, bool guarded) {
+  if (recordings.size() != campaign.recordings.size())
+    throw OptionError("recordings", fmt::format("{} recordings for a manifest of {}",
+                                                recordings.size(), campaign.recordings.size()));
+  return find_north_in(campaign, &recordings, model, guarded);
 }
 
 std::string to_json(const CampaignFindings& f, const std::string& campaign_label,

@@ -177,6 +177,10 @@ def test_northfind_is_the_command_lines_table_3(campaign, cli):
     assert len(got["recordings"][0]["compensated_error_deg"]) == 2
     with pytest.raises(ValueError, match="no northfind or stable recordings"):
         fogdrift.northfind(d / "cal")
+    # The campaign simulate returns, in memory (issue 35): the folder's findings.
+    held = fogdrift.simulate("northfind", out=d / "nf_py", temps_degc=[-16, 28], findings=2)
+    assert without(fogdrift.northfind(held, m), "campaign") == \
+        without(fogdrift.northfind(d / "nf_py", m), "campaign")
     # One recording on its own, as in the field: the same findings, raw and compensated.
     entry = got["recordings"][0]
     manifest = json.loads((d / "nf" / "campaign.json").read_text())

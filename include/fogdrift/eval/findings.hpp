@@ -55,6 +55,11 @@ struct CampaignFindings {
 CampaignFindings find_north(const Campaign& campaign, const CompensationModel* model = nullptr,
                             bool guarded = true);
 
+/// The same on a campaign held in memory (campaign_from_json): `recordings[i]` is the data of
+/// `campaign.recordings[i]`, as Python's fogdrift.simulate returns them.
+CampaignFindings find_north(const Campaign& campaign, const std::vector<Recording>& recordings,
+                            const CompensationModel* model = nullptr, bool guarded = true);
+
 /// The JSON `fogdrift northfind --json` prints: "campaign" (`campaign_label`), "model"
 /// (`model_label`, with a model) and "method", "recordings", "table3", "guard", and
 /// "stable_rmse_deg" when there are stable findings.
