@@ -33,8 +33,31 @@ opt::Algorithm algorithm_of(Method m) {
 
 }  // namespace
 
+void validate(const TrainOptions& options) {
+  switch (options.method) {
+    case Method::ssa_svr:
+    case Method::pso_svr:
+    case Method::gwo_svr: {
+      tune::TuneOptions t = options.tune;
+      t.optimizer.algorithm = algorithm_of(options.method);
+      tune::validate(t);
+      break;
+    }
+    case Method::bp:
+      validate(options.mlp);
+      break;
+    case Method::poly:
+      if (options.poly_max_degree < 1 || options.poly_max_degree > 6)
+        throw OptionError("degree", fmt::format("{} is outside 1 … 6", options.poly_max_degree));
+      break;
+    case Method::svr:
+      break;
+  }
+}
+
 TrainResult train(const Dataset& data, const DatasetOptions& dataset, const TrainOptions& options) {
   const auto start = std::chrono::steady_clock::now();
+  validate(options);
   if (data.rows == 0) throw OptionError("data", "there are no training rows");
   TrainResult out;
   TrainSummary& s = out.summary;
@@ -152,8 +175,6 @@ TrainResult train(const Dataset& data, const DatasetOptions& dataset, const Trai
       break;
     }
     case Method::poly: {
-      if (options.poly_max_degree < 1 || options.poly_max_degree > 6)
-        throw OptionError("degree", fmt::format("{} is outside 1 … 6", options.poly_max_degree));
       const auto folds = tune::grouped_folds(data, options.tune.cv);
       std::vector<tune::ScaledSplit> splits;
       for (const auto& f : folds)

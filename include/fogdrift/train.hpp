@@ -67,6 +67,11 @@ struct TrainResult {
   TrainSummary summary;
 };
 
+/// Checks what can be checked without data: the search's box, budget and folds for a tuned SVR,
+/// the network's for bp, the degree for poly. Throws OptionError naming the field (train_fleet
+/// checks a line's options once before any unit runs).
+void validate(const TrainOptions& options);
+
 /// Trains on every row of `data`, built with `dataset` (recorded in the model).
 TrainResult train(const Dataset& data, const DatasetOptions& dataset, const TrainOptions& options);
 

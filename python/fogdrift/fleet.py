@@ -47,12 +47,17 @@ def train_fleet(campaigns, *, client=None, out=None, evaluate=True, progress=Non
     options: ``fogdrift.train``'s keywords (method, population, seed, ...), the same for every
         unit.
 
+    Options fogdrift refuses (a method it does not have, a population too small, a box upside
+    down) raise ValueError once, before any unit runs.
+
     Returns one dict per campaign, in the order given: ``campaign``, ``model`` (a Model),
     ``summary`` and ``evaluation`` (as fogdrift.train and fogdrift.evaluate return them) and
     ``error`` (the message, when fogdrift refused the unit; the other fields are then None).
     """
     campaigns = [os.fspath(c) for c in campaigns]
     options = dict(options, threads=threads)
+    # Options wrong for every unit are one error, raised before any unit runs.
+    _train(None, validate_only=True, **options)
     names = [os.path.basename(os.path.normpath(c[:-len("campaign.json")]
                                                if c.endswith("campaign.json") else c))
              for c in campaigns]

@@ -27,14 +27,15 @@ const TrainOptions kTrain;
 const opt::RunOptions kRun;
 const tune::SearchSpace kSpace;
 
-py::dict train(const py::object& campaign, const std::string& method, const std::string& fitness,
-               const std::string& cv, std::size_t folds, const std::string& features,
-               const std::string& differentiator, const py::object& block_s,
-               const py::object& rate_window_s, const py::object& rate_degree,
-               std::size_t population, std::size_t iterations, std::uint64_t seed, unsigned threads,
-               double c_min, double c_max, double sigma_min, double sigma_max, double epsilon,
-               bool search_epsilon, bool auto_box, bool denoise, std::size_t hidden,
-               std::size_t max_degree, const py::object& progress, const std::string& target) {
+py::object train(const py::object& campaign, const std::string& method, const std::string& fitness,
+                 const std::string& cv, std::size_t folds, const std::string& features,
+                 const std::string& differentiator, const py::object& block_s,
+                 const py::object& rate_window_s, const py::object& rate_degree,
+                 std::size_t population, std::size_t iterations, std::uint64_t seed,
+                 unsigned threads, double c_min, double c_max, double sigma_min, double sigma_max,
+                 double epsilon, bool search_epsilon, bool auto_box, bool denoise,
+                 std::size_t hidden, std::size_t max_degree, const py::object& progress,
+                 const std::string& target, bool validate_only) {
   CampaignTrainOptions o;
   if (!is_target_column(target))
     throw OptionError("target", "'" + target +
@@ -91,6 +92,11 @@ py::dict train(const py::object& campaign, const std::string& method, const std:
         return false;
       }
     };
+  // What can be checked without the data (train_fleet: once, before any unit runs).
+  if (validate_only) {
+    validate(t);
+    return py::none();
+  }
   // A folder (or its campaign.json), or a campaign held in memory.
   std::optional<std::filesystem::path> path;
   std::optional<HeldCampaign> held;
@@ -223,13 +229,15 @@ void bind_train(py::module_& m) {
         py::arg("auto_box") = false, py::arg("denoise") = true,
         py::arg("hidden") = kTrain.mlp.hidden, py::arg("max_degree") = kTrain.poly_max_degree,
         py::arg("progress") = py::none(), py::arg("target") = "gyro_dph",
+        py::arg("validate_only") = false,
         "Trains a compensation model on a campaign's training recordings, as `fogdrift train` "
         "does; returns {'model': Model, 'summary': dict}. campaign: a folder (or its "
         "campaign.json), or a campaign in memory: a dict with the manifest's fields and 'data', "
         "one recording per entry (what fogdrift.simulate returns); the same model bytes either "
         "way. target: the gyro column to compensate, gyro_dph or another axis the recordings "
         "carry (gyro_y_dph, ...); save_models writes the models of every axis as one file, as "
-        "`fogdrift train --targets` does.");
+        "`fogdrift train --targets` does. validate_only: check the options and return None "
+        "without reading the campaign (train_fleet does, once, before any unit runs).");
   m.def(
       "save_models",
       [](const std::filesystem::path& path, const std::vector<CompensationModel>& models) {

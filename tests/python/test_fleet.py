@@ -82,3 +82,18 @@ def test_a_unit_whose_evaluation_fails_gives_no_model(units, tmp_path):
     assert "missing required column" in r["error"]
     assert r["model"] is None and r["summary"] is None and r["evaluation"] is None
     assert not (tmp_path / "models" / "unit5.json").exists()
+
+
+def test_options_are_checked_once_before_any_unit_runs(units, tmp_path):
+    # Found by a new user (issue 35): a wrong method was reported once per unit, after each
+    # had started.
+    paths, _ = units
+    for options, message in [(dict(method="svm"), "option method: 'svm' is not a method"),
+                             (dict(population=1), "option population: 1 is too small"),
+                             (dict(c_min=10.0, c_max=1.0), "option c_max"),
+                             (dict(method="poly", max_degree=9), "option degree: 9 is outside")]:
+        ran = []
+        with pytest.raises(ValueError, match=message):
+            train_fleet(paths, out=tmp_path / "models",
+                        progress=lambda done, total, r: ran.append(done), **options)
+        assert ran == [] and not (tmp_path / "models").exists()
