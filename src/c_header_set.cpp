@@ -8,11 +8,6 @@
 
 namespace fogdrift {
 
-std::string c_axis_name(const std::string& target_column) {
-  if (target_column == "gyro_dph") return "gyro";
-  return target_column.substr(5, target_column.size() - 9);  // gyro_NAME_dph
-}
-
 std::string to_c_header(const ModelSet& set, const std::string& prefix, double stream_dt_s,
                         const FaultPolicy& faults, CPrecision precision) {
   if (set.models.empty()) throw OptionError("targets", "a model set needs at least one model");
@@ -23,7 +18,7 @@ std::string to_c_header(const ModelSet& set, const std::string& prefix, double s
   std::string names, axes;
   for (std::size_t k = 0; k < n; ++k) {
     names += fmt::format("{}\"{}\"", k ? ", " : "", set.models[k].dataset.target_column);
-    axes += fmt::format("{}{}", k ? ", " : "", c_axis_name(set.models[k].dataset.target_column));
+    axes += fmt::format("{}{}", k ? ", " : "", axis_name(set.models[k].dataset.target_column));
   }
   std::string h = fmt::format(
       "/* {0}.h: fogdrift compensation models of {1} gyro axes ({2}) for C99 firmware.\n"
@@ -43,7 +38,7 @@ std::string to_c_header(const ModelSet& set, const std::string& prefix, double s
                  "all). */\n");
   h += fmt::format("#ifndef {0}_H\n#define {0}_H\n\n", upper);
   for (const CompensationModel& model : set.models) {
-    const std::string axis = prefix + "_" + c_axis_name(model.dataset.target_column);
+    const std::string axis = prefix + "_" + axis_name(model.dataset.target_column);
     try {
       h += to_c_header(model, axis, stream_dt_s, faults, precision);
     } catch (const OptionError& e) {
@@ -56,17 +51,17 @@ std::string to_c_header(const ModelSet& set, const std::string& prefix, double s
   h += fmt::format("#define {}_N_AXES {}\n", upper, n);
   h += fmt::format("static const char* const {}_axis_names[{}] = {{{}}};\n\n", prefix, n, names);
   if (stream_dt_s > 0) {
-    const std::string first = prefix + "_" + c_axis_name(set.models.front().dataset.target_column);
+    const std::string first = prefix + "_" + axis_name(set.models.front().dataset.target_column);
     h += fmt::format("typedef {}_real {}_real;\n\n", first, prefix);
     h += "typedef struct {\n";
     for (const CompensationModel& model : set.models) {
-      const std::string axis = c_axis_name(model.dataset.target_column);
+      const std::string axis = axis_name(model.dataset.target_column);
       h += fmt::format("  {}_{}_state {};\n", prefix, axis, axis);
     }
     h += fmt::format("}} {}_state;\n\n", prefix);
     std::string reset, update, compensated;
     for (std::size_t k = 0; k < n; ++k) {
-      const std::string axis = c_axis_name(set.models[k].dataset.target_column);
+      const std::string axis = axis_name(set.models[k].dataset.target_column);
       reset += fmt::format("  {0}_{1}_reset(&s->{1});\n", prefix, axis);
       update += fmt::format(
           "  drift_dph[{2}] = {0}_{1}_update(&s->{1}, time_s, temp_fog_degc, temp_acc1_degc,\n"

@@ -44,35 +44,37 @@ Dataset Dataset::select_groups(std::span<const std::size_t> group_indices) const
 }
 
 bool is_target_column(std::string_view name) {
-  if (name == "gyro_dph") return true;
-  constexpr std::string_view prefix = "gyro_", suffix = "_dph";
-  if (name.size() <= prefix.size() + suffix.size() || name.substr(0, prefix.size()) != prefix ||
-      name.substr(name.size() - suffix.size()) != suffix)
-    return false;
-  return std::all_of(name.begin(), name.end(), [](char ch) {
-    return (ch >= 'a' && ch <= 'z') || (ch >= '0' && ch <= '9') || ch == '_';
-  });
+  return name == "gyro_dph" ||
+         (is_channel_column(name) && name.starts_with("gyro_") && name.ends_with("_dph"));
 }
 
-Recording with_target(const Recording& recording, const std::string& column) {
-  if (column == "gyro_dph") return recording;
+std::string axis_name(std::string_view target_column) {
+  if (target_column == "gyro_dph") return "gyro";
+  return std::string(target_column.substr(5, target_column.size() - 9));  // gyro_NAME_dph
+}
+
+std::vector<double> target_values(const Recording& recording, const std::string& column) {
+  if (column == "gyro_dph") return recording.gyro_dph;
   if (!recording.has_column(column) || known_column(recording, column)) {
     throw InputError(recording.source, 1, 0,
                      fmt::format("has no column '{}', the gyro the model compensates (import it "
                                  "with --map {}=COLUMN)",
                                  column, column));
   }
+  return recording.numeric_column(column);
+}
+
+Recording with_target(const Recording& recording, const std::string& column) {
+  if (column == "gyro_dph") return recording;
   Recording out = recording;
-  out.gyro_dph = recording.numeric_column(column);
+  out.gyro_dph = target_values(recording, column);
   return out;
 }
 
 std::vector<double> drift_target(const RecordingInput& input, const DatasetOptions& options,
                                  GroupInfo& info, std::vector<std::string>& warnings) {
   const Recording& rec = input.recording;
-  std::vector<double> gyro = options.target_column == "gyro_dph"
-                                 ? rec.gyro_dph
-                                 : with_target(rec, options.target_column).gyro_dph;
+  std::vector<double> gyro = target_values(rec, options.target_column);
   if (options.denoise_target) {
     try {
       gyro = signal::denoise(gyro, options.denoise).signal;

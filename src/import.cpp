@@ -25,20 +25,6 @@ bool is_fogdrift_column(std::string_view name) {
   return false;
 }
 
-/// A further channel a unit logs, named by what it is so that its unit is known: another gyro
-/// axis (gyro_NAME_dph), thermometer (temp_NAME_degc) or accelerometer (accel_NAME_g). Kept as a
-/// numeric extra column.
-bool is_channel_column(std::string_view name) {
-  if (is_fogdrift_column(name) || name.empty()) return false;
-  for (char ch : name)
-    if (!((ch >= 'a' && ch <= 'z') || (ch >= '0' && ch <= '9') || ch == '_')) return false;
-  auto between = [&](std::string_view prefix, std::string_view suffix) {
-    return name.size() > prefix.size() + suffix.size() && starts_with(name, prefix) &&
-           name.substr(name.size() - suffix.size()) == suffix;
-  };
-  return between("gyro_", "_dph") || between("temp_", "_degc") || between("accel_", "_g");
-}
-
 bool is_target(std::string_view name) {
   return is_fogdrift_column(name) || is_channel_column(name);
 }

@@ -30,8 +30,7 @@ bool holds(const Recording& r, const std::string& name) {
 
 /// Whether every cell of extra column `e` is a number.
 bool numeric(const ExtraColumn& e) {
-  return std::all_of(e.cells.begin(), e.cells.end(),
-                     [](const std::string& cell) { return csv::parse_number(cell).has_value(); });
+  return numbers_of(e).has_value();
 }
 
 /// The names of a recording's numeric columns but time_s, for messages and defaults.
@@ -125,11 +124,17 @@ OffsetEstimate estimate_offset(const Recording& recording, const Recording& log,
   const double min_overlap_s = 0.5 * std::min(rt.back() - rt.front(), lt.back() - lt.front());
   const double limit = default_limit(log, JoinMethod::linear);
   std::vector<double> shifted(t.size());
-  std::size_t compared = 0;
-  auto objective = [&](double d) {
+  // The variance of the difference at offset d and the rows it compares; infinite where the two
+  // overlap too little.
+  struct Fit {
+    double variance = std::numeric_limits<double>::infinity();
+    std::size_t rows = 0;
+  };
+  auto fit_at = [&](double d) {
+    Fit f;
     const double overlap =
         std::min(rt.back(), lt.back() + d) - std::max(rt.front(), lt.front() + d);
-    if (overlap < min_overlap_s) return std::numeric_limits<double>::infinity();
+    if (overlap < min_overlap_s) return f;
     for (std::size_t i = 0; i < t.size(); ++i) shifted[i] = t[i] - d;
     const std::vector<double> v = sample(lt, y, shifted, JoinMethod::linear, limit);
     double sum = 0, sum2 = 0;
@@ -141,11 +146,13 @@ OffsetEstimate estimate_offset(const Recording& recording, const Recording& log,
       sum2 += diff * diff;
       ++n;
     }
-    compared = n;
-    if (n < 10) return std::numeric_limits<double>::infinity();
+    f.rows = n;
+    if (n < 10) return f;
     const double mean = sum / static_cast<double>(n);
-    return std::max(0.0, sum2 / static_cast<double>(n) - mean * mean);
+    f.variance = std::max(0.0, sum2 / static_cast<double>(n) - mean * mean);
+    return f;
   };
+  auto objective = [&](double d) { return fit_at(d).variance; };
 
   OffsetEstimate e;
   if (search.range_s > 0) {
@@ -196,16 +203,17 @@ OffsetEstimate estimate_offset(const Recording& recording, const Recording& log,
     }
   }
   const double refined = 0.5 * (a + b);
-  const double f_refined = objective(refined);
-  e.offset_s = f_refined <= grid[best] ? refined : at;
-  e.residual_std = std::sqrt(std::min(f_refined, grid[best]));
-  objective(e.offset_s);
-  e.rows_compared = compared;
+  const Fit at_refined = fit_at(refined);
+  const bool refined_better = at_refined.variance <= grid[best];
+  e.offset_s = refined_better ? refined : at;
+  const Fit chosen = refined_better ? at_refined : fit_at(at);
+  e.residual_std = std::sqrt(chosen.variance);
+  e.rows_compared = chosen.rows;
   e.centre_s = centre_s;
   const double f_start = objective(centre_s);
   e.residual_std_at_start = std::isfinite(f_start) ? std::sqrt(f_start) : kNoValue;
   // How sharply the minimum is defined: the run of grid offsets within twice its variance.
-  const double within = 2.0 * std::min(f_refined, grid[best]);
+  const double within = 2.0 * chosen.variance;
   std::size_t left = best, right = best;
   while (left > 0 && grid[left - 1] <= within) --left;
   while (right < steps && grid[right + 1] <= within) ++right;

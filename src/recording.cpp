@@ -100,6 +100,28 @@ const std::vector<std::string>& optional_columns() {
   return names;
 }
 
+bool is_channel_column(std::string_view name) {
+  if (is_known(name) || name.empty()) return false;
+  for (char ch : name)
+    if (!((ch >= 'a' && ch <= 'z') || (ch >= '0' && ch <= '9') || ch == '_')) return false;
+  auto between = [&](std::string_view prefix, std::string_view suffix) {
+    return name.size() > prefix.size() + suffix.size() && name.starts_with(prefix) &&
+           name.ends_with(suffix);
+  };
+  return between("gyro_", "_dph") || between("temp_", "_degc") || between("accel_", "_g");
+}
+
+std::optional<std::vector<double>> numbers_of(const ExtraColumn& column) {
+  std::vector<double> values;
+  values.reserve(column.cells.size());
+  for (const std::string& cell : column.cells) {
+    const auto v = csv::parse_number(cell);
+    if (!v) return std::nullopt;
+    values.push_back(*v);
+  }
+  return values;
+}
+
 bool Recording::has_column(std::string_view name) const {
   if (known_column(*this, name) != nullptr) return true;
   for (const auto& e : extra)

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <optional>
 #include <string>
 
 #include "fogdrift/csv.hpp"
@@ -36,15 +37,9 @@ std::vector<std::string> signal_columns(const Recording& r,
     }
   parsed.reserve(r.extra.size());  // stable addresses for `numbers`
   for (const ExtraColumn& e : r.extra) {
-    std::vector<double> values;
-    values.reserve(e.cells.size());
-    for (const std::string& cell : e.cells) {
-      const auto v = csv::parse_number(cell);
-      if (!v) break;
-      values.push_back(*v);
-    }
-    if (values.size() != e.cells.size()) continue;
-    parsed.push_back(std::move(values));
+    std::optional<std::vector<double>> values = numbers_of(e);
+    if (!values) continue;
+    parsed.push_back(std::move(*values));
     out.push_back(e.name);
     numbers.push_back(&parsed.back());
   }
@@ -145,7 +140,6 @@ RegridResult regrid(const Recording& rec, const RegridOptions& options) {
   s.method = options.method != RegridMethod::automatic ? options.method
              : s.input_median_step_s <= 0.5 * h        ? RegridMethod::mean
                                                        : RegridMethod::linear;
-
   for (std::size_t j = 0; j + 1 < n; ++j) {
     const double step = t[j + 1] - t[j];
     if (step <= 1.5 * s.input_median_step_s)

@@ -57,7 +57,7 @@ ModelSet axes_to_run(const ModelSet& set, const std::optional<std::string>& targ
 
 std::vector<std::string> compensated_columns(const std::string& target) {
   if (target == "gyro_dph") return {"drift_dph", "gyro_comp_dph", "novelty", "guard_weight"};
-  const std::string name = target.substr(5, target.size() - 9);  // gyro_NAME_dph
+  const std::string name = axis_name(target);
   return {"drift_" + name + "_dph", "gyro_" + name + "_comp_dph", "novelty_" + name,
           "guard_weight_" + name};
 }

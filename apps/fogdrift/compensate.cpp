@@ -73,7 +73,7 @@ void run(const CompensateArgs& a) {
         throw InputError(
             table.file, 1, *table.find(name) + 1,
             fmt::format("already has a {} column; compensate the original recording", name));
-    x.gyro = with_target(recording, model.dataset.target_column).gyro_dph;
+    x.gyro = target_values(recording, model.dataset.target_column);
     x.prediction = model.predict(recording, !a.no_guard);
     const std::vector<double>& drift = x.prediction.drift_dph;
     x.novelty = summarize_novelty(x.prediction.novelty, x.prediction.weight);

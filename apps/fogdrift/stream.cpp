@@ -139,7 +139,7 @@ void run(const StreamArgs& given, const CLI::App& cmd) {
     const std::string& target = model.dataset.target_column;
     gyro_column.push_back(column_of(target, true));
     for (const std::string& out : compensated_columns(target)) added.push_back(out);
-    added.push_back(target == "gyro_dph" ? "fault_flags" : "fault_flags_" + c_axis_name(target));
+    added.push_back(target == "gyro_dph" ? "fault_flags" : "fault_flags_" + axis_name(target));
   }
   for (const std::string& column_name : added)
     if (std::find(header.begin(), header.end(), column_name) != header.end())

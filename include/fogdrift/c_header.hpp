@@ -42,8 +42,8 @@ std::string to_c_header(const CompensationModel& model,
                         const FaultPolicy& faults = {}, CPrecision precision = CPrecision::double_);
 
 /// Every axis of a model set in one header (c_header_set.cpp): each axis's model as above under
-/// the prefix PREFIX_AXIS (AXIS = gyro for gyro_dph, NAME for gyro_NAME_dph), PREFIX_N_AXES and
-/// PREFIX_axis_names, and with `stream_dt_s` > 0 one update for all of them:
+/// the prefix PREFIX_AXIS (AXIS = axis_name(), gyro for gyro_dph, NAME for gyro_NAME_dph),
+/// PREFIX_N_AXES and PREFIX_axis_names, and with `stream_dt_s` > 0 one update for all of them:
 ///   PREFIX_state s; PREFIX_reset(&s);   at power-on
 ///   PREFIX_update(&s, time_s, temp_fog_degc, temp_acc1_degc, temp_acc2_degc, drift_dph);
 ///   PREFIX_compensated_dph(&s, gyro_dph, gyro_compensated_dph);
@@ -56,9 +56,5 @@ std::string to_c_header(const ModelSet& set, const std::string& prefix = "fogdri
 /// The upper-case form of `prefix` that the header's macros carry; OptionError("prefix", …) when
 /// `prefix` is not a C identifier (letters, digits and '_', not starting with a digit).
 std::string c_macro_prefix(const std::string& prefix);
-
-/// The C name of a target column's axis in a multi-axis header: "gyro" for gyro_dph, NAME for
-/// gyro_NAME_dph.
-std::string c_axis_name(const std::string& target_column);
 
 }  // namespace fogdrift

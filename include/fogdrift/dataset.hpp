@@ -37,13 +37,20 @@ struct DatasetOptions {
   std::string target_column = "gyro_dph";
 };
 
-/// Whether `name` can be a model's target column: gyro_dph or gyro_NAME_dph (NAME of lower-case
-/// letters, digits and _).
+/// Whether `name` can be a model's target column: gyro_dph or a further gyro channel,
+/// gyro_NAME_dph (is_channel_column).
 bool is_target_column(std::string_view name);
 
-/// `recording` with gyro_dph taken from `column` (a further channel it carries), so that every
-/// path written for gyro_dph serves another axis; the recording itself for gyro_dph. Throws
-/// InputError naming the recording when it lacks the column or a cell is not a number.
+/// The axis a target column names, as output columns and C symbols carry it: "gyro" for
+/// gyro_dph, NAME for gyro_NAME_dph.
+std::string axis_name(std::string_view target_column);
+
+/// The gyro readings a model of `column` compensates: gyro_dph, or the further channel `column`.
+/// Throws InputError naming the recording when it lacks the column or a cell is not a number.
+std::vector<double> target_values(const Recording& recording, const std::string& column);
+
+/// `recording` with gyro_dph taken from `column` (target_values), so that every path written for
+/// gyro_dph serves another axis; the recording itself for gyro_dph.
 Recording with_target(const Recording& recording, const std::string& column);
 
 /// Where a group of rows came from.

@@ -61,6 +61,16 @@ struct Recording {
 std::vector<double>* known_column(Recording& recording, std::string_view name, bool create = false);
 const std::vector<double>* known_column(const Recording& recording, std::string_view name);
 
+/// A further channel a unit logs, named by what it is so that its unit is known: another gyro
+/// axis (gyro_NAME_dph), thermometer (temp_NAME_degc) or accelerometer (accel_NAME_g), NAME of
+/// lower-case letters, digits and '_'; not one of fogdrift's own columns. Kept as an extra column
+/// of numbers (docs/logs.md, "Further channels").
+bool is_channel_column(std::string_view name);
+
+/// The cells of an extra column as numbers; nothing when one is not a finite number (a column
+/// of text).
+std::optional<std::vector<double>> numbers_of(const ExtraColumn& column);
+
 /// The required and optional column names, in the order fogdrift writes them.
 const std::vector<std::string>& required_columns();
 const std::vector<std::string>& optional_columns();
