@@ -52,6 +52,13 @@ TEST(FaultPolicy, ValidateNamesTheField) {
   p = {};
   p.stuck_delta_degc = 0;
   EXPECT_EQ(field_of(p), "faults.stuck_delta_degc");
+  p = {};
+  p.temp_jump_degc = -1;
+  EXPECT_EQ(field_of(p), "faults.temp_jump_degc");
+  p.temp_jump_degc = kNan;
+  EXPECT_EQ(field_of(p), "faults.temp_jump_degc");
+  p.temp_jump_degc = 0;  // the check switched off
+  EXPECT_EQ(field_of(p), "(none)");
 }
 
 TEST(FaultPolicy, DescribesFlagsByName) {

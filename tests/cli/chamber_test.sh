@@ -122,6 +122,23 @@ check "a missing axis" run 1 "$fd" stream m3.json camp/joined_05.csv --rate-hz 0
 check "missing axis names the axes" err_has "option --target: the model has no axis 'gyro_q_dph' (it compensates gyro_dph, gyro_y_dph, gyro_z_dph)"
 check "export one axis" run 0 "$fd" export-c m3.json --target gyro_z_dph --prefix imu_z -o imu_z.h
 check "its header" grep -q "imu_z_predict_dph" imu_z.h
+check "a jump limit that is not a duration" run 1 "$fd" stream m3.json camp/joined_05.csv --rate-hz 0.016666666666666666 --temp-jump-degc -1
+check "jump limit message" err_has "option --temp-jump-degc: -1 °C must be finite and ≥ 0 (0: no jump check)"
+# Axes whose rate windows differ cannot share one update; the set is written by hand, as any tool
+# may write one (docs/tuning.md).
+check "an axis with its own window" run 0 "$fd" train camp -o y600.json --targets gyro_y_dph --rate-window-s 600 -q
+check "a set written by hand" python3 - <<'EOF2'
+import json
+models = [open(f).read().rstrip("\n") for f in ("mx.json", "y600.json")]
+targets = ["gyro_dph", "gyro_y_dph"]
+open("mixed.json", "w").write('{\n "format": "fogdrift-model-set",\n "version": 1,\n "targets": '
+                              + json.dumps(targets) + ',\n "models": [\n'
+                              + ",\n".join(models) + "\n ]\n}\n")
+EOF2
+check "the hand-written set evaluates" run 0 "$fd" evaluate mixed.json camp
+check "one update for axes of different windows" run 1 "$fd" export-c mixed.json -o mixed.h --stream-rate-hz 0.016666666666666666
+check "different windows message" err_has "option --target: the axes' models differ in interval, block or rate window (gyro_y_dph against gyro_dph); run each with --target NAME"
+check "one of them alone" run 0 "$fd" export-c mixed.json --target gyro_y_dph -o y.h --stream-rate-hz 0.016666666666666666
 check "export every axis" run 0 "$fd" export-c m3.json --prefix imu --stream-rate-hz 0.016666666666666666 -o imu.h
 check "one update for all" out_has "imu_update(&state, time_s, temp_fog, temp_acc1, temp_acc2, drift[3]) for all of them"
 cat > driver.c <<'EOF2'
