@@ -23,9 +23,11 @@ namespace {
 /// The temperature arguments a model reads, e.g. "temp_fog_degc" (docs/logs.md, "Fewer
 /// thermometers").
 std::string thermometers_read(const CompensationModel& model) {
-  std::vector<std::string_view> read;
-  for (Thermometer k : {Thermometer::fog, Thermometer::acc1, Thermometer::acc2})
-    if (model.dataset.features.reads(k)) read.push_back(column_name(k));
+  const FeatureSpec& spec = model.dataset.features;
+  std::vector<std::string> read;
+  for (std::size_t k = 0; k < spec.thermometer_count(); ++k)
+    if (spec.reads(static_cast<Thermometer>(k)))
+      read.push_back(thermometer_column(spec.thermometer_name(static_cast<Thermometer>(k))));
   return read.empty() ? std::string("none") : fmt::format("{}", fmt::join(read, ", "));
 }
 
@@ -135,7 +137,7 @@ std::string fill_template(std::string text,
 constexpr std::string_view kStreamingC =
     R"(/* Streaming: samples every @DATA_DT@ s in, the features computed causally every @DT@ s.
  *   @P@_state s; @P@_reset(&s);   at power-on
- *   drift_dph = @P@_update(&s, time_s, temp_fog_degc, temp_acc1_degc, temp_acc2_degc);
+ *   drift_dph = @P@_update(&s, time_s, @TEMP_ARGS@);
  *   gyro_compensated_dph = @P@_compensated_dph(&s, gyro_dph);
  *   s.flags: what was wrong with the sample (@U@_FAULT_* bits, 0 for a good sample).
  * Temperature rates: causal Savitzky-Golay derivative over the last @W@ samples (fewer
@@ -177,11 +179,12 @@ constexpr std::string_view kStreamingC =
 #define @U@_BLOCK @BLOCK@ /* samples per model sample */
 static const double @P@_data_dt_s = @DATA_DT@;
 static const double @P@_dt_s = @DT@;
-static const int @P@_reads[3] = {@READ_FLAGS@};
+#define @U@_N_THERMOMETERS @NT@ /* @THERMOMETERS@ */
+static const int @P@_reads[@U@_N_THERMOMETERS] = {@READ_FLAGS@};
 static const @REAL@ @P@_rate_taps[@NTAPS@] = {@TAPS@};
 
 typedef struct {
-  @REAL@ buffer[3][2 * @U@_RATE_WINDOW]; /* fog, acc1, acc2; newest at size - 1 */
+  @REAL@ buffer[@U@_N_THERMOMETERS][2 * @U@_RATE_WINDOW]; /* newest at size - 1 */
   long size;                             /* samples in the buffer */
   long count;                            /* samples since the rate filters started */
   @REAL@ weight;                         /* the guard's weight w, 1 at power-on */
@@ -196,15 +199,17 @@ typedef struct {
   int has_good_drift;
   @REAL@ good_drift_dph, last_drift_dph, last_comp_dph;
   double good_drift_time_s;
-  int seen_good[3], out[3], tracking[3];
-  @REAL@ good_degc[3], good_rate[3], pushed_degc[3];
-  double good_time_s[3];
-  @REAL@ unchanged_degc[3], others_degc[3][3];
-  double unchanged_since_s[3];
+  int seen_good[@U@_N_THERMOMETERS], out[@U@_N_THERMOMETERS], tracking[@U@_N_THERMOMETERS];
+  @REAL@ good_degc[@U@_N_THERMOMETERS], good_rate[@U@_N_THERMOMETERS];
+  @REAL@ pushed_degc[@U@_N_THERMOMETERS];
+  double good_time_s[@U@_N_THERMOMETERS];
+  @REAL@ unchanged_degc[@U@_N_THERMOMETERS], others_degc[@U@_N_THERMOMETERS][@U@_N_THERMOMETERS];
+  double unchanged_since_s[@U@_N_THERMOMETERS];
   /* the block being averaged (@U@_BLOCK > 1) */
   int data_started;
   long sum_count;
-  double data_time_s, sum[3]; /* time, and sums of a block in double: up to 2000 samples */
+  double data_time_s;          /* time of the last data sample */
+  double sum[@U@_N_THERMOMETERS]; /* sums of a block in double: up to 2000 samples */
 } @P@_state;
 
 static inline void @P@_reset(@P@_state* s) {
@@ -224,7 +229,7 @@ static inline void @P@_reset(@P@_state* s) {
   s->data_started = 0;
   s->sum_count = 0;
   s->data_time_s = 0.0;
-  for (k = 0; k < 3; ++k) {
+  for (k = 0; k < @U@_N_THERMOMETERS; ++k) {
     s->sum[k] = 0.0;
     s->seen_good[k] = s->out[k] = s->tracking[k] = 0;
     s->good_degc[k] = s->good_time_s[k] = s->good_rate[k] = s->pushed_degc[k] = 0.0;
@@ -240,7 +245,7 @@ static inline @REAL@ @P@_push_(@P@_state* s, int k, @REAL@ v) {
   if (k == 0) {
     if (s->size == 2 * @U@_RATE_WINDOW) { /* keep the newest window - 1 at the front */
       int m;
-      for (m = 0; m < 3; ++m)
+      for (m = 0; m < @U@_N_THERMOMETERS; ++m)
         for (j = 0; j < @U@_RATE_WINDOW - 1; ++j)
           s->buffer[m][j] = s->buffer[m][@U@_RATE_WINDOW + 1 + j];
       s->size = @U@_RATE_WINDOW - 1;
@@ -278,11 +283,10 @@ static inline @REAL@ @P@_degraded_(@P@_state* s, double time_s) {
 }
 
 /* One sample at the model's interval, @P@_dt_s: the fault policy, the rates, the model. */
-static inline @REAL@ @P@_step_(@P@_state* s, double time_s, @REAL@ temp_fog_degc,
-                                @REAL@ temp_acc1_degc, @REAL@ temp_acc2_degc) {
-  const @REAL@ raw[3] = {temp_fog_degc, temp_acc1_degc, temp_acc2_degc};
-  @REAL@ temp[3] = {0.0, 0.0, 0.0}, rate[3] = {0.0, 0.0, 0.0}, f[@U@_N_FEATURES];
-  int good[3] = {0, 0, 0}, stuck[3] = {0, 0, 0};
+static inline @REAL@ @P@_step_(@P@_state* s, double time_s,
+                                const @REAL@ raw[@U@_N_THERMOMETERS]) {
+  @REAL@ temp[@U@_N_THERMOMETERS] = {0.0}, rate[@U@_N_THERMOMETERS] = {0.0}, f[@U@_N_FEATURES];
+  int good[@U@_N_THERMOMETERS] = {0}, stuck[@U@_N_THERMOMETERS] = {0};
   int k, j, long_gap = 0, restart_rates, any_out = 0, any_bridged = 0, refilling;
   long missing = 0, m;
   double t = time_s;
@@ -307,7 +311,7 @@ static inline @REAL@ @P@_step_(@P@_state* s, double time_s, @REAL@ temp_fog_degc
         missing = lround(step / @P@_dt_s) - 1;
     }
   }
-  for (k = 0; k < 3; ++k) {
+  for (k = 0; k < @U@_N_THERMOMETERS; ++k) {
     if (!@P@_reads[k]) continue;
     good[k] = isfinite(raw[k]) && raw[k] >= @U@_TEMP_MIN_DEGC && raw[k] <= @U@_TEMP_MAX_DEGC;
     if (!good[k]) {
@@ -322,16 +326,16 @@ static inline @REAL@ @P@_step_(@P@_state* s, double time_s, @REAL@ temp_fog_degc
     }
   }
   if (@U@_STUCK_S > 0) {
-    for (k = 0; k < 3; ++k) {
+    for (k = 0; k < @U@_N_THERMOMETERS; ++k) {
       if (!good[k]) continue;
       if (!s->tracking[k] || raw[k] != s->unchanged_degc[k]) {
         s->tracking[k] = 1;
         s->unchanged_degc[k] = raw[k];
         s->unchanged_since_s[k] = t;
-        for (j = 0; j < 3; ++j) s->others_degc[k][j] = good[j] ? raw[j] : NAN;
+        for (j = 0; j < @U@_N_THERMOMETERS; ++j) s->others_degc[k][j] = good[j] ? raw[j] : NAN;
         continue;
       }
-      for (j = 0; j < 3; ++j) {
+      for (j = 0; j < @U@_N_THERMOMETERS; ++j) {
         if (j == k || !good[j]) continue;
         if (isnan(s->others_degc[k][j])) s->others_degc[k][j] = raw[j];
         if (t - s->unchanged_since_s[k] >= @U@_STUCK_S &&
@@ -339,14 +343,14 @@ static inline @REAL@ @P@_step_(@P@_state* s, double time_s, @REAL@ temp_fog_degc
           stuck[k] = 1;
       }
     }
-    for (k = 0; k < 3; ++k)
+    for (k = 0; k < @U@_N_THERMOMETERS; ++k)
       if (stuck[k]) {
         good[k] = 0;
         s->flags |= @U@_FAULT_TEMP_STUCK;
       }
   }
   restart_rates = long_gap;
-  for (k = 0; k < 3; ++k) {
+  for (k = 0; k < @U@_N_THERMOMETERS; ++k) {
     if (!@P@_reads[k]) continue;
     if (good[k]) {
       if (s->out[k]) restart_rates = 1;
@@ -365,11 +369,11 @@ static inline @REAL@ @P@_step_(@P@_state* s, double time_s, @REAL@ temp_fog_degc
     s->refill = s->has_good_drift ? @U@_RATE_WINDOW - 1 : 0;
     missing = 0;
   }
-  for (k = 0; k < 3; ++k)
+  for (k = 0; k < @U@_N_THERMOMETERS; ++k)
     temp[k] = !@P@_reads[k] ? 0.0 : (good[k] ? raw[k] : @P@_substitute_(s, k, t));
   for (m = 1; m <= missing; ++m) {
     const double tm = s->previous_time_s + (double)m * @P@_dt_s;
-    for (k = 0; k < 3; ++k) {
+    for (k = 0; k < @U@_N_THERMOMETERS; ++k) {
       const @REAL@ v = !@P@_reads[k] ? 0.0
                        : good[k] ? s->pushed_degc[k] + (temp[k] - s->pushed_degc[k]) * (@REAL@)m /
                                                            (@REAL@)(missing + 1)
@@ -377,7 +381,7 @@ static inline @REAL@ @P@_step_(@P@_state* s, double time_s, @REAL@ temp_fog_degc
       (void)@P@_push_(s, k, v);
     }
   }
-  for (k = 0; k < 3; ++k) {
+  for (k = 0; k < @U@_N_THERMOMETERS; ++k) {
     rate[k] = @P@_push_(s, k, temp[k]);
     if (!@P@_reads[k]) continue;
     s->pushed_degc[k] = temp[k];
@@ -413,12 +417,13 @@ static inline @REAL@ @P@_step_(@P@_state* s, double time_s, @REAL@ temp_fog_degc
 /* Predicted drift, deg/h, for the newest sample (every @P@_data_dt_s seconds since power-on):
  * the thermometers averaged over blocks of @U@_BLOCK samples, the first sample a block of its
  * own, and the model run once per block (fogdrift docs/compensation.md, "Any sample rate"). */
-static inline @REAL@ @P@_update(@P@_state* s, double time_s, @REAL@ temp_fog_degc,
-                                 @REAL@ temp_acc1_degc, @REAL@ temp_acc2_degc) {
+static inline @REAL@ @P@_update(@P@_state* s, double time_s, @TEMP_PARAMS@) {
+  const @REAL@ raw[@U@_N_THERMOMETERS] = {@TEMP_ARGS@};
+  @REAL@ mean[@U@_N_THERMOMETERS];
   double t = time_s, c;
-  int first;
+  int first, k;
   s->flags = 0;
-  if (@U@_BLOCK == 1) return @P@_step_(s, t, temp_fog_degc, temp_acc1_degc, temp_acc2_degc);
+  if (@U@_BLOCK == 1) return @P@_step_(s, t, raw);
   if (!isfinite(t)) {
     s->flags |= @U@_FAULT_TIME_BAD;
     t = s->data_started ? s->data_time_s + @P@_data_dt_s : 0.0;
@@ -436,19 +441,16 @@ static inline @REAL@ @P@_update(@P@_state* s, double time_s, @REAL@ temp_fog_deg
   first = !s->data_started;
   s->data_started = 1;
   s->data_time_s = t;
-  s->sum[0] += temp_fog_degc;
-  s->sum[1] += temp_acc1_degc;
-  s->sum[2] += temp_acc2_degc;
+  for (k = 0; k < @U@_N_THERMOMETERS; ++k) s->sum[k] += raw[k];
   ++s->sum_count;
   if (!first && s->sum_count < @U@_BLOCK) return s->last_drift_dph;
   c = (double)s->sum_count;
-  {
-    const @REAL@ fog = (@REAL@)(s->sum[0] / c), acc1 = (@REAL@)(s->sum[1] / c),
-                 acc2 = (@REAL@)(s->sum[2] / c);
-    s->sum[0] = s->sum[1] = s->sum[2] = 0.0;
-    s->sum_count = 0;
-    return @P@_step_(s, t, fog, acc1, acc2);
+  for (k = 0; k < @U@_N_THERMOMETERS; ++k) {
+    mean[k] = (@REAL@)(s->sum[k] / c);
+    s->sum[k] = 0.0;
   }
+  s->sum_count = 0;
+  return @P@_step_(s, t, mean);
 }
 
 /* gyro_dph minus the last update's drift; the last good value where the gyro reading is not a
@@ -530,10 +532,18 @@ std::string c_streaming_part(const CompensationModel& model, const std::string& 
     }
     features += fmt::format("    f[{}] = {};\n", c, value);
   }
-  std::string read_flags;
-  for (Thermometer k : {Thermometer::fog, Thermometer::acc1, Thermometer::acc2})
-    read_flags += fmt::format("{}{}", read_flags.empty() ? "" : ", ",
-                              model.dataset.features.reads(k) ? 1 : 0);
+  // One argument per thermometer of the spec, the further ones after fog, acc1, acc2.
+  const FeatureSpec& spec = model.dataset.features;
+  std::string read_flags, params, args, names;
+  for (std::size_t k = 0; k < spec.thermometer_count(); ++k) {
+    const auto th = static_cast<Thermometer>(k);
+    const std::string column = thermometer_column(spec.thermometer_name(th));
+    const char* sep = k ? ", " : "";
+    read_flags += fmt::format("{}{}", sep, spec.reads(th) ? 1 : 0);
+    params += fmt::format("{}@REAL@ {}", sep, column);
+    args += fmt::format("{}{}", sep, column);
+    names += fmt::format("{}{}", sep, spec.thermometer_name(th));
+  }
   const bool guarded = !model.guard.empty();
   return fill_template(
       std::string(kStreamingC),
@@ -551,6 +561,10 @@ std::string c_streaming_part(const CompensationModel& model, const std::string& 
        {"@FLAGS@", flags},
        {"@READS@", thermometers_read(model)},
        {"@READ_FLAGS@", read_flags},
+       {"@NT@", std::to_string(spec.thermometer_count())},
+       {"@THERMOMETERS@", names},
+       {"@TEMP_PARAMS@", params},
+       {"@TEMP_ARGS@", args},
        {"@TAPS@", c_array(taps)},
        {"@NTAPS@", std::to_string(taps.size())},
        {"@TEMP_MIN@", c_number(faults.temp_min_degc)},

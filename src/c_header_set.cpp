@@ -3,6 +3,8 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
+#include <algorithm>
+
 #include "fogdrift/c_header.hpp"
 #include "fogdrift/error.hpp"
 
@@ -15,6 +17,12 @@ std::string to_c_header(const ModelSet& set, const std::string& prefix, double s
     return to_c_header(set.models.front(), prefix, stream_dt_s, faults, precision);
   const std::string upper = c_macro_prefix(prefix);
   const std::size_t n = set.models.size();
+  // The thermometers of every axis: fog, acc1, acc2, then each further one once.
+  std::vector<std::string> columns = {"temp_fog_degc", "temp_acc1_degc", "temp_acc2_degc"};
+  for (const CompensationModel& model : set.models)
+    for (const std::string& name : model.dataset.features.further)
+      if (std::find(columns.begin(), columns.end(), thermometer_column(name)) == columns.end())
+        columns.push_back(thermometer_column(name));
   std::string names, axes;
   for (std::size_t k = 0; k < n; ++k) {
     names += fmt::format("{}\"{}\"", k ? ", " : "", set.models[k].dataset.target_column);
@@ -24,18 +32,16 @@ std::string to_c_header(const ModelSet& set, const std::string& prefix, double s
       "/* {0}.h: fogdrift compensation models of {1} gyro axes ({2}) for C99 firmware.\n"
       " * Each axis's model is below under its own prefix, {0}_AXIS for AXIS in {3};",
       prefix, n, fmt::join(set.targets(), ", "), axes);
-  h += stream_dt_s > 0
-           ? fmt::format(
-                 "\n * one update runs them all on the same thermometer samples:\n"
-                 " *   {0}_state s; {0}_reset(&s);   at power-on\n"
-                 " *   {0}_update(&s, time_s, temp_fog_degc, temp_acc1_degc, temp_acc2_degc, "
-                 "drift_dph);\n"
-                 " *   {0}_compensated_dph(&s, gyro_dph, gyro_compensated_dph);\n"
-                 " * with arrays of {1}_N_AXES values in {0}_axis_names order. */\n",
-                 prefix, upper)
-           : std::string(
-                 " no streaming part (export-c --stream-rate-hz adds one update for "
-                 "all). */\n");
+  h += stream_dt_s > 0 ? fmt::format(
+                             "\n * one update runs them all on the same thermometer samples:\n"
+                             " *   {0}_state s; {0}_reset(&s);   at power-on\n"
+                             " *   {0}_update(&s, time_s, {2}, drift_dph);\n"
+                             " *   {0}_compensated_dph(&s, gyro_dph, gyro_compensated_dph);\n"
+                             " * with arrays of {1}_N_AXES values in {0}_axis_names order. */\n",
+                             prefix, upper, fmt::join(columns, ", "))
+                       : std::string(
+                             " no streaming part (export-c --stream-rate-hz adds one update for "
+                             "all). */\n");
   h += fmt::format("#ifndef {0}_H\n#define {0}_H\n\n", upper);
   for (const CompensationModel& model : set.models) {
     const std::string axis = prefix + "_" + axis_name(model.dataset.target_column);
@@ -63,22 +69,24 @@ std::string to_c_header(const ModelSet& set, const std::string& prefix, double s
     for (std::size_t k = 0; k < n; ++k) {
       const std::string axis = axis_name(set.models[k].dataset.target_column);
       reset += fmt::format("  {0}_{1}_reset(&s->{1});\n", prefix, axis);
-      update += fmt::format(
-          "  drift_dph[{2}] = {0}_{1}_update(&s->{1}, time_s, temp_fog_degc, temp_acc1_degc,\n"
-          "                                   temp_acc2_degc);\n",
-          prefix, axis, k);
+      std::vector<std::string> own = {"temp_fog_degc", "temp_acc1_degc", "temp_acc2_degc"};
+      for (const std::string& name : set.models[k].dataset.features.further)
+        own.push_back(thermometer_column(name));
+      update += fmt::format("  drift_dph[{2}] = {0}_{1}_update(&s->{1}, time_s, {3});\n", prefix,
+                            axis, k, fmt::join(own, ", "));
       compensated += fmt::format(
           "  gyro_compensated_dph[{2}] = {0}_{1}_compensated_dph(&s->{1}, gyro_dph[{2}]);\n",
           prefix, axis, k);
     }
     h += fmt::format("static inline void {0}_reset({0}_state* s) {{\n{1}}}\n\n", prefix, reset);
+    std::string params;
+    for (const std::string& column : columns) params += fmt::format("{}_real {}, ", prefix, column);
     h += fmt::format(
         "/* Every axis's predicted drift, deg/h, for the newest sample; each axis's fault flags\n"
         " * are in its own state's flags (s->AXIS.flags). */\n"
-        "static inline void {0}_update({0}_state* s, double time_s, {0}_real temp_fog_degc,\n"
-        "                                {0}_real temp_acc1_degc, {0}_real temp_acc2_degc,\n"
-        "                                {0}_real drift_dph[{1}_N_AXES]) {{\n{2}}}\n\n",
-        prefix, upper, update);
+        "static inline void {0}_update({0}_state* s, double time_s, {2}\n"
+        "                                {0}_real drift_dph[{1}_N_AXES]) {{\n{3}}}\n\n",
+        prefix, upper, params, update);
     h += fmt::format(
         "/* Every axis's gyro minus its last drift (each as AXIS_compensated_dph). */\n"
         "static inline void {0}_compensated_dph({0}_state* s, const {0}_real "

@@ -13,23 +13,38 @@ StreamingCompensator::StreamingCompensator(const CompensationModel& model, doubl
       data_dt_s_(dt_s),
       dt_s_(static_cast<double>(k_) * dt_s),
       faults_(options.faults),
-      rates_{signal::CausalDifferentiator(model.dataset.preprocessing.rates, dt_s_),
-             signal::CausalDifferentiator(model.dataset.preprocessing.rates, dt_s_),
-             signal::CausalDifferentiator(model.dataset.preprocessing.rates, dt_s_)},
+      nt_(model.dataset.features.thermometer_count()),
+      rates_(nt_, signal::CausalDifferentiator(model.dataset.preprocessing.rates, dt_s_)),
       columns_(model.dataset.features.columns()),
       features_(model.inputs()),
       work_(model.inputs()),
-      guarded_(options.guarded && !model.guard.empty()) {
+      guarded_(options.guarded && !model.guard.empty()),
+      thermometers_(nt_),
+      raw_(nt_),
+      temp_(nt_),
+      rate_(nt_),
+      good_(nt_),
+      stuck_(nt_),
+      block_(nt_) {
   validate(faults_);
-  for (std::size_t k = 0; k < 3; ++k)
+  for (std::size_t k = 0; k < nt_; ++k) {
     thermometers_[k].read = model.dataset.features.reads(static_cast<Thermometer>(k));
+    thermometers_[k].others_degc.assign(nt_, 0.0);
+  }
+}
+
+void StreamingCompensator::ThermometerState::clear() noexcept {
+  seen_good = out = tracking = false;
+  good_degc = good_time_s = good_rate = pushed_degc = 0;
+  unchanged_degc = unchanged_since_s = 0;
+  std::fill(others_degc.begin(), others_degc.end(), 0.0);
 }
 
 void StreamingCompensator::reset() noexcept {
   for (auto& r : rates_) r.reset();
   filter_.reset();
   weight_ = 1.0;
-  for (ThermometerState& th : thermometers_) th = ThermometerState{th.read};
+  for (ThermometerState& th : thermometers_) th.clear();
   started_ = false;
   refill_ = 0;
   has_good_drift_ = false;
@@ -42,11 +57,11 @@ void StreamingCompensator::reset() noexcept {
 // policy's range, no jump from its last good reading continued along its rate (judged within
 // bridge_s of that reading: a step that lasts longer is real), and not stuck
 // (stream_faults.hpp). Raises temp_bad, temp_jump and temp_stuck.
-std::array<bool, 3> StreamingCompensator::check_thermometers(const std::array<double, 3>& raw,
-                                                             double time_s,
-                                                             std::uint32_t& flags) noexcept {
-  std::array<bool, 3> good{};
-  for (std::size_t k = 0; k < 3; ++k) {
+void StreamingCompensator::check_thermometers(double time_s, std::uint32_t& flags) noexcept {
+  const std::vector<double>& raw = raw_;
+  std::vector<char>& good = good_;
+  for (std::size_t k = 0; k < nt_; ++k) {
+    good[k] = false;
     if (!thermometers_[k].read) continue;
     good[k] =
         std::isfinite(raw[k]) && raw[k] >= faults_.temp_min_degc && raw[k] <= faults_.temp_max_degc;
@@ -61,33 +76,32 @@ std::array<bool, 3> StreamingCompensator::check_thermometers(const std::array<do
       flags |= fault::temp_jump;
     }
   }
-  if (faults_.stuck_s <= 0) return good;
+  if (faults_.stuck_s <= 0) return;
   const double nan = std::numeric_limits<double>::quiet_NaN();
-  std::array<bool, 3> stuck{};
-  for (std::size_t k = 0; k < 3; ++k) {
+  std::fill(stuck_.begin(), stuck_.end(), false);
+  for (std::size_t k = 0; k < nt_; ++k) {
     ThermometerState& th = thermometers_[k];
     if (!good[k]) continue;
     if (!th.tracking || raw[k] != th.unchanged_degc) {
       th.tracking = true;
       th.unchanged_degc = raw[k];
       th.unchanged_since_s = time_s;
-      for (std::size_t j = 0; j < 3; ++j) th.others_degc[j] = good[j] ? raw[j] : nan;
+      for (std::size_t j = 0; j < nt_; ++j) th.others_degc[j] = good[j] ? raw[j] : nan;
       continue;
     }
-    for (std::size_t j = 0; j < 3; ++j) {
+    for (std::size_t j = 0; j < nt_; ++j) {
       if (j == k || !good[j]) continue;
       if (std::isnan(th.others_degc[j])) th.others_degc[j] = raw[j];  // known from now on
       if (time_s - th.unchanged_since_s >= faults_.stuck_s &&
           std::abs(raw[j] - th.others_degc[j]) >= faults_.stuck_delta_degc)
-        stuck[k] = true;
+        stuck_[k] = true;
     }
   }
-  for (std::size_t k = 0; k < 3; ++k)
-    if (stuck[k]) {
+  for (std::size_t k = 0; k < nt_; ++k)
+    if (stuck_[k]) {
       good[k] = false;
       flags |= fault::temp_stuck;
     }
-  return good;
 }
 
 // A faulty thermometer's stand-in: its last good reading continued along its last good rate,
@@ -142,10 +156,14 @@ StreamOutput StreamingCompensator::update(const Sample& s) noexcept {
   const bool first = !data_started_;
   data_started_ = true;
   data_time_s_ = t;
-  block_.add(s.temp_fog_degc, s.temp_acc1_degc, s.temp_acc2_degc, 0.0);
+  raw_[0] = s.temp_fog_degc, raw_[1] = s.temp_acc1_degc, raw_[2] = s.temp_acc2_degc;
+  for (std::size_t k = 3; k < nt_; ++k) raw_[k] = s.further_degc[k - 3];
+  block_.add(raw_, 0.0);
   if (!first && block_.count < k_) return finish(s, last_drift_dph_, flags);
   const auto c = static_cast<double>(block_.count);
-  const Sample mean{t, s.gyro_dph, block_.fog / c, block_.acc1 / c, block_.acc2 / c};
+  for (std::size_t k = 0; k < nt_; ++k) temp_[k] = block_.temp[k] / c;
+  const Sample mean{t,        s.gyro_dph, temp_[0],
+                    temp_[1], temp_[2],   std::span<const double>(temp_).subspan(3)};
   block_.clear();
   return step(mean, flags);
 }
@@ -174,12 +192,16 @@ StreamOutput StreamingCompensator::step(const Sample& s, std::uint32_t flags) no
         missing = static_cast<std::size_t>(std::lround(step / dt_s_)) - 1;
     }
   }
-  const std::array<double, 3> raw = {s.temp_fog_degc, s.temp_acc1_degc, s.temp_acc2_degc};
-  const std::array<bool, 3> good = check_thermometers(raw, t, flags);
+  // raw_ from the sample first: step() may be given the block means held in temp_.
+  for (std::size_t k = 3; k < nt_; ++k) raw_[k] = s.further_degc[k - 3];
+  raw_[0] = s.temp_fog_degc, raw_[1] = s.temp_acc1_degc, raw_[2] = s.temp_acc2_degc;
+  check_thermometers(t, flags);
+  const std::vector<double>& raw = raw_;
+  const std::vector<char>& good = good_;
   // Outages: bridged up to bridge_s, out beyond; a thermometer back from being out, or a gap
   // too long to bridge, starts the rate filters again.
   bool restart_rates = long_gap, any_out = false, any_bridged = false;
-  for (std::size_t k = 0; k < 3; ++k) {
+  for (std::size_t k = 0; k < nt_; ++k) {
     ThermometerState& th = thermometers_[k];
     if (!th.read) continue;
     if (good[k]) {
@@ -196,8 +218,10 @@ StreamOutput StreamingCompensator::step(const Sample& s, std::uint32_t flags) no
     refill_ = has_good_drift_ ? rates_[0].window() - 1 : 0;
     missing = 0;
   }
-  std::array<double, 3> temp{}, rate{};
-  for (std::size_t k = 0; k < 3; ++k) {
+  std::vector<double>&temp = temp_, &rate = rate_;
+  std::fill(temp.begin(), temp.end(), 0.0);
+  std::fill(rate.begin(), rate.end(), 0.0);
+  for (std::size_t k = 0; k < nt_; ++k) {
     ThermometerState& th = thermometers_[k];
     if (!th.read) continue;
     temp[k] = good[k] ? raw[k] : substitute(k, t);
@@ -232,7 +256,7 @@ StreamOutput StreamingCompensator::step(const Sample& s, std::uint32_t flags) no
       features_[c] = columns_[c].value(temp, rate, t);
     // While the rate window fills, novelty leaves the rates out (guard.hpp, "Warm-up").
     bool warming = false;
-    for (std::size_t k = 0; k < 3; ++k) warming |= thermometers_[k].read && !rates_[k].settled();
+    for (std::size_t k = 0; k < nt_; ++k) warming |= thermometers_[k].read && !rates_[k].settled();
     last_ = model_.predict(features_, work_, warming);
     drift = last_.drift_dph;
     if (any_bridged) flags |= fault::bridged;

@@ -54,22 +54,38 @@ Recording decimate(const Recording& recording, std::size_t k) {
   Recording out;
   out.source = recording.source;
   const std::size_t n = recording.size();
-  auto has = [](const std::vector<double>& v) { return !v.empty(); };
+  // Every thermometer, further ones from their columns; an absent one sums zeros, never kept.
+  std::vector<std::vector<double>> temps = {recording.temp_fog_degc, recording.temp_acc1_degc,
+                                            recording.temp_acc2_degc};
+  const std::vector<std::string> further = further_thermometers_of(recording);
+  for (const std::string& name : further)
+    temps.push_back(recording.numeric_column(thermometer_column(name)));
+  for (auto& v : temps)
+    if (v.empty()) v.assign(n, 0.0);
+  std::vector<std::vector<double>> means(temps.size());
+  std::vector<double> sample(temps.size());
+  BlockSum sum(temps.size());
   for (std::size_t first = 0, last = 0; first < n; first = last + 1) {
     last = first == 0 ? 0 : std::min(n - 1, first + k - 1);
     if (first != 0 && last - first + 1 < k) break;  // a trailing partial block is not yet done
-    BlockSum sum;
-    for (std::size_t i = first; i <= last; ++i)
-      sum.add(recording.temp_fog_degc[i],
-              has(recording.temp_acc1_degc) ? recording.temp_acc1_degc[i] : 0.0,
-              has(recording.temp_acc2_degc) ? recording.temp_acc2_degc[i] : 0.0,
-              recording.gyro_dph[i]);
+    sum.clear();
+    for (std::size_t i = first; i <= last; ++i) {
+      for (std::size_t j = 0; j < temps.size(); ++j) sample[j] = temps[j][i];
+      sum.add(sample, recording.gyro_dph[i]);
+    }
     const auto c = static_cast<double>(sum.count);
     out.time_s.push_back(recording.time_s[last]);
     out.gyro_dph.push_back(sum.gyro / c);
-    out.temp_fog_degc.push_back(sum.fog / c);
-    if (has(recording.temp_acc1_degc)) out.temp_acc1_degc.push_back(sum.acc1 / c);
-    if (has(recording.temp_acc2_degc)) out.temp_acc2_degc.push_back(sum.acc2 / c);
+    for (std::size_t j = 0; j < temps.size(); ++j) means[j].push_back(sum.temp[j] / c);
+  }
+  out.temp_fog_degc = std::move(means[0]);
+  if (!recording.temp_acc1_degc.empty()) out.temp_acc1_degc = std::move(means[1]);
+  if (!recording.temp_acc2_degc.empty()) out.temp_acc2_degc = std::move(means[2]);
+  for (std::size_t f = 0; f < further.size(); ++f) {
+    const std::vector<double>& m = means[3 + f];
+    ExtraColumn column{thermometer_column(further[f]), {}};
+    for (double v : m) column.cells.push_back(fmt::format("{:.17g}", v));
+    out.extra.push_back(std::move(column));
   }
   return out;
 }

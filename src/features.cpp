@@ -11,9 +11,7 @@
 namespace fogdrift {
 namespace {
 
-constexpr std::array kThermometers = {Thermometer::fog, Thermometer::acc1, Thermometer::acc2};
-constexpr std::array<EnumName<Thermometer>, 3> kThermometerNames = {
-    {{Thermometer::fog, "fog"}, {Thermometer::acc1, "acc1"}, {Thermometer::acc2, "acc2"}}};
+constexpr std::array<std::string_view, 3> kThermometerNames = {"fog", "acc1", "acc2"};
 constexpr std::array<EnumName<FeatureTerm>, 6> kTermNames = {
     {{FeatureTerm::temp, "T"},
      {FeatureTerm::rate, "dT"},
@@ -55,43 +53,60 @@ std::vector<std::string_view> split_terms(std::string_view text) {
 
 }  // namespace
 
-std::string_view to_string(Thermometer thermometer) {
-  return name_in(kThermometerNames, thermometer);
-}
-
 std::string_view to_string(FeatureTerm term) {
   return name_in(kTermNames, term);
 }
 
-std::string_view column_name(Thermometer thermometer) {
-  switch (thermometer) {
-    case Thermometer::fog:
-      return "temp_fog_degc";
-    case Thermometer::acc1:
-      return "temp_acc1_degc";
-    case Thermometer::acc2:
-      return "temp_acc2_degc";
-  }
-  return "?";
+std::string thermometer_column(std::string_view name) {
+  return fmt::format("temp_{}_degc", name);
 }
 
-FeatureSpec FeatureSpec::parse(std::string_view text) {
+bool is_thermometer_name(std::string_view name) {
+  return !name.empty() && name.front() >= 'a' && name.front() <= 'z' &&
+         std::all_of(name.begin(), name.end(), [](char c) {
+           return (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '_';
+         });
+}
+
+std::string_view FeatureSpec::thermometer_name(Thermometer k) const {
+  const auto i = static_cast<std::size_t>(k);
+  return i < 3 ? kThermometerNames[i] : std::string_view(further.at(i - 3));
+}
+
+FeatureSpec FeatureSpec::parse(std::string_view text,
+                               const std::vector<std::string>& thermometers) {
   const auto fail = [&](const std::string& why) {
     throw OptionError("features", fmt::format("'{}': {}; write terms such as T,dT,grad or "
                                               "T(fog,acc1) from T, dT, grad, dgrad, t, TdT",
                                               text, why));
   };
   FeatureSpec spec;
+  // A thermometer's number, a further one numbered as it is first met.
+  const auto number = [&](std::string_view name) {
+    const auto known = std::find(kThermometerNames.begin(), kThermometerNames.end(), name);
+    if (known != kThermometerNames.end())
+      return static_cast<Thermometer>(known - kThermometerNames.begin());
+    if (!is_thermometer_name(name))
+      fail(
+          fmt::format("'{}' is not a thermometer (fog, acc1, acc2, or NAME of a further column "
+                      "temp_NAME_degc: lower-case letters, digits and '_')",
+                      name));
+    auto at = std::find(spec.further.begin(), spec.further.end(), name);
+    if (at == spec.further.end()) at = spec.further.insert(at, std::string(name));
+    return static_cast<Thermometer>(3 + (at - spec.further.begin()));
+  };
+  std::vector<std::string_view> bare(kThermometerNames.begin(), kThermometerNames.end());
+  if (!thermometers.empty()) bare.assign(thermometers.begin(), thermometers.end());
   if (trim(text).empty()) fail("the spec is empty");
   for (std::string_view item : split_terms(text)) {
     if (item.empty()) fail("an empty term");
     std::string_view name = item;
-    std::string_view list;
+    std::vector<std::string_view> list = bare;
     bool has_list = false;
     if (const auto open = item.find('('); open != std::string_view::npos) {
       if (item.back() != ')') fail(fmt::format("'{}' has no closing parenthesis", item));
       name = trim(item.substr(0, open));
-      list = item.substr(open + 1, item.size() - open - 2);
+      list = split_terms(item.substr(open + 1, item.size() - open - 2));
       has_list = true;
     }
     const auto term_it = std::find_if(kTerms.begin(), kTerms.end(), [&](FeatureTerm t) {
@@ -104,23 +119,15 @@ FeatureSpec FeatureSpec::parse(std::string_view text) {
     }
     if (term.term == FeatureTerm::time) {
       if (has_list) fail("'t' takes no thermometers");
-    } else if (!has_list) {
-      term.thermometers.assign(kThermometers.begin(), kThermometers.end());
     } else {
-      std::array<bool, 3> chosen{};
-      for (std::string_view s : split_terms(list)) {
-        const auto th = std::find_if(kThermometers.begin(), kThermometers.end(),
-                                     [&](Thermometer k) { return fogdrift::to_string(k) == s; });
-        if (th == kThermometers.end()) {
-          fail(fmt::format("'{}' is not a thermometer (fog, acc1, acc2)", s));
-        }
-        const auto index = static_cast<std::size_t>(th - kThermometers.begin());
-        if (chosen[index]) fail(fmt::format("thermometer '{}' appears twice in {}", s, name));
-        chosen[index] = true;
+      for (std::string_view s : list) {
+        const Thermometer k = number(s);
+        if (std::find(term.thermometers.begin(), term.thermometers.end(), k) !=
+            term.thermometers.end())
+          fail(fmt::format("thermometer '{}' appears twice in {}", s, name));
+        term.thermometers.push_back(k);
       }
-      for (std::size_t k = 0; k < 3; ++k) {
-        if (chosen[k]) term.thermometers.push_back(kThermometers[k]);
-      }
+      std::sort(term.thermometers.begin(), term.thermometers.end());
     }
     if (is_gradient(term.term) && term.thermometers.size() < 2) {
       fail(fmt::format("'{}' needs at least two thermometers", name));
@@ -135,11 +142,12 @@ std::string FeatureSpec::to_string() const {
   for (const auto& term : terms) {
     if (!out.empty()) out += ',';
     out += fogdrift::to_string(term.term);
-    if (term.term != FeatureTerm::time && term.thermometers.size() != 3) {
+    const std::vector<Thermometer> three = {Thermometer::fog, Thermometer::acc1, Thermometer::acc2};
+    if (term.term != FeatureTerm::time && term.thermometers != three) {
       out += '(';
       for (std::size_t k = 0; k < term.thermometers.size(); ++k) {
         if (k > 0) out += ',';
-        out += fogdrift::to_string(term.thermometers[k]);
+        out += thermometer_name(term.thermometers[k]);
       }
       out += ')';
     }
@@ -163,28 +171,31 @@ std::vector<FeatureColumn> FeatureSpec::columns() const {
   return out;
 }
 
-std::string FeatureColumn::name() const {
-  const auto ta = fogdrift::to_string(a), tb = fogdrift::to_string(b);
-  switch (term) {
-    case FeatureTerm::temp:
-      return fmt::format("T_{}_degc", ta);
-    case FeatureTerm::rate:
-      return fmt::format("dT_{}_degc_per_s", ta);
-    case FeatureTerm::gradient:
-      return fmt::format("grad_{}_{}_degc", ta, tb);
-    case FeatureTerm::gradient_rate:
-      return fmt::format("dgrad_{}_{}_degc_per_s", ta, tb);
-    case FeatureTerm::time:
-      return "t_s";
-    case FeatureTerm::temp_rate_product:
-      return fmt::format("TdT_{}_degc2_per_s", ta);
-  }
-  return "?";
-}
-
 std::vector<std::string> FeatureSpec::names() const {
   std::vector<std::string> out;
-  for (const FeatureColumn& c : columns()) out.push_back(c.name());
+  for (const FeatureColumn& c : columns()) {
+    const auto ta = thermometer_name(c.a), tb = thermometer_name(c.b);
+    switch (c.term) {
+      case FeatureTerm::temp:
+        out.push_back(fmt::format("T_{}_degc", ta));
+        break;
+      case FeatureTerm::rate:
+        out.push_back(fmt::format("dT_{}_degc_per_s", ta));
+        break;
+      case FeatureTerm::gradient:
+        out.push_back(fmt::format("grad_{}_{}_degc", ta, tb));
+        break;
+      case FeatureTerm::gradient_rate:
+        out.push_back(fmt::format("dgrad_{}_{}_degc_per_s", ta, tb));
+        break;
+      case FeatureTerm::time:
+        out.push_back("t_s");
+        break;
+      case FeatureTerm::temp_rate_product:
+        out.push_back(fmt::format("TdT_{}_degc2_per_s", ta));
+        break;
+    }
+  }
   return out;
 }
 
@@ -203,20 +214,52 @@ bool FeatureSpec::reads(Thermometer k) const {
   return std::any_of(plan.begin(), plan.end(), [k](const FeatureColumn& c) { return c.reads(k); });
 }
 
-FeatureSpec default_feature_spec(const std::vector<Thermometer>& present) {
-  if (present.empty()) throw OptionError("features", "no thermometer to build features from");
-  if (present.size() == 3) return default_feature_spec();
-  std::vector<std::string_view> names;
-  for (Thermometer k : present) names.push_back(to_string(k));
-  const std::string list = fmt::format("{}", fmt::join(names, ","));
-  return FeatureSpec::parse(present.size() == 1 ? fmt::format("T({0}),dT({0})", list)
-                                                : fmt::format("T({0}),dT({0}),grad({0})", list));
+std::vector<std::string> parse_thermometers(std::string_view text) {
+  std::vector<std::string> out;
+  for (std::string_view name : split_terms(text)) {
+    if (name.empty()) throw OptionError("thermometers", fmt::format("'{}': an empty name", text));
+    if (!is_thermometer_name(name))
+      throw OptionError("thermometers",
+                        fmt::format("'{}' is not a thermometer: fog, acc1, acc2, or NAME of a "
+                                    "further column temp_NAME_degc (lower-case letters, digits "
+                                    "and '_')",
+                                    name));
+    if (std::find(out.begin(), out.end(), name) != out.end())
+      throw OptionError("thermometers", fmt::format("'{}' appears twice", name));
+    out.emplace_back(name);
+  }
+  return out;
 }
 
-std::vector<Thermometer> thermometers_of(const Recording& recording) {
-  std::vector<Thermometer> out = {Thermometer::fog};
-  if (!recording.temp_acc1_degc.empty()) out.push_back(Thermometer::acc1);
-  if (!recording.temp_acc2_degc.empty()) out.push_back(Thermometer::acc2);
+FeatureSpec default_feature_spec(const std::vector<std::string>& thermometers) {
+  if (thermometers.empty()) throw OptionError("features", "no thermometer to build features from");
+  const std::string list = fmt::format("{}", fmt::join(thermometers, ","));
+  return FeatureSpec::parse(thermometers.size() == 1
+                                ? fmt::format("T({0}),dT({0})", list)
+                                : fmt::format("T({0}),dT({0}),grad({0})", list));
+}
+
+std::vector<std::string> thermometers_of(const Recording& recording) {
+  std::vector<std::string> out = {"fog"};
+  if (!recording.temp_acc1_degc.empty()) out.emplace_back("acc1");
+  if (!recording.temp_acc2_degc.empty()) out.emplace_back("acc2");
+  return out;
+}
+
+std::optional<std::string> further_thermometer_name(std::string_view column) {
+  if (!column.starts_with("temp_") || !column.ends_with("_degc") || column.size() <= 10)
+    return std::nullopt;
+  const std::string_view name = column.substr(5, column.size() - 10);
+  if (!is_thermometer_name(name) || std::find(kThermometerNames.begin(), kThermometerNames.end(),
+                                              name) != kThermometerNames.end())
+    return std::nullopt;
+  return std::string(name);
+}
+
+std::vector<std::string> further_thermometers_of(const Recording& recording) {
+  std::vector<std::string> out;
+  for (const ExtraColumn& c : recording.extra)
+    if (auto name = further_thermometer_name(c.name)) out.push_back(std::move(*name));
   return out;
 }
 
@@ -286,11 +329,20 @@ FeatureTable compute_features(const Recording& recording, const FeatureSpec& spe
                     options.block.block_s, block));
   }
 
-  const std::array<const std::vector<double>*, 3> temps = {
+  // Each thermometer's column: the three by name, a further one from its extra column.
+  const std::size_t nt = spec.thermometer_count();
+  std::vector<const std::vector<double>*> temps = {
       &recording.temp_fog_degc, &recording.temp_acc1_degc, &recording.temp_acc2_degc};
+  std::vector<std::vector<double>> further(spec.further.size());
   const std::vector<FeatureColumn> plan = spec.columns();
-  for (Thermometer k : {Thermometer::acc1, Thermometer::acc2}) {
-    if (!temps[static_cast<std::size_t>(k)]->empty()) continue;
+  for (std::size_t i = 0; i < nt; ++i) {
+    const auto k = static_cast<Thermometer>(i);
+    const std::string column = thermometer_column(spec.thermometer_name(k));
+    if (i >= 3) {
+      if (recording.has_column(column)) further[i - 3] = recording.numeric_column(column);
+      temps.push_back(&further[i - 3]);
+    }
+    if (!temps[i]->empty() || k == Thermometer::fog) continue;
     for (const FeatureColumn& c : plan) {
       if (!c.reads(k)) continue;
       throw InputError(
@@ -298,22 +350,23 @@ FeatureTable compute_features(const Recording& recording, const FeatureSpec& spe
           fmt::format("has no {} column, which the feature {} reads (spec '{}'); a unit with "
                       "fewer thermometers trains on those it has, e.g. --features \"{}\" "
                       "(docs/logs.md)",
-                      column_name(k), c.name(), spec.to_string(),
+                      column, spec.names()[static_cast<std::size_t>(&c - plan.data())],
+                      spec.to_string(),
                       default_feature_spec(thermometers_of(recording)).to_string()));
     }
   }
   // Rates only of the thermometers some input reads.
-  std::array<std::vector<double>, 3> rates;
-  for (Thermometer k : {Thermometer::fog, Thermometer::acc1, Thermometer::acc2}) {
-    const auto i = static_cast<std::size_t>(k);
+  std::vector<std::vector<double>> rates(nt);
+  for (std::size_t i = 0; i < nt; ++i) {
+    const auto k = static_cast<Thermometer>(i);
     if (std::any_of(plan.begin(), plan.end(),
                     [k](const FeatureColumn& c) { return c.reads_rate(k); }))
       rates[i] = signal::differentiate(*temps[i], dt, options.rates);
   }
   std::vector<std::vector<double>> columns(plan.size(), std::vector<double>(n));  // sample rate
+  std::vector<double> temp(nt), rate(nt);
   for (std::size_t s = 0; s < n; ++s) {
-    std::array<double, 3> temp{}, rate{};
-    for (std::size_t i = 0; i < 3; ++i) {
+    for (std::size_t i = 0; i < nt; ++i) {
       temp[i] = temps[i]->empty() ? 0.0 : (*temps[i])[s];  // an absent one is never read
       rate[i] = rates[i].empty() ? 0.0 : rates[i][s];
     }

@@ -24,13 +24,16 @@ CampaignTrainResult train_inputs(const std::vector<RecordingInput>& inputs,
   std::size_t shortest = inputs.front().recording.size();
   for (const auto& in : inputs) shortest = std::min(shortest, in.recording.size());
   const FeatureOptions fitted = preprocessing_for(dt_s, shortest, dataset.preprocessing);
-  if (options.auto_features) {
-    // The paper's inputs over the thermometers every training recording has.
-    std::vector<Thermometer> common = thermometers_of(inputs.front().recording);
+  if (options.auto_features && !options.thermometers.empty()) {
+    dataset.features = default_feature_spec(options.thermometers);
+  } else if (options.auto_features) {
+    // The paper's inputs over those of fog, acc1, acc2 every training recording has.
+    std::vector<std::string> common = {"fog", "acc1", "acc2"};
     for (const auto& in : inputs) {
       const auto has = thermometers_of(in.recording);
-      std::erase_if(
-          common, [&](Thermometer k) { return std::find(has.begin(), has.end(), k) == has.end(); });
+      std::erase_if(common, [&](const std::string& k) {
+        return std::find(has.begin(), has.end(), k) == has.end();
+      });
     }
     dataset.features = default_feature_spec(common);
     if (common.size() < 3)
@@ -38,6 +41,20 @@ CampaignTrainResult train_inputs(const std::vector<RecordingInput>& inputs,
           {"features", fmt::format("{} thermometer{}: features '{}'", common.size(),
                                    common.size() == 1 ? "" : "s", dataset.features.to_string())});
   }
+  // Further thermometers the recordings hold and the features do not read, said once.
+  std::vector<std::string> unread;
+  for (const std::string& name : further_thermometers_of(inputs.front().recording)) {
+    const auto& f = dataset.features.further;
+    if (std::find(f.begin(), f.end(), name) == f.end()) unread.push_back(thermometer_column(name));
+  }
+  if (!unread.empty())
+    out.notes.push_back(
+        {"thermometers",
+         fmt::format("{} not read by the features '{}': a further thermometer becomes a "
+                     "feature when named, e.g. fog,acc1,acc2,{}, and the model then needs its "
+                     "reading wherever it runs (docs/logs.md, \"More thermometers\")",
+                     fmt::join(unread, ", "), dataset.features.to_string(),
+                     unread.front().substr(5, unread.front().size() - 10))});
   const FeatureOptions defaults;
   const signal::DifferentiatorOptions recommended =
       signal::recommended_rates(dataset.preprocessing.rates.causality);

@@ -5,6 +5,8 @@
 
 #include <gtest/gtest.h>
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 #include <sstream>
@@ -208,6 +210,151 @@ int main(void) {
   one.models = {set.models[0]};
   EXPECT_EQ(to_c_header(one, "imu", 1.0), to_c_header(set.models[0], "imu", 1.0));
   EXPECT_THROW(to_c_header(set, "2imu", 1.0), OptionError);
+}
+
+// A fourth thermometer (docs/logs.md, "More thermometers"): a case heater cycling with its own
+// phase in every recording, read by temp_case_degc and by none of the three, and a drift term in
+// the case's difference from the coil. `add_case` gives a recording that column and that term.
+void add_case(Recording& r, double phase, std::vector<double>* truth = nullptr) {
+  ExtraColumn column{"temp_case_degc", {}};
+  for (std::size_t i = 0; i < r.size(); ++i) {
+    const double excess = 3.0 * std::sin(2 * std::acos(-1.0) * r.time_s[i] / 400.0 + phase);
+    column.cells.push_back(fmt::format("{:.17g}", r.temp_fog_degc[i] + excess));
+    r.gyro_dph[i] += 4.0 * excess / 3.0;  // 4 °/h at the heater's peak
+    if (truth != nullptr) truth->push_back(4.0 * excess / 3.0);
+  }
+  r.extra.push_back(std::move(column));
+}
+
+// A model that reads the fourth thermometer removes the term the three cannot see; the batch
+// path, the streaming compensator (at 1 Hz and on blocks of a 10 Hz logger) and the C header,
+// whose update takes the fourth temperature, agree.
+TEST(StreamingCompensator, AFourthThermometerIsReadEverywhere) {
+  sim::CalibrationOptions co;
+  co.temps_degc = {-20, 10, 40};
+  co.repetitions = 2;
+  co.test_repetitions = 0;
+  co.powered_s = 900;
+  sim::SimulatedCampaign sc = sim::simulate_calibration(sim::Instrument{}, co);
+  std::vector<RecordingInput> inputs;
+  for (std::size_t i = 0; i < sc.recordings.size(); ++i) {
+    add_case(sc.recordings[i], 0.9 * static_cast<double>(i));
+    inputs.push_back(recording_input(sc.campaign, sc.campaign.recordings[i], sc.recordings[i]));
+  }
+  auto trained = [&](const std::vector<std::string>& thermometers) {
+    DatasetOptions dataset;
+    dataset.features = FeatureSpec::parse("T,dT,grad", thermometers);
+    dataset.preprocessing.rates.causality = signal::Causality::causal;
+    dataset.preprocessing.sample_interval_s = 1.0;
+    TrainOptions o;
+    o.method = Method::poly;
+    return train(build_dataset(inputs, dataset), dataset, o).model;
+  };
+  const CompensationModel three = trained({}), four = trained({"fog", "acc1", "acc2", "case"});
+  ASSERT_EQ(four.dataset.features.further, std::vector<std::string>{"case"});
+  EXPECT_EQ(four.dataset.features.to_string(),
+            "T(fog,acc1,acc2,case),dT(fog,acc1,acc2,case),grad(fog,acc1,acc2,case)");
+  EXPECT_EQ(four.inputs(), 14u);  // 4 T, 4 dT, 6 gradients
+
+  // A start-up the calibration did not hold, with its own heater phase.
+  sim::NorthfindOptions no;
+  no.temps_degc = {25};
+  no.findings = 1;
+  no.output_rate_hz = 1;
+  Recording test = sim::simulate_northfind(sim::Instrument{}, no).recordings.front();
+  std::vector<double> case_term;
+  add_case(test, 2.0, &case_term);
+  const std::vector<double> truth = test.numeric_column("drift_true_dph");
+  auto error_rms = [&](const std::vector<double>& drift) {  // the turn-on bias aside
+    double mean = 0, var = 0;
+    const auto n = static_cast<double>(drift.size());
+    for (std::size_t i = 0; i < drift.size(); ++i) mean += (drift[i] - truth[i] - case_term[i]) / n;
+    for (std::size_t i = 0; i < drift.size(); ++i)
+      var += std::pow(drift[i] - truth[i] - case_term[i] - mean, 2) / n;
+    return std::sqrt(var);
+  };
+  const std::vector<double> batch = four.predict_dph(test);
+  const double with_case = error_rms(batch), without = error_rms(three.predict_dph(test));
+  EXPECT_LT(with_case, 0.5 * without)
+      << with_case << " °/h with the case, " << without << " °/h without";
+
+  // The streaming compensator, given the case column sample by sample, gives the batch drift.
+  auto streams_as_batch = [&](const Recording& rec, double dt_s) {
+    const std::vector<double> expected = four.predict_dph(rec);
+    const std::vector<double> case_degc = rec.numeric_column("temp_case_degc");
+    StreamingCompensator stream(four, dt_s);
+    for (std::size_t i = 0; i < rec.size(); ++i)
+      ASSERT_EQ(
+          stream
+              .update({rec.time_s[i], rec.gyro_dph[i], rec.temp_fog_degc[i], rec.temp_acc1_degc[i],
+                       rec.temp_acc2_degc[i], std::span<const double>(&case_degc[i], 1)})
+              .drift_dph,
+          expected[i])
+          << "every " << dt_s << " s, sample " << i;
+  };
+  streams_as_batch(test, 1.0);
+  const std::vector<double> further = test.numeric_column("temp_case_degc");
+
+  test::TempDir dir;
+  test::write_file(dir / "model.h", to_c_header(four, "fd", 1.0));
+  test::write_file(dir / "driver.c", R"(#include <stdio.h>
+#include "model.h"
+int main(void) {
+  fd_state s;
+  double t, fog, acc1, acc2, case_degc;
+  fd_reset(&s);
+  while (scanf("%lf %lf %lf %lf %lf", &t, &fog, &acc1, &acc2, &case_degc) == 5)
+    printf("%.17g\n", fd_update(&s, t, fog, acc1, acc2, case_degc));
+  return 0;
+}
+)");
+  std::ostringstream samples;
+  samples.precision(17);
+  for (std::size_t i = 0; i < test.size(); ++i)
+    samples << test.time_s[i] << ' ' << test.temp_fog_degc[i] << ' ' << test.temp_acc1_degc[i]
+            << ' ' << test.temp_acc2_degc[i] << ' ' << further[i] << '\n';
+  std::istringstream in(test::compile_and_run_c(dir, samples.str()));
+  std::size_t rows = 0;
+  for (double v; in >> v; ++rows) {
+    ASSERT_LT(rows, batch.size());
+    ASSERT_NEAR(v, batch[rows], 1e-12 * std::abs(batch[rows]) + 1e-15) << rows;
+  }
+  EXPECT_EQ(rows, batch.size());
+
+  // Every axis in one header: the set's update takes the union of the axes' thermometers, and
+  // an axis that reads three is given three.
+  ModelSet set;
+  set.models = {four, three};
+  set.models[1].dataset.target_column = "gyro_y_dph";
+  test::write_file(dir / "imu.h", to_c_header(set, "imu", 1.0));
+  test::write_file(dir / "driver.c", R"(#include <stdio.h>
+#include "imu.h"
+int main(void) {
+  imu_state s;
+  double t, fog, acc1, acc2, case_degc, drift[IMU_N_AXES];
+  imu_reset(&s);
+  while (scanf("%lf %lf %lf %lf %lf", &t, &fog, &acc1, &acc2, &case_degc) == 5) {
+    imu_update(&s, t, fog, acc1, acc2, case_degc, drift);
+    printf("%.17g %.17g\n", drift[0], drift[1]);
+  }
+  return 0;
+}
+)");
+  std::istringstream both(test::compile_and_run_c(dir, samples.str()));
+  const std::vector<double> y_batch = three.predict_dph(test);
+  rows = 0;
+  for (double x, y; both >> x >> y; ++rows) {
+    ASSERT_LT(rows, batch.size());
+    ASSERT_NEAR(x, batch[rows], 1e-12 * std::abs(batch[rows]) + 1e-15) << rows;
+    ASSERT_NEAR(y, y_batch[rows], 1e-12 * std::abs(y_batch[rows]) + 1e-15) << rows;
+  }
+  EXPECT_EQ(rows, batch.size());
+
+  // A 10 Hz logger: blocks of 10 samples, the fourth thermometer averaged with the others.
+  no.output_rate_hz = 10;
+  Recording fast = sim::simulate_northfind(sim::Instrument{}, no).recordings.front();
+  add_case(fast, 2.0);
+  streams_as_batch(fast, 0.1);
 }
 
 // A model trained at 1 Hz runs on a 10 Hz logger on blocks of 10 samples (decimate.hpp): the

@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <fmt/format.h>
+
 #include <cmath>
 
 #include "fogdrift/error.hpp"
@@ -26,6 +28,39 @@ TEST(FeatureSpec, ParsesTheTextFormAndRoundTrips) {
   EXPECT_EQ(FeatureSpec::parse("T(fog,acc1,acc2)").to_string(), "T");
 }
 
+// Further thermometers (docs/logs.md, "More thermometers"): numbered after the three in the order
+// first named, each term's list in that order, read from temp_NAME_degc.
+TEST(FeatureSpec, FurtherThermometersAreNumberedAsFirstNamed) {
+  const FeatureSpec spec = FeatureSpec::parse("T(case,fog),dT(top,case),grad(fog,case)");
+  EXPECT_EQ(spec.further, (std::vector<std::string>{"case", "top"}));
+  EXPECT_EQ(spec.thermometer_count(), 5u);
+  EXPECT_EQ(spec.to_string(), "T(fog,case),dT(case,top),grad(fog,case)");
+  EXPECT_EQ(FeatureSpec::parse(spec.to_string()).to_string(), spec.to_string());
+  EXPECT_EQ(FeatureSpec::parse(spec.to_string()).further, spec.further);
+  EXPECT_EQ(spec.names(),
+            (std::vector<std::string>{"T_fog_degc", "T_case_degc", "dT_case_degc_per_s",
+                                      "dT_top_degc_per_s", "grad_fog_case_degc"}));
+  EXPECT_TRUE(spec.reads(static_cast<Thermometer>(4)));
+  EXPECT_FALSE(spec.reads(Thermometer::acc1));
+  EXPECT_EQ(spec.thermometer_name(static_cast<Thermometer>(4)), "top");
+  EXPECT_EQ(thermometer_column("top"), "temp_top_degc");
+  // Bare terms read the list given (train --thermometers), written out in the canonical form.
+  const FeatureSpec listed = FeatureSpec::parse("T,dT(fog)", {"fog", "case"});
+  EXPECT_EQ(listed.to_string(), "T(fog,case),dT(fog)");
+  EXPECT_EQ(FeatureSpec::parse("T,dT", {"fog", "acc1", "acc2"}).to_string(), "T,dT");
+  EXPECT_EQ(default_feature_spec({"fog", "acc1", "acc2", "case"}).to_string(),
+            "T(fog,acc1,acc2,case),dT(fog,acc1,acc2,case),grad(fog,acc1,acc2,case)");
+  EXPECT_EQ(parse_thermometers("fog, case_2"), (std::vector<std::string>{"fog", "case_2"}));
+  for (const char* bad : {"fog,fog", "fog,,acc1", "fog,Case", ""}) {
+    try {
+      parse_thermometers(bad);
+      ADD_FAILURE() << bad;
+    } catch (const OptionError& e) {
+      EXPECT_EQ(e.option(), "thermometers") << bad;
+    }
+  }
+}
+
 TEST(FeatureSpec, BadSpecsNameTheProblem) {
   auto message = [](const char* text) {
     try {
@@ -37,7 +72,8 @@ TEST(FeatureSpec, BadSpecsNameTheProblem) {
     return std::string("no error");
   };
   EXPECT_NE(message("T,dT,gradient").find("'gradient' is not a term"), std::string::npos);
-  EXPECT_NE(message("T(fog,gyro)").find("'gyro' is not a thermometer"), std::string::npos);
+  EXPECT_NE(message("T(fog,Gyro)").find("'Gyro' is not a thermometer"), std::string::npos);
+  EXPECT_NE(message("T(fog,2nd)").find("'2nd' is not a thermometer"), std::string::npos);
   EXPECT_NE(message("T,T").find("'T' appears twice"), std::string::npos);
   EXPECT_NE(message("grad(fog)").find("'grad' needs at least two thermometers"), std::string::npos);
   EXPECT_NE(message("").find("empty"), std::string::npos);
@@ -61,6 +97,41 @@ Recording quadratic_recording(std::size_t n, double dt) {
     r.temp_acc2_degc.push_back(-11.0 + 0.015 * t - 2e-6 * t * t);
   }
   return r;
+}
+
+// A further thermometer's column gives its features as the three give theirs: a recording whose
+// fourth thermometer repeats acc2 has the same acc2 and "case" features; a recording without the
+// column, or with text in it, is refused naming the column.
+TEST(Features, AFurtherThermometerIsReadFromItsColumn) {
+  Recording r = quadratic_recording(605, 1.0);
+  ExtraColumn column{"temp_case_degc", {}};
+  for (double v : r.temp_acc2_degc) column.cells.push_back(fmt::format("{:.17g}", v));
+  r.extra.push_back(column);
+  EXPECT_EQ(further_thermometers_of(r), std::vector<std::string>{"case"});
+  const FeatureTable t = compute_features(r, FeatureSpec::parse("T(acc2,case),dT(acc2,case)"));
+  ASSERT_EQ(t.names, (std::vector<std::string>{"T_acc2_degc", "T_case_degc", "dT_acc2_degc_per_s",
+                                               "dT_case_degc_per_s"}));
+  for (std::size_t row = 0; row < t.rows; ++row) {
+    EXPECT_EQ(t.x[row * 4 + 0], t.x[row * 4 + 1]) << row;
+    EXPECT_EQ(t.x[row * 4 + 2], t.x[row * 4 + 3]) << row;
+  }
+  try {
+    compute_features(r, FeatureSpec::parse("T(fog,top)"));
+    ADD_FAILURE() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("has no temp_top_degc column, which the feature "
+                                         "T_top_degc reads"),
+              std::string::npos)
+        << e.what();
+  }
+  r.extra.back().cells[7] = "n/a";
+  try {
+    compute_features(r, FeatureSpec::parse("T(fog,case)"));
+    ADD_FAILURE() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("quadratic.csv:9"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("temp_case_degc"), std::string::npos) << e.what();
+  }
 }
 
 TEST(Features, BlockMeansOfExactFeatures) {

@@ -1,7 +1,7 @@
 // Compensation one sample at a time, causally, as an instrument's processor runs it
 // (docs/method.md §4: a model in the field runs causally, one sample at a time).
 //
-// Each update takes the logger's sample (time, gyro, three temperatures), differentiates the
+// Each update takes the logger's sample (time, gyro, its temperatures), differentiates the
 // temperatures with the causal Savitzky–Golay filter of the model's window and degree
 // (signal::CausalDifferentiator), forms the model's features exactly as compute_features() does
 // at the sample rate, and returns the predicted drift. Nothing is allocated per sample.
@@ -21,8 +21,8 @@
 // output is always finite, each affected sample is flagged, and without faults nothing changes.
 #pragma once
 
-#include <array>
 #include <cstdint>
+#include <span>
 #include <vector>
 
 #include "fogdrift/decimate.hpp"
@@ -38,6 +38,9 @@ struct Sample {
   double temp_fog_degc = 0;
   double temp_acc1_degc = 0;
   double temp_acc2_degc = 0;
+  /// The further thermometers of the model's spec (FeatureSpec::further), in that order; the
+  /// caller's memory, read during update() only (docs/logs.md, "More thermometers").
+  std::span<const double> further_degc = {};
 };
 
 struct StreamOptions {
@@ -56,7 +59,8 @@ struct StreamOutput {
 class StreamingCompensator {
  public:
   /// `dt_s` is the logger's sample interval. Throws OptionError for an invalid FaultPolicy, and
-  /// (naming "rate") for an interval the model cannot run at (decimation_factor).
+  /// (naming "rate") for an interval the model cannot run at (decimation_factor). A sample's
+  /// further_degc must hold the model's further thermometers (model.dataset.features.further).
   StreamingCompensator(const CompensationModel& model, double dt_s,
                        const StreamOptions& options = {});
 
@@ -80,7 +84,8 @@ class StreamingCompensator {
     // readings then (NaN: not known).
     bool tracking = false;
     double unchanged_degc = 0, unchanged_since_s = 0;
-    std::array<double, 3> others_degc{};
+    std::vector<double> others_degc;  // one per thermometer, sized once
+    void clear() noexcept;            // as at power-on, keeping `read` and the memory
   };
 
   const CompensationModel& model_;
@@ -88,7 +93,8 @@ class StreamingCompensator {
   double data_dt_s_;  // the logger's interval
   double dt_s_;       // the model's: k_ · data_dt_s_
   FaultPolicy faults_;
-  std::array<signal::CausalDifferentiator, 3> rates_;
+  std::size_t nt_;  // thermometers numbered in the model's spec
+  std::vector<signal::CausalDifferentiator> rates_;
   std::vector<FeatureColumn> columns_;  // the model's inputs (FeatureSpec::columns())
   std::vector<double> features_, work_;
   bool guarded_;
@@ -96,7 +102,10 @@ class StreamingCompensator {
   DriftPrediction last_;
   double weight_ = 1.0;
   // Fault policy state (see stream_faults.hpp).
-  std::array<ThermometerState, 3> thermometers_;
+  std::vector<ThermometerState> thermometers_;
+  // One sample's thermometers: raw, good and stuck, and the values and rates the model reads.
+  std::vector<double> raw_, temp_, rate_;
+  std::vector<char> good_, stuck_;
   bool started_ = false;
   double previous_time_s_ = 0;
   std::size_t refill_ = 0;  // samples until the rate filters have a full window again
@@ -110,8 +119,7 @@ class StreamingCompensator {
 
   // One sample at the model's interval: the fault policy, the rates, the model and the guard.
   StreamOutput step(const Sample& s, std::uint32_t flags) noexcept;
-  std::array<bool, 3> check_thermometers(const std::array<double, 3>& raw, double time_s,
-                                         std::uint32_t& flags) noexcept;
+  void check_thermometers(double time_s, std::uint32_t& flags) noexcept;
   double substitute(std::size_t k, double time_s) const noexcept;
   double degraded(double time_s, std::uint32_t& flags) const noexcept;
   StreamOutput finish(const Sample& s, double drift_dph, std::uint32_t flags) noexcept;

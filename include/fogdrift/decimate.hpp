@@ -15,6 +15,7 @@
 // with the same arithmetic (the sum of k values in order, then one division).
 #pragma once
 
+#include <algorithm>
 #include <cstddef>
 #include <span>
 #include <string>
@@ -39,21 +40,29 @@ std::size_t decimation_factor(const FeatureOptions& model, double data_dt_s,
                               const std::string& option);
 
 /// The recording in blocks of `k` samples (see the file comment): time of each block's last
-/// sample, thermometers and gyro averaged; other columns are not kept. k = 1 returns a copy.
+/// sample, thermometers (further temp_NAME_degc columns too) and gyro averaged; other columns are
+/// not kept. k = 1 returns a copy.
 Recording decimate(const Recording& recording, std::size_t k);
 
 /// One column in the same blocks: the mean of each (a target at the data's rate brought to the
 /// model's rows, build_dataset).
 std::vector<double> decimate(std::span<const double> values, std::size_t k);
 
-/// Sums of the thermometers over a block as it fills, shared by the streaming paths.
+/// Sums of the thermometers (in Thermometer order) and the gyro over a block as it fills, shared
+/// by the streaming paths; sized once, so adding and clearing allocate nothing.
 struct BlockSum {
-  double fog = 0, acc1 = 0, acc2 = 0, gyro = 0;
+  std::vector<double> temp;
+  double gyro = 0;
   std::size_t count = 0;
-  void add(double fog_degc, double acc1_degc, double acc2_degc, double gyro_dph) noexcept {
-    fog += fog_degc, acc1 += acc1_degc, acc2 += acc2_degc, gyro += gyro_dph, ++count;
+  explicit BlockSum(std::size_t thermometers = 3) : temp(thermometers, 0.0) {}
+  void add(std::span<const double> temp_degc, double gyro_dph) noexcept {
+    for (std::size_t k = 0; k < temp.size(); ++k) temp[k] += temp_degc[k];
+    gyro += gyro_dph, ++count;
   }
-  void clear() noexcept { *this = BlockSum{}; }
+  void clear() noexcept {
+    std::fill(temp.begin(), temp.end(), 0.0);
+    gyro = 0, count = 0;
+  }
 };
 
 }  // namespace fogdrift

@@ -1,13 +1,18 @@
-// The model input x built from the instrument's three thermometers (docs/method.md §2 step 2, the
+// The model input x built from the instrument's thermometers (docs/method.md §2 step 2, the
 // paper's eq. 3: temperature, temperature rate and gradient terms), and the preprocessing that
 // turns a 1 Hz recording into modelling rows.
 //
 // A FeatureSpec is written as a short text, stored in every model:
 //   "T,dT,grad"                  the paper's 9 inputs: T_k, dT_k/dt and T_i - T_j of all three
 //   "T(fog),dT(fog,acc1),grad"   a term may name its thermometers: fog, acc1, acc2
+//   "T(fog,acc1,acc2,case),dT,grad"  or a further one, NAME of a column temp_NAME_degc
 // Terms: T (temperature, °C), dT (rate, °C/s), grad (T_i - T_j for every pair i < j of the
 // term's thermometers, °C), dgrad (rate of that gradient, °C/s; the eq. 3 term d(grad T)/dt),
-// t (time since power-on, s), TdT (T_k times dT_k/dt, °C²/s). Default thermometers: all three.
+// t (time since power-on, s), TdT (T_k times dT_k/dt, °C²/s). A term without a list reads the
+// three (fog, acc1, acc2), or the list parse() is given (train --thermometers).
+//
+// Thermometers are numbered: fog, acc1, acc2 are 0, 1, 2, and further ones 3, 4, … in the
+// order the spec first names them (FeatureSpec::further); a term's list is kept in that order.
 //
 // Preprocessing of one recording (compute_features):
 //   1. rates dT_k/dt at the recording's rate with the differentiator (signal/differentiate.hpp);
@@ -16,8 +21,9 @@
 // The recording must be uniformly sampled (every interval within 1 % of the median interval).
 #pragma once
 
-#include <array>
-
+#include <cstdint>
+#include <optional>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -28,28 +34,34 @@
 
 namespace fogdrift {
 
-enum class Thermometer { fog, acc1, acc2 };
+/// A thermometer by number: the three every model knows by name, and further ones, Thermometer(3
+/// + i) for FeatureSpec::further[i] (docs/logs.md, "More thermometers").
+enum class Thermometer : std::uint8_t { fog, acc1, acc2 };
 enum class FeatureTerm { temp, rate, gradient, gradient_rate, time, temp_rate_product };
 
-std::string_view to_string(Thermometer thermometer);  ///< "fog", "acc1", "acc2"
-std::string_view to_string(FeatureTerm term);         ///< "T", "dT", "grad", "dgrad", "t", "TdT"
+std::string_view to_string(FeatureTerm term);  ///< "T", "dT", "grad", "dgrad", "t", "TdT"
 
-/// The recording column a thermometer is read from ("temp_fog_degc", ...).
-std::string_view column_name(Thermometer thermometer);
+/// The recording column thermometer NAME is read from: temp_NAME_degc ("temp_fog_degc", ...).
+std::string thermometer_column(std::string_view name);
+
+/// Whether `name` may name a further thermometer: lower-case letters, digits and '_', starting
+/// with a letter (the NAME of a temp_NAME_degc column, recording.hpp is_channel_column).
+bool is_thermometer_name(std::string_view name);
 
 struct FeatureTermSpec {
   FeatureTerm term = FeatureTerm::temp;
-  std::vector<Thermometer> thermometers;  ///< in fog, acc1, acc2 order; unused for t
+  std::vector<Thermometer> thermometers;  ///< in number order; unused for t
 };
 
-/// One model input as an operation on a sample's three temperatures, their rates and its time:
-/// the term and the thermometer it reads (`b` too for the two gradient terms, a − b).
+/// One model input as an operation on a sample's temperatures, their rates and its time: the
+/// term and the thermometer it reads (`b` too for the two gradient terms, a − b).
 struct FeatureColumn {
   FeatureTerm term = FeatureTerm::temp;
   Thermometer a = Thermometer::fog, b = Thermometer::fog;
 
-  /// Its value for one sample; temperatures and rates are indexed by Thermometer.
-  double value(const std::array<double, 3>& temp_degc, const std::array<double, 3>& rate_degc_per_s,
+  /// Its value for one sample; temperatures and rates are indexed by Thermometer, one per
+  /// thermometer of the spec (FeatureSpec::thermometer_count).
+  double value(std::span<const double> temp_degc, std::span<const double> rate_degc_per_s,
                double time_s) const noexcept {
     const auto i = static_cast<std::size_t>(a), j = static_cast<std::size_t>(b);
     switch (term) {
@@ -86,43 +98,61 @@ struct FeatureColumn {
            : term == FeatureTerm::gradient_rate ? (a == k || b == k)
                                                 : false;
   }
-  /// Its name with unit, e.g. T_fog_degc, dgrad_fog_acc2_degc_per_s (FeatureSpec::names()).
-  std::string name() const;
 };
 
 struct FeatureSpec {
   std::vector<FeatureTermSpec> terms;
+  /// Names of the further thermometers, Thermometer(3), Thermometer(4), …: each read from its
+  /// column temp_NAME_degc.
+  std::vector<std::string> further;
 
-  /// Parses the text form; throws OptionError("features", ...) naming the bad term or
-  /// thermometer, a repeated term, a gradient term with fewer than two thermometers, or an
-  /// empty spec.
-  static FeatureSpec parse(std::string_view text);
+  /// Parses the text form; a term without a list reads `thermometers` (empty: fog, acc1,
+  /// acc2). Throws OptionError("features", ...) naming the bad term or thermometer, a repeated
+  /// term, a gradient term with fewer than two thermometers, or an empty spec.
+  static FeatureSpec parse(std::string_view text,
+                           const std::vector<std::string>& thermometers = {});
   /// The canonical text form: parse(to_string()) gives the same spec; thermometer lists are
-  /// written only when they are not all three.
+  /// written only when they are not fog, acc1, acc2.
   std::string to_string() const;
   /// One name per model input, with its unit: T_fog_degc, dT_acc1_degc_per_s,
   /// grad_fog_acc1_degc, dgrad_fog_acc2_degc_per_s, t_s, TdT_fog_degc2_per_s.
   std::vector<std::string> names() const;
-  std::size_t size() const { return names().size(); }
+  std::size_t size() const { return columns().size(); }
   /// The model inputs in order, as operations on one sample: the one description of what each
   /// input is, shared by compute_features(), the streaming compensator and the C header.
   std::vector<FeatureColumn> columns() const;
+  /// Thermometers numbered in this spec: 3 + further.size() (some of the three may be unread).
+  std::size_t thermometer_count() const { return 3 + further.size(); }
+  /// The name of thermometer `k`: fog, acc1, acc2 or further[k − 3].
+  std::string_view thermometer_name(Thermometer k) const;
   /// Whether some input reads thermometer `k` (a unit without it cannot use the spec).
   bool reads(Thermometer k) const;
   /// Per input, whether it reads a temperature rate (FeatureColumn::reads_rate).
   std::vector<bool> rate_inputs() const;
 };
 
+/// A comma-separated list of thermometer names (train --thermometers), each fog, acc1, acc2 or
+/// a further NAME, none twice. Throws OptionError("thermometers", ...) naming the bad one.
+std::vector<std::string> parse_thermometers(std::string_view text);
+
 /// The paper's inputs, "T,dT,grad" (9 features).
 FeatureSpec default_feature_spec();
 
-/// The paper's inputs over the thermometers a unit has (docs/logs.md, "Fewer thermometers"):
-/// all three: "T,dT,grad"; two: "T(a,b),dT(a,b),grad(a,b)"; one: "T(a),dT(a)".
-/// Throws OptionError("features", ...) for an empty list.
-FeatureSpec default_feature_spec(const std::vector<Thermometer>& present);
+/// The paper's inputs over the thermometers named (docs/logs.md, "Fewer thermometers", "More
+/// thermometers"): fog, acc1, acc2: "T,dT,grad"; any other list of two or more:
+/// "T(list),dT(list),grad(list)"; one: "T(a),dT(a)". Throws OptionError("features", ...) for an
+/// empty list or a name that cannot name a thermometer.
+FeatureSpec default_feature_spec(const std::vector<std::string>& thermometers);
 
-/// The thermometers `recording` has, in fog, acc1, acc2 order (fog always).
-std::vector<Thermometer> thermometers_of(const Recording& recording);
+/// Those of fog, acc1, acc2 `recording` has, in that order (fog always).
+std::vector<std::string> thermometers_of(const Recording& recording);
+
+/// NAME when `column` is temp_NAME_degc of a further thermometer (not fog, acc1 or acc2).
+std::optional<std::string> further_thermometer_name(std::string_view column);
+
+/// The further thermometers `recording` has: NAME of each column temp_NAME_degc, in the file's
+/// order (docs/logs.md, "More thermometers").
+std::vector<std::string> further_thermometers_of(const Recording& recording);
 
 /// How a recording becomes modelling rows.
 struct FeatureOptions {

@@ -21,6 +21,12 @@ struct CampaignTrainOptions {
   /// The paper's inputs over the thermometers every training recording has (features.hpp,
   /// default_feature_spec) instead of dataset.features.
   bool auto_features = true;
+  /// With auto_features, the thermometers the features read (fog, acc1, acc2 or the NAME of a
+  /// further column temp_NAME_degc); empty: those of fog, acc1, acc2 every training recording
+  /// has. A further thermometer is a feature only when named here or in the spec: a chamber or
+  /// test-house thermocouple must not become an input the instrument cannot read in the field
+  /// (docs/logs.md, "More thermometers").
+  std::vector<std::string> thermometers;
   /// Averaging block, s; unset: fitted to the recordings' sampling (preprocessing_for).
   std::optional<double> block_s;
   /// Temperature-rate window, s; unset: the recommended window for dataset's causality
