@@ -2,6 +2,7 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
+#include <algorithm>
 #include <iostream>
 #include <memory>
 #include <optional>
@@ -29,6 +30,17 @@ struct ExportArgs {
   bool quiet = false;
   FaultPolicy faults;
 };
+
+// The temperature arguments of PREFIX_update, as the summary names them: temp_fog, temp_acc1,
+// temp_acc2, then each further thermometer a model reads (docs/logs.md, "More thermometers").
+std::string temperature_arguments(const ModelSet& set) {
+  std::vector<std::string> names = {"temp_fog", "temp_acc1", "temp_acc2"};
+  for (const CompensationModel& model : set.models)
+    for (const std::string& t : model.dataset.features.further)
+      if (std::find(names.begin(), names.end(), "temp_" + t) == names.end())
+        names.push_back("temp_" + t);
+  return fmt::format("{}", fmt::join(names, ", "));
+}
 
 void run(const ExportArgs& given, const CLI::App& cmd) {
   ExportArgs a = given;  // fault timings not given come from the model
@@ -60,9 +72,8 @@ void run(const ExportArgs& given, const CLI::App& cmd) {
         "{}_AXIS_predict_dph(features){}\n",
         a.output, set.models.size(), fmt::join(set.targets(), ", "), a.model, a.precision, a.prefix,
         a.stream_rate_hz > 0
-            ? fmt::format(", and {}_update(&state, time_s, temp_fog, temp_acc1, temp_acc2, "
-                          "drift[{}]) for all of them at {} Hz",
-                          a.prefix, set.models.size(), a.stream_rate_hz)
+            ? fmt::format(", and {}_update(&state, time_s, {}, drift[{}]) for all of them at {} Hz",
+                          a.prefix, temperature_arguments(set), set.models.size(), a.stream_rate_hz)
             : std::string());
   } else if (!a.quiet) {
     std::cout << fmt::format(
@@ -74,7 +85,7 @@ void run(const ExportArgs& given, const CLI::App& cmd) {
                                   : 1;
     if (a.stream_rate_hz > 0)
       std::cout << fmt::format(
-          "  and {0}_update(&state, time_s, temp_fog, temp_acc1, temp_acc2) "
+          "  and {0}_update(&state, time_s, {6}) "
           "at {1} Hz{5}, causal{2}, with the sensor-fault policy (--bridge-s {3}, --hold-s {4})\n",
           a.prefix, a.stream_rate_hz,
           model.dataset.preprocessing.rates.causality == signal::Causality::causal
@@ -84,7 +95,8 @@ void run(const ExportArgs& given, const CLI::App& cmd) {
           a.faults.bridge_s, a.faults.hold_s,
           block > 1 ? fmt::format(" (the model once per {} samples, its {:.6g} s interval)", block,
                                   model.dataset.preprocessing.sample_interval_s)
-                    : std::string());
+                    : std::string(),
+          temperature_arguments(set));
     if (!model.guard.empty())
       std::cout << fmt::format(
           "  and {}_novelty(features): {} guard prototypes, correction "
@@ -105,7 +117,7 @@ void add_export_c(CLI::App& app) {
       "that needs only <math.h>, no heap and no state. The header's comment lists the features\n"
       "in order with their units; compute them as fogdrift does (docs/signal.md).\n"
       "With --stream-rate-hz the header also computes the features itself, causally, from one\n"
-      "sample (time, three temperatures) at a time: PREFIX_update(&state, ...), the streaming\n"
+      "sample (time, its temperatures) at a time: PREFIX_update(&state, ...), the streaming\n"
       "compensator in C; train the model with --differentiator causal for it. It runs the\n"
       "sensor-fault policy of fogdrift stream (docs/compensation.md), with the settings below as\n"
       "macros the firmware may redefine; PREFIX_compensated_dph(&state, gyro) and state.flags.\n"

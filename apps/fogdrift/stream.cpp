@@ -54,15 +54,14 @@ std::vector<std::string> split(const std::string& line) {
 // file for training would. Values that are not numbers and steps off the interval are caught
 // before the compensator sees them; this names the rule of the fault policy the sample broke.
 void stop_at_fault(const std::string& name, std::size_t line_no, std::uint32_t flags,
-                   const std::array<std::string, 5>& names,
-                   const std::array<std::size_t, 5>& column, const std::array<double, 5>& v,
-                   const FaultPolicy& policy) {
+                   const std::vector<std::string>& names, const std::vector<std::size_t>& column,
+                   const std::vector<double>& v, const FaultPolicy& policy) {
   constexpr std::size_t kAbsent = static_cast<std::size_t>(-1);
   if (flags & fault::gyro_bad)
     throw InputError(name, line_no, column[1] + 1,
                      fmt::format("{} {} is beyond ±{} °/h (--gyro-limit-dph)", names[1],
                                  csv::format_number(v[1]), policy.gyro_limit_dph));
-  for (std::size_t k = 2; k < 5 && (flags & fault::temp_bad); ++k)
+  for (std::size_t k = 2; k < v.size() && (flags & fault::temp_bad); ++k)
     if (column[k] != kAbsent && (v[k] < policy.temp_min_degc || v[k] > policy.temp_max_degc))
       throw InputError(name, line_no, column[k] + 1,
                        fmt::format("{} {} is outside [{}, {}] °C (--temp-min-degc, "
@@ -120,19 +119,37 @@ void run(const StreamArgs& given, const CLI::App& cmd) {
       throw InputError(name, 1, 0, fmt::format("has no {} column", wanted));
     return it == header.end() ? kAbsent : static_cast<std::size_t>(it - header.begin());
   };
-  // Time and the thermometers, shared by every axis; the accelerometers' thermometers are needed
-  // only when a model reads them. Then each axis's gyro.
-  std::array<std::string, 5> names = {"time_s", first.dataset.target_column, "temp_fog_degc",
-                                      "temp_acc1_degc", "temp_acc2_degc"};
-  auto reads = [&](Thermometer t) {
-    return std::any_of(set.models.begin(), set.models.end(),
-                       [&](const CompensationModel& m) { return m.dataset.features.reads(t); });
+  // Time and the thermometers, shared by every axis: the accelerometers' thermometers are needed
+  // only when a model reads them, and after them every further thermometer a model reads
+  // (docs/logs.md, "More thermometers"). Then each axis's gyro.
+  std::vector<std::string> names = {"time_s", first.dataset.target_column, "temp_fog_degc",
+                                    "temp_acc1_degc", "temp_acc2_degc"};
+  auto reads = [&](const std::string& temp_column) {
+    return std::any_of(set.models.begin(), set.models.end(), [&](const CompensationModel& m) {
+      const FeatureSpec& f = m.dataset.features;
+      for (std::size_t k = 0; k < f.thermometer_count(); ++k)
+        if (thermometer_column(f.thermometer_name(static_cast<Thermometer>(k))) == temp_column &&
+            f.reads(static_cast<Thermometer>(k)))
+          return true;
+      return false;
+    });
   };
-  std::array<std::size_t, 5> column{};
+  // Per axis, where each of its further thermometers is among the values read.
+  std::vector<std::vector<std::size_t>> further_of;
+  for (const CompensationModel& model : set.models) {
+    further_of.emplace_back();
+    for (const std::string& t : model.dataset.features.further) {
+      const std::string c = thermometer_column(t);
+      auto at = std::find(names.begin(), names.end(), c);
+      if (at == names.end()) at = names.insert(names.end(), c);
+      further_of.back().push_back(static_cast<std::size_t>(at - names.begin()));
+    }
+  }
+  std::vector<std::size_t> column(names.size());
   column[0] = column_of(names[0], true);
   column[2] = column_of(names[2], true);
-  column[3] = column_of(names[3], reads(Thermometer::acc1));
-  column[4] = column_of(names[4], reads(Thermometer::acc2));
+  for (std::size_t k = 3; k < names.size(); ++k) column[k] = column_of(names[k], reads(names[k]));
+  std::vector<double> further_degc;  // one axis's further thermometers, in its spec's order
   std::vector<std::size_t> gyro_column;
   std::vector<std::string> added;
   for (const CompensationModel& model : set.models) {
@@ -153,6 +170,7 @@ void run(const StreamArgs& given, const CLI::App& cmd) {
   std::array<std::size_t, fault::count> per_flag{};
   double previous_time = std::nan("");
   std::string outputs;
+  std::vector<double> values(names.size());
   while (lines.next(line)) {
     ++line_no;
     if (line.empty()) continue;
@@ -177,8 +195,9 @@ void run(const StreamArgs& given, const CLI::App& cmd) {
             fmt::format("{} '{}' is not a finite number", what, csv::excerpt(fields[c])));
       return value ? *value : std::nan("");
     };
-    std::array<double, 5> v{};
-    for (std::size_t k : {0, 2, 3, 4}) v[k] = value_of(column[k], names[k]);
+    std::vector<double>& v = values;
+    for (std::size_t k = 0; k < v.size(); ++k)
+      if (k != 1) v[k] = value_of(column[k], names[k]);
     // --strict keeps the fixed interval to 1 %: a sample off it would bend every rate after it.
     if (a.strict && std::isfinite(previous_time) &&
         std::abs(v[0] - previous_time - dt_s) > 0.01 * dt_s)
@@ -192,7 +211,10 @@ void run(const StreamArgs& given, const CLI::App& cmd) {
       column[1] = gyro_column[x];
       v[1] = value_of(column[1], names[1]);
       StreamingCompensator& compensator = compensators[x];
-      const StreamOutput out = compensator.update({v[0], v[1], v[2], v[3], v[4]});
+      further_degc.clear();
+      for (std::size_t k : further_of[x]) further_degc.push_back(v[k]);
+      const StreamOutput out =
+          compensator.update({v[0], v[1], v[2], v[3], v[4], std::span<const double>(further_degc)});
       if (a.strict && out.flags != 0)
         stop_at_fault(name, line_no, out.flags, names, column, v, a.faults);
       any |= out.flags;
@@ -247,7 +269,8 @@ void add_stream(CLI::App& app) {
           "docs/compensation.md bridges, holds or stops the correction, and fault_flags says\n"
           "what happened, as the sum of these bits:\n  {}.\n"
           "--strict stops at the first faulty sample instead.\n"
-          "temp_acc1_degc and temp_acc2_degc are needed only when the model reads them.\n"
+          "temp_acc1_degc and temp_acc2_degc are needed only when the model reads them, and\n"
+          "a further thermometer temp_NAME_degc when its features do (train --thermometers).\n"
           "Examples:\n"
           "  logger | fogdrift stream causal.json --rate-hz 1 > compensated.csv\n"
           "  fogdrift stream causal.json cal/cal_r4_20C.csv --rate-hz 1",

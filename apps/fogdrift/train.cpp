@@ -30,6 +30,7 @@ struct TrainArgs {
   std::string method = to_string(kTrain.method);
   std::string fitness = tune::to_string(kTrain.tune.fitness);
   std::string features = "auto";
+  std::string thermometers = "auto";
   std::string cv = tune::to_string(kTrain.tune.cv.scheme);
   std::string differentiator = std::string(signal::to_string(FeatureOptions{}.rates.causality));
   std::string block_s = "auto";
@@ -69,6 +70,7 @@ const FlagTable kTrainFlags = {{"population", "--population"},
                                {"hidden", "--hidden"},
                                {"degree", "--max-degree"},
                                {"features", "--features"},
+                               {"thermometers", "--thermometers"},
                                {"block_s", "--block-s"},
                                {"window_s", "--rate-window-s"},
                                {"poly_order", "--rate-degree"},
@@ -241,11 +243,13 @@ void print_summary(const TrainArgs& a, const CampaignTrainResult& trained,
 void run(const TrainArgs& a) {
   TrainOptions options;
   DatasetOptions dataset;
+  std::vector<std::string> thermometers;  // empty: auto
   try {
     options.method = parse_method(a.method, "--method");
     options.tune.fitness = tune::parse_fitness(a.fitness, "--fitness");
     options.tune.cv.scheme = tune::parse_cv_scheme(a.cv, "--cv");
-    if (a.features != "auto") dataset.features = FeatureSpec::parse(a.features);
+    if (a.thermometers != "auto") thermometers = parse_thermometers(a.thermometers);
+    if (a.features != "auto") dataset.features = FeatureSpec::parse(a.features, thermometers);
     dataset.preprocessing.rates.causality =
         signal::parse_causality(a.differentiator, "--differentiator");
   } catch (const OptionError& e) {
@@ -288,6 +292,7 @@ void run(const TrainArgs& a) {
   campaign_options.train = options;
   campaign_options.dataset = dataset;
   campaign_options.auto_features = a.features == "auto";
+  campaign_options.thermometers = thermometers;
   campaign_options.block_s = seconds_or_auto(a.block_s, "--block-s");
   campaign_options.rate_window_s = seconds_or_auto(a.rate_window_s, "--rate-window-s");
   campaign_options.rate_degree = degree_or_auto(a.rate_degree);
@@ -391,6 +396,13 @@ void add_train(CLI::App& app) {
                   "Feature spec: terms T, dT, grad, dgrad, t, TdT, each optionally with its "
                   "thermometers, e.g. 'T,dT(fog),grad'; auto: the paper's T,dT,grad over the "
                   "thermometers every training recording has (T(fog),dT(fog) with one)")
+      ->capture_default_str();
+  cmd->add_option("--thermometers", args->thermometers,
+                  "The thermometers the features read, e.g. fog,acc1,acc2,case: the paper's "
+                  "inputs over them, or what a term of --features without its own list reads. "
+                  "fog, acc1, acc2, or NAME of a further column temp_NAME_degc; the model then "
+                  "needs its reading wherever it runs (stream, export-c). auto: those of fog, "
+                  "acc1, acc2 every training recording has")
       ->capture_default_str();
   cmd->add_option("--differentiator", args->differentiator,
                   "Temperature rates: centred (offline, no delay) or causal (what the instrument "

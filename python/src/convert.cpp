@@ -9,6 +9,7 @@
 
 #include "fogdrift/csv.hpp"
 #include "fogdrift/error.hpp"
+#include "fogdrift/features.hpp"
 
 namespace py = pybind11;
 
@@ -78,26 +79,27 @@ Recording to_recording(const py::object& columns, const std::string& source, boo
   for (const std::string& name : required_columns())
     if (known_column(r, name) == nullptr || known_column(r, name)->empty())
       throw InputError(source, 0, 0, "missing required column " + name);
-  if (keep_others)
-    for (const py::handle key : columns.attr("keys")()) {
-      const auto name = py::str(key).cast<std::string>();
-      if (r.has_column(name)) continue;
-      const py::object values = columns[key];
-      ExtraColumn c{name, {}};
-      if (const auto numbers = py::array_t<double, py::array::forcecast>::ensure(values);
-          numbers && numbers.ndim() == 1) {
-        for (py::ssize_t i = 0; i < numbers.shape(0); ++i)
-          c.cells.push_back(csv::format_number(numbers.at(i)));
-      } else {
-        PyErr_Clear();
-        for (const py::handle cell : values) c.cells.push_back(py::str(cell).cast<std::string>());
-      }
-      if (c.cells.size() != r.size())
-        throw InputError(source, 0, 0,
-                         "column " + name + ": has " + std::to_string(c.cells.size()) +
-                             " values, time_s " + std::to_string(r.size()));
-      r.extra.push_back(std::move(c));
+  // Further thermometers always (a model may read them, docs/logs.md "More thermometers"); the
+  // other columns when asked.
+  for (const py::handle key : columns.attr("keys")()) {
+    const auto name = py::str(key).cast<std::string>();
+    if (r.has_column(name) || !(keep_others || further_thermometer_name(name))) continue;
+    const py::object values = columns[key];
+    ExtraColumn c{name, {}};
+    if (const auto numbers = py::array_t<double, py::array::forcecast>::ensure(values);
+        numbers && numbers.ndim() == 1) {
+      for (py::ssize_t i = 0; i < numbers.shape(0); ++i)
+        c.cells.push_back(csv::format_number(numbers.at(i)));
+    } else {
+      PyErr_Clear();
+      for (const py::handle cell : values) c.cells.push_back(py::str(cell).cast<std::string>());
     }
+    if (c.cells.size() != r.size())
+      throw InputError(source, 0, 0,
+                       "column " + name + ": has " + std::to_string(c.cells.size()) +
+                           " values, time_s " + std::to_string(r.size()));
+    r.extra.push_back(std::move(c));
+  }
   validate(r);
   return r;
 }

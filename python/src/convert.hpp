@@ -31,8 +31,8 @@ pybind11::dict to_dict(const Recording& recording);
 
 /// A recording from a path, or from any mapping of column names to 1-D sequences (dict,
 /// DataFrame): the known columns are read, the others kept as text (numbers in shortest
-/// round-trip form) when `keep_others`, else ignored; then checked as a file would be
-/// (recording.hpp), errors naming `source`.
+/// round-trip form) when `keep_others` or when they are a further thermometer (temp_NAME_degc),
+/// else ignored; then checked as a file would be (recording.hpp), errors naming `source`.
 Recording to_recording(const pybind11::object& columns, const std::string& source,
                        bool keep_others = false);
 

@@ -4,6 +4,10 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <memory>
@@ -27,12 +31,20 @@ struct Stream {
   StreamingCompensator compensator;
   bool reads_acc1, reads_acc2;
   std::string gyro_column;  ///< the gyro the model compensates (gyro_dph or gyro_NAME_dph)
+  /// The further thermometers' columns (temp_NAME_degc, FeatureSpec::further), and one sample's
+  /// readings of them.
+  std::vector<std::string> further_columns;
+  std::vector<double> further;
 
   Stream(const CompensationModel& model, double dt_s, const StreamOptions& options)
       : compensator(model, dt_s, options),
         reads_acc1(model.dataset.features.reads(Thermometer::acc1)),
         reads_acc2(model.dataset.features.reads(Thermometer::acc2)),
-        gyro_column(model.dataset.target_column) {}
+        gyro_column(model.dataset.target_column) {
+    for (const std::string& name : model.dataset.features.further)
+      further_columns.push_back(thermometer_column(name));
+    further.resize(further_columns.size());
+  }
 
   // A thermometer the model does not read may be absent (0, as `fogdrift stream` takes it).
   double thermometer(const std::optional<double>& value, bool read, const char* name) const {
@@ -79,11 +91,27 @@ std::unique_ptr<Stream> make_stream(const CompensationModel& model, double dt_s,
 
 py::tuple update(Stream& s, double time_s, double gyro_dph, double temp_fog_degc,
                  const std::optional<double>& temp_acc1_degc,
-                 const std::optional<double>& temp_acc2_degc) {
-  const StreamOutput out =
-      s.compensator.update({time_s, gyro_dph, temp_fog_degc,
-                            s.thermometer(temp_acc1_degc, s.reads_acc1, "temp_acc1_degc"),
-                            s.thermometer(temp_acc2_degc, s.reads_acc2, "temp_acc2_degc")});
+                 const std::optional<double>& temp_acc2_degc, const py::kwargs& further) {
+  // Further thermometers by their column names (docs/logs.md, "More thermometers").
+  for (const auto& [key, value] : further) {
+    const auto name = key.cast<std::string>();
+    const auto at = std::find(s.further_columns.begin(), s.further_columns.end(), name);
+    if (at == s.further_columns.end())
+      throw py::type_error(fmt::format(
+          "update() got an unexpected keyword argument '{}'; the model's further thermometers "
+          "are: {}",
+          name,
+          s.further_columns.empty() ? "none"
+                                    : fmt::format("{}", fmt::join(s.further_columns, ", "))));
+    s.further[static_cast<std::size_t>(at - s.further_columns.begin())] = value.cast<double>();
+  }
+  for (const std::string& name : s.further_columns)
+    if (!further.contains(name.c_str()))
+      throw OptionError(name, "the model reads this thermometer; give its reading");
+  const StreamOutput out = s.compensator.update(
+      {time_s, gyro_dph, temp_fog_degc,
+       s.thermometer(temp_acc1_degc, s.reads_acc1, "temp_acc1_degc"),
+       s.thermometer(temp_acc2_degc, s.reads_acc2, "temp_acc2_degc"), s.further});
   return py::make_tuple(out.drift_dph, out.gyro_comp_dph, out.flags);
 }
 
@@ -108,13 +136,21 @@ py::array_t<double, py::array::forcecast> column(const py::object& columns, cons
 // A recording's samples as the stream sees them: a file is read and checked as for training; a
 // mapping's columns are taken as they are, NaNs and all, since the fault policy handles them.
 py::dict run(Stream& s, const py::object& recording) {
-  std::array<py::array_t<double, py::array::forcecast>, 5> c;
+  // time, gyro, fog, acc1, acc2, then the further thermometers in the model's order.
+  std::vector<py::array_t<double, py::array::forcecast>> c(5 + s.further_columns.size());
   if (py::isinstance<py::str>(recording) || py::hasattr(recording, "__fspath__")) {
     const Recording r = with_target(
         to_recording(recording, "(recording)", s.gyro_column != "gyro_dph"), s.gyro_column);
     const std::vector<double>* v[5] = {&r.time_s, &r.gyro_dph, &r.temp_fog_degc, &r.temp_acc1_degc,
                                        &r.temp_acc2_degc};
     for (std::size_t k = 0; k < 5; ++k) c[k] = copy_to_array(*v[k]);
+    for (std::size_t k = 0; k < s.further_columns.size(); ++k) {
+      if (!r.has_column(s.further_columns[k]))
+        throw InputError(
+            r.source, 1, 0,
+            fmt::format("missing column {}, which the model reads", s.further_columns[k]));
+      c[5 + k] = copy_to_array(r.numeric_column(s.further_columns[k]));
+    }
   } else {
     c[0] = column(recording, "time_s", true, 0);
     const auto n = static_cast<std::size_t>(c[0].shape(0));
@@ -122,6 +158,8 @@ py::dict run(Stream& s, const py::object& recording) {
     c[2] = column(recording, "temp_fog_degc", true, n);
     c[3] = column(recording, "temp_acc1_degc", s.reads_acc1, n);
     c[4] = column(recording, "temp_acc2_degc", s.reads_acc2, n);
+    for (std::size_t k = 0; k < s.further_columns.size(); ++k)
+      c[5 + k] = column(recording, s.further_columns[k].c_str(), true, n);
   }
   const auto n = static_cast<std::size_t>(c[0].shape(0));
   if (s.reads_acc1 && c[3].shape(0) == 0)
@@ -137,8 +175,9 @@ py::dict run(Stream& s, const py::object& recording) {
   {
     py::gil_scoped_release release;
     for (std::size_t i = 0; i < n; ++i) {
+      for (std::size_t k = 0; k < s.further.size(); ++k) s.further[k] = c[5 + k].data()[i];
       const StreamOutput out = s.compensator.update(
-          {t[i], g[i], fog[i], has_acc1 ? a1[i] : 0.0, has_acc2 ? a2[i] : 0.0});
+          {t[i], g[i], fog[i], has_acc1 ? a1[i] : 0.0, has_acc2 ? a2[i] : 0.0, s.further});
       drift[i] = out.drift_dph;
       comp[i] = out.gyro_comp_dph;
       novelty[i] = s.compensator.novelty();
@@ -177,7 +216,8 @@ void bind_stream(py::module_& m) {
            py::arg("temp_acc1_degc") = py::none(), py::arg("temp_acc2_degc") = py::none(),
            "One sample in, (drift_dph, gyro_comp_dph, fault_flags) out; a NaN reading is a "
            "fault, flagged, not an error. A thermometer the model does not read may be left "
-           "out.")
+           "out; a further one the model reads is given by its column name, e.g. "
+           "temp_case_degc=21.5 (docs/logs.md, \"More thermometers\").")
       .def("run", &run, py::arg("recording"),
            "Every sample of a recording (a path or a mapping of columns) through update(), "
            "continuing from the state before: a dict of arrays drift_dph, gyro_comp_dph, "

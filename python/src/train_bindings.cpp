@@ -29,11 +29,11 @@ const tune::SearchSpace kSpace;
 
 py::object train(const py::object& campaign, const std::string& method, const std::string& fitness,
                  const std::string& cv, std::size_t folds, const std::string& features,
-                 const std::string& differentiator, const py::object& block_s,
-                 const py::object& rate_window_s, const py::object& rate_degree,
-                 std::size_t population, std::size_t iterations, std::uint64_t seed,
-                 unsigned threads, double c_min, double c_max, double sigma_min, double sigma_max,
-                 double epsilon, bool search_epsilon, bool auto_box, bool denoise,
+                 const py::object& thermometers, const std::string& differentiator,
+                 const py::object& block_s, const py::object& rate_window_s,
+                 const py::object& rate_degree, std::size_t population, std::size_t iterations,
+                 std::uint64_t seed, unsigned threads, double c_min, double c_max, double sigma_min,
+                 double sigma_max, double epsilon, bool search_epsilon, bool auto_box, bool denoise,
                  std::size_t hidden, std::size_t max_degree, const py::object& progress,
                  const std::string& target, bool validate_only) {
   CampaignTrainOptions o;
@@ -47,8 +47,23 @@ py::object train(const py::object& campaign, const std::string& method, const st
   t.tune.fitness = tune::parse_fitness(fitness, "fitness");
   t.tune.cv.scheme = tune::parse_cv_scheme(cv, "cv");
   t.tune.cv.folds = folds;
+  // "auto", a list of names, or one comma-separated string of them (train --thermometers).
+  std::vector<std::string> listed;
+  if (py::isinstance<py::str>(thermometers)) {
+    if (thermometers.cast<std::string>() != "auto")
+      listed = parse_thermometers(thermometers.cast<std::string>());
+  } else {
+    std::string joined;
+    for (const py::handle& name : thermometers) {
+      if (!py::isinstance<py::str>(name))
+        throw py::type_error("thermometers: 'auto' or a list of names such as ['fog', 'case']");
+      joined += (joined.empty() ? "" : ",") + name.cast<std::string>();
+    }
+    listed = parse_thermometers(joined);
+  }
   o.auto_features = features == "auto";
-  if (!o.auto_features) o.dataset.features = FeatureSpec::parse(features);
+  o.thermometers = listed;
+  if (!o.auto_features) o.dataset.features = FeatureSpec::parse(features, listed);
   o.dataset.preprocessing.rates.causality = signal::parse_causality(differentiator);
   o.block_s = seconds_or_auto(block_s, "block_s");
   o.rate_window_s = seconds_or_auto(rate_window_s, "rate_window_s");
@@ -218,6 +233,7 @@ void bind_train(py::module_& m) {
         py::arg("fitness") = std::string(tune::to_string(kTrain.tune.fitness)),
         py::arg("cv") = std::string(tune::to_string(kTrain.tune.cv.scheme)),
         py::arg("folds") = kTrain.tune.cv.folds, py::arg("features") = "auto",
+        py::arg("thermometers") = "auto",
         py::arg("differentiator") =
             std::string(signal::to_string(DatasetOptions{}.preprocessing.rates.causality)),
         py::arg("block_s") = "auto", py::arg("rate_window_s") = "auto",
@@ -234,7 +250,10 @@ void bind_train(py::module_& m) {
         "does; returns {'model': Model, 'summary': dict}. campaign: a folder (or its "
         "campaign.json), or a campaign in memory: a dict with the manifest's fields and 'data', "
         "one recording per entry (what fogdrift.simulate returns); the same model bytes either "
-        "way. target: the gyro column to compensate, gyro_dph or another axis the recordings "
+        "way. thermometers: the thermometers the features read, e.g. ['fog', 'acc1', 'acc2', "
+        "'case'] for a further column temp_case_degc (docs/logs.md, \"More thermometers\"); "
+        "'auto': those of fog, acc1, acc2 every recording has. target: the gyro column to "
+        "compensate, gyro_dph or another axis the recordings "
         "carry (gyro_y_dph, ...); save_models writes the models of every axis as one file, as "
         "`fogdrift train --targets` does. validate_only: check the options and return None "
         "without reading the campaign (train_fleet does, once, before any unit runs).");

@@ -345,3 +345,51 @@ def test_malformed_inputs_are_value_errors_naming_the_rule(campaign):
         stream.run({"gyro_dph": rec["gyro_dph"]})
     with pytest.raises(ValueError, match=r"column gyro_dph: has 10 values, time_s \d+"):
         stream.run(dict(rec, gyro_dph=rec["gyro_dph"][:10]))
+
+
+def test_a_fourth_thermometer_is_trained_on_and_streamed(campaign):
+    """docs/logs.md, "More thermometers": a case thermometer each recording logs, with a drift
+    term the other three do not see (as scripts/add_case_thermometer.py writes it)."""
+    _, py = campaign
+    data = []
+    for i, rec in enumerate(py["data"]):
+        rec = dict(rec)
+        excess = 3.0 * np.sin(2 * np.pi * rec["time_s"] / 400.0 + 0.9 * i)
+        rec["temp_case_degc"] = rec["temp_fog_degc"] + excess
+        rec["gyro_dph"] = rec["gyro_dph"] + 4.0 * excess / 3.0
+        data.append(rec)
+    cal = dict(py, data=data)
+    with pytest.warns(UserWarning, match="no better than the training mean"):
+        three = fogdrift.train(cal, method="poly", differentiator="causal")
+    assert any(field == "thermometers" and "temp_case_degc not read by the features" in text
+               for field, text in three["summary"]["notes"])
+    four = fogdrift.train(cal, method="poly", differentiator="causal",
+                          thermometers=["fog", "acc1", "acc2", "case"])
+    m = four["model"]
+    assert len(four["summary"]["features"]) == 14
+    assert "T_case_degc" in four["summary"]["features"]
+    assert four["summary"]["held_out"]["model_rmse"] < 0.1 * three["summary"]["held_out"]["model_rmse"]
+    same = fogdrift.train(cal, method="poly", differentiator="causal",
+                          thermometers="fog,acc1,acc2,case")["model"]
+    assert same.to_json() == m.to_json()
+
+    columns = data[-1]
+    batch = m.predict(columns)["drift_dph"]
+    np.testing.assert_array_equal(fogdrift.StreamingCompensator(m, 1.0).run(columns)["drift_dph"],
+                                  batch)
+    s = fogdrift.StreamingCompensator(m, 1.0)
+    for i in range(50):
+        drift, _, flags = s.update(columns["time_s"][i], columns["gyro_dph"][i],
+                                   columns["temp_fog_degc"][i], columns["temp_acc1_degc"][i],
+                                   columns["temp_acc2_degc"][i],
+                                   temp_case_degc=columns["temp_case_degc"][i])
+        assert drift == batch[i] and flags == 0
+    with pytest.raises(ValueError, match="option temp_case_degc: the model reads this"):
+        s.update(60.0, 0.0, 20.0, 20.0, 20.0)
+    with pytest.raises(TypeError, match="unexpected keyword argument 'temp_top_degc'"):
+        s.update(60.0, 0.0, 20.0, 20.0, 20.0, temp_case_degc=20.0, temp_top_degc=20.0)
+    with pytest.raises(ValueError, match="missing column temp_case_degc"):
+        fogdrift.StreamingCompensator(m, 1.0).run(
+            {k: v for k, v in columns.items() if k != "temp_case_degc"})
+    with pytest.raises(ValueError, match="option thermometers: 'Case' is not a thermometer"):
+        fogdrift.train(cal, thermometers=["fog", "Case"])
