@@ -4,7 +4,8 @@ The package wraps fogdrift's C++ library (docs/python.md):
 
 * ``fogdrift.SVR`` — a scikit-learn regressor with LIBSVM's solution, several times faster,
   with warm-started C paths (``fit_path``) and threaded prediction (``n_jobs``);
-  ``fogdrift.SVRGridSearchCV`` searches C × gamma by warm-started paths in parallel.
+  ``fogdrift.SVRGridSearchCV`` is GridSearchCV for it, alone or ending a Pipeline, by
+  warm-started paths over C in parallel, scored by any scorer.
 * ``fogdrift.train(campaign, method=..., ...)`` — a campaign folder to a compensation model, as
   ``fogdrift train`` does it, every option under the library's name, with a progress callback;
   ``target=`` another gyro axis, and ``save_models`` every axis's model in one file;

@@ -206,13 +206,16 @@ py::list fit_path(const Array& x, const Array& y, const std::optional<Array>& we
 // fold's training rows, each model scored by its sum of squared errors on the fold's test
 // rows. (fold, γ) pairs run in parallel, each with a workspace; results do not depend on the
 // thread count. Returns SSE[γ][C][fold].
-py::array_t<double> search(const Array& x, const Array& y, const std::optional<Array>& weight,
-                           const std::vector<py::array_t<std::int64_t>>& train_rows,
-                           const std::vector<py::array_t<std::int64_t>>& test_rows,
-                           const std::vector<double>& c_values, const std::vector<Gamma>& gammas,
-                           const std::string& kernel, double epsilon, double tol, double cache_mb,
-                           std::int64_t max_iter, bool shrinking, const std::string& solver,
-                           int n_jobs) {
+// Every (gamma, C, fold) by warm-started C paths: the sum of squared errors over each fold's test
+// rows, or with `predict_rows` (one index array per fold) the predictions at those rows, a list of
+// (gamma, C, rows) arrays, one per fold (fogdrift.SVRGridSearchCV scores them with any scorer).
+py::object search(const Array& x, const Array& y, const std::optional<Array>& weight,
+                  const std::vector<py::array_t<std::int64_t>>& train_rows,
+                  const std::vector<py::array_t<std::int64_t>>& test_rows,
+                  const std::vector<double>& c_values, const std::vector<Gamma>& gammas,
+                  const std::string& kernel, double epsilon, double tol, double cache_mb,
+                  std::int64_t max_iter, bool shrinking, const std::string& solver, int n_jobs,
+                  const std::optional<std::vector<py::array_t<std::int64_t>>>& predict_rows) {
   check_c_values(c_values);
   if (gammas.empty() || train_rows.empty() || train_rows.size() != test_rows.size())
     throw std::invalid_argument("search: needs values of gamma, and train and test folds");
@@ -228,10 +231,13 @@ py::array_t<double> search(const Array& x, const Array& y, const std::optional<A
     }
     return out;
   };
-  std::vector<std::vector<std::size_t>> train(folds), test(folds);
+  if (predict_rows && predict_rows->size() != folds)
+    throw std::invalid_argument("search: predict_rows needs one index array per fold");
+  std::vector<std::vector<std::size_t>> train(folds), test(folds), at(folds);
   for (std::size_t f = 0; f < folds; ++f) {
     train[f] = indices(train_rows[f]);
     test[f] = indices(test_rows[f]);
+    if (predict_rows) at[f] = indices((*predict_rows)[f]);
   }
   // C in ascending order along each path (warm starts go from small C to large).
   std::vector<std::size_t> by_c(nc);
@@ -242,6 +248,8 @@ py::array_t<double> search(const Array& x, const Array& y, const std::optional<A
   for (std::size_t k = 0; k < nc; ++k) ascending[k] = c_values[by_c[k]];
 
   std::vector<double> sse(ng * nc * folds, 0.0);
+  std::vector<std::vector<double>> predicted(folds);  // per fold: gamma × C × rows
+  for (std::size_t f = 0; f < folds; ++f) predicted[f].resize(ng * nc * at[f].size());
   {
     py::gil_scoped_release release;
     std::vector<std::unique_ptr<svr::TrainingSet>> sets(folds);
@@ -258,14 +266,32 @@ py::array_t<double> search(const Array& x, const Array& y, const std::optional<A
       const std::size_t f = task / ng, gi = task % ng;
       const svr::WorkspacePool::Lease workspace = spaces.borrow();
       const auto path = svr::fit_c_path(*sets[f], params[f][gi], ascending, workspace.get());
+      if (predict_rows) {
+        const std::vector<double> p = svr::path_predictions(*sets[f], path, all, at[f]);
+        const std::size_t n = at[f].size();
+        for (std::size_t r = 0; r < n; ++r)
+          for (std::size_t k = 0; k < nc; ++k)
+            predicted[f][(gi * nc + by_c[k]) * n + r] = p[r * nc + k];
+        return;
+      }
       const std::vector<double> errors = svr::path_squared_errors(*sets[f], path, all, test[f]);
       for (std::size_t k = 0; k < nc; ++k) sse[(gi * nc + by_c[k]) * folds + f] = errors[k];
     });
   }
+  if (predict_rows) {
+    py::list out;
+    for (std::size_t f = 0; f < folds; ++f) {
+      py::array_t<double> a({static_cast<py::ssize_t>(ng), static_cast<py::ssize_t>(nc),
+                             static_cast<py::ssize_t>(at[f].size())});
+      std::copy(predicted[f].begin(), predicted[f].end(), a.mutable_data());
+      out.append(a);
+    }
+    return out;
+  }
   py::array_t<double> out({static_cast<py::ssize_t>(ng), static_cast<py::ssize_t>(nc),
                            static_cast<py::ssize_t>(folds)});
   std::copy(sse.begin(), sse.end(), out.mutable_data());
-  return out;
+  return std::move(out);
 }
 
 py::array_t<double> predict(const Array& vectors, const Array& coef, double rho,
@@ -315,7 +341,10 @@ void bind_svr(py::module_& m) {
         py::arg("train_rows"), py::arg("test_rows"), py::arg("C"), py::arg("gamma"),
         py::arg("kernel"), py::arg("epsilon"), py::arg("tol"), py::arg("cache_size"),
         py::arg("max_iter"), py::arg("shrinking"), py::arg("solver"), py::arg("n_jobs"),
-        "Sum of squared test errors of every (gamma, C, fold), by warm-started C paths.");
+        py::arg("predict_rows") = py::none(),
+        "Sum of squared test errors of every (gamma, C, fold), by warm-started C paths; with "
+        "predict_rows (an index array per fold), the predictions at those rows instead: a list "
+        "of (gamma, C, rows) arrays, one per fold.");
   m.def(
       "release_memory",
       [] {

@@ -175,12 +175,12 @@ std::vector<double> Model::predict(const Data& data, ThreadPool* pool) const {
   return out;
 }
 
-std::vector<double> path_squared_errors(const TrainingSet& set, std::span<const FitResult> path,
-                                        const Data& data, std::span<const std::size_t> rows) {
+std::vector<double> path_predictions(const TrainingSet& set, std::span<const FitResult> path,
+                                     const Data& data, std::span<const std::size_t> rows) {
   const std::size_t l = set.size(), models = path.size();
   if (data.cols != set.dims())
     throw std::invalid_argument(fmt::format(
-        "path_squared_errors: data has {} features, the training set {}", data.cols, set.dims()));
+        "path_predictions: data has {} features, the training set {}", data.cols, set.dims()));
   // Each model's coefficient of every training sample (eq. 6: α⁺ − α⁻), over the samples that
   // are a support vector of some model.
   std::vector<std::size_t> used;
@@ -192,7 +192,7 @@ std::vector<double> path_squared_errors(const TrainingSet& set, std::span<const 
     used.push_back(i);
     for (const FitResult& r : path) beta.push_back(r.dual.alpha[i] - r.dual.alpha[i + l]);
   }
-  std::vector<double> sse(models, 0.0), f(models);
+  std::vector<double> out(rows.size() * models), f(models);
   const Kernel kernel = path.empty() ? Kernel{} : path.front().model.kernel;
   const std::size_t d = set.dims();
   // Linear: each model's primal weights w = Σ β_i·x_i, in double (float kernel values would
@@ -206,9 +206,10 @@ std::vector<double> path_squared_errors(const TrainingSet& set, std::span<const 
           w[m * d + c] += beta[u * models + m] * set.data().row(used[u])[c];
   }
   std::vector<float> k(kernel.type == KernelType::linear ? 0 : l);
-  for (const std::size_t row : rows) {
+  for (std::size_t r = 0; r < rows.size(); ++r) {
+    const std::size_t row = rows[r];
     if (row >= data.rows)
-      throw std::invalid_argument("path_squared_errors: a row index is out of range");
+      throw std::invalid_argument("path_predictions: a row index is out of range");
     const double* x = data.row(row);
     std::fill(f.begin(), f.end(), 0.0);
     if (kernel.type == KernelType::linear) {
@@ -222,11 +223,21 @@ std::vector<double> path_squared_errors(const TrainingSet& set, std::span<const 
         for (std::size_t m = 0; m < models; ++m) f[m] += b[m] * kv;
       }
     }
+    for (std::size_t m = 0; m < models; ++m) out[r * models + m] = f[m] - path[m].model.rho;
+  }
+  return out;
+}
+
+std::vector<double> path_squared_errors(const TrainingSet& set, std::span<const FitResult> path,
+                                        const Data& data, std::span<const std::size_t> rows) {
+  const std::vector<double> f = path_predictions(set, path, data, rows);
+  const std::size_t models = path.size();
+  std::vector<double> sse(models, 0.0);
+  for (std::size_t r = 0; r < rows.size(); ++r)
     for (std::size_t m = 0; m < models; ++m) {
-      const double e = (f[m] - path[m].model.rho) - data.y[row];
+      const double e = f[r * models + m] - data.y[rows[r]];
       sse[m] += e * e;
     }
-  }
   return sse;
 }
 

@@ -6,7 +6,7 @@ import numpy as np
 import pytest
 from sklearn.base import clone
 from sklearn.model_selection import GridSearchCV
-from sklearn.pipeline import make_pipeline
+from sklearn.pipeline import Pipeline, make_pipeline
 from sklearn.preprocessing import StandardScaler
 from sklearn.svm import SVR as SkSVR
 from sklearn.utils.estimator_checks import parametrize_with_checks
@@ -239,11 +239,15 @@ def test_grid_search_scorings_weights_and_errors(rng):
             X, y, sample_weight=w)
         np.testing.assert_allclose(ours.cv_results_["mean_test_score"],
                                    theirs.cv_results_["mean_test_score"], rtol=2e-3)
-    with pytest.raises(ValueError, match="param_grid may hold C and gamma only"):
-        fogdrift.SVRGridSearchCV(param_grid={"C": [1], "epsilon": [0.1]}).fit(X, y)
-    with pytest.raises(ValueError, match="estimator must be a fogdrift.SVR"):
+    with pytest.raises(ValueError, match="'alpha' is not a parameter of the estimator"):
+        fogdrift.SVRGridSearchCV(param_grid={"C": [1], "alpha": [3]}).fit(X, y)
+    with pytest.raises(ValueError, match="'C' needs a non-empty list of values"):
+        fogdrift.SVRGridSearchCV(param_grid={"C": []}).fit(X, y)
+    with pytest.raises(ValueError, match="estimator must be a fogdrift.SVR or a Pipeline"):
         fogdrift.SVRGridSearchCV(SkSVR(), {"C": [1]}).fit(X, y)
-    with pytest.raises(ValueError, match="scoring must be one of"):
+    with pytest.raises(ValueError, match="estimator must be a fogdrift.SVR or a Pipeline"):
+        fogdrift.SVRGridSearchCV(make_pipeline(fogdrift.SVR(), StandardScaler()), {}).fit(X, y)
+    with pytest.raises(ValueError, match="continuous is not supported"):
         fogdrift.SVRGridSearchCV(param_grid={"C": [1]}, scoring="accuracy").fit(X, y)
     with pytest.raises(ValueError, match="gamma must be"):
         fogdrift.SVRGridSearchCV(param_grid={"C": [1], "gamma": [-1.0]}).fit(X, y)
@@ -296,3 +300,49 @@ def test_the_engine_entry_points_check_their_own_inputs(rng):
         engine.svr_predict(m.support_vectors_, m.dual_coef_[0][:-1], 0.0, "rbf", 0.5, X, 1)
     with pytest.raises(ValueError, match="X has another number of features than the model"):
         engine.svr_predict(m.support_vectors_, m.dual_coef_[0], 0.0, "rbf", 0.5, X[:, :2], 1)
+
+
+def test_grid_search_of_a_pipeline_with_any_scorer_as_grid_search_cv(rng):
+    """A Pipeline ending in fogdrift.SVR, a list of grids with epsilon and a scaler's setting in
+    them, a scorer that is not a squared error, and train scores: every cv_results_ key that
+    GridSearchCV fills, the same candidates, scores and choice."""
+    from sklearn.metrics import make_scorer, median_absolute_error
+    from sklearn.model_selection import KFold
+    X, y = startup_like(rng, 400)
+    X = X * np.array([1, 10, 100, 0.1, 1, 5])  # features of unlike scales, as a scaler expects
+    pipe = Pipeline([("scale", StandardScaler()), ("svr", fogdrift.SVR())])
+    grids = [{"svr__C": [0.5, 5, 50], "svr__gamma": ["scale", 0.2], "svr__epsilon": [0.05, 0.2]},
+             {"svr__C": [2.0], "scale__with_mean": [False], "svr__kernel": ["linear"]}]
+    folds = KFold(3, shuffle=True, random_state=2)
+    for scoring in ("neg_mean_absolute_error",
+                    make_scorer(median_absolute_error, greater_is_better=False)):
+        ours = fogdrift.SVRGridSearchCV(pipe, grids, scoring=scoring, cv=folds,
+                                        return_train_score=True).fit(X, y)
+        theirs = GridSearchCV(pipe, grids, scoring=scoring, cv=folds,
+                              return_train_score=True).fit(X, y)
+        assert set(ours.cv_results_) == set(theirs.cv_results_)
+        assert ours.cv_results_["params"] == theirs.cv_results_["params"]
+        for key in theirs.cv_results_:
+            if key.startswith("param_"):
+                assert list(ours.cv_results_[key].mask) == list(theirs.cv_results_[key].mask), key
+                assert [v for v in ours.cv_results_[key].compressed()] == \
+                    [v for v in theirs.cv_results_[key].compressed()], key
+            elif "score" in key and "time" not in key and key != "rank_test_score":
+                # Warm starts and cold fits stop at different points within the tolerance.
+                np.testing.assert_allclose(ours.cv_results_[key], theirs.cv_results_[key],
+                                           atol=5e-3, err_msg=key)
+        np.testing.assert_array_equal(ours.cv_results_["rank_test_score"],
+                                      theirs.cv_results_["rank_test_score"])
+        assert ours.best_params_ == theirs.best_params_
+        assert ours.n_features_in_ == 6 and ours.n_splits_ == 3
+        np.testing.assert_array_equal(
+            ours.predict(X), clone(pipe).set_params(**ours.best_params_).fit(X, y).predict(X))
+        assert ours.score(X, y) == pytest.approx(theirs.score(X, y), abs=5e-3)
+    # Weights reach the Pipeline's SVR, in the search and in the refit.
+    w = rng.uniform(0.5, 2, size=400)
+    ours = fogdrift.SVRGridSearchCV(pipe, grids[0], cv=folds).fit(X, y, sample_weight=w)
+    theirs = GridSearchCV(pipe, grids[0], cv=folds).fit(X, y, svr__sample_weight=w)
+    np.testing.assert_allclose(ours.cv_results_["mean_test_score"],
+                               theirs.cv_results_["mean_test_score"], atol=5e-3)
+    np.testing.assert_array_equal(ours.predict(X), theirs.best_estimator_.set_params(
+        **ours.best_params_).fit(X, y, svr__sample_weight=w).predict(X))

@@ -217,16 +217,23 @@ TEST(SvrWarmStart, APathsTestErrorsArePredictionsErrors) {
     const std::vector<double> cs{0.5, 5, 50};
     const auto path = fit_c_path(set, base, cs);
     const std::vector<double> sse = path_squared_errors(set, path, d, test_rows);
+    const std::vector<double> f = path_predictions(set, path, d, test_rows);
     ASSERT_EQ(sse.size(), cs.size());
+    ASSERT_EQ(f.size(), cs.size() * test_rows.size());
+    // RBF: float kernel values, as the solver's; linear: primal weights in double.
+    const double tolerance = kernel.type == KernelType::linear ? 1e-9 : 1e-5;
     for (std::size_t k = 0; k < cs.size(); ++k) {
-      double expected = 0;
-      for (const std::size_t row : test_rows) {
-        const double e = path[k].model.predict(d.row(row)) - d.y[row];
+      double expected = 0, from_predictions = 0;
+      for (std::size_t r = 0; r < test_rows.size(); ++r) {
+        const double predicted = path[k].model.predict(d.row(test_rows[r]));
+        EXPECT_NEAR(f[r * cs.size() + k], predicted, tolerance * (1 + std::abs(predicted)));
+        const double e = predicted - d.y[test_rows[r]];
         expected += e * e;
+        const double e_path = f[r * cs.size() + k] - d.y[test_rows[r]];
+        from_predictions += e_path * e_path;
       }
-      // RBF: float kernel values, as the solver's; linear: primal weights in double.
-      const double tolerance = kernel.type == KernelType::linear ? 1e-9 : 1e-5;
       EXPECT_NEAR(sse[k], expected, tolerance * expected) << "C=" << cs[k];
+      EXPECT_EQ(sse[k], from_predictions) << "C=" << cs[k];  // the same sums, in the same order
     }
   }
   const std::vector<std::size_t> outside{d.rows};

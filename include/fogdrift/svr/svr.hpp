@@ -123,6 +123,12 @@ std::vector<FitResult> fit_c_path(const TrainingSet& set, const Params& base,
 std::vector<double> path_squared_errors(const TrainingSet& set, std::span<const FitResult> path,
                                         const Data& data, std::span<const std::size_t> rows);
 
+/// The predictions behind path_squared_errors: f_k(x) for each of `rows` (outer) and each fit k
+/// of `path` (inner), rows.size() × path.size(), computed as it computes them (any scorer can
+/// then score a path: fogdrift.SVRGridSearchCV).
+std::vector<double> path_predictions(const TrainingSet& set, std::span<const FitResult> path,
+                                     const Data& data, std::span<const std::size_t> rows);
+
 /// The instruction set the engine's inner loops run with: "avx512", "avx2" or "portable". The
 /// fastest this processor has, or the one the environment variable FOGDRIFT_ISA names
 /// (portable, avx2, avx512; unset, empty or auto for the fastest). Every one gives the same
