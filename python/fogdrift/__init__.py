@@ -24,9 +24,24 @@ The package wraps fogdrift's C++ library (docs/python.md):
 from ._fogdrift import (Model, StreamingCompensator, __version__, allan_deviation, denoise,
                         evaluate, features, find_north, noise_terms, northfind, read_recording,
                         release_memory, save_models, simulate, train, write_recording)
+from ._keywords import method_naming_keywords, naming_keywords
 from .fleet import train_fleet
 from .search import SVRGridSearchCV
 from .svr import SVR
+
+# A wrong type is a TypeError naming the keyword, not the whole signature (_keywords.py).
+(allan_deviation, denoise, evaluate, features, find_north, noise_terms, northfind, read_recording,
+ save_models, simulate, train, write_recording) = (
+    naming_keywords(f) for f in (allan_deviation, denoise, evaluate, features, find_north,
+                                 noise_terms, northfind, read_recording, save_models, simulate,
+                                 train, write_recording))
+for _method in ("__init__", "update", "run"):
+    method_naming_keywords(StreamingCompensator, _method)
+for _method in ("predict", "compensate", "save", "to_json"):
+    method_naming_keywords(Model, _method)
+Model.load = staticmethod(naming_keywords(Model.load, "Model.load"))
+Model.from_json = staticmethod(naming_keywords(Model.from_json, "Model.from_json"))
+del _method
 
 __all__ = ["Model", "SVR", "SVRGridSearchCV", "StreamingCompensator", "allan_deviation",
            "denoise", "evaluate", "features", "find_north", "noise_terms", "northfind",

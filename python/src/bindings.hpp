@@ -26,4 +26,10 @@ void bind_sim(pybind11::module_& m);
 /// Compensation one sample at a time: StreamingCompensator.
 void bind_stream(pybind11::module_& m);
 
+/// A UserWarning attributed to the user's line: the compiled functions are called through the
+/// wrappers of python/fogdrift/_keywords.py, one frame between. Throws when warnings are errors.
+inline void warn(const char* message) {
+  if (PyErr_WarnEx(PyExc_UserWarning, message, 2) != 0) throw pybind11::error_already_set();
+}
+
 }  // namespace fogdrift::python

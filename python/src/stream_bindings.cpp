@@ -75,12 +75,10 @@ std::unique_ptr<Stream> make_stream(const CompensationModel& model, double dt_s,
   // a tuned SVR's drift then departs from its batch drift by about the drift's own STD
   // (docs/python.md, step 6).
   if (model.dataset.preprocessing.rates.causality != signal::Causality::causal)
-    if (PyErr_WarnEx(PyExc_UserWarning,
-                     "the model was trained with centred temperature rates; streamed, it sees "
-                     "causal ones and its drift differs from Model.predict's. For the instrument, "
-                     "train with differentiator='causal'",
-                     1) != 0)
-      throw py::error_already_set();
+    warn(
+        "the model was trained with centred temperature rates; streamed, it sees causal ones and "
+        "its drift differs from Model.predict's. For the instrument, train with "
+        "differentiator='causal'");
   try {
     return std::make_unique<Stream>(model, dt_s, o);
   } catch (const OptionError& e) {  // an interval the model cannot run at: the keyword dt_s

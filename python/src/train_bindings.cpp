@@ -166,8 +166,7 @@ py::object train(const py::object& campaign, const std::string& method, const st
     summary["held_out"] = held;
     warnings.insert(warnings.end(), h.warnings.begin(), h.warnings.end());
     // A model that does not beat the baselines is a warning a Python user sees, not only a key.
-    for (const std::string& w : h.warnings)
-      if (PyErr_WarnEx(PyExc_UserWarning, w.c_str(), 1) != 0) throw py::error_already_set();
+    for (const std::string& w : h.warnings) warn(w.c_str());
   } else {
     summary["held_out"] = py::none();
   }
@@ -214,7 +213,7 @@ py::object train(const py::object& campaign, const std::string& method, const st
                                             : field;
        })) {
     warnings.push_back(w);
-    if (PyErr_WarnEx(PyExc_UserWarning, w.c_str(), 1) != 0) throw py::error_already_set();
+    warn(w.c_str());
   }
   summary["warnings"] = warnings;
   summary["fits"] = s.tuning.fits;

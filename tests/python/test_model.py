@@ -220,3 +220,33 @@ def test_a_model_pickles_as_its_file(trained):
     m = fogdrift.Model.load(d / "m.json")
     again = pickle.loads(pickle.dumps(m))
     assert again.to_json() == m.to_json() and again.feature_names == m.feature_names
+
+
+@pytest.mark.filterwarnings("ignore:the model was trained with centred")
+def test_a_wrong_type_is_a_type_error_naming_the_keyword(trained):
+    d, recording, _ = trained
+    m = fogdrift.Model.load(d / "m.json")
+    for call, message in [
+            (lambda: fogdrift.train(d / "cal", folds="three"),
+             r"train\(\): folds must be an int, not str \('three'\)"),
+            (lambda: fogdrift.train(d / "cal", c_max="big"),
+             r"train\(\): c_max must be a number, not str"),
+            (lambda: fogdrift.train(d / "cal", foldz=3),
+             r"train\(\) got an unexpected keyword argument 'foldz'; its keywords are campaign, "),
+            (lambda: fogdrift.simulate("calibration", seed="1"),
+             r"simulate\(\): seed must be an int, not str"),
+            (lambda: fogdrift.denoise(np.ones(64), level="x"),
+             r"denoise\(\): level must be an int or None, not str"),
+            (lambda: fogdrift.Model.load(3), r"Model.load\(\): path must be a path, not int"),
+            (lambda: m.predict(recording, guarded="no"),
+             r"Model.predict\(\): guarded must be a bool, not str"),
+            (lambda: fogdrift.StreamingCompensator(m, "1 s"),
+             r"StreamingCompensator\(\): dt_s must be a number, not str"),
+            (lambda: fogdrift.StreamingCompensator(m, 1.0).update(0.0, "0", 20.0),
+             r"StreamingCompensator.update\(\): gyro_dph must be a number, not str"),
+    ]:
+        with pytest.raises(TypeError, match=message):
+            call()
+    # Right types still pass through, NumPy scalars included.
+    assert fogdrift.StreamingCompensator(m, np.float64(1.0)).update(
+        np.float64(1.0), 0.0, 20.0, 20.0, 20.0)[2] == 0
