@@ -110,22 +110,29 @@ def _diagnosis(name, message, args, kwargs):
     return None
 
 
+def _better(label, error, args, kwargs):
+    """The TypeError to raise for pybind11's `error`: one naming the keyword when a single one
+    can be blamed, else `error` itself."""
+    if not _INCOMPATIBLE.search(str(error)):
+        return error
+    better = _diagnosis(label, str(error), args, kwargs)
+    return error if better is None else TypeError(better)
+
+
 def naming_keywords(function, name=None):
     """`function`, raising a TypeError that names the keyword where pybind11 would list the
     signature."""
-    name = name or function.__name__
+    label = name or function.__name__
 
     @functools.wraps(function)
     def call(*args, **kwargs):
         try:
             return function(*args, **kwargs)
         except TypeError as error:
-            if not _INCOMPATIBLE.search(str(error)):
+            better = _better(label, error, args, kwargs)
+            if better is error:
                 raise
-            better = _diagnosis(name, str(error), args, kwargs)
-            if better is None:
-                raise
-            raise TypeError(better) from None
+            raise better from None
 
     return call
 
@@ -140,11 +147,9 @@ def method_naming_keywords(cls, method):
         try:
             return original(self, *args, **kwargs)
         except TypeError as error:
-            if not _INCOMPATIBLE.search(str(error)):
+            better = _better(label, error, args, kwargs)
+            if better is error:
                 raise
-            better = _diagnosis(label, str(error), args, kwargs)
-            if better is None:
-                raise
-            raise TypeError(better) from None
+            raise better from None
 
     setattr(cls, method, call)
