@@ -144,6 +144,16 @@ py::object train(const py::object& campaign, const std::string& method, const st
   summary["block_s"] = r->dataset.preprocessing.block.block_s;
   summary["rate_window_s"] = r->dataset.preprocessing.rates.window_s;
   summary["rate_degree"] = r->dataset.preprocessing.rates.poly_order;
+  // The method's own record, under `fogdrift train --json`'s keys.
+  if (s.method == Method::bp) {
+    py::dict bp;
+    bp["epochs"] = s.mlp.epochs;
+    bp["best_epoch"] = s.mlp.best_epoch;
+    bp["early_stopped"] = s.mlp.status == MlpStatus::early_stopped;
+    bp["train_rmse"] = s.mlp.train_rmse;
+    summary["bp"] = bp;
+  }
+  if (s.method == Method::poly) summary["poly_cv_rmse_by_degree"] = s.poly_cv_rmse;
   py::list notes;
   for (const auto& n : r->notes) notes.append(py::make_tuple(n.field, n.text));
   summary["notes"] = notes;

@@ -1,6 +1,7 @@
 """fogdrift.Model and recordings in Python, against the command line: the same model file, the
 same drift and compensated gyro, to the bit, as `fogdrift train` and `fogdrift compensate`."""
 import csv
+import warnings
 
 import numpy as np
 import pytest
@@ -161,6 +162,15 @@ def test_train_gives_the_command_lines_model_byte_for_byte(trained, tmp_path, cl
     assert [e["parameter"] for e in tuned["summary"]["box_edges"]] == \
         [e["parameter"] for e in got["box_edges"]]
     assert tuned["summary"]["search"]["evaluations"] == got["search"]["evaluations"]
+    assert set(got) - {"model"} <= set(tuned["summary"])  # every key but the file written
+    for method, key in (("poly", "poly_cv_rmse_by_degree"), ("bp", "bp")):
+        line = json.loads(cli("train", d / "cal", "--method", method, "-o", tmp_path / "b.json",
+                              "--json"))
+        with warnings.catch_warnings():  # how sure train is; not what this test checks
+            warnings.simplefilter("ignore", UserWarning)
+            summary = fogdrift.train(d / "cal", method=method)["summary"]
+        assert set(line) - {"model"} <= set(summary), method
+        assert summary[key] == line[key], method
     # A box too small: the edge warning the command line prints, in this function's words.
     with pytest.warns(UserWarning, match=r"C = .* upper edge .* a wider box may do better: "
                                          r"c_max or auto_box=True"):
