@@ -266,10 +266,13 @@ static inline @REAL@ @P@_clamp_degc_(@REAL@ v) {
   return v < @U@_TEMP_MIN_DEGC ? @U@_TEMP_MIN_DEGC : (v > @U@_TEMP_MAX_DEGC ? @U@_TEMP_MAX_DEGC : v);
 }
 
-/* A faulty thermometer's stand-in: its last good reading continued along its last rate. */
+/* A faulty thermometer's stand-in: its last good reading continued along its last rate. The
+ * time since that reading is a difference of doubles; the rest is in @REAL@ (in float, double
+ * arithmetic would be emulated in software on every sample's jump check). */
 static inline @REAL@ @P@_substitute_(const @P@_state* s, int k, double time_s) {
+  const @REAL@ elapsed_s = (@REAL@)(time_s - s->good_time_s[k]);
   if (!s->seen_good[k]) return @P@_clamp_degc_(0.0);
-  return @P@_clamp_degc_(s->good_degc[k] + s->good_rate[k] * (time_s - s->good_time_s[k]));
+  return @P@_clamp_degc_(s->good_degc[k] + s->good_rate[k] * elapsed_s);
 }
 
 /* The drift where the model cannot be evaluated: held, then stopped. */
@@ -320,7 +323,7 @@ static inline @REAL@ @P@_step_(@P@_state* s, double time_s,
     }
     /* A jump, judged within @U@_BRIDGE_S of the last good reading: a longer step is real. */
     if (@U@_TEMP_JUMP_DEGC > 0 && s->seen_good[k] && t - s->good_time_s[k] <= @U@_BRIDGE_S &&
-        fabs((double)raw[k] - (double)@P@_substitute_(s, k, t)) > @U@_TEMP_JUMP_DEGC) {
+        fabs@F@(raw[k] - @P@_substitute_(s, k, t)) > @U@_TEMP_JUMP_DEGC) {
       good[k] = 0;
       s->flags |= @U@_FAULT_TEMP_JUMP;
     }
