@@ -104,6 +104,14 @@ Recording to_recording(const py::object& columns, const std::string& source, boo
   return r;
 }
 
+std::string keyword_of(const std::string& field) {
+  static const std::pair<const char*, const char*> kOther[] = {
+      {"degree", "max_degree"}, {"window_s", "rate_window_s"}, {"poly_order", "rate_degree"}};
+  for (const auto& [library, keyword] : kOther)
+    if (field == library) return keyword;
+  return field;
+}
+
 std::optional<double> seconds_or_auto(const py::object& value, const char* name) {
   if (py::isinstance<py::str>(value)) {
     if (value.cast<std::string>() == "auto") return std::nullopt;

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "fogdrift/campaign.hpp"
+#include "fogdrift/error.hpp"
 #include "fogdrift/recording.hpp"
 
 namespace fogdrift::python {
@@ -35,6 +36,21 @@ pybind11::dict to_dict(const Recording& recording);
 /// else ignored; then checked as a file would be (recording.hpp), errors naming `source`.
 Recording to_recording(const pybind11::object& columns, const std::string& source,
                        bool keep_others = false);
+
+/// The Python keyword of a library field that Python names otherwise (max_degree for degree,
+/// rate_window_s for window_s, rate_degree for poly_order): the Python front end's one table of
+/// such names, as the command line's flag tables are its own. Any other field is its keyword.
+std::string keyword_of(const std::string& field);
+
+/// f(), with an OptionError it throws naming the keyword of its field (keyword_of).
+template <class F>
+auto in_keywords(F&& f) {
+  try {
+    return f();
+  } catch (const OptionError& e) {
+    throw OptionError(keyword_of(e.option()), e.message());
+  }
+}
 
 /// None for "auto", else a number of seconds > 0; OptionError naming `name` otherwise.
 std::optional<double> seconds_or_auto(const pybind11::object& value, const char* name);

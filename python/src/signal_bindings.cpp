@@ -93,7 +93,7 @@ py::dict features(const py::object& recording, const std::optional<std::string>&
   FeatureTable t;
   {
     py::gil_scoped_release release;
-    t = compute_features(r, s, o);
+    t = in_keywords([&] { return compute_features(r, s, o); });
   }
   py::dict out;
   out["names"] = t.names;

@@ -1,6 +1,7 @@
 // fogdrift.train: a campaign folder to a compensation model, with every option of
 // `fogdrift train` under the library's own field names, and a progress callback
 // (train_campaign.hpp, docs/python.md).
+#include <fmt/format.h>
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 #include <pybind11/stl/filesystem.h>
@@ -32,7 +33,7 @@ py::object train(const py::object& campaign, const std::string& method, const st
                  const py::object& thermometers, const std::string& differentiator,
                  const py::object& block_s, const py::object& rate_window_s,
                  const py::object& rate_degree, std::size_t population, std::size_t iterations,
-                 std::uint64_t seed, unsigned threads, double c_min, double c_max, double sigma_min,
+                 std::uint64_t seed, int threads, double c_min, double c_max, double sigma_min,
                  double sigma_max, double epsilon, bool search_epsilon, bool auto_box, bool denoise,
                  std::size_t hidden, std::size_t max_degree, const py::object& progress,
                  const std::string& target, bool validate_only) {
@@ -108,8 +109,12 @@ py::object train(const py::object& campaign, const std::string& method, const st
       }
     };
   // What can be checked without the data (train_fleet: once, before any unit runs).
+  if (threads < 0)
+    throw OptionError("threads", fmt::format("{} is not a number of threads: 0 (every core) or "
+                                             "more",
+                                             threads));
   if (validate_only) {
-    validate(t);
+    in_keywords([&] { validate(t); });
     return py::none();
   }
   // A folder (or its campaign.json), or a campaign held in memory.
@@ -122,12 +127,14 @@ py::object train(const py::object& campaign, const std::string& method, const st
   std::optional<CampaignTrainResult> r;
   {
     py::gil_scoped_release release;
-    ThreadPool pool(threads);
+    ThreadPool pool(static_cast<unsigned>(threads));
     t.tune.pool = &pool;
-    if (held)
-      r.emplace(train_campaign(held->campaign, held->recordings, o));
-    else
-      r.emplace(train_campaign(read_campaign(*path), o));
+    in_keywords([&] {
+      if (held)
+        r.emplace(train_campaign(held->campaign, held->recordings, o));
+      else
+        r.emplace(train_campaign(read_campaign(*path), o));
+    });
   }
   if (callback_error) std::rethrow_exception(callback_error);
   const TrainSummary& s = r->trained.summary;
@@ -155,7 +162,7 @@ py::object train(const py::object& campaign, const std::string& method, const st
   }
   if (s.method == Method::poly) summary["poly_cv_rmse_by_degree"] = s.poly_cv_rmse;
   py::list notes;
-  for (const auto& n : r->notes) notes.append(py::make_tuple(n.field, n.text));
+  for (const auto& n : r->notes) notes.append(py::make_tuple(keyword_of(n.field), n.text));
   summary["notes"] = notes;
   std::vector<std::string> warnings = r->data.warnings;
   if (s.held_out) {
@@ -248,7 +255,7 @@ void bind_train(py::module_& m) {
         py::arg("block_s") = "auto", py::arg("rate_window_s") = "auto",
         py::arg("rate_degree") = "auto", py::arg("population") = kRun.population,
         py::arg("iterations") = kRun.iterations, py::arg("seed") = kRun.seed,
-        py::arg("threads") = 0u, py::arg("c_min") = kSpace.c_min, py::arg("c_max") = kSpace.c_max,
+        py::arg("threads") = 0, py::arg("c_min") = kSpace.c_min, py::arg("c_max") = kSpace.c_max,
         py::arg("sigma_min") = kSpace.sigma_min, py::arg("sigma_max") = kSpace.sigma_max,
         py::arg("epsilon") = kSpace.epsilon, py::arg("search_epsilon") = false,
         py::arg("auto_box") = false, py::arg("denoise") = true,

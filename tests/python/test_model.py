@@ -190,6 +190,10 @@ def test_train_options_and_errors_use_the_librarys_names(trained):
             (dict(population=1), "option population: 1 is too small"),
             (dict(block_s="soon"), "option block_s: must be 'auto' or a number of seconds"),
             (dict(features="T(gps)"), "gps"),
+            # The library's fields under this function's keywords, not degree or window_s.
+            (dict(method="poly", max_degree=99), "option max_degree: 99 is outside"),
+            (dict(rate_window_s=3.0), "option rate_window_s: a window of 3"),
+            (dict(threads=-1), "option threads: -1 is not a number of threads"),
     ]:
         with pytest.raises(ValueError, match=message):
             fogdrift.train(d / "cal", **kwargs)
