@@ -96,6 +96,8 @@ py::object evaluate(const CompensationModel& model, const py::object& data, bool
   }
   py::dict out = from_json(eval::to_json(e, "model", source)).cast<py::dict>();
   out.attr("pop")("model");
+  // What the command prints as warnings (a lost turn-on bias, …) is a Python warning too.
+  for (const py::handle w : out["warnings"]) warn(w.cast<std::string>().c_str());
   return out;
 }
 

@@ -154,7 +154,10 @@ def test_evaluate_is_the_command_lines_table_2(campaign, cli):
     expected = json.loads(cli("evaluate", d / "m.json", *files, "--json", "--input-rate-dph", "7.5"))
     got = fogdrift.evaluate(m, files, input_rate_dph=7.5)
     assert got["overall"] == expected["overall"]
-    without_rate = fogdrift.evaluate(m, files)
+    with pytest.warns(UserWarning, match="the turn-on bias is lost") as lost:
+        without_rate = fogdrift.evaluate(m, files)
+    assert lost[0].filename == __file__  # the user's line, not the package's
+    assert [str(w.message) for w in lost] == without_rate["warnings"]
     assert got["overall"]["mae_before_dph"] != without_rate["overall"]["mae_before_dph"]
     with pytest.raises(ValueError, match="input_rate_dph: applies to recordings"):
         fogdrift.evaluate(m, d / "cal", input_rate_dph=0.0)
