@@ -202,6 +202,18 @@ Dataset build_dataset(const Campaign& campaign, std::optional<Role> role, Scenar
   return build_dataset(read_inputs(campaign, role, scenario), options);
 }
 
+namespace {
+const DatasetOptions kDefaultOptions;
+}  // namespace
+
+Dataset build_dataset(const std::vector<RecordingInput>& inputs) {
+  return build_dataset(inputs, kDefaultOptions);
+}
+
+Dataset build_dataset(const Campaign& campaign, std::optional<Role> role, Scenario scenario) {
+  return build_dataset(campaign, role, scenario, kDefaultOptions);
+}
+
 Standardizer Standardizer::fit(std::span<const double> x, std::size_t cols,
                                std::vector<std::string> names) {
   if (cols == 0 || x.size() % cols != 0 || names.size() != cols) {

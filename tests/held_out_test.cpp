@@ -191,7 +191,7 @@ TEST(HeldOut, TrainReportsItForEveryMethodOnTheFoldsItScoredOn) {
     o.tune.optimizer.run.population = 5;
     o.tune.optimizer.run.iterations = 2;
     o.mlp.max_epochs = 50;
-    const TrainResult r = train(d, {}, o);
+    const TrainResult r = train(d, test::kDefaultDataset, o);
     ASSERT_TRUE(r.summary.held_out) << to_string(m);
     const HeldOutReport& h = *r.summary.held_out;
     if (m != Method::bp) {
@@ -210,11 +210,11 @@ TEST(HeldOut, TrainReportsItForEveryMethodOnTheFoldsItScoredOn) {
   o.tune.cv = {tune::CvScheme::temperature, 4};
   o.tune.optimizer.run.population = 5;
   o.tune.optimizer.run.iterations = 2;
-  const TrainResult r = train(d, {}, o);
+  const TrainResult r = train(d, test::kDefaultDataset, o);
   ASSERT_TRUE(r.summary.held_out);
   EXPECT_NE(r.summary.held_out->model_rmse, r.summary.fitness_value);
   o.held_out = false;
-  EXPECT_FALSE(train(d, {}, o).summary.held_out);
+  EXPECT_FALSE(train(d, test::kDefaultDataset, o).summary.held_out);
 }
 
 }  // namespace

@@ -37,7 +37,7 @@ TEST(CHeader, CompilesAndPredictsAsTheLibrary) {
     o.tune.optimizer.run.iterations = 2;
     o.tune.space.c_max = 10;
     o.mlp.max_epochs = 200;
-    const CompensationModel model = train(d, {}, o).model;
+    const CompensationModel model = train(d, test::kDefaultDataset, o).model;
     test::TempDir dir;
     test::write_file(dir / "model.h", to_c_header(model, "fd_model"));
     test::write_file(dir / "driver.c", kDriver);
@@ -64,7 +64,7 @@ TEST(CHeader, CompilesAndPredictsAsTheLibrary) {
 TEST(CHeader, NamesTheFeaturesAndRejectsBadPrefixes) {
   TrainOptions o;
   o.method = Method::svr;
-  const CompensationModel model = train(test::synthetic(), {}, o).model;
+  const CompensationModel model = train(test::synthetic(), test::kDefaultDataset, o).model;
   const std::string h = to_c_header(model, "unit7");
   EXPECT_NE(h.find("#define UNIT7_N_FEATURES 3"), std::string::npos);
   EXPECT_NE(h.find("static const char* const unit7_feature_names[3] = {\"a\", \"b\", \"c\"};"),

@@ -11,6 +11,10 @@
 
 namespace fogdrift::test {
 
+/// The dataset options synthetic() stands for, named once: a `{}` temporary at each train() call
+/// made GCC 12 warn falsely (-Wmaybe-uninitialized) inside its strings.
+inline const DatasetOptions kDefaultDataset;
+
 inline Dataset synthetic(std::uint64_t seed = 1) {
   Dataset d;
   d.feature_names = {"a", "b", "c"};

@@ -45,7 +45,7 @@ TEST(Train, EveryMethodExplainsTheDrift) {
   const Dataset d = test::synthetic();
   for (Method m :
        {Method::ssa_svr, Method::pso_svr, Method::gwo_svr, Method::svr, Method::bp, Method::poly}) {
-    const TrainResult r = train(d, {}, quick(m));
+    const TrainResult r = train(d, test::kDefaultDataset, quick(m));
     EXPECT_LT(rmse_dph(r.model, d), 0.5 * sd(d.y)) << to_string(m);
     EXPECT_GT(r.summary.fitness_value, 0) << to_string(m);
     EXPECT_LT(r.summary.fitness_value, 0.5) << to_string(m);
@@ -53,7 +53,7 @@ TEST(Train, EveryMethodExplainsTheDrift) {
     EXPECT_FALSE(r.summary.hyperparameters.empty());
   }
   // The untuned SVR is LIBSVM's default: C = 1, γ = 1/3.
-  const TrainResult svr = train(d, {}, quick(Method::svr));
+  const TrainResult svr = train(d, test::kDefaultDataset, quick(Method::svr));
   const auto& model = std::get<svr::Model>(svr.model.regressor);
   EXPECT_DOUBLE_EQ(model.kernel.gamma, 1.0 / 3);
   EXPECT_EQ(svr.model.provenance.hyperparameters[0], (std::pair<std::string, double>{"C", 1.0}));
@@ -63,12 +63,12 @@ TEST(Train, OneSeedOneFileWhateverTheThreadCount) {
   const Dataset d = test::synthetic();
   ThreadPool one(1), two(2);
   for (Method m : {Method::ssa_svr, Method::bp}) {
-    const std::string a = to_json(train(d, {}, quick(m, &one)).model);
-    const std::string b = to_json(train(d, {}, quick(m, &two)).model);
+    const std::string a = to_json(train(d, test::kDefaultDataset, quick(m, &one)).model);
+    const std::string b = to_json(train(d, test::kDefaultDataset, quick(m, &two)).model);
     EXPECT_EQ(a, b) << to_string(m);
     TrainOptions other = quick(m, &two);
     other.tune.optimizer.run.seed = 9;
-    EXPECT_NE(to_json(train(d, {}, other).model), a) << to_string(m);
+    EXPECT_NE(to_json(train(d, test::kDefaultDataset, other).model), a) << to_string(m);
   }
 }
 
@@ -82,19 +82,20 @@ TEST(Train, BpStopsOnRecordingsDealtAcrossTemperaturesAndRepetitions) {
   by_temperature.tune.cv = {tune::CvScheme::temperature, 2};
   automatic.tune.cv = {};
   by_recording.tune.cv = {tune::CvScheme::recording, 3};
-  const TrainResult t = train(d, {}, by_temperature);
-  EXPECT_EQ(to_json(t.model), to_json(train(d, {}, automatic).model));
-  EXPECT_EQ(to_json(t.model), to_json(train(d, {}, by_recording).model));
+  const TrainResult t = train(d, test::kDefaultDataset, by_temperature);
+  EXPECT_EQ(to_json(t.model), to_json(train(d, test::kDefaultDataset, automatic).model));
+  EXPECT_EQ(to_json(t.model), to_json(train(d, test::kDefaultDataset, by_recording).model));
   EXPECT_EQ(t.model.provenance.cv, "early stopping on recordings 3/3");
   // Asked for, a repetition it is.
-  EXPECT_EQ(train(d, {}, quick(Method::bp)).model.provenance.cv, "early stopping on repetition 3");
+  EXPECT_EQ(train(d, test::kDefaultDataset, quick(Method::bp)).model.provenance.cv,
+            "early stopping on repetition 3");
 }
 
 TEST(ModelFile, RoundTripsExactly) {
   const Dataset d = test::synthetic();
   test::TempDir dir;
   for (Method m : {Method::ssa_svr, Method::bp, Method::poly}) {
-    CompensationModel model = train(d, {}, quick(m)).model;
+    CompensationModel model = train(d, test::kDefaultDataset, quick(m)).model;
     model.provenance.files = {{"a.csv", std::string(64, 'f')}};
     save(model, dir / "m.json");
     const CompensationModel back = load_compensation_model(dir / "m.json");
@@ -115,7 +116,7 @@ std::string error_of(const std::string& text) {
 
 TEST(ModelFile, RejectsWhatItCannotRead) {
   const Dataset d = test::synthetic();
-  const std::string good = to_json(train(d, {}, quick(Method::poly)).model);
+  const std::string good = to_json(train(d, test::kDefaultDataset, quick(Method::poly)).model);
   auto edit = [&](auto&& change) {
     auto j = nlohmann::ordered_json::parse(good);
     change(j);
@@ -201,7 +202,8 @@ TEST(ModelFile, RejectsWhatItCannotRead) {
 // drift_dph = inf. A batch prediction that is not finite is an error naming the recording.
 TEST(ModelFile, ADriftThatIsNotFiniteIsAnErrorNotAnOutput) {
   const Dataset d = test::synthetic();
-  auto j = nlohmann::ordered_json::parse(to_json(train(d, {}, quick(Method::poly)).model));
+  auto j = nlohmann::ordered_json::parse(
+      to_json(train(d, test::kDefaultDataset, quick(Method::poly)).model));
   for (auto& scale : j["scalers"]["features"]["scale"]) scale = 1e-300;
   const CompensationModel edited = compensation_model_from_json(j.dump(), "m.json", {true});
   try {
@@ -218,10 +220,10 @@ TEST(Train, RejectsImpossibleOptions) {
   const Dataset d = test::synthetic();
   TrainOptions o = quick(Method::poly);
   o.poly_max_degree = 9;
-  EXPECT_THROW(train(d, {}, o), OptionError);
+  EXPECT_THROW(train(d, test::kDefaultDataset, o), OptionError);
   EXPECT_THROW(parse_method("rf"), OptionError);
   EXPECT_EQ(parse_method("gwo-svr"), Method::gwo_svr);
-  EXPECT_THROW(train(Dataset{}, {}, quick(Method::svr)), OptionError);
+  EXPECT_THROW(train(Dataset{}, test::kDefaultDataset, quick(Method::svr)), OptionError);
 }
 
 }  // namespace

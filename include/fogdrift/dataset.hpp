@@ -97,9 +97,10 @@ struct Dataset {
 std::vector<double> drift_target(const RecordingInput& input, const DatasetOptions& options,
                                  GroupInfo& info, std::vector<std::string>& warnings);
 
-/// Builds a dataset from recordings (features and target of each, concatenated).
-Dataset build_dataset(const std::vector<RecordingInput>& inputs,
-                      const DatasetOptions& options = {});
+/// Builds a dataset from recordings (features and target of each, concatenated), with the
+/// default options when none are given.
+Dataset build_dataset(const std::vector<RecordingInput>& inputs, const DatasetOptions& options);
+Dataset build_dataset(const std::vector<RecordingInput>& inputs);
 
 /// One recording of a campaign with what the manifest knows about it.
 RecordingInput recording_input(const Campaign& campaign, const CampaignEntry& entry,
@@ -118,10 +119,12 @@ std::vector<RecordingInput> read_inputs(const Campaign& campaign, std::optional<
                                         Scenario scenario = Scenario::calibration);
 
 /// Reads the campaign's recordings of `scenario` (and of `role`, if given) and builds a dataset;
-/// read errors name the recording file.
+/// read errors name the recording file. (The default options are one object in the library, not
+/// a temporary at each call: GCC 12 warns falsely, -Wmaybe-uninitialized, inside its strings.)
+Dataset build_dataset(const Campaign& campaign, std::optional<Role> role, Scenario scenario,
+                      const DatasetOptions& options);
 Dataset build_dataset(const Campaign& campaign, std::optional<Role> role,
-                      Scenario scenario = Scenario::calibration,
-                      const DatasetOptions& options = {});
+                      Scenario scenario = Scenario::calibration);
 
 /// Per-column standardisation z = (v - mean) / scale, scale the sample standard deviation.
 struct Standardizer {

@@ -244,35 +244,34 @@ py::object train(const py::object& campaign, const std::string& method, const st
 }  // namespace
 
 void bind_train(py::module_& m) {
-  m.def("train", &train, py::arg("campaign"), py::kw_only(),
-        py::arg("method") = to_string(kTrain.method),
-        py::arg("fitness") = std::string(tune::to_string(kTrain.tune.fitness)),
-        py::arg("cv") = std::string(tune::to_string(kTrain.tune.cv.scheme)),
-        py::arg("folds") = kTrain.tune.cv.folds, py::arg("features") = "auto",
-        py::arg("thermometers") = "auto",
-        py::arg("differentiator") =
-            std::string(signal::to_string(DatasetOptions{}.preprocessing.rates.causality)),
-        py::arg("block_s") = "auto", py::arg("rate_window_s") = "auto",
-        py::arg("rate_degree") = "auto", py::arg("population") = kRun.population,
-        py::arg("iterations") = kRun.iterations, py::arg("seed") = kRun.seed,
-        py::arg("threads") = 0, py::arg("c_min") = kSpace.c_min, py::arg("c_max") = kSpace.c_max,
-        py::arg("sigma_min") = kSpace.sigma_min, py::arg("sigma_max") = kSpace.sigma_max,
-        py::arg("epsilon") = kSpace.epsilon, py::arg("search_epsilon") = false,
-        py::arg("auto_box") = false, py::arg("denoise") = true,
-        py::arg("hidden") = kTrain.mlp.hidden, py::arg("max_degree") = kTrain.poly_max_degree,
-        py::arg("progress") = py::none(), py::arg("target") = "gyro_dph",
-        py::arg("validate_only") = false,
-        "Trains a compensation model on a campaign's training recordings, as `fogdrift train` "
-        "does; returns {'model': Model, 'summary': dict}. campaign: a folder (or its "
-        "campaign.json), or a campaign in memory: a dict with the manifest's fields and 'data', "
-        "one recording per entry (what fogdrift.simulate returns); the same model bytes either "
-        "way. thermometers: the thermometers the features read, e.g. ['fog', 'acc1', 'acc2', "
-        "'case'] for a further column temp_case_degc (docs/logs.md, \"More thermometers\"); "
-        "'auto': those of fog, acc1, acc2 every recording has. target: the gyro column to "
-        "compensate, gyro_dph or another axis the recordings "
-        "carry (gyro_y_dph, ...); save_models writes the models of every axis as one file, as "
-        "`fogdrift train --targets` does. validate_only: check the options and return None "
-        "without reading the campaign (train_fleet does, once, before any unit runs).");
+  m.def(
+      "train", &train, py::arg("campaign"), py::kw_only(),
+      py::arg("method") = to_string(kTrain.method),
+      py::arg("fitness") = std::string(tune::to_string(kTrain.tune.fitness)),
+      py::arg("cv") = std::string(tune::to_string(kTrain.tune.cv.scheme)),
+      py::arg("folds") = kTrain.tune.cv.folds, py::arg("features") = "auto",
+      py::arg("thermometers") = "auto",
+      py::arg("differentiator") = std::string(signal::to_string(FeatureOptions{}.rates.causality)),
+      py::arg("block_s") = "auto", py::arg("rate_window_s") = "auto",
+      py::arg("rate_degree") = "auto", py::arg("population") = kRun.population,
+      py::arg("iterations") = kRun.iterations, py::arg("seed") = kRun.seed, py::arg("threads") = 0,
+      py::arg("c_min") = kSpace.c_min, py::arg("c_max") = kSpace.c_max,
+      py::arg("sigma_min") = kSpace.sigma_min, py::arg("sigma_max") = kSpace.sigma_max,
+      py::arg("epsilon") = kSpace.epsilon, py::arg("search_epsilon") = false,
+      py::arg("auto_box") = false, py::arg("denoise") = true, py::arg("hidden") = kTrain.mlp.hidden,
+      py::arg("max_degree") = kTrain.poly_max_degree, py::arg("progress") = py::none(),
+      py::arg("target") = "gyro_dph", py::arg("validate_only") = false,
+      "Trains a compensation model on a campaign's training recordings, as `fogdrift train` "
+      "does; returns {'model': Model, 'summary': dict}. campaign: a folder (or its "
+      "campaign.json), or a campaign in memory: a dict with the manifest's fields and 'data', "
+      "one recording per entry (what fogdrift.simulate returns); the same model bytes either "
+      "way. thermometers: the thermometers the features read, e.g. ['fog', 'acc1', 'acc2', "
+      "'case'] for a further column temp_case_degc (docs/logs.md, \"More thermometers\"); "
+      "'auto': those of fog, acc1, acc2 every recording has. target: the gyro column to "
+      "compensate, gyro_dph or another axis the recordings "
+      "carry (gyro_y_dph, ...); save_models writes the models of every axis as one file, as "
+      "`fogdrift train --targets` does. validate_only: check the options and return None "
+      "without reading the campaign (train_fleet does, once, before any unit runs).");
   m.def(
       "save_models",
       [](const std::filesystem::path& path, const std::vector<CompensationModel>& models) {
