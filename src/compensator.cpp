@@ -104,6 +104,14 @@ void StreamingCompensator::check_thermometers(double time_s, std::uint32_t& flag
     }
 }
 
+// The sample's further thermometers into raw_[3…]; one the sample does not hold is a reading
+// that is not a number, a fault as any other (stream_faults.hpp).
+void StreamingCompensator::further_into_raw(const Sample& s) noexcept {
+  for (std::size_t k = 3; k < nt_; ++k)
+    raw_[k] = k - 3 < s.further_degc.size() ? s.further_degc[k - 3]
+                                            : std::numeric_limits<double>::quiet_NaN();
+}
+
 // A faulty thermometer's stand-in: its last good reading continued along its last good rate,
 // kept inside the policy's range.
 double StreamingCompensator::substitute(std::size_t k, double time_s) const noexcept {
@@ -157,7 +165,7 @@ StreamOutput StreamingCompensator::update(const Sample& s) noexcept {
   data_started_ = true;
   data_time_s_ = t;
   raw_[0] = s.temp_fog_degc, raw_[1] = s.temp_acc1_degc, raw_[2] = s.temp_acc2_degc;
-  for (std::size_t k = 3; k < nt_; ++k) raw_[k] = s.further_degc[k - 3];
+  further_into_raw(s);
   block_.add(raw_, 0.0);
   if (!first && block_.count < k_) return finish(s, last_drift_dph_, flags);
   const auto c = static_cast<double>(block_.count);
@@ -193,7 +201,7 @@ StreamOutput StreamingCompensator::step(const Sample& s, std::uint32_t flags) no
     }
   }
   // raw_ from the sample first: step() may be given the block means held in temp_.
-  for (std::size_t k = 3; k < nt_; ++k) raw_[k] = s.further_degc[k - 3];
+  further_into_raw(s);
   raw_[0] = s.temp_fog_degc, raw_[1] = s.temp_acc1_degc, raw_[2] = s.temp_acc2_degc;
   check_thermometers(t, flags);
   const std::vector<double>& raw = raw_;

@@ -293,8 +293,21 @@ TEST(StreamingCompensator, AFourthThermometerIsReadEverywhere) {
           << "every " << dt_s << " s, sample " << i;
   };
   streams_as_batch(test, 1.0);
-  const std::vector<double> further = test.numeric_column("temp_case_degc");
 
+  const std::vector<double> further = test.numeric_column("temp_case_degc");
+  {  // A sample without the fourth temperature is a faulty reading, bridged, not a crash.
+    StreamingCompensator stream(four, 1.0);
+    for (std::size_t i = 0; i < 200; ++i) {
+      const StreamOutput out =
+          i == 150
+              ? stream.update({test.time_s[i], 0.0, test.temp_fog_degc[i], test.temp_acc1_degc[i],
+                               test.temp_acc2_degc[i]})
+              : stream.update({test.time_s[i], 0.0, test.temp_fog_degc[i], test.temp_acc1_degc[i],
+                               test.temp_acc2_degc[i], std::span<const double>(&further[i], 1)});
+      EXPECT_EQ((out.flags & fault::temp_bad) != 0, i == 150) << i;
+      EXPECT_TRUE(std::isfinite(out.drift_dph)) << i;
+    }
+  }
   test::TempDir dir;
   test::write_file(dir / "model.h", to_c_header(four, "fd", 1.0));
   test::write_file(dir / "driver.c", R"(#include <stdio.h>

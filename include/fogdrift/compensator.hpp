@@ -60,7 +60,8 @@ class StreamingCompensator {
  public:
   /// `dt_s` is the logger's sample interval. Throws OptionError for an invalid FaultPolicy, and
   /// (naming "rate") for an interval the model cannot run at (decimation_factor). A sample's
-  /// further_degc must hold the model's further thermometers (model.dataset.features.further).
+  /// further_degc holds the model's further thermometers (model.dataset.features.further); one
+  /// it lacks is a faulty reading (temp_bad).
   StreamingCompensator(const CompensationModel& model, double dt_s,
                        const StreamOptions& options = {});
 
@@ -120,6 +121,7 @@ class StreamingCompensator {
   // One sample at the model's interval: the fault policy, the rates, the model and the guard.
   StreamOutput step(const Sample& s, std::uint32_t flags) noexcept;
   void check_thermometers(double time_s, std::uint32_t& flags) noexcept;
+  void further_into_raw(const Sample& s) noexcept;
   double substitute(std::size_t k, double time_s) const noexcept;
   double degraded(double time_s, std::uint32_t& flags) const noexcept;
   StreamOutput finish(const Sample& s, double drift_dph, std::uint32_t flags) noexcept;
