@@ -101,7 +101,13 @@ py::tuple update(Stream& s, double time_s, double gyro_dph, double temp_fog_degc
           name,
           s.further_columns.empty() ? "none"
                                     : fmt::format("{}", fmt::join(s.further_columns, ", "))));
-    s.further[static_cast<std::size_t>(at - s.further_columns.begin())] = value.cast<double>();
+    try {
+      s.further[static_cast<std::size_t>(at - s.further_columns.begin())] = value.cast<double>();
+    } catch (const py::cast_error&) {
+      throw py::type_error(
+          fmt::format("StreamingCompensator.update(): {} must be a number, not {}", name,
+                      py::str(value.get_type().attr("__name__")).cast<std::string>()));
+    }
   }
   for (const std::string& name : s.further_columns)
     if (!further.contains(name.c_str()))

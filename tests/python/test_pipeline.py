@@ -389,6 +389,8 @@ def test_a_fourth_thermometer_is_trained_on_and_streamed(campaign):
         assert drift == batch[i] and flags == 0
     with pytest.raises(ValueError, match="option temp_case_degc: the model reads this"):
         s.update(60.0, 0.0, 20.0, 20.0, 20.0)
+    with pytest.raises(TypeError, match="temp_case_degc must be a number, not str"):
+        s.update(60.0, 0.0, 20.0, 20.0, 20.0, temp_case_degc="warm")
     with pytest.raises(TypeError, match="unexpected keyword argument 'temp_top_degc'"):
         s.update(60.0, 0.0, 20.0, 20.0, 20.0, temp_case_degc=20.0, temp_top_degc=20.0)
     with pytest.raises(ValueError, match="missing column temp_case_degc"):
