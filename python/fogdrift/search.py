@@ -135,10 +135,11 @@ class SVRGridSearchCV(RegressorMixin, BaseEstimator):
             gamma_args = [g if isinstance(g, str) else float(g) for g in gammas]
             # Every fold's paths in one call, so that the threads share them all.
             started = time.perf_counter()
-            Xe, ye, we, fit_rows, test_rows = self._engine_data(group, prefix, X, y, weights,
-                                                                folds)
+            Xe, ye, we, fit_rows, test_rows, train_rows = self._engine_data(
+                group, prefix, X, y, weights, folds)
+            # Train scores are over every training row, those of weight 0 too (GridSearchCV's).
             predict_rows = test_rows if train_scores is None else \
-                [np.concatenate([t, r]) for t, r in zip(test_rows, fit_rows)]
+                [np.concatenate([t, r]) for t, r in zip(test_rows, train_rows)]
             per_fold = _fogdrift.svr_search(Xe, ye, we, fit_rows, test_rows, C=c_values,
                                             gamma=gamma_args, n_jobs=n_jobs,
                                             predict_rows=predict_rows, **args)
@@ -215,16 +216,17 @@ class SVRGridSearchCV(RegressorMixin, BaseEstimator):
     @staticmethod
     def _engine_data(group, prefix, X, y, weights, folds):
         """The data every fold's paths see, in the engine's terms: (X, y, weights, the rows each
-        fold's SVR trains on, each fold's test rows). The SVR trains on a fold's training rows
-        of weight > 0 (the engine takes positive weights only, so a zero-weight row is in no
-        training set). A Pipeline's earlier steps are fitted on each fold's training rows, and
-        its rows, transformed, are stacked after the folds before it."""
+        fold's SVR trains on, each fold's test rows, each fold's training rows). The SVR trains
+        on a fold's training rows of weight > 0 (the engine takes positive weights only, so a
+        zero-weight row is in no training set). A Pipeline's earlier steps are fitted on each
+        fold's training rows, and its rows, transformed, are stacked after the folds before it."""
         if not prefix:
             w = None if weights.checked is None else np.where(weights.keep, weights.checked, 1.0)
             fit_rows = [np.asarray(train if weights.keep is None else train[weights.keep[train]],
                                    dtype=np.int64) for train, _ in folds]
-            return X, y, w, fit_rows, [np.asarray(test, dtype=np.int64) for _, test in folds]
-        blocks, ys, ws, fit_rows, test_rows = [], [], [], [], []
+            return (X, y, w, fit_rows, [np.asarray(test, dtype=np.int64) for _, test in folds],
+                    [np.asarray(train, dtype=np.int64) for train, _ in folds])
+        blocks, ys, ws, fit_rows, test_rows, train_rows = [], [], [], [], [], []
         offset = 0
         for train, test in folds:
             steps = clone(group[:-1])
@@ -237,11 +239,13 @@ class SVRGridSearchCV(RegressorMixin, BaseEstimator):
             kept = np.arange(len(train)) if weights.keep is None else \
                 np.flatnonzero(weights.keep[train])
             fit_rows.append((offset + kept).astype(np.int64))
+            train_rows.append(np.arange(offset, offset + len(train), dtype=np.int64))
             test_rows.append(np.arange(offset + len(train), offset + len(train) + len(test),
                                        dtype=np.int64))
             offset += len(train) + len(test)
         Xe = np.ascontiguousarray(np.vstack(blocks), dtype=np.float64)
-        return Xe, np.concatenate(ys), np.concatenate(ws) if ws else None, fit_rows, test_rows
+        return (Xe, np.concatenate(ys), np.concatenate(ws) if ws else None, fit_rows, test_rows,
+                train_rows)
 
     def _store_results(self, candidates, test_scores, train_scores, fit_time, score_time):
         results = {

@@ -338,11 +338,20 @@ def test_grid_search_of_a_pipeline_with_any_scorer_as_grid_search_cv(rng):
         np.testing.assert_array_equal(
             ours.predict(X), clone(pipe).set_params(**ours.best_params_).fit(X, y).predict(X))
         assert ours.score(X, y) == pytest.approx(theirs.score(X, y), abs=5e-3)
-    # Weights reach the Pipeline's SVR, in the search and in the refit.
+    # Weights reach the Pipeline's SVR, in the search and in the refit; a row of weight 0 is in
+    # no fit but is scored, in its test fold and in the train scores.
     w = rng.uniform(0.5, 2, size=400)
+    w[::7] = 0
+    for estimator, grid, weight in ((pipe, grids[0], "svr__sample_weight"),
+                                    (fogdrift.SVR(), {"C": [0.5, 5], "gamma": [0.2]},
+                                     "sample_weight")):
+        ours = fogdrift.SVRGridSearchCV(estimator, grid, cv=folds, return_train_score=True).fit(
+            X, y, sample_weight=w)
+        theirs = GridSearchCV(estimator, grid, cv=folds, return_train_score=True).fit(
+            X, y, **{weight: w})
+        for key in ("mean_test_score", "mean_train_score"):
+            np.testing.assert_allclose(ours.cv_results_[key], theirs.cv_results_[key],
+                                       atol=5e-3, err_msg=key)
     ours = fogdrift.SVRGridSearchCV(pipe, grids[0], cv=folds).fit(X, y, sample_weight=w)
-    theirs = GridSearchCV(pipe, grids[0], cv=folds).fit(X, y, svr__sample_weight=w)
-    np.testing.assert_allclose(ours.cv_results_["mean_test_score"],
-                               theirs.cv_results_["mean_test_score"], atol=5e-3)
-    np.testing.assert_array_equal(ours.predict(X), theirs.best_estimator_.set_params(
+    np.testing.assert_array_equal(ours.predict(X), clone(pipe).set_params(
         **ours.best_params_).fit(X, y, svr__sample_weight=w).predict(X))
