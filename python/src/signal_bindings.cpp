@@ -126,7 +126,7 @@ void bind_signal(py::module_& m) {
         "The model inputs of a recording (a path or a mapping of columns), one row per block: "
         "a dict with 'names' (each with its unit), 'x' (rows × features float64), 'time_s' "
         "(block centres), 'block' (samples per block), and the 'spec', 'rate_window_s' and "
-        "'block_s' used. spec: a feature spec ('T,dT,grad', docs/features.md) or None for the "
+        "'block_s' used. spec: a feature spec ('T,dT,grad', docs/signal.md §4) or None for the "
         "paper's inputs over the unit's thermometers; with model=, the model's own features and "
         "preprocessing, the rows it predicts from.");
 }

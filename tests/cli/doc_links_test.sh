@@ -1,0 +1,22 @@
+#!/usr/bin/env bash
+# Every page of docs/ the tree cites exists: "docs/NAME.md" in code, comments, scripts and pages,
+# and every relative link (NAME.md) between the pages of docs/. A renamed or missing page is a
+# comment that sends the reader nowhere.
+# Usage: doc_links_test.sh PROJECT_ROOT
+set -u
+root=$1
+cd "$root" || exit 1
+failed=0
+files=$(git ls-files 2>/dev/null || find . -type f -not -path './build*' -not -path './.git/*')
+while read -r cited; do
+  [ -e "$cited" ] || { echo "FAILED: $cited is cited but does not exist:" >&2
+                       grep -rln -- "$cited" $files | sed 's/^/  in /' >&2; failed=$((failed + 1)); }
+done < <(grep -ohE "docs/[A-Za-z0-9_-]+\.md" $files | sort -u)
+for page in docs/*.md; do
+  while read -r link; do
+    [ -e "docs/$link" ] || { echo "FAILED: $page links to $link, which does not exist" >&2
+                             failed=$((failed + 1)); }
+  done < <(grep -ohE "\]\([A-Za-z0-9_-]+\.md" "$page" | sed 's/^](//' | sort -u)
+done
+echo "doc links: $failed missing"
+[ "$failed" -eq 0 ]
