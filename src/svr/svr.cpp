@@ -120,8 +120,9 @@ std::uint64_t fit_bytes(std::size_t rows, std::size_t dims, const Params& params
   const auto rows_bytes =
       static_cast<std::uint64_t>(std::min(whole_matrix, budget)) + 16 * row_floats;
   // Per sample: the features in the solver's order and in the model (2·8·(d+1)), and the
-  // solver's arrays (the pair solver's fourteen doubles and its dual; the LIBSVM path's
-  // 2l-long arrays), 256 bytes at most.
+  // solver's arrays (the pair solver's twelve per-sample doubles, take_arrays in
+  // pair_solver.cpp, with its flags, dual and order; the LIBSVM path's 2l-long arrays), 256
+  // bytes at most.
   return rows_bytes + n * (16 * (static_cast<std::uint64_t>(dims) + 1) + 256);
 }
 
