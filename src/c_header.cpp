@@ -24,10 +24,10 @@ namespace {
 /// thermometers").
 std::string thermometers_read(const CompensationModel& model) {
   const FeatureSpec& spec = model.dataset.features;
+  const std::vector<std::string> columns = spec.thermometer_columns();
   std::vector<std::string> read;
-  for (std::size_t k = 0; k < spec.thermometer_count(); ++k)
-    if (spec.reads(static_cast<Thermometer>(k)))
-      read.push_back(thermometer_column(spec.thermometer_name(static_cast<Thermometer>(k))));
+  for (std::size_t k = 0; k < columns.size(); ++k)
+    if (spec.reads(static_cast<Thermometer>(k))) read.push_back(columns[k]);
   return read.empty() ? std::string("none") : fmt::format("{}", fmt::join(read, ", "));
 }
 
@@ -537,16 +537,16 @@ std::string c_streaming_part(const CompensationModel& model, const std::string& 
   }
   // One argument per thermometer of the spec, the further ones after fog, acc1, acc2.
   const FeatureSpec& spec = model.dataset.features;
-  std::string read_flags, params, args, names;
-  for (std::size_t k = 0; k < spec.thermometer_count(); ++k) {
+  const std::vector<std::string> temp_columns = spec.thermometer_columns();
+  std::string read_flags, params, names;
+  for (std::size_t k = 0; k < temp_columns.size(); ++k) {
     const auto th = static_cast<Thermometer>(k);
-    const std::string column = thermometer_column(spec.thermometer_name(th));
     const char* sep = k ? ", " : "";
     read_flags += fmt::format("{}{}", sep, spec.reads(th) ? 1 : 0);
-    params += fmt::format("{}@REAL@ {}", sep, column);
-    args += fmt::format("{}{}", sep, column);
+    params += fmt::format("{}@REAL@ {}", sep, temp_columns[k]);
     names += fmt::format("{}{}", sep, spec.thermometer_name(th));
   }
+  const std::string args = fmt::format("{}", fmt::join(temp_columns, ", "));
   const bool guarded = !model.guard.empty();
   return fill_template(
       std::string(kStreamingC),

@@ -3,8 +3,6 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
-#include <algorithm>
-
 #include "fogdrift/c_header.hpp"
 #include "fogdrift/error.hpp"
 
@@ -17,12 +15,7 @@ std::string to_c_header(const ModelSet& set, const std::string& prefix, double s
     return to_c_header(set.models.front(), prefix, stream_dt_s, faults, precision);
   const std::string upper = c_macro_prefix(prefix);
   const std::size_t n = set.models.size();
-  // The thermometers of every axis: fog, acc1, acc2, then each further one once.
-  std::vector<std::string> columns = {"temp_fog_degc", "temp_acc1_degc", "temp_acc2_degc"};
-  for (const CompensationModel& model : set.models)
-    for (const std::string& name : model.dataset.features.further)
-      if (std::find(columns.begin(), columns.end(), thermometer_column(name)) == columns.end())
-        columns.push_back(thermometer_column(name));
+  const std::vector<std::string> columns = set.thermometer_columns();  // every axis's, once
   std::string names, axes;
   for (std::size_t k = 0; k < n; ++k) {
     names += fmt::format("{}\"{}\"", k ? ", " : "", set.models[k].dataset.target_column);
@@ -69,11 +62,9 @@ std::string to_c_header(const ModelSet& set, const std::string& prefix, double s
     for (std::size_t k = 0; k < n; ++k) {
       const std::string axis = axis_name(set.models[k].dataset.target_column);
       reset += fmt::format("  {0}_{1}_reset(&s->{1});\n", prefix, axis);
-      std::vector<std::string> own = {"temp_fog_degc", "temp_acc1_degc", "temp_acc2_degc"};
-      for (const std::string& name : set.models[k].dataset.features.further)
-        own.push_back(thermometer_column(name));
-      update += fmt::format("  drift_dph[{2}] = {0}_{1}_update(&s->{1}, time_s, {3});\n", prefix,
-                            axis, k, fmt::join(own, ", "));
+      update +=
+          fmt::format("  drift_dph[{2}] = {0}_{1}_update(&s->{1}, time_s, {3});\n", prefix, axis, k,
+                      fmt::join(set.models[k].dataset.features.thermometer_columns(), ", "));
       compensated += fmt::format(
           "  gyro_compensated_dph[{2}] = {0}_{1}_compensated_dph(&s->{1}, gyro_dph[{2}]);\n",
           prefix, axis, k);

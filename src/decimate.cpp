@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "fogdrift/csv.hpp"
 #include "fogdrift/error.hpp"
 
 namespace fogdrift {
@@ -55,13 +56,16 @@ Recording decimate(const Recording& recording, std::size_t k) {
   out.source = recording.source;
   const std::size_t n = recording.size();
   // Every thermometer, further ones from their columns; an absent one sums zeros, never kept.
-  std::vector<std::vector<double>> temps = {recording.temp_fog_degc, recording.temp_acc1_degc,
-                                            recording.temp_acc2_degc};
+  const std::vector<double> zeros(n, 0.0);
   const std::vector<std::string> further = further_thermometers_of(recording);
+  std::vector<std::vector<double>> further_degc;
   for (const std::string& name : further)
-    temps.push_back(recording.numeric_column(thermometer_column(name)));
-  for (auto& v : temps)
-    if (v.empty()) v.assign(n, 0.0);
+    further_degc.push_back(recording.numeric_column(thermometer_column(name)));
+  std::vector<const std::vector<double>*> temps;
+  for (const auto* v :
+       {&recording.temp_fog_degc, &recording.temp_acc1_degc, &recording.temp_acc2_degc})
+    temps.push_back(v->empty() ? &zeros : v);
+  for (const auto& v : further_degc) temps.push_back(&v);
   std::vector<std::vector<double>> means(temps.size());
   std::vector<double> sample(temps.size());
   BlockSum sum(temps.size());
@@ -70,7 +74,7 @@ Recording decimate(const Recording& recording, std::size_t k) {
     if (first != 0 && last - first + 1 < k) break;  // a trailing partial block is not yet done
     sum.clear();
     for (std::size_t i = first; i <= last; ++i) {
-      for (std::size_t j = 0; j < temps.size(); ++j) sample[j] = temps[j][i];
+      for (std::size_t j = 0; j < temps.size(); ++j) sample[j] = (*temps[j])[i];
       sum.add(sample, recording.gyro_dph[i]);
     }
     const auto c = static_cast<double>(sum.count);
@@ -84,7 +88,7 @@ Recording decimate(const Recording& recording, std::size_t k) {
   for (std::size_t f = 0; f < further.size(); ++f) {
     const std::vector<double>& m = means[3 + f];
     ExtraColumn column{thermometer_column(further[f]), {}};
-    for (double v : m) column.cells.push_back(fmt::format("{:.17g}", v));
+    for (double v : m) column.cells.push_back(csv::format_number(v));
     out.extra.push_back(std::move(column));
   }
   return out;

@@ -62,15 +62,24 @@ std::string thermometer_column(std::string_view name) {
 }
 
 bool is_thermometer_name(std::string_view name) {
+  if (std::find(kThermometerNames.begin(), kThermometerNames.end(), name) !=
+      kThermometerNames.end())
+    return true;
+  // A further one: the NAME of a channel temp_NAME_degc (recording.hpp), starting with a letter.
   return !name.empty() && name.front() >= 'a' && name.front() <= 'z' &&
-         std::all_of(name.begin(), name.end(), [](char c) {
-           return (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '_';
-         });
+         is_channel_column(thermometer_column(name));
 }
 
 std::string_view FeatureSpec::thermometer_name(Thermometer k) const {
   const auto i = static_cast<std::size_t>(k);
   return i < 3 ? kThermometerNames[i] : std::string_view(further.at(i - 3));
+}
+
+std::vector<std::string> FeatureSpec::thermometer_columns() const {
+  std::vector<std::string> out;
+  for (std::size_t k = 0; k < thermometer_count(); ++k)
+    out.push_back(thermometer_column(thermometer_name(static_cast<Thermometer>(k))));
+  return out;
 }
 
 FeatureSpec FeatureSpec::parse(std::string_view text,
@@ -138,11 +147,11 @@ FeatureSpec FeatureSpec::parse(std::string_view text,
 }
 
 std::string FeatureSpec::to_string() const {
+  const std::vector<Thermometer> three = {Thermometer::fog, Thermometer::acc1, Thermometer::acc2};
   std::string out;
   for (const auto& term : terms) {
     if (!out.empty()) out += ',';
     out += fogdrift::to_string(term.term);
-    const std::vector<Thermometer> three = {Thermometer::fog, Thermometer::acc1, Thermometer::acc2};
     if (term.term != FeatureTerm::time && term.thermometers != three) {
       out += '(';
       for (std::size_t k = 0; k < term.thermometers.size(); ++k) {

@@ -5,6 +5,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
+
 #include "fogdrift/atomic_file.hpp"
 #include "fogdrift/error.hpp"
 #include "fogdrift/text_file.hpp"
@@ -51,6 +53,14 @@ std::vector<std::string_view> model_texts(std::string_view text) {
 std::vector<std::string> ModelSet::targets() const {
   std::vector<std::string> out;
   for (const auto& m : models) out.push_back(m.dataset.target_column);
+  return out;
+}
+
+std::vector<std::string> ModelSet::thermometer_columns() const {
+  std::vector<std::string> out;
+  for (const auto& m : models)
+    for (std::string& column : m.dataset.features.thermometer_columns())
+      if (std::find(out.begin(), out.end(), column) == out.end()) out.push_back(std::move(column));
   return out;
 }
 

@@ -2,7 +2,6 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
-#include <algorithm>
 #include <iostream>
 #include <memory>
 #include <optional>
@@ -34,11 +33,8 @@ struct ExportArgs {
 // The temperature arguments of PREFIX_update, as the summary names them: temp_fog, temp_acc1,
 // temp_acc2, then each further thermometer a model reads (docs/logs.md, "More thermometers").
 std::string temperature_arguments(const ModelSet& set) {
-  std::vector<std::string> names = {"temp_fog", "temp_acc1", "temp_acc2"};
-  for (const CompensationModel& model : set.models)
-    for (const std::string& t : model.dataset.features.further)
-      if (std::find(names.begin(), names.end(), "temp_" + t) == names.end())
-        names.push_back("temp_" + t);
+  std::vector<std::string> names = set.thermometer_columns();
+  for (std::string& name : names) name.resize(name.size() - 5);  // temp_NAME without _degc
   return fmt::format("{}", fmt::join(names, ", "));
 }
 

@@ -122,33 +122,26 @@ void run(const StreamArgs& given, const CLI::App& cmd) {
   // Time and the thermometers, shared by every axis: the accelerometers' thermometers are needed
   // only when a model reads them, and after them every further thermometer a model reads
   // (docs/logs.md, "More thermometers"). Then each axis's gyro.
-  std::vector<std::string> names = {"time_s", first.dataset.target_column, "temp_fog_degc",
-                                    "temp_acc1_degc", "temp_acc2_degc"};
-  auto reads = [&](const std::string& temp_column) {
-    return std::any_of(set.models.begin(), set.models.end(), [&](const CompensationModel& m) {
-      const FeatureSpec& f = m.dataset.features;
-      for (std::size_t k = 0; k < f.thermometer_count(); ++k)
-        if (thermometer_column(f.thermometer_name(static_cast<Thermometer>(k))) == temp_column &&
-            f.reads(static_cast<Thermometer>(k)))
-          return true;
-      return false;
-    });
-  };
-  // Per axis, where each of its further thermometers is among the values read.
+  std::vector<std::string> names = {"time_s", first.dataset.target_column};
+  for (std::string& c : set.thermometer_columns()) names.push_back(std::move(c));
+  // Per column, whether some model reads it; per axis, where its further thermometers are.
+  std::vector<bool> read(names.size(), false);
   std::vector<std::vector<std::size_t>> further_of;
   for (const CompensationModel& model : set.models) {
+    const FeatureSpec& f = model.dataset.features;
+    const std::vector<std::string> own = f.thermometer_columns();
     further_of.emplace_back();
-    for (const std::string& t : model.dataset.features.further) {
-      const std::string c = thermometer_column(t);
-      auto at = std::find(names.begin(), names.end(), c);
-      if (at == names.end()) at = names.insert(names.end(), c);
-      further_of.back().push_back(static_cast<std::size_t>(at - names.begin()));
+    for (std::size_t k = 0; k < own.size(); ++k) {
+      const auto at =
+          static_cast<std::size_t>(std::find(names.begin(), names.end(), own[k]) - names.begin());
+      if (f.reads(static_cast<Thermometer>(k))) read[at] = true;
+      if (k >= 3) further_of.back().push_back(at);
     }
   }
   std::vector<std::size_t> column(names.size());
   column[0] = column_of(names[0], true);
   column[2] = column_of(names[2], true);
-  for (std::size_t k = 3; k < names.size(); ++k) column[k] = column_of(names[k], reads(names[k]));
+  for (std::size_t k = 3; k < names.size(); ++k) column[k] = column_of(names[k], read[k]);
   std::vector<double> further_degc;  // one axis's further thermometers, in its spec's order
   std::vector<std::size_t> gyro_column;
   std::vector<std::string> added;

@@ -44,8 +44,9 @@ std::string_view to_string(FeatureTerm term);  ///< "T", "dT", "grad", "dgrad", 
 /// The recording column thermometer NAME is read from: temp_NAME_degc ("temp_fog_degc", ...).
 std::string thermometer_column(std::string_view name);
 
-/// Whether `name` may name a further thermometer: lower-case letters, digits and '_', starting
-/// with a letter (the NAME of a temp_NAME_degc column, recording.hpp is_channel_column).
+/// Whether `name` may name a thermometer: fog, acc1, acc2, or a further one, the NAME of a
+/// channel temp_NAME_degc (recording.hpp is_channel_column: lower-case letters, digits and '_')
+/// that starts with a letter.
 bool is_thermometer_name(std::string_view name);
 
 struct FeatureTermSpec {
@@ -125,6 +126,9 @@ struct FeatureSpec {
   std::size_t thermometer_count() const { return 3 + further.size(); }
   /// The name of thermometer `k`: fog, acc1, acc2 or further[k − 3].
   std::string_view thermometer_name(Thermometer k) const;
+  /// The recording column of each thermometer, in number order: temp_fog_degc,
+  /// temp_acc1_degc, temp_acc2_degc, then temp_NAME_degc of each further one.
+  std::vector<std::string> thermometer_columns() const;
   /// Whether some input reads thermometer `k` (a unit without it cannot use the spec).
   bool reads(Thermometer k) const;
   /// Per input, whether it reads a temperature rate (FeatureColumn::reads_rate).

@@ -25,6 +25,10 @@ struct ModelSet {
 
   /// The target columns, in order (dataset.target_column of each model).
   std::vector<std::string> targets() const;
+  /// The thermometer columns any model reads, each once: temp_fog_degc, temp_acc1_degc,
+  /// temp_acc2_degc, then each further one in the order the models name them (the arguments of
+  /// the set's C update, the columns `stream` reads).
+  std::vector<std::string> thermometer_columns() const;
   /// The model for `target`; nullptr when the set has none.
   const CompensationModel* find(std::string_view target) const;
 };
