@@ -4,9 +4,12 @@
 What it imitates (docs/logs.md, "Temperatures from another file"):
   imu3.csv      a MEMS IMU on a logger that counts milliseconds from its own boot, in bursts of
                 50 samples at 50 Hz once a minute (stamps jitter by a millisecond), three gyro
-                axes in °/s and one thermometer, a signed 16-bit register written as its unsigned
-                bit pattern (1/256 °C per count, 0 at 25 °C).
-  truth.csv     each burst's true mean drift per axis, °/h, at its time on a 60 s grid.
+                axes in °/s, two accelerometers (x level, in g; z pointing up, in m/s²), the
+                unit's estimate of its x gyro's scale-factor error in ppm, and one thermometer, a
+                signed 16-bit register written as its unsigned bit pattern (1/256 °C per count,
+                0 at 25 °C).
+  truth.csv     each burst's true mean drift per axis, °/h, of each accelerometer's bias, g, and
+                of the scale-factor error, ppm, at its time on a 60 s grid.
   sheet.csv     the chamber sheet: a time of day every 5 minutes (HH:MM), the chamber air in °C and
                 three thermocouples in °F (on the IMU's case beside its thermometer, on the far
                 side of the case, on the mounting plate), as a spreadsheet exports it: a BOM,
@@ -20,6 +23,11 @@ dT/dt in °C/s), plus white noise of 0.03 °/s per sample, with no rotation:
   x: 0.02 + 0.0015 (T_imu - 20) + 0.6 dT_imu/dt
   y: -0.01 - 0.0010 (T_far - 20) + 0.4 dT_far/dt
   z: 0.005 + 0.0020 (T_plate - 20)
+plus white noise of 0.03 °/s per sample, with no rotation; so do the accelerometers' biases (g)
+and the scale-factor error (ppm), with noise of 0.0005 g and 5 ppm per sample:
+  accel x: 0.002 + 5e-5 (T_imu - 20) + 0.02 dT_imu/dt            (level: it senses no gravity)
+  accel z: -0.001 + 3e-5 (T_far - 20) + 0.01 dT_far/dt           (up: it senses 1 g besides)
+  sf:      150 + 12 (T_plate - 20)
 T_imu is what the IMU's thermometer reads; the case thermocouple reads it 0.3 °C high.
 
 Deterministic: run it again and the files are the same, byte for byte.
@@ -87,12 +95,16 @@ def main(out_dir):
     def rate(node, t):
         return (at(node, t + 1.0) - at(node, t - 1.0)) / 2.0
 
-    lines = ["millis,gx_dps,gy_dps,gz_dps,temp_raw,status"]
-    truth = ["time_s,drift_x_dph,drift_y_dph,drift_z_dph"]
+    lines = ["millis,gx_dps,gy_dps,gz_dps,ax_g,az_ms2,sf_ppm,temp_raw,status"]
+    truth = ["time_s,drift_x_dph,drift_y_dph,drift_z_dph,bias_x_g,bias_z_g,sf_ppm"]
+    # The accelerometers and the scale factor draw their noise from a generator of their own, so
+    # that the gyros' columns are those of the fixture before they were added.
+    rng_other = random.Random(20261126)
     boot_ms = 1730
     for burst in range(RUN_S // 60):
         start_ms = boot_ms + 60000 * burst
         sums = [0.0, 0.0, 0.0]
+        other_sums = [0.0, 0.0, 0.0]
         for j in range(BURST_SAMPLES):
             ms = start_ms + round(20.0 * j + rng.uniform(-1.2, 1.2))
             t = ms / 1000.0
@@ -100,12 +112,21 @@ def main(out_dir):
             gx = 0.02 + 0.0015 * (ti - 20.0) + 0.6 * rate(imu, t)
             gy = -0.01 - 0.0010 * (tf - 20.0) + 0.4 * rate(far, t)
             gz = 0.005 + 0.0020 * (tp - 20.0)
+            bx = 0.002 + 5e-5 * (ti - 20.0) + 0.02 * rate(imu, t)
+            bz = -0.001 + 3e-5 * (tf - 20.0) + 0.01 * rate(far, t)
+            sf = 150.0 + 12.0 * (tp - 20.0)
             sums = [a + b for a, b in zip(sums, (gx, gy, gz))]
+            other_sums = [a + b for a, b in zip(other_sums, (bx, bz, sf))]
             noisy = [g + rng.gauss(0.0, 0.03) for g in (gx, gy, gz)]
             raw = register(ti + rng.gauss(0.0, 0.02))
-            lines.append(f"{ms},{noisy[0]:.5f},{noisy[1]:.5f},{noisy[2]:.5f},{raw},OK")
+            ax = bx + rng_other.gauss(0.0, 0.0005)
+            az = (1.0 + bz + rng_other.gauss(0.0, 0.0005)) * 9.80665
+            sf_logged = sf + rng_other.gauss(0.0, 5.0)
+            lines.append(f"{ms},{noisy[0]:.5f},{noisy[1]:.5f},{noisy[2]:.5f},{ax:.6f},{az:.6f},"
+                         f"{sf_logged:.2f},{raw},OK")
         # The burst's true mean drift, °/h, at the grid time import --step-s 60 gives it.
-        truth.append(f"{60 * burst}," + ",".join(f"{3600.0 * x / BURST_SAMPLES:.6f}" for x in sums))
+        truth.append(f"{60 * burst}," + ",".join(f"{3600.0 * x / BURST_SAMPLES:.6f}" for x in sums)
+                     + "," + ",".join(f"{x / BURST_SAMPLES:.8f}" for x in other_sums))
     with open(os.path.join(out_dir, "imu3.csv"), "w", newline="\n") as f:
         f.write("\n".join(lines) + "\n")
     with open(os.path.join(out_dir, "truth.csv"), "w", newline="\n") as f:

@@ -137,8 +137,8 @@ std::string fill_template(std::string text,
 constexpr std::string_view kStreamingC =
     R"(/* Streaming: samples every @DATA_DT@ s in, the features computed causally every @DT@ s.
  *   @P@_state s; @P@_reset(&s);   at power-on
- *   drift_dph = @P@_update(&s, time_s, @TEMP_ARGS@);
- *   gyro_compensated_dph = @P@_compensated_dph(&s, gyro_dph);
+ *   drift_@UNIT@ = @P@_update(&s, time_s, @TEMP_ARGS@);
+ *   @READING_COMP@ = @P@_compensated_@UNIT@(&s, @READING@);
  *   s.flags: what was wrong with the sample (@U@_FAULT_* bits, 0 for a good sample).
  * Temperature rates: causal Savitzky-Golay derivative over the last @W@ samples (fewer
  * during the first @W@); the taps for k + 1 samples start at k(k + 1)/2 in the table.
@@ -157,8 +157,8 @@ constexpr std::string_view kStreamingC =
 #ifndef @U@_TEMP_MAX_DEGC
 #define @U@_TEMP_MAX_DEGC (@TEMP_MAX@)
 #endif
-#ifndef @U@_GYRO_LIMIT_DPH
-#define @U@_GYRO_LIMIT_DPH (@GYRO_LIMIT@)
+#ifndef @U@_@LIMIT@
+#define @U@_@LIMIT@ (@GYRO_LIMIT@)
 #endif
 #ifndef @U@_BRIDGE_S
 #define @U@_BRIDGE_S (@BRIDGE@)
@@ -197,7 +197,7 @@ typedef struct {
   double previous_time_s;
   long refill;
   int has_good_drift;
-  @REAL@ good_drift_dph, last_drift_dph, last_comp_dph;
+  @REAL@ good_drift_@UNIT@, last_drift_@UNIT@, last_comp_@UNIT@;
   double good_drift_time_s;
   int seen_good[@U@_N_THERMOMETERS], out[@U@_N_THERMOMETERS], tracking[@U@_N_THERMOMETERS];
   @REAL@ good_degc[@U@_N_THERMOMETERS], good_rate[@U@_N_THERMOMETERS];
@@ -225,7 +225,7 @@ static inline void @P@_reset(@P@_state* s) {
   s->previous_time_s = 0.0;
   s->refill = 0;
   s->has_good_drift = 0;
-  s->good_drift_dph = s->good_drift_time_s = s->last_drift_dph = s->last_comp_dph = 0.0;
+  s->good_drift_@UNIT@ = s->good_drift_time_s = s->last_drift_@UNIT@ = s->last_comp_@UNIT@ = 0.0;
   s->data_started = 0;
   s->sum_count = 0;
   s->data_time_s = 0.0;
@@ -279,10 +279,10 @@ static inline @REAL@ @P@_substitute_(const @P@_state* s, int k, double time_s) {
 static inline @REAL@ @P@_degraded_(@P@_state* s, double time_s) {
   if (s->has_good_drift && time_s - s->good_drift_time_s <= @U@_HOLD_S) {
     s->flags |= @U@_FAULT_HELD;
-    return s->good_drift_dph;
+    return s->good_drift_@UNIT@;
   }
   s->flags |= @U@_FAULT_STOPPED;
-  return @P@_drift_mean_dph;
+  return @P@_drift_mean_@UNIT@;
 }
 
 /* One sample at the model's interval, @P@_dt_s: the fault policy, the rates, the model. */
@@ -305,7 +305,7 @@ static inline @REAL@ @P@_step_(@P@_state* s, double time_s,
       s->flags |= @U@_FAULT_RESTART;
     } else if (step < 0.5 * @P@_dt_s) {
       s->flags |= @U@_FAULT_OUT_OF_ORDER;
-      return s->last_drift_dph;
+      return s->last_drift_@UNIT@;
     } else if (step > 1.5 * @P@_dt_s) {
       s->flags |= @U@_FAULT_GAP;
       if (step - @P@_dt_s > @U@_BRIDGE_S)
@@ -402,22 +402,22 @@ static inline @REAL@ @P@_step_(@P@_state* s, double time_s,
   if (any_out || refilling) {
     drift = @P@_degraded_(s, t);
   } else {
-@FEATURES@    drift = @P@_predict_dph(f);
+@FEATURES@    drift = @P@_predict_@UNIT@(f);
     if (any_bridged) s->flags |= @U@_FAULT_BRIDGED;
 @GUARD@    if (isfinite(drift)) {
       s->has_good_drift = 1;
-      s->good_drift_dph = drift;
+      s->good_drift_@UNIT@ = drift;
       s->good_drift_time_s = t;
     } else {
       drift = @P@_degraded_(s, t);
     }
   }
   (void)rate;
-  s->last_drift_dph = drift;
+  s->last_drift_@UNIT@ = drift;
   return drift;
 }
 
-/* Predicted drift, deg/h, for the newest sample (every @P@_data_dt_s seconds since power-on):
+/* Predicted drift, @UNIT_TEXT@, for the newest sample (every @P@_data_dt_s seconds since power-on):
  * the thermometers averaged over blocks of @U@_BLOCK samples, the first sample a block of its
  * own, and the model run once per block (fogdrift docs/compensation.md, "Any sample rate"). */
 static inline @REAL@ @P@_update(@P@_state* s, double time_s, @TEMP_PARAMS@) {
@@ -438,7 +438,7 @@ static inline @REAL@ @P@_update(@P@_state* s, double time_s, @TEMP_PARAMS@) {
       s->flags |= @U@_FAULT_RESTART;
     } else if (gap < 0.5 * @P@_data_dt_s) {
       s->flags |= @U@_FAULT_OUT_OF_ORDER;
-      return s->last_drift_dph;
+      return s->last_drift_@UNIT@;
     }
   }
   first = !s->data_started;
@@ -446,7 +446,7 @@ static inline @REAL@ @P@_update(@P@_state* s, double time_s, @TEMP_PARAMS@) {
   s->data_time_s = t;
   for (k = 0; k < @U@_N_THERMOMETERS; ++k) s->sum[k] += raw[k];
   ++s->sum_count;
-  if (!first && s->sum_count < @U@_BLOCK) return s->last_drift_dph;
+  if (!first && s->sum_count < @U@_BLOCK) return s->last_drift_@UNIT@;
   c = (double)s->sum_count;
   for (k = 0; k < @U@_N_THERMOMETERS; ++k) {
     mean[k] = (@REAL@)(s->sum[k] / c);
@@ -456,13 +456,13 @@ static inline @REAL@ @P@_update(@P@_state* s, double time_s, @TEMP_PARAMS@) {
   return @P@_step_(s, t, mean);
 }
 
-/* gyro_dph minus the last update's drift; the last good value where the gyro reading is not a
- * number or beyond @U@_GYRO_LIMIT_DPH (then @U@_FAULT_GYRO_BAD is set in s->flags). */
-static inline @REAL@ @P@_compensated_dph(@P@_state* s, @REAL@ gyro_dph) {
-  if (isfinite(gyro_dph) && fabs@F@(gyro_dph) <= @U@_GYRO_LIMIT_DPH)
-    return s->last_comp_dph = gyro_dph - s->last_drift_dph;
+/* @READING@ minus the last update's drift; the last good value where the @READING_WORD@ is not a
+ * number or beyond @U@_@LIMIT@ (then @U@_FAULT_GYRO_BAD is set in s->flags). */
+static inline @REAL@ @P@_compensated_@UNIT@(@P@_state* s, @REAL@ @READING@) {
+  if (isfinite(@READING@) && fabs@F@(@READING@) <= @U@_@LIMIT@)
+    return s->last_comp_@UNIT@ = @READING@ - s->last_drift_@UNIT@;
   s->flags |= @U@_FAULT_GYRO_BAD;
-  return s->last_comp_dph;
+  return s->last_comp_@UNIT@;
 }
 
 )";
@@ -479,8 +479,8 @@ constexpr std::string_view kGuardC = R"(#if @U@_GUARD
         s->last_time_s = t;
         s->guard_started = 1;
       }
-      drift = s->weight == 0.0 ? @P@_drift_mean_dph
-                               : @P@_drift_mean_dph + s->weight * (drift - @P@_drift_mean_dph);
+      drift = s->weight == 0.0 ? @P@_drift_mean_@UNIT@
+                               : @P@_drift_mean_@UNIT@ + s->weight * (drift - @P@_drift_mean_@UNIT@);
     }
 #endif
 )";
@@ -548,6 +548,7 @@ std::string c_streaming_part(const CompensationModel& model, const std::string& 
   }
   const std::string args = fmt::format("{}", fmt::join(temp_columns, ", "));
   const bool guarded = !model.guard.empty();
+  const bool gyro = target_of(model.dataset.target_column).kind == TargetKind::gyro;
   return fill_template(
       std::string(kStreamingC),
       {{"@GUARD@", guarded ? std::string(kGuardC) : std::string()},
@@ -572,7 +573,9 @@ std::string c_streaming_part(const CompensationModel& model, const std::string& 
        {"@NTAPS@", std::to_string(taps.size())},
        {"@TEMP_MIN@", c_number(faults.temp_min_degc)},
        {"@TEMP_MAX@", c_number(faults.temp_max_degc)},
-       {"@GYRO_LIMIT@", c_number(faults.gyro_limit_dph)},
+       // A gyro's readings beyond the limit are faults; another target's only when not a number
+       // (stream_faults.hpp), unless the firmware defines a limit of its own.
+       {"@GYRO_LIMIT@", gyro ? c_number(faults.gyro_limit_dph) : std::string("HUGE_VAL")},
        {"@BRIDGE@", c_number(faults.bridge_s)},
        {"@HOLD@", c_number(faults.hold_s)},
        {"@STUCK@", c_number(faults.stuck_s)},
@@ -614,8 +617,8 @@ std::string to_c_header(const CompensationModel& model, const std::string& prefi
   h += fmt::format(
       "/* {prefix}.h: a fogdrift compensation model ({method}) for C99 firmware.\n"
       " * Written by fogdrift {version}; features '{spec}', trained on {rows} rows.\n"
-      " * drift_dph = {prefix}_predict_dph(features); gyro_compensated_dph = gyro_dph - "
-      "drift_dph.\n"
+      " * drift_@UNIT@ = {prefix}_predict_@UNIT@(features); @READING_COMP@ = @READING@ - "
+      "drift_@UNIT@.\n"
       " * Features, in order (units in the names):\n",
       fmt::arg("prefix", prefix), fmt::arg("method", to_string(p.method)),
       fmt::arg("version", p.fogdrift_version), fmt::arg("spec", model.dataset.features.to_string()),
@@ -646,9 +649,9 @@ std::string to_c_header(const CompensationModel& model, const std::string& prefi
                    c_array(model.x_scaler.mean));
   h += fmt::format("static const @REAL@ {}_feature_scale[{}] = {{{}}};\n", prefix, d,
                    c_array(model.x_scaler.scale));
-  h += fmt::format("static const @REAL@ {}_drift_mean_dph = {};\n", prefix,
+  h += fmt::format("static const @REAL@ {}_drift_mean_@UNIT@ = {};\n", prefix,
                    c_number(model.y_scaler.mean[0]));
-  h += fmt::format("static const @REAL@ {}_drift_scale_dph = {};\n\n", prefix,
+  h += fmt::format("static const @REAL@ {}_drift_scale_@UNIT@ = {};\n\n", prefix,
                    c_number(model.y_scaler.scale[0]));
 
   std::string body;  // computes `z` (standardised prediction) from `x` (standardised features)
@@ -722,22 +725,35 @@ std::string to_c_header(const CompensationModel& model, const std::string& prefi
         prefix, upper);
   }
   h += fmt::format(
-      "/* Predicted drift, deg/h, for one row of features in their own units. */\n"
-      "static inline @REAL@ {0}_predict_dph(const @REAL@ features[{1}_N_FEATURES]) {{\n"
+      "/* Predicted drift, @UNIT_TEXT@, for one row of features in their own units. */\n"
+      "static inline @REAL@ {0}_predict_@UNIT@(const @REAL@ features[{1}_N_FEATURES]) {{\n"
       "  @REAL@ x[{1}_N_FEATURES];\n"
       "  int j;\n"
       "  for (j = 0; j < {1}_N_FEATURES; ++j)\n"
       "    x[j] = (features[j] - {0}_feature_mean[j]) / {0}_feature_scale[j];\n"
       "  {{\n{2}"
-      "  return z * {0}_drift_scale_dph + {0}_drift_mean_dph;\n"
+      "  return z * {0}_drift_scale_@UNIT@ + {0}_drift_mean_@UNIT@;\n"
       "  }}\n"
       "}}\n\n",
       prefix, upper, body);
   h += c_guard_part(model, prefix, upper);
   if (stream_dt_s > 0) h += c_streaming_part(model, prefix, upper, stream_dt_s, faults, single);
   h += fmt::format("#endif /* {}_H */\n", upper);
-  // The arithmetic type and <math.h>'s functions for it (expf, sqrtf, tanhf, fabsf in float).
-  return fill_template(std::move(h), {{"@REAL@", prefix + "_real"}, {"@F@", single ? "f" : ""}});
+  // The arithmetic type and <math.h>'s functions for it (expf, sqrtf, tanhf, fabsf in float);
+  // the names of the target's drift and reading, in its unit (target.hpp).
+  const Target target = target_of(model.dataset.target_column);
+  const bool gyro = target.kind == TargetKind::gyro;
+  const std::string unit(target.unit());
+  return fill_template(std::move(h), {{"@REAL@", prefix + "_real"},
+                                      {"@F@", single ? "f" : ""},
+                                      {"@UNIT@", unit},
+                                      {"@UNIT_TEXT@", gyro ? std::string("deg/h") : unit},
+                                      {"@READING_COMP@", gyro ? std::string("gyro_compensated_dph")
+                                                              : target.compensated_column()},
+                                      {"@READING_WORD@", gyro ? "gyro reading" : "reading"},
+                                      {"@READING@", gyro ? std::string("gyro_dph") : target.column},
+                                      {"@LIMIT@", gyro ? std::string("GYRO_LIMIT_DPH")
+                                                       : "READING_LIMIT_" + c_macro_prefix(unit)}});
 }
 
 }  // namespace fogdrift

@@ -12,6 +12,7 @@
 #include "fogdrift/atomic_file.hpp"
 #include "fogdrift/enum_names.hpp"
 #include "fogdrift/error.hpp"
+#include "fogdrift/target.hpp"
 #include "fogdrift/text_file.hpp"
 
 namespace fs = std::filesystem;
@@ -124,7 +125,7 @@ Campaign parse_manifest(const std::string& text, const std::string& file, const 
     if (!r.is_object()) fail(file, path_i, "must be an object");
     check_keys(r,
                {"file", "scenario", "role", "repetition", "initial_temp_degc", "true_azimuth_deg",
-                "input_rate_dph", "notes"},
+                "input_rate_dph", "references", "notes"},
                file, path_i);
     CampaignEntry e;
     e.file = string_field(r, "file", file, path_i);
@@ -172,6 +173,19 @@ Campaign parse_manifest(const std::string& text, const std::string& file, const 
     }
     if (r.contains("input_rate_dph")) {
       e.input_rate_dph = number_in(r, "input_rate_dph", -1e7, 1e7, false, file, path_i);
+    }
+    if (r.contains("references")) {
+      const json& refs = r["references"];
+      const std::string at = path_i + ".references";
+      if (!refs.is_object()) fail(file, at, "must be an object of target column: value");
+      for (const auto& [column, value] : refs.items()) {
+        if (!is_target_column(column))
+          fail(file, at,
+               fmt::format("\"{}\" is not a target column (gyro_NAME_dph, accel_NAME_g, "
+                           "sf_NAME_ppm; docs/logs.md, \"Other targets\")",
+                           column));
+        e.references[column] = number_in(refs, column, -1e7, 1e7, false, file, at);
+      }
     }
     if (r.contains("notes")) e.notes_json = r["notes"].dump();
     const fs::path rec_path = c.dir / e.file;
@@ -234,6 +248,10 @@ std::string manifest_json(const Campaign& c) {
     r["initial_temp_degc"] = e.initial_temp_degc;
     if (e.true_azimuth_deg) r["true_azimuth_deg"] = *e.true_azimuth_deg;
     if (e.input_rate_dph) r["input_rate_dph"] = *e.input_rate_dph;
+    if (!e.references.empty()) {
+      r["references"] = ojson::object();
+      for (const auto& [column, value] : e.references) r["references"][column] = value;
+    }
     if (!e.notes_json.empty()) r["notes"] = ojson::parse(e.notes_json);
     list.push_back(std::move(r));
   }

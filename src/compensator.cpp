@@ -13,6 +13,9 @@ StreamingCompensator::StreamingCompensator(const CompensationModel& model, doubl
       data_dt_s_(dt_s),
       dt_s_(static_cast<double>(k_) * dt_s),
       faults_(options.faults),
+      reading_limit_(target_of(model.dataset.target_column).kind == TargetKind::gyro
+                         ? faults_.gyro_limit_dph
+                         : std::numeric_limits<double>::infinity()),
       nt_(model.dataset.features.thermometer_count()),
       rates_(nt_, signal::CausalDifferentiator(model.dataset.preprocessing.rates, dt_s_)),
       columns_(model.dataset.features.columns()),
@@ -135,7 +138,7 @@ double StreamingCompensator::degraded(double time_s, std::uint32_t& flags) const
 StreamOutput StreamingCompensator::finish(const Sample& s, double drift_dph,
                                           std::uint32_t flags) noexcept {
   StreamOutput out{drift_dph, last_comp_dph_, flags};
-  if (std::isfinite(s.gyro_dph) && std::abs(s.gyro_dph) <= faults_.gyro_limit_dph)
+  if (std::isfinite(s.gyro_dph) && std::abs(s.gyro_dph) <= reading_limit_)
     out.gyro_comp_dph = last_comp_dph_ = s.gyro_dph - drift_dph;
   else
     out.flags |= fault::gyro_bad;

@@ -43,34 +43,6 @@ Dataset Dataset::select_groups(std::span<const std::size_t> group_indices) const
   return out;
 }
 
-bool is_target_column(std::string_view name) {
-  return name == "gyro_dph" ||
-         (is_channel_column(name) && name.starts_with("gyro_") && name.ends_with("_dph"));
-}
-
-std::string axis_name(std::string_view target_column) {
-  if (target_column == "gyro_dph") return "gyro";
-  return std::string(target_column.substr(5, target_column.size() - 9));  // gyro_NAME_dph
-}
-
-std::vector<double> target_values(const Recording& recording, const std::string& column) {
-  if (column == "gyro_dph") return recording.gyro_dph;
-  if (!recording.has_column(column) || known_column(recording, column)) {
-    throw InputError(recording.source, 1, 0,
-                     fmt::format("has no column '{}', the gyro the model compensates (import it "
-                                 "with --map {}=COLUMN)",
-                                 column, column));
-  }
-  return recording.numeric_column(column);
-}
-
-Recording with_target(const Recording& recording, const std::string& column) {
-  if (column == "gyro_dph") return recording;
-  Recording out = recording;
-  out.gyro_dph = target_values(recording, column);
-  return out;
-}
-
 std::vector<double> drift_target(const RecordingInput& input, const DatasetOptions& options,
                                  GroupInfo& info, std::vector<std::string>& warnings) {
   const Recording& rec = input.recording;
@@ -86,11 +58,16 @@ std::vector<double> drift_target(const RecordingInput& input, const DatasetOptio
     }
   }
   const std::size_t n = gyro.size();
+  const Target target = target_of(options.target_column);
   std::vector<double> input_rate(n, 0.0);
-  if (input.input_rate_dph) {
+  const auto reference = input.references.find(target.column);
+  if (reference != input.references.end()) {
+    info.target = "reference";
+    std::fill(input_rate.begin(), input_rate.end(), reference->second);
+  } else if (target.kind == TargetKind::gyro && input.input_rate_dph) {
     info.target = "input_rate";
     std::fill(input_rate.begin(), input_rate.end(), *input.input_rate_dph);
-  } else if (input.latitude_deg && input.true_azimuth_deg) {
+  } else if (target.kind == TargetKind::gyro && input.latitude_deg && input.true_azimuth_deg) {
     if (options.target_column != "gyro_dph")
       throw InputError(rec.source, 0, 0,
                        fmt::format("the Earth rate a true azimuth gives is the FOG axis's "
@@ -108,11 +85,11 @@ std::vector<double> drift_target(const RecordingInput& input, const DatasetOptio
     const double mean = std::accumulate(gyro.begin(), gyro.end(), 0.0) / static_cast<double>(n);
     std::fill(input_rate.begin(), input_rate.end(), mean);
     warnings.push_back(fmt::format(
-        "{}: no input rate and no true azimuth are known, so the target is the gyro minus its "
-        "mean ({:.6g} °/h); the turn-on bias is lost",
-        info.file, mean));
+        "{}: no reference for {} is known, so the target is the {} less its mean ({:.6g} {}); "
+        "the turn-on bias is lost (give it with {})",
+        info.file, target.column, target.what(), mean, target.symbol(), target.reference_hint()));
   }
-  info.input_rate_dph =
+  info.reference =
       std::accumulate(input_rate.begin(), input_rate.end(), 0.0) / static_cast<double>(n);
   for (std::size_t i = 0; i < n; ++i) gyro[i] -= input_rate[i];
   return gyro;
@@ -160,6 +137,7 @@ RecordingInput recording_input(const Campaign& campaign, const CampaignEntry& en
   input.info.repetition = entry.repetition;
   input.info.initial_temp_degc = entry.initial_temp_degc;
   input.input_rate_dph = entry.input_rate_dph;
+  input.references = entry.references;
   input.latitude_deg = campaign.latitude_deg;
   input.true_azimuth_deg = entry.true_azimuth_deg;
   return input;

@@ -153,7 +153,7 @@ HeldOutReport held_out_report(const Dataset& data, std::span<const tune::Fold> f
       r.warnings.push_back(fmt::format(
           "no temperature explains the drift: no straight line in a temperature beats the mean "
           "by {1:.0f} % (best: {0}, RMSE {2:.4f} against {3:.4f}); the data show no temperature "
-          "signal. Check that the gyro column is the axis the thermometers drive and that the "
+          "signal. Check that the target column is the channel the thermometers drive and that the "
           "calibration spans a temperature change",
           best_line->input, 100 * kSignalShare, best_line->rmse, mean.rmse));
   } else if (r.expected_startup_share < kStartupShare) {

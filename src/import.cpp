@@ -136,9 +136,10 @@ LinearConversion parse_unit(std::string_view column, std::string_view unit) {
         option, fmt::format("unknown unit '{}' for {} (accepted: {})", unit, column, accepted));
   };
   if (!is_target(column))
-    throw OptionError(option, fmt::format("'{}' is not a fogdrift column, nor a channel named "
-                                          "gyro_NAME_dph, temp_NAME_degc or accel_NAME_g",
-                                          column));
+    throw OptionError(option,
+                      fmt::format("'{}' is not a fogdrift column, nor a channel named "
+                                  "gyro_NAME_dph, temp_NAME_degc, accel_NAME_g or sf_NAME_ppm",
+                                  column));
   // Raw counts and signed registers, for any column: value = raw·SCALE + OFFSET in the column's
   // own unit (°/h, °C, g, °, s).
   if (starts_with(unit, "counts:")) {
@@ -210,6 +211,12 @@ LinearConversion parse_unit(std::string_view column, std::string_view unit) {
     if (unit == "m/s2") return {1.0 / 9.80665, 0.0};
     return unknown("g, mg, m/s2");
   }
+  if (starts_with(column, "sf_")) {
+    if (unit == "ppm") return {1.0, 0.0};
+    if (unit == "%") return {1e4, 0.0};
+    if (unit == "ppb") return {1e-3, 0.0};
+    return unknown("ppm, %, ppb");
+  }
   if (column == "table_deg") {
     if (unit == "deg") return {1.0, 0.0};
     if (unit == "rad") return {kRadToDeg, 0.0};
@@ -225,13 +232,14 @@ std::vector<Recording> import_recordings(const std::filesystem::path& path,
   }
   for (const auto& [target, source] : options.columns) {
     if (!is_target(target)) {
-      throw OptionError(fmt::format("--map {}={}", target, source),
-                        fmt::format("'{}' is not a fogdrift column (known: time_s, gyro_dph, "
-                                    "temp_fog_degc, temp_acc1_degc, temp_acc2_degc, accel_x_g, "
-                                    "accel_y_g, table_deg, chamber_degc), nor a further channel "
-                                    "(gyro_NAME_dph, temp_NAME_degc, accel_NAME_g: lower case, "
-                                    "digits and _)",
-                                    target));
+      throw OptionError(
+          fmt::format("--map {}={}", target, source),
+          fmt::format("'{}' is not a fogdrift column (known: time_s, gyro_dph, "
+                      "temp_fog_degc, temp_acc1_degc, temp_acc2_degc, accel_x_g, "
+                      "accel_y_g, table_deg, chamber_degc), nor a further channel "
+                      "(gyro_NAME_dph, temp_NAME_degc, accel_NAME_g, sf_NAME_ppm: lower case, "
+                      "digits and _)",
+                      target));
     }
   }
   for (const auto& [target, conversion] : options.conversions) {
@@ -405,7 +413,8 @@ std::vector<Recording> import_recordings(const std::filesystem::path& path,
   for (const auto& name : optional_columns())  // the second and third thermometers among them
     if (auto c = column_for(name)) *known_column(rec, name, true) = convert(name, *c);
 
-  // Further channels (another gyro axis, thermometer or accelerometer): numbers in their units.
+  // Further channels (another gyro axis, thermometer, accelerometer or scale-factor channel):
+  // numbers in their units.
   for (const auto& [target, source] : options.columns) {
     if (!is_channel_column(target)) continue;
     ExtraColumn channel{target, {}};

@@ -46,9 +46,14 @@ namespace {
 // A batch prediction never writes a drift that is not finite (docs/reliability.md, "Finite
 // values"): readings inside the reader's ranges and a model as fogdrift writes it cannot give one,
 // so an edited model (--allow-edited) or data that bypassed the reader did.
+/// The model file's name for the target's scaler: drift_ and the target's unit.
+std::string drift_scaler_name(const std::string& target_column) {
+  return fmt::format("drift_{}", target_of(target_column).unit());
+}
+
 std::string non_finite_drift(double drift_dph, double time_s) {
   return fmt::format(
-      "at time_s {} the model gives a drift of {} °/h, not a finite number: its "
+      "at time_s {} the model gives a drift of {}, not a finite number: its "
       "coefficients or these readings are beyond what it can compute with",
       time_s, drift_dph);
 }
@@ -218,8 +223,10 @@ std::string to_json(const CompensationModel& m) {
                  {"extension", std::string(signal::to_string(d.denoise.extension))}};
   // Another axis names its column; a gyro_dph model's file stays as it was (its checksum too).
   if (d.target_column != "gyro_dph") j["target"]["column"] = d.target_column;
+  // The target's scaler is named by its unit: drift_dph for a gyro, drift_g, drift_ppm.
   j["scalers"] = {{"features", {{"mean", m.x_scaler.mean}, {"scale", m.x_scaler.scale}}},
-                  {"drift_dph", {{"mean", m.y_scaler.mean[0]}, {"scale", m.y_scaler.scale[0]}}}};
+                  {drift_scaler_name(d.target_column),
+                   {{"mean", m.y_scaler.mean[0]}, {"scale", m.y_scaler.scale[0]}}}};
   j["regressor"] = regressor_json(m.regressor);
   if (!m.guard.empty())
     j["guard"] = {{"full_at", m.guard.settings.full_at},
@@ -323,17 +330,19 @@ CompensationModel compensation_model_from_json(const std::string& text, const st
     if (t.contains("column")) {
       m.dataset.target_column = t.at("column").get<std::string>();
       if (!is_target_column(m.dataset.target_column))
-        fail("target.column", fmt::format("'{}' is not gyro_dph or gyro_NAME_dph",
-                                          csv::excerpt(m.dataset.target_column)));
+        fail("target.column",
+             fmt::format("'{}' is not a target column (gyro_NAME_dph, accel_NAME_g, sf_NAME_ppm)",
+                         csv::excerpt(m.dataset.target_column)));
     }
     where = "scalers";
     const ojson& s = doc.at("scalers");
     m.x_scaler.names = m.feature_names;
     m.x_scaler.mean = s.at("features").at("mean").get<std::vector<double>>();
     m.x_scaler.scale = s.at("features").at("scale").get<std::vector<double>>();
-    m.y_scaler.names = {"drift_dph"};
-    m.y_scaler.mean = {s.at("drift_dph").at("mean").get<double>()};
-    m.y_scaler.scale = {s.at("drift_dph").at("scale").get<double>()};
+    const std::string drift = drift_scaler_name(m.dataset.target_column);
+    m.y_scaler.names = {drift};
+    m.y_scaler.mean = {s.at(drift).at("mean").get<double>()};
+    m.y_scaler.scale = {s.at(drift).at("scale").get<double>()};
     where = "regressor";
     const ojson& r = doc.at("regressor");
     const std::string type = r.at("type").get<std::string>();

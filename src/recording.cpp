@@ -108,7 +108,8 @@ bool is_channel_column(std::string_view name) {
     return name.size() > prefix.size() + suffix.size() && name.starts_with(prefix) &&
            name.ends_with(suffix);
   };
-  return between("gyro_", "_dph") || between("temp_", "_degc") || between("accel_", "_g");
+  return between("gyro_", "_dph") || between("temp_", "_degc") || between("accel_", "_g") ||
+         between("sf_", "_ppm");
 }
 
 std::optional<std::vector<double>> numbers_of(const ExtraColumn& column) {

@@ -33,6 +33,7 @@ TEST(Campaign, ManifestRoundTrip) {
   b.initial_temp_degc = 17.25;
   b.true_azimuth_deg = 359.999;
   b.input_rate_dph = 1.5;
+  b.references = {{"accel_z_g", 1.0}, {"sf_fog_ppm", -12.5}};
   c.recordings = {a, b};
   write_manifest(dir.path(), c);
 
@@ -45,6 +46,8 @@ TEST(Campaign, ManifestRoundTrip) {
   EXPECT_EQ(back.recordings[1].role, Role::test);
   EXPECT_EQ(*back.recordings[1].true_azimuth_deg, 359.999);
   EXPECT_EQ(*back.recordings[1].input_rate_dph, 1.5);
+  EXPECT_TRUE(back.recordings[0].references.empty());
+  EXPECT_EQ(back.recordings[1].references, b.references);
   EXPECT_EQ(back.path_of(back.recordings[1]), dir / "b.csv");
   EXPECT_EQ(manifest_json(back), test::read_file(dir / "campaign.json"));
   // The manifest path itself is accepted as well as the folder.
@@ -64,7 +67,15 @@ TEST(Campaign, AManifestInMemoryIsCheckedAsAFileButNeedsNoRecordingFiles) {
            {R"({"recordings":[]})", "campaign: format: required field is missing"},
            {R"({"format":"fogdrift-campaign/1","recordings":[{"file":"a.csv"}]})",
             "recordings[0].scenario: required field is missing"},
-           {"{", "campaign:1:"}}) {
+           {"{", "campaign:1:"},
+           {R"({"format":"fogdrift-campaign/1","recordings":[{"file":"a.csv","scenario":)"
+            R"("calibration","role":"train","initial_temp_degc":25,"references":)"
+            R"({"temp_fog_degc":0}}]})",
+            "recordings[0].references: \"temp_fog_degc\" is not a target column"},
+           {R"({"format":"fogdrift-campaign/1","recordings":[{"file":"a.csv","scenario":)"
+            R"("calibration","role":"train","initial_temp_degc":25,"references":)"
+            R"({"accel_x_g":"up"}}]})",
+            "recordings[0].references.accel_x_g"}}) {
     try {
       campaign_from_json(bad, "campaign");
       FAIL() << bad;

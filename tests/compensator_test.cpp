@@ -212,6 +212,48 @@ int main(void) {
   EXPECT_THROW(to_c_header(set, "2imu", 1.0), OptionError);
 }
 
+// Another target (target.hpp, docs/logs.md "Other targets"): an accelerometer's reading is a fault
+// only when it is not a number, in the streaming compensator and in the header, whose names are
+// in g and whose range check the firmware may switch on.
+TEST(StreamingCompensator, AnAccelerometerReadingIsCheckedForANumber) {
+  CompensationModel model = causal_model({-20, 30}, 2, Method::poly);
+  model.dataset.target_column = "accel_x_g";
+  StreamingCompensator s(model, 1.0);
+  const double huge = 1e9;  // beyond any gyro's limit, and not a number to refuse here
+  EXPECT_EQ(s.update({0.0, huge, 20, 20, 20}).flags & fault::gyro_bad, 0u);
+  EXPECT_NE(s.update({1.0, std::nan(""), 20, 20, 20}).flags & fault::gyro_bad, 0u);
+  const std::string h = to_c_header(model, "acc", 1.0);
+  EXPECT_NE(h.find("static inline acc_real acc_compensated_g(acc_state* s, acc_real accel_x_g)"),
+            std::string::npos);
+  EXPECT_NE(h.find("static inline acc_real acc_predict_g("), std::string::npos);
+  EXPECT_NE(h.find("#define ACC_READING_LIMIT_G (HUGE_VAL)"), std::string::npos);
+  EXPECT_EQ(h.find("_dph"), std::string::npos) << "a name in °/h in an accelerometer's header";
+  test::TempDir dir;
+  test::write_file(dir / "acc.h", h);
+  // The same reading with the header's default and with a range the firmware sets.
+  for (const std::string& define :
+       {std::string(), std::string("#define ACC_READING_LIMIT_G 8.0\n")}) {
+    test::write_file(dir / "driver.c", define + R"(#include <stdio.h>
+#include "acc.h"
+int main(void) {
+  acc_state s;
+  acc_reset(&s);
+  acc_update(&s, 0.0, 20.0, 20.0, 20.0);
+  acc_compensated_g(&s, 1e9);
+  printf("%u ", s.flags & ACC_FAULT_GYRO_BAD ? 1u : 0u);
+  acc_compensated_g(&s, 0.5);
+  printf("%u\n", s.flags & ACC_FAULT_GYRO_BAD ? 1u : 0u);
+  return 0;
+}
+)");
+    std::istringstream out(test::compile_and_run_c(dir, ""));
+    unsigned huge_bad = 2, small_bad = 2;
+    out >> huge_bad >> small_bad;
+    EXPECT_EQ(huge_bad, define.empty() ? 0u : 1u) << define;
+    EXPECT_EQ(small_bad, define.empty() ? 0u : 1u) << "the flag stays until the next update";
+  }
+}
+
 // A fourth thermometer (docs/logs.md, "More thermometers"): a case heater cycling with its own
 // phase in every recording, read by temp_case_degc and by none of the three, and a drift term in
 // the case's difference from the coil. `add_case` gives a recording that column and that term.

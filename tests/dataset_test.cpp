@@ -88,7 +88,7 @@ TEST(Dataset, TargetFollowsTheTrueDrift) {
   const double earth = kEarthRateDph * std::cos(30.0 * 3.14159265358979323846 / 180.0);
   for (std::size_t g = 0; g < d.groups.size(); ++g) {
     EXPECT_EQ(d.groups[g].target, "earth_rate");
-    EXPECT_NEAR(d.groups[g].input_rate_dph, earth, 1e-9);
+    EXPECT_NEAR(d.groups[g].reference, earth, 1e-9);
     const auto truth = signal::block_average(c.recordings[g].numeric_column("drift_true_dph"), 10);
     const auto raw = signal::block_average(c.recordings[g].gyro_dph, 10);
     std::vector<double> diff, raw_diff;
@@ -155,8 +155,11 @@ TEST(Dataset, UnknownInputFallsBackToTheMeanWithAWarning) {
   inputs.resize(1);
   const Dataset d = build_dataset(inputs);
   ASSERT_EQ(d.warnings.size(), 1u);
-  EXPECT_NE(d.warnings[0].find(inputs[0].info.file + ": no input rate and no true azimuth"),
-            std::string::npos);
+  EXPECT_NE(d.warnings[0].find(inputs[0].info.file +
+                               ": no reference for gyro_dph is known, so the target is the gyro "
+                               "less its mean"),
+            std::string::npos)
+      << d.warnings[0];
   EXPECT_EQ(d.groups[0].target, "mean");
   const double mean_y = std::accumulate(d.y.begin(), d.y.end(), 0.0) / double(d.rows);
   EXPECT_NEAR(mean_y, 0.0, 0.01);  // block means of a zero-mean series, minus the dropped tail
@@ -164,7 +167,38 @@ TEST(Dataset, UnknownInputFallsBackToTheMeanWithAWarning) {
   const Dataset e = build_dataset(inputs);
   EXPECT_TRUE(e.warnings.empty());
   EXPECT_EQ(e.groups[0].target, "input_rate");
-  EXPECT_EQ(e.groups[0].input_rate_dph, 5.0);
+  EXPECT_EQ(e.groups[0].reference, 5.0);
+  inputs[0].references["gyro_dph"] = 7.0;  // a reference for the column comes first
+  EXPECT_EQ(build_dataset(inputs).groups[0].reference, 7.0);
+}
+
+TEST(Dataset, AnAccelerometerTargetTakesItsOwnReference) {
+  const auto& c = small_campaign();
+  auto inputs = inputs_of(c, false);
+  inputs.resize(1);
+  inputs[0].input_rate_dph = 5.0;  // a gyro's input rate is not an accelerometer's reference
+  DatasetOptions options;
+  options.target_column = "accel_x_g";
+  const Dataset d = build_dataset(inputs, options);
+  ASSERT_EQ(d.warnings.size(), 1u);
+  EXPECT_NE(d.warnings[0].find("no reference for accel_x_g is known, so the target is the "
+                               "accelerometer less its mean"),
+            std::string::npos)
+      << d.warnings[0];
+  EXPECT_NE(d.warnings[0].find("g); the turn-on bias is lost (give it with fogdrift campaign "
+                               "--reference accel_x_g=VALUE (g))"),
+            std::string::npos)
+      << d.warnings[0];
+  EXPECT_EQ(d.groups[0].target, "mean");
+  // Level, the axis senses no gravity: the target is the accelerometer's bias and its drift.
+  inputs[0].references["accel_x_g"] = 0.0;
+  const Dataset e = build_dataset(inputs, options);
+  EXPECT_TRUE(e.warnings.empty());
+  EXPECT_EQ(e.groups[0].target, "reference");
+  const auto& accel = *inputs[0].recording.accel_x_g;
+  const double mean_accel = std::accumulate(accel.begin(), accel.end(), 0.0) / double(accel.size());
+  const double mean_y = std::accumulate(e.y.begin(), e.y.end(), 0.0) / double(e.rows);
+  EXPECT_NEAR(mean_y, mean_accel, 1e-3 * std::abs(mean_accel) + 1e-6);
 }
 
 TEST(Dataset, FromACampaignFolderByRole) {

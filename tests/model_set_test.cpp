@@ -117,26 +117,5 @@ TEST(ModelSet, ChoosingOneAxisNamesTheAxesThereAre) {
   EXPECT_THROW(choose_model(set, "gyro_q_dph"), OptionError);
 }
 
-TEST(ModelSet, TargetColumnsAreGyroAxesByName) {
-  for (const char* good : {"gyro_dph", "gyro_y_dph", "gyro_2_dph", "gyro_left_x_dph"})
-    EXPECT_TRUE(is_target_column(good)) << good;
-  for (const char* bad : {"gyro__dph", "gyro_Y_dph", "accel_x_g", "gyro_y", "temp_fog_degc", ""})
-    EXPECT_FALSE(is_target_column(bad)) << bad;
-}
-
-TEST(ModelSet, AnotherAxisIsTakenFromItsColumn) {
-  Recording r;
-  r.source = "r.csv";
-  r.time_s = {0, 1};
-  r.gyro_dph = {1, 2};
-  r.temp_fog_degc = {20, 20};
-  r.extra.push_back({"gyro_y_dph", {"3", "4.5"}});
-  EXPECT_EQ(with_target(r, "gyro_y_dph").gyro_dph, (std::vector<double>{3, 4.5}));
-  EXPECT_EQ(with_target(r, "gyro_dph").gyro_dph, r.gyro_dph);
-  EXPECT_THROW(with_target(r, "gyro_z_dph"), InputError);
-  r.extra[0].cells[1] = "n/a";
-  EXPECT_THROW(with_target(r, "gyro_y_dph"), InputError);
-}
-
 }  // namespace
 }  // namespace fogdrift

@@ -29,6 +29,7 @@ struct CampaignArgs {
   std::string test = "last";
   std::string repetitions;
   std::optional<double> input_rate_dph;
+  std::vector<std::string> references;
   std::optional<double> latitude_deg;
   std::optional<double> true_azimuth_deg;
   double cut_gap_s = 0;
@@ -67,6 +68,8 @@ void run(const CampaignArgs& a) {
                       "horizontal and pointing east or west, or a MEMS gyro whose noise hides the "
                       "Earth rate), or --latitude-deg L --true-azimuth-deg A (the Earth rate's "
                       "projection on a horizontal axis)");
+
+  const std::map<std::string, double> references = parse_references(a.references, "--reference");
 
   CutOptions cut_options;
   cut_options.gap_s = a.cut_gap_s;
@@ -137,6 +140,13 @@ void run(const CampaignArgs& a) {
                                    "its unit (--unit at import)",
                                    e.initial_temp_degc));
     e.input_rate_dph = a.input_rate_dph;
+    for (const auto& [column, value] : references)
+      if (!pieces[k].has_column(column))
+        throw OptionError("--reference", fmt::format("{} has no column '{}' to give a reference "
+                                                     "for (its columns are as fogdrift import "
+                                                     "wrote them)",
+                                                     pieces[k].source, column));
+    e.references = references;
     e.true_azimuth_deg = a.true_azimuth_deg;
     c.recordings.push_back(std::move(e));
   }
@@ -202,6 +212,12 @@ void add_campaign(CLI::App& app) {
   cmd->add_option("--input-rate-dph", a->input_rate_dph,
                   "The rate the gyro sensed, °/h, the same in every recording (0 for an axis that "
                   "sees no rotation)");
+  cmd->add_option("--reference", a->references,
+                  "COLUMN=VALUE, repeated: what a target channel sensed, in its unit, the same "
+                  "in every recording: an accelerometer's share of gravity (accel_x_g=0 for a "
+                  "level axis, accel_z_g=1 pointing up), a scale-factor channel's nominal "
+                  "(sf_fog_ppm=0), a gyro axis's own input rate (docs/logs.md, \"Other "
+                  "targets\"); without one, train subtracts each recording's mean and says so");
   cmd->add_option("--latitude-deg", a->latitude_deg, "Site latitude, degrees (with azimuth)")
       ->check(CLI::Range(-90.0, 90.0));
   cmd->add_option("--true-azimuth-deg", a->true_azimuth_deg,

@@ -5,6 +5,7 @@
 #include <CLI/CLI.hpp>
 
 #include <cerrno>
+#include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <fstream>
@@ -15,6 +16,7 @@
 #include "fogdrift/csv.hpp"
 #include "fogdrift/error.hpp"
 #include "fogdrift/model_set.hpp"
+#include "fogdrift/target.hpp"
 
 namespace fogdrift::app {
 
@@ -57,9 +59,27 @@ ModelSet axes_to_run(const ModelSet& set, const std::optional<std::string>& targ
 
 std::vector<std::string> compensated_columns(const std::string& target) {
   if (target == "gyro_dph") return {"drift_dph", "gyro_comp_dph", "novelty", "guard_weight"};
-  const std::string name = axis_name(target);
-  return {"drift_" + name + "_dph", "gyro_" + name + "_comp_dph", "novelty_" + name,
-          "guard_weight_" + name};
+  const Target t = target_of(target);
+  return {t.drift_column(), t.compensated_column(), "novelty_" + t.axis, "guard_weight_" + t.axis};
+}
+
+std::map<std::string, double> parse_references(const std::vector<std::string>& given,
+                                               const std::string& option) {
+  std::map<std::string, double> out;
+  for (const std::string& item : given) {
+    const auto eq = item.find('=');
+    const std::string column = item.substr(0, eq);
+    const Target target = target_of(column, option);
+    const auto value =
+        eq == std::string::npos ? std::nullopt : csv::parse_number(item.substr(eq + 1));
+    if (!value || std::abs(*value) > 1e7)
+      throw OptionError(option, fmt::format("'{}' is not COLUMN=VALUE with VALUE a number of "
+                                            "magnitude at most 1e7, {} (e.g. {}=0)",
+                                            item, target.symbol(), column));
+    if (!out.emplace(column, *value).second)
+      throw OptionError(option, fmt::format("{} is given twice", column));
+  }
+  return out;
 }
 
 std::filesystem::path piece_path(const std::filesystem::path& target, std::size_t index,

@@ -32,9 +32,15 @@ CompensationModel load_one_model(const std::string& path, const ModelLoadOptions
 ModelSet axes_to_run(const ModelSet& set, const std::optional<std::string>& target);
 
 /// The columns compensate and stream add for one axis: drift_dph, gyro_comp_dph, novelty and
-/// guard_weight for gyro_dph; drift_NAME_dph, gyro_NAME_comp_dph, novelty_NAME and
-/// guard_weight_NAME for gyro_NAME_dph.
+/// guard_weight for gyro_dph; Target::drift_column, Target::compensated_column, novelty_AXIS
+/// and guard_weight_AXIS for another (drift_y_dph, gyro_y_comp_dph, novelty_y, ... for
+/// gyro_y_dph; drift_accel_x_g, accel_x_comp_g, novelty_accel_x, ... for accel_x_g).
 std::vector<std::string> compensated_columns(const std::string& target);
+
+/// --reference COLUMN=VALUE, repeated: what each target channel sensed, in its unit
+/// (CampaignEntry::references). Throws OptionError(option) naming the item and the rule.
+std::map<std::string, double> parse_references(const std::vector<std::string>& given,
+                                               const std::string& option);
 
 /// The output path of piece `index` of `count` a command splits its result into: out.csv itself
 /// for one piece, else out_1.csv, out_2.csv, ...

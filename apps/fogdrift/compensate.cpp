@@ -42,12 +42,16 @@ struct Axis {
 nlohmann::ordered_json axis_json(const CompensateArgs& a, const Axis& x) {
   nlohmann::ordered_json j;
   const std::vector<double>& drift = x.prediction.drift_dph;
+  // Keys in the target's unit: gyro_std_dph, accel_std_g, sf_std_ppm (target.hpp).
+  const std::string& column = x.model->dataset.target_column;
+  const std::string kind = column.substr(0, column.find('_'));
+  const std::string_view unit = target_of(column).unit();
   j["method"] = to_string(x.model->provenance.method);
   j["samples"] = drift.size();
-  j["gyro_std_dph"] = x.metrics.std_before_dph;
-  j["gyro_comp_std_dph"] = x.metrics.std_after_dph;
-  j["drift_first_dph"] = drift.front();
-  j["drift_last_dph"] = drift.back();
+  j[fmt::format("{}_std_{}", kind, unit)] = x.metrics.std_before_dph;
+  j[fmt::format("{}_comp_std_{}", kind, unit)] = x.metrics.std_after_dph;
+  j[fmt::format("drift_first_{}", unit)] = drift.front();
+  j[fmt::format("drift_last_{}", unit)] = drift.back();
   j["guard"] = !a.no_guard;
   j["novelty_outside_share"] =
       static_cast<double>(x.novelty.outside) / static_cast<double>(x.novelty.samples);
@@ -132,17 +136,18 @@ void run(const CompensateArgs& a) {
   } else if (!a.quiet) {
     for (const Axis& x : axes) {
       const std::vector<double>& drift = x.prediction.drift_dph;
+      const Target target = target_of(x.model->dataset.target_column);
       std::cout << fmt::format(
           "{}: {} samples{} compensated with {} ({})\n"
-          "  predicted drift {:.4f} → {:.4f} °/h from first to last sample\n"
-          "  gyro STD {:.4f} °/h, compensated {:.4f} °/h (sample rate, noise included)\n"
+          "  predicted drift {} → {} {} from first to last sample\n"
+          "  {} STD {} {}, compensated {} {} (sample rate, noise included)\n"
           "  {}{}\n",
           a.input, drift.size(),
-          axes.size() > 1 || x.model->dataset.target_column != "gyro_dph"
-              ? " of " + x.model->dataset.target_column
-              : std::string(),
-          a.model, to_string(x.model->provenance.method), drift.front(), drift.back(),
-          x.metrics.std_before_dph, x.metrics.std_after_dph, x.novelty.line(),
+          axes.size() > 1 || target.column != "gyro_dph" ? " of " + target.column : std::string(),
+          a.model, to_string(x.model->provenance.method), target.format(drift.front()),
+          target.format(drift.back()), target.symbol(), target.what(),
+          target.format(x.metrics.std_before_dph), target.symbol(),
+          target.format(x.metrics.std_after_dph), target.symbol(), x.novelty.line(),
           a.no_guard ? " (guard off: full correction everywhere)" : "");
     }
     std::cout << fmt::format("  wrote {}\n", a.output);
@@ -164,6 +169,9 @@ void add_compensate(CLI::App& app) {
       "that a model that is extrapolating cannot make a start-up worse than uncompensated\n"
       "(docs/field.md); --no-guard applies it in full. The features are computed at the\n"
       "recording's own rate with the model's differentiator: one output row per input row.\n"
+      "A model of another axis or target adds its own columns: drift_y_dph, gyro_y_comp_dph,\n"
+      "novelty_y, guard_weight_y for gyro_y_dph; drift_accel_x_g, accel_x_comp_g, ... for an\n"
+      "accelerometer (docs/logs.md, \"Other targets\").\n"
       "Example:\n"
       "  fogdrift train cal -o model.json && fogdrift compensate model.json cal/cal_r4_20C.csv "
       "-o comp.csv");

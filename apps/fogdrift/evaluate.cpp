@@ -29,6 +29,7 @@ struct EvaluateArgs {
   bool allan = false;
   bool no_guard = false;
   std::optional<double> input_rate_dph;
+  std::vector<std::string> references;
 };
 
 /// A metric as printed: n/a where it does not apply (eval::kNotApplicable).
@@ -47,6 +48,8 @@ bool is_campaign(const std::string& path) {
 void print_evaluation(const EvaluateArgs& a, const CompensationModel& model,
                       const eval::Evaluation& e, const std::string& source,
                       const std::string& heading);
+void print_field_figures(const eval::Evaluation& e);
+void print_allan(const std::vector<eval::RecordingEvaluation>& per);
 
 void run(const EvaluateArgs& a) {
   const ModelSet set = load_model_set(a.model, a.load);
@@ -59,6 +62,10 @@ void run(const EvaluateArgs& a) {
       throw OptionError("--input-rate-dph",
                         "applies to recording files; a campaign says its input rate in "
                         "campaign.json (fogdrift campaign --input-rate-dph)");
+    if (!a.references.empty())
+      throw OptionError("--reference",
+                        "applies to recording files; a campaign says its references in "
+                        "campaign.json (fogdrift campaign --reference)");
     campaign = read_campaign(a.inputs[0]);
     source = a.inputs[0] + " (recordings with role \"test\")";
   } else {
@@ -71,6 +78,7 @@ void run(const EvaluateArgs& a) {
       in.recording = read_recording(path);
       in.info.file = path;
       in.input_rate_dph = a.input_rate_dph;
+      in.references = parse_references(a.references, "--reference");
       inputs.push_back(std::move(in));
     }
     source = fmt::format("{} recording file{}", inputs.size(), inputs.size() == 1 ? "" : "s");
@@ -112,33 +120,58 @@ void print_evaluation(const EvaluateArgs& a, const CompensationModel& model,
                       const std::string& heading) {
   const eval::CompensationMetrics& all = e.overall;
   const auto& per = e.recordings;
+  const Target target = target_of(e.target);
+  const std::string_view unit = target.symbol();
   std::cout << fmt::format("{}{} on {}: {} rows of {} recording{}\n\n", heading, e.method, source,
                            e.rows, per.size(), per.size() == 1 ? "" : "s");
   // Before is what the model was trained to remove: the denoised drift, or the gyro less its
   // input as logged when the model was trained with --no-denoise.
   std::cout << (model.dataset.denoise_target
-                    ? "Before (the denoised drift) → after compensation, °/h:\n"
-                    : "Before (the drift as logged, not denoised: the model was trained with "
-                      "--no-denoise) → after compensation, °/h:\n")
+                    ? fmt::format("Before (the denoised drift) → after compensation, {}:\n", unit)
+                    : fmt::format("Before (the drift as logged, not denoised: the model was "
+                                  "trained with --no-denoise) → after compensation, {}:\n",
+                                  unit))
             << "| recording | T0 (°C) | MAE | STD |\n"
                "|---|---|---|---|\n";
+  const auto f = [&](double v) { return target.format(v); };
   for (const eval::RecordingEvaluation& r : per)
-    std::cout << fmt::format("| {} | {:g} | {:.4f} → {:.4f} | {:.4f} → {:.4f} |\n", r.info.file,
-                             r.info.initial_temp_degc, r.metrics.mae_before_dph, r.metrics.mae_dph,
-                             r.metrics.std_before_dph, r.metrics.std_after_dph);
-  std::cout << fmt::format("| **all** | | **{:.4f} → {:.4f}** | **{:.4f} → {:.4f}** |\n",
-                           all.mae_before_dph, all.mae_dph, all.std_before_dph, all.std_after_dph);
+    std::cout << fmt::format("| {} | {:g} | {} → {} | {} → {} |\n", r.info.file,
+                             r.info.initial_temp_degc, f(r.metrics.mae_before_dph),
+                             f(r.metrics.mae_dph), f(r.metrics.std_before_dph),
+                             f(r.metrics.std_after_dph));
+  std::cout << fmt::format("| **all** | | **{} → {}** | **{} → {}** |\n", f(all.mae_before_dph),
+                           f(all.mae_dph), f(all.std_before_dph), f(all.std_after_dph));
   if (per.size() > 1)
     std::cout << fmt::format(
         "(all: STD is the RMS of the recordings' STDs, as Table 2; pooled over every row, offsets "
-        "between recordings kept: {:.4f} → {:.4f})\n",
-        all.pooled_std_before_dph, all.pooled_std_after_dph);
+        "between recordings kept: {} → {})\n",
+        f(all.pooled_std_before_dph), f(all.pooled_std_after_dph));
   // The paper's figures belong beside the paper's instrument, the simulator, not a user's data.
-  if (e.simulated)
+  if (e.simulated && e.target == "gyro_dph")
     std::cout << fmt::format(
         "\nTable 2 view: denoised STD {:.4f} °/h, {} STD {:.4f} °/h, MAE {:.4f} °/h "
         "(paper: denoised 0.0134; SSA-SVR 0.0031, MAE 0.0025)\n",
         all.std_before_dph, e.method, all.std_after_dph, all.mae_dph);
+  if (target.kind == TargetKind::gyro) {
+    print_field_figures(e);
+    if (a.allan) print_allan(per);
+  } else {
+    // A four-position finding and the Allan terms printed are a gyro's; they would not apply.
+    std::cout << fmt::format(
+        "\n(no north-finding figures: a four-position finding reads gyros, "
+        "and {} is {} {})\n",
+        e.target, target.kind == TargetKind::accelerometer ? "an" : "a", target.what());
+    if (a.allan)
+      std::cout << fmt::format("(no Allan terms: --allan gives a gyro's, and {} is not one)\n",
+                               e.target);
+  }
+  for (const auto& w : e.warnings) std::cout << "warning: " << w << "\n";
+}
+
+/// Where north-finding needs it: the start-up residual and the opposite-position difference.
+void print_field_figures(const eval::Evaluation& e) {
+  const eval::CompensationMetrics& all = e.overall;
+  const auto& per = e.recordings;
   std::cout << "\nWhere north-finding needs it (docs/field.md), before → after, °/h:\n"
                "| recording | first 5 min residual | opposite positions 180 s apart | guard |\n"
                "|---|---|---|---|\n";
@@ -163,45 +196,45 @@ void print_evaluation(const EvaluateArgs& a, const CompensationModel& model,
     std::cout << "(n/a opposite positions: the modelling rows are more than 180 s apart, or the "
                  "recording is shorter than three 90 s positions; a four-position finding cannot "
                  "be read from it)\n";
-  if (a.allan) {
-    std::cout
-        << "\nAllan deviation of the gyro output at the recording's rate, raw → compensated:\n"
-           "| recording | ARW (°/√h) | bias instability (°/h) | RRW (°/h/√h) |\n"
-           "|---|---|---|---|\n";
-    double shortest = std::numeric_limits<double>::infinity(), longest = 0;
-    std::size_t few = 0;
-    for (const eval::RecordingEvaluation& rec : per) {
-      const auto& r = rec.allan->raw;
-      const auto& c = rec.allan->compensated;
-      if (rec.samples < kAllanMinSamples) {
-        ++few;
-        std::cout << fmt::format("| {} | n/a | n/a | n/a |\n", rec.info.file);
-        continue;
-      }
-      std::cout << fmt::format("| {} | {:.5f} → {:.5f} | {:.4f} → {:.4f} | {:.4f} → {:.4f} |\n",
-                               rec.info.file, r.arw_deg_per_rt_h, c.arw_deg_per_rt_h,
-                               r.bias_instability_dph, c.bias_instability_dph, r.rrw_dph_per_rt_h,
-                               c.rrw_dph_per_rt_h);
-      shortest = std::min(shortest, rec.duration_s);
-      longest = std::max(longest, rec.duration_s);
+}
+
+/// The Allan noise terms of each recording's gyro output, raw and compensated.
+void print_allan(const std::vector<eval::RecordingEvaluation>& per) {
+  std::cout << "\nAllan deviation of the gyro output at the recording's rate, raw → compensated:\n"
+               "| recording | ARW (°/√h) | bias instability (°/h) | RRW (°/h/√h) |\n"
+               "|---|---|---|---|\n";
+  double shortest = std::numeric_limits<double>::infinity(), longest = 0;
+  std::size_t few = 0;
+  for (const eval::RecordingEvaluation& rec : per) {
+    const auto& r = rec.allan->raw;
+    const auto& c = rec.allan->compensated;
+    if (rec.samples < kAllanMinSamples) {
+      ++few;
+      std::cout << fmt::format("| {} | n/a | n/a | n/a |\n", rec.info.file);
+      continue;
     }
-    if (few < per.size()) {
-      const std::string span =
-          std::lround(shortest / 60) == std::lround(longest / 60)
-              ? fmt::format("{:.0f}-minute", shortest / 60)
-              : fmt::format("{:.0f}- to {:.0f}-minute", shortest / 60, longest / 60);
-      std::cout << fmt::format(
-          "({} recordings read bias instability and RRW from clusters of at most {:.0f} minutes; "
-          "compare before and after, not with a datasheet's hours-long runs)\n",
-          span, shortest / 120);
-    }
-    if (few)
-      std::cout << fmt::format(
-          "(n/a: {} recording{} of fewer than {} samples, whose Allan deviation scatters by more "
-          "than ±10 % at its shortest τ)\n",
-          few, few == 1 ? "" : "s", kAllanMinSamples);
+    std::cout << fmt::format("| {} | {:.5f} → {:.5f} | {:.4f} → {:.4f} | {:.4f} → {:.4f} |\n",
+                             rec.info.file, r.arw_deg_per_rt_h, c.arw_deg_per_rt_h,
+                             r.bias_instability_dph, c.bias_instability_dph, r.rrw_dph_per_rt_h,
+                             c.rrw_dph_per_rt_h);
+    shortest = std::min(shortest, rec.duration_s);
+    longest = std::max(longest, rec.duration_s);
   }
-  for (const auto& w : e.warnings) std::cout << "warning: " << w << "\n";
+  if (few < per.size()) {
+    const std::string span =
+        std::lround(shortest / 60) == std::lround(longest / 60)
+            ? fmt::format("{:.0f}-minute", shortest / 60)
+            : fmt::format("{:.0f}- to {:.0f}-minute", shortest / 60, longest / 60);
+    std::cout << fmt::format(
+        "({} recordings read bias instability and RRW from clusters of at most {:.0f} minutes; "
+        "compare before and after, not with a datasheet's hours-long runs)\n",
+        span, shortest / 120);
+  }
+  if (few)
+    std::cout << fmt::format(
+        "(n/a: {} recording{} of fewer than {} samples, whose Allan deviation scatters by more "
+        "than ±10 % at its shortest τ)\n",
+        few, few == 1 ? "" : "s", kAllanMinSamples);
 }
 
 }  // namespace
@@ -230,6 +263,10 @@ void add_evaluate(CLI::App& app) {
                   "Recording files only: the rate the gyro sensed, °/h (0 for an axis that sees "
                   "no rotation); without it the target subtracts each recording's mean, and the "
                   "turn-on bias is lost (a campaign says it in campaign.json)");
+  cmd->add_option("--reference", args->references,
+                  "Recording files only: COLUMN=VALUE, repeated, what a target channel sensed in "
+                  "its unit (accel_x_g=0, sf_fog_ppm=0; docs/logs.md, \"Other targets\"), as "
+                  "fogdrift campaign --reference gives it");
   cmd->add_flag("--json", args->json, "Print the metrics as JSON");
   cmd->add_flag("--no-guard", args->no_guard,
                 "Apply the model's full correction even where its inputs are novel");

@@ -65,7 +65,7 @@ void run(const ExportArgs& given, const CLI::App& cmd) {
   if (!a.quiet && set.models.size() > 1) {
     std::cout << fmt::format(
         "wrote {}: {} axes ({}) of {}, C99 in {}, no heap; each axis's model as "
-        "{}_AXIS_predict_dph(features){}\n",
+        "{}_AXIS_predict_UNIT(features){}\n",
         a.output, set.models.size(), fmt::join(set.targets(), ", "), a.model, a.precision, a.prefix,
         a.stream_rate_hz > 0
             ? fmt::format(", and {}_update(&state, time_s, {}, drift[{}]) for all of them at {} Hz",
@@ -73,8 +73,9 @@ void run(const ExportArgs& given, const CLI::App& cmd) {
             : std::string());
   } else if (!a.quiet) {
     std::cout << fmt::format(
-        "wrote {}: {}_predict_dph(features[{}]) for {} ({}), C99 in {}, no heap\n", a.output,
-        a.prefix, model.inputs(), a.model, to_string(model.provenance.method), a.precision);
+        "wrote {}: {}_predict_{}(features[{}]) for {} ({}), C99 in {}, no heap\n", a.output,
+        a.prefix, target_of(model.dataset.target_column).unit(), model.inputs(), a.model,
+        to_string(model.provenance.method), a.precision);
     const std::size_t block = a.stream_rate_hz > 0
                                   ? decimation_factor(model.dataset.preprocessing,
                                                       1.0 / a.stream_rate_hz, "--stream-rate-hz")

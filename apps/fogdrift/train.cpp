@@ -301,15 +301,12 @@ void run(const TrainArgs& a) {
   // axis"), written as one file.
   const std::vector<std::string> targets = split_list(a.targets);
   for (std::size_t i = 0; i < targets.size(); ++i) {
-    if (!is_target_column(targets[i]))
-      throw OptionError("--targets", fmt::format("'{}' is not gyro_dph or gyro_NAME_dph, a gyro "
-                                                 "axis the recordings carry",
-                                                 targets[i]));
+    target_of(targets[i], "--targets");
     if (std::find(targets.begin(), targets.begin() + static_cast<std::ptrdiff_t>(i), targets[i]) !=
         targets.begin() + static_cast<std::ptrdiff_t>(i))
       throw OptionError("--targets", fmt::format("'{}' is named twice", targets[i]));
   }
-  if (targets.empty()) throw OptionError("--targets", "names no gyro column");
+  if (targets.empty()) throw OptionError("--targets", "names no column to compensate");
   std::vector<CampaignTrainResult> results;
   for (const std::string& target : targets) {
     campaign_options.dataset.target_column = target;
@@ -463,9 +460,11 @@ void add_train(CLI::App& app) {
   cmd->add_option("--max-degree", args->max_degree, "poly: highest degree tried")
       ->capture_default_str();
   cmd->add_option("--targets", args->targets,
-                  "The gyro columns to compensate, comma-separated: gyro_dph and further axes the "
-                  "recordings carry (gyro_y_dph, ... from fogdrift import); several give one "
-                  "model file with a model per axis, each with its own search and guard")
+                  "The columns to compensate, comma-separated: gyro_dph and further gyro axes the "
+                  "recordings carry (gyro_y_dph, ... from fogdrift import), accelerometers "
+                  "(accel_x_g, accel_NAME_g: their bias), scale-factor channels (sf_NAME_ppm); "
+                  "several give one model file with a model per axis, each with its own search "
+                  "and guard (docs/logs.md, \"Other targets\")")
       ->capture_default_str();
   cmd->add_flag("--json", args->json, "Print the training summary as JSON");
   cmd->add_flag("-q,--quiet", args->quiet, "Print nothing on success");

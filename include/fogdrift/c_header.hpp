@@ -26,6 +26,9 @@ namespace fogdrift {
 /// with the causal differentiator's taps as a table and a fixed buffer in the state (no heap),
 /// and the fault policy `faults` (stream_faults.hpp) with its settings as macros the firmware may
 /// override; s.flags holds each sample's fault flags as PREFIX_FAULT_* bits.
+/// A model of another target (target.hpp) names its functions and drift in its unit:
+/// PREFIX_predict_g, PREFIX_compensated_g(&s, accel_x_g), whose range check
+/// PREFIX_READING_LIMIT_G is off (HUGE_VAL) unless the firmware defines it.
 /// It is meant for a model trained with causal rates; the header says so when the model's were
 /// centred. OptionError("stream_dt_s", …) when the differentiator window does not fit the
 /// interval, and the FaultPolicy's own for invalid settings.
@@ -42,12 +45,15 @@ std::string to_c_header(const CompensationModel& model,
                         const FaultPolicy& faults = {}, CPrecision precision = CPrecision::double_);
 
 /// Every axis of a model set in one header (c_header_set.cpp): each axis's model as above under
-/// the prefix PREFIX_AXIS (AXIS = axis_name(), gyro for gyro_dph, NAME for gyro_NAME_dph),
+/// the prefix PREFIX_AXIS (AXIS = axis_name(), gyro for gyro_dph, NAME for gyro_NAME_dph,
+/// accel_x for accel_x_g; each axis's functions named in its unit, PREFIX_AXIS_predict_g),
 /// PREFIX_N_AXES and PREFIX_axis_names, and with `stream_dt_s` > 0 one update for all of them:
 ///   PREFIX_state s; PREFIX_reset(&s);   at power-on
 ///   PREFIX_update(&s, time_s, temp_fog_degc, temp_acc1_degc, temp_acc2_degc, drift_dph);
 ///   PREFIX_compensated_dph(&s, gyro_dph, gyro_compensated_dph);
-/// with arrays of PREFIX_N_AXES values in PREFIX_axis_names order. A set of one model gives
+/// with arrays of PREFIX_N_AXES values in PREFIX_axis_names order; axes of several kinds
+/// (target.hpp) share arrays named for no unit (drift, reading, compensated: PREFIX_compensated),
+/// each value in its axis's unit, PREFIX_axis_units. A set of one model gives
 /// to_c_header(model, ...) itself.
 std::string to_c_header(const ModelSet& set, const std::string& prefix = "fogdrift_model",
                         double stream_dt_s = 0, const FaultPolicy& faults = {},

@@ -10,6 +10,7 @@
 #pragma once
 
 #include <filesystem>
+#include <map>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -44,6 +45,10 @@ struct CampaignEntry {
   std::optional<double> true_azimuth_deg;
   /// Explicit input rate (°/h) seen by the FOG, overriding the Earth-rate projection.
   std::optional<double> input_rate_dph;
+  /// What a target channel sensed, per target column, in its unit: an accelerometer's share of
+  /// gravity, g; a scale-factor channel's nominal, ppm; a gyro axis's own input rate, °/h
+  /// (docs/logs.md, "Other targets"). The target is the channel less it.
+  std::map<std::string, double> references;
   std::string notes_json;  ///< free-form "notes" value as JSON text, empty if absent
 };
 

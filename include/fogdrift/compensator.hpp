@@ -94,7 +94,8 @@ class StreamingCompensator {
   double data_dt_s_;  // the logger's interval
   double dt_s_;       // the model's: k_ · data_dt_s_
   FaultPolicy faults_;
-  std::size_t nt_;  // thermometers numbered in the model's spec
+  double reading_limit_;  // gyro_limit_dph for a gyro target, ∞ for another (stream_faults.hpp)
+  std::size_t nt_;        // thermometers numbered in the model's spec
   std::vector<signal::CausalDifferentiator> rates_;
   std::vector<FeatureColumn> columns_;  // the model's inputs (FeatureSpec::columns())
   std::vector<double> features_, work_;

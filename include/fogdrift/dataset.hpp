@@ -3,17 +3,20 @@
 //
 // Target (per recording, at the recording's rate, then block-averaged like the features):
 //   y = denoised gyro_dph - input rate
-// The input rate is, in order of preference: the manifest's input_rate_dph; the Earth-rate
-// projection on the FOG axis, Omega_e cos(latitude) cos(true_azimuth + table_deg) (the table
-// angle from the recording, 0 if it has none; a tilt adds Omega_e sin(latitude) sin(tilt), a
-// constant the model's bias absorbs); otherwise the mean of the denoised gyro, with a warning,
-// because then the turn-on bias cannot be told from the input.
+// The input rate is, in order of preference: the manifest's reference for the target column;
+// for a gyro, its input_rate_dph; for the FOG axis, the Earth-rate projection
+// Omega_e cos(latitude) cos(true_azimuth + table_deg) (the table angle from the recording, 0 if
+// it has none; a tilt adds Omega_e sin(latitude) sin(tilt), a constant the model's bias
+// absorbs); otherwise the mean of the denoised channel, with a warning, because then the
+// turn-on bias cannot be told from the input. Another target (target.hpp) is formed the same
+// way in its own unit, its reference what it sensed (docs/logs.md, "Other targets").
 //
 // Standardisation statistics come from training rows only and travel with the model
 // (Standardizer); a feature that is constant over the training data is an error.
 #pragma once
 
 #include <cstdint>
+#include <map>
 #include <optional>
 #include <span>
 #include <string>
@@ -24,6 +27,7 @@
 #include "fogdrift/features.hpp"
 #include "fogdrift/recording.hpp"
 #include "fogdrift/signal/denoise.hpp"
+#include "fogdrift/target.hpp"
 
 namespace fogdrift {
 
@@ -32,26 +36,11 @@ struct DatasetOptions {
   FeatureOptions preprocessing;    ///< differentiator and block averaging
   bool denoise_target = true;      ///< wavelet-denoise the gyro before forming the target
   signal::DenoiseOptions denoise;  ///< used when denoise_target
-  /// The gyro the target is formed from: gyro_dph, or another axis a recording carries as a
-  /// further channel, gyro_NAME_dph (docs/logs.md, "Every axis").
+  /// The channel the target is formed from: gyro_dph, another gyro axis a recording carries as
+  /// a further channel (gyro_NAME_dph, docs/logs.md, "Every axis"), an accelerometer or a
+  /// scale-factor channel (target.hpp).
   std::string target_column = "gyro_dph";
 };
-
-/// Whether `name` can be a model's target column: gyro_dph or a further gyro channel,
-/// gyro_NAME_dph (is_channel_column).
-bool is_target_column(std::string_view name);
-
-/// The axis a target column names, as output columns and C symbols carry it: "gyro" for
-/// gyro_dph, NAME for gyro_NAME_dph.
-std::string axis_name(std::string_view target_column);
-
-/// The gyro readings a model of `column` compensates: gyro_dph, or the further channel `column`.
-/// Throws InputError naming the recording when it lacks the column or a cell is not a number.
-std::vector<double> target_values(const Recording& recording, const std::string& column);
-
-/// `recording` with gyro_dph taken from `column` (target_values), so that every path written for
-/// gyro_dph serves another axis; the recording itself for gyro_dph.
-Recording with_target(const Recording& recording, const std::string& column);
 
 /// Where a group of rows came from.
 struct GroupInfo {
@@ -60,8 +49,10 @@ struct GroupInfo {
   Role role = Role::train;
   int repetition = 1;
   double initial_temp_degc = 0;
-  std::string target;         ///< how y was formed: "input_rate", "earth_rate" or "mean"
-  double input_rate_dph = 0;  ///< the rate subtracted (its mean over the recording), °/h
+  /// How y was formed: "reference", "input_rate", "earth_rate" or "mean".
+  std::string target;
+  /// What was subtracted (its mean over the recording), in the target's unit (°/h for a gyro).
+  double reference = 0;
   /// Its first rows in the causal differentiator's warm-up (FeatureTable::warm_rows).
   std::size_t warm_rows = 0;
 };
@@ -70,8 +61,10 @@ struct GroupInfo {
 struct RecordingInput {
   Recording recording;
   GroupInfo info;                        ///< file, scenario, role, repetition, temperature
-  std::optional<double> input_rate_dph;  ///< explicit input rate, °/h
-  std::optional<double> latitude_deg;    ///< with true_azimuth_deg: the Earth-rate projection
+  std::optional<double> input_rate_dph;  ///< explicit input rate of every gyro axis, °/h
+  /// Per target column, what that channel sensed, in its unit (CampaignEntry::references).
+  std::map<std::string, double> references;
+  std::optional<double> latitude_deg;  ///< with true_azimuth_deg: the Earth-rate projection
   std::optional<double> true_azimuth_deg;
 };
 
@@ -80,7 +73,7 @@ struct Dataset {
   std::string feature_spec;  ///< FeatureSpec::to_string() of the spec used
   std::size_t rows = 0;
   std::vector<double> x;              ///< rows x feature_names.size(), row-major
-  std::vector<double> y;              ///< drift target, °/h
+  std::vector<double> y;              ///< drift target, the target's unit (°/h for a gyro)
   std::vector<double> time_s;         ///< block-centre time since power-on, s
   std::vector<std::size_t> group;     ///< per row, an index into groups
   std::vector<GroupInfo> groups;      ///< one per recording, in input order
@@ -92,8 +85,8 @@ struct Dataset {
   Dataset select_groups(std::span<const std::size_t> group_indices) const;
 };
 
-/// The target of one recording at its own rate, and how it was formed (GroupInfo::target,
-/// input_rate_dph filled in). Validates the denoise options against the recording length.
+/// The target of one recording at its own rate, and how it was formed (GroupInfo::target and
+/// reference filled in). Validates the denoise options against the recording length.
 std::vector<double> drift_target(const RecordingInput& input, const DatasetOptions& options,
                                  GroupInfo& info, std::vector<std::string>& warnings);
 

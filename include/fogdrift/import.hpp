@@ -11,11 +11,12 @@
 //                   | intN:SCALE:OFFSET (an N-bit two's complement register, N = 8, 12, 16, 24,
 //                     32, logged signed or as its unsigned bit pattern)
 //   accel_*_g       g | mg | m/s2
+//   sf_*_ppm        ppm | % | ppb
 //   table_deg       deg | rad
 // Besides fogdrift's own columns, a unit's further channels are mapped by names that say what they
-// are: gyro_NAME_dph (another gyro axis, rate units), temp_NAME_degc (another thermometer) and
-// accel_NAME_g. They are kept as numeric extra columns, in fogdrift units, and put on a grid like
-// the known ones (regrid.hpp).
+// are: gyro_NAME_dph (another gyro axis, rate units), temp_NAME_degc (another thermometer),
+// accel_NAME_g (another accelerometer) and sf_NAME_ppm (a scale-factor channel). They are kept as
+// numeric extra columns, in fogdrift units, and put on a grid like the known ones (regrid.hpp).
 #pragma once
 
 #include <filesystem>

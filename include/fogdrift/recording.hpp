@@ -62,7 +62,8 @@ std::vector<double>* known_column(Recording& recording, std::string_view name, b
 const std::vector<double>* known_column(const Recording& recording, std::string_view name);
 
 /// A further channel a unit logs, named by what it is so that its unit is known: another gyro
-/// axis (gyro_NAME_dph), thermometer (temp_NAME_degc) or accelerometer (accel_NAME_g), NAME of
+/// axis (gyro_NAME_dph), thermometer (temp_NAME_degc), accelerometer (accel_NAME_g) or
+/// scale-factor channel (sf_NAME_ppm, the unit's estimate of its scale-factor error), NAME of
 /// lower-case letters, digits and '_'; not one of fogdrift's own columns. Kept as an extra column
 /// of numbers (docs/logs.md, "Further channels").
 bool is_channel_column(std::string_view name);

@@ -16,7 +16,8 @@
 //  * a sample whose time does not advance is skipped (its output repeats the last one); time going
 //    back by more than bridge_s is a restart: the compensator starts again as at power-on;
 //  * a gyro reading that is not a number or beyond gyro_limit_dph gets the last good compensated
-//    value.
+//    value; so does a reading of another target (an accelerometer, a scale-factor channel:
+//    target.hpp) that is not a number, whatever its size.
 // The drift is always a finite number, and without faults the output is unchanged, bit for bit.
 #pragma once
 

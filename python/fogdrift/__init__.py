@@ -8,7 +8,8 @@ The package wraps fogdrift's C++ library (docs/python.md):
   warm-started paths over C in parallel, scored by any scorer.
 * ``fogdrift.train(campaign, method=..., ...)`` — a campaign folder to a compensation model, as
   ``fogdrift train`` does it, every option under the library's name, with a progress callback;
-  ``target=`` another gyro axis, and ``save_models`` every axis's model in one file;
+  ``target=`` another gyro axis, an accelerometer or a scale-factor channel, and
+  ``save_models`` every axis's model in one file;
 * ``fogdrift.Model`` — a compensation model file as ``fogdrift train`` writes it: load, save,
   predict the drift of a recording and compensate it; ``read_recording`` and
   ``write_recording`` — recordings as dicts of NumPy arrays.

@@ -1,6 +1,7 @@
 // fogdrift.evaluate, fogdrift.northfind, fogdrift.allan_deviation and fogdrift.noise_terms: a
 // model's Table 2 and Table 3, and the gyro's noise terms (eval/evaluation.hpp,
 // eval/findings.hpp, eval/allan.hpp; docs/python.md).
+#include <fmt/format.h>
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
@@ -8,6 +9,7 @@
 
 #include <cmath>
 #include <filesystem>
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -40,16 +42,22 @@ bool is_campaign(const py::object& o) {
 }
 
 py::object evaluate(const CompensationModel& model, const py::object& data, bool guarded,
-                    bool allan, std::optional<double> input_rate_dph) {
+                    bool allan, std::optional<double> input_rate_dph,
+                    const std::map<std::string, double>& references) {
   const eval::EvaluationOptions options{.guarded = guarded, .allan = allan};
+  for (const auto& [column, value] : references) {
+    target_of(column, "references");
+    if (!std::isfinite(value))
+      throw OptionError("references", fmt::format("{}: {} is not a finite number", column, value));
+  }
   eval::Evaluation e;
   std::string source;
   if (is_held_campaign(data)) {
     // A campaign in memory (what fogdrift.simulate returns, what train takes): its calibration
     // recordings with role test, each with its manifest's input.
-    if (input_rate_dph)
-      throw OptionError("input_rate_dph",
-                        "applies to recordings; a campaign says its input rate in its manifest");
+    if (input_rate_dph || !references.empty())
+      throw OptionError(input_rate_dph ? "input_rate_dph" : "references",
+                        "applies to recordings; a campaign says its input in its manifest");
     const HeldCampaign held = held_campaign(data);
     std::vector<RecordingInput> inputs;
     for (std::size_t i = 0; i < held.recordings.size(); ++i) {
@@ -63,10 +71,10 @@ py::object evaluate(const CompensationModel& model, const py::object& data, bool
     py::gil_scoped_release release;
     e = eval::evaluate(model, inputs, options);
   } else if (is_campaign(data)) {
-    if (input_rate_dph)
-      throw OptionError("input_rate_dph",
-                        "applies to recordings; a campaign says its input rate in campaign.json "
-                        "(fogdrift campaign --input-rate-dph)");
+    if (input_rate_dph || !references.empty())
+      throw OptionError(input_rate_dph ? "input_rate_dph" : "references",
+                        "applies to recordings; a campaign says its input in campaign.json "
+                        "(fogdrift campaign --input-rate-dph, --reference)");
     const Campaign campaign = read_campaign(data.cast<std::filesystem::path>());
     py::gil_scoped_release release;
     e = eval::evaluate(model, campaign, options);
@@ -87,6 +95,7 @@ py::object evaluate(const CompensationModel& model, const py::object& data, bool
       in.recording =
           to_recording(items[i], in.info.file, model.dataset.target_column != "gyro_dph");
       in.input_rate_dph = input_rate_dph;
+      in.references = references;
       inputs.push_back(std::move(in));
     }
     if (inputs.empty()) throw OptionError("data", "no recordings to evaluate on");
@@ -213,14 +222,18 @@ py::dict noise_terms(const py::object& rate, double dt_s) {
 void bind_eval(py::module_& m) {
   m.def("evaluate", &evaluate, py::arg("model"), py::arg("data"), py::kw_only(),
         py::arg("guarded") = true, py::arg("allan") = false, py::arg("input_rate_dph") = py::none(),
+        py::arg("references") = std::map<std::string, double>{},
         "The paper's Table 2 view of a Model on test data, as `fogdrift evaluate --json` prints "
         "it: data is a campaign folder (its recordings with role 'test'), a recording (a path or "
         "a mapping of columns) or a list of them. Recordings have no manifest to say what rate "
         "the gyro sensed: give it as input_rate_dph (°/h; 0 for an axis that sees no rotation), "
-        "or the target subtracts each recording's mean and the turn-on bias is lost. Returns a "
+        "or the target subtracts each recording's mean and the turn-on bias is lost; another "
+        "target's reference is given in references, e.g. {'accel_x_g': 0.0} (docs/logs.md, "
+        "\"Other targets\"). Returns a "
         "dict: 'method', 'source', "
         "'overall' and one entry per recording in 'recordings' (MAE, RMSE, STD before and "
-        "after, start-up residual, opposite-position difference, all °/h; novelty shares; with "
+        "after, start-up residual, opposite-position difference, all °/h, or the target's unit "
+        "as the keys say; novelty shares; with "
         "allan=True the Allan noise terms raw and compensated), 'guard', 'warnings'.");
   m.def("northfind", &northfind, py::arg("campaign"), py::arg("model") = nullptr, py::kw_only(),
         py::arg("guarded") = true,

@@ -81,7 +81,8 @@ void bind_model(py::module_& m) {
           "method", [](const CompensationModel& self) { return to_string(self.provenance.method); })
       .def_property_readonly(
           "target", [](const CompensationModel& self) { return self.dataset.target_column; },
-          "The gyro column the model compensates: gyro_dph, or another axis (gyro_NAME_dph).")
+          "The column the model compensates: gyro_dph, another gyro axis (gyro_NAME_dph), an "
+          "accelerometer (accel_NAME_g) or a scale-factor channel (sf_NAME_ppm).")
       .def_property_readonly("feature_names",
                              [](const CompensationModel& self) { return self.feature_names; })
       .def_property_readonly("hyperparameters", &hyperparameters)
@@ -109,9 +110,11 @@ void bind_model(py::module_& m) {
               py::gil_scoped_release release;
               p = self.predict(r, guarded);
             }
+            // Keys in the target's unit: drift_dph for a gyro, drift_g, drift_ppm (target.hpp).
+            const std::string unit(target_of(self.dataset.target_column).unit());
             py::dict out;
-            out["drift_dph"] = to_array(std::move(p.drift_dph));
-            out["model_drift_dph"] = to_array(std::move(p.model_drift_dph));
+            out[py::str("drift_" + unit)] = to_array(std::move(p.drift_dph));
+            out[py::str("model_drift_" + unit)] = to_array(std::move(p.model_drift_dph));
             out["novelty"] = to_array(std::move(p.novelty));
             out["guard_weight"] = to_array(std::move(p.weight));
             return out;
@@ -119,7 +122,9 @@ void bind_model(py::module_& m) {
           py::arg("recording"), py::arg("guarded") = true,
           "Drift at every sample of a recording (a path, or a mapping of columns), °/h: "
           "drift_dph (what to subtract), model_drift_dph (before the guard), novelty and "
-          "guard_weight, each a float64 array; as `fogdrift compensate` computes them.")
+          "guard_weight, each a float64 array; as `fogdrift compensate` computes them. A model "
+          "of another target names the drifts in its unit: drift_g for an accelerometer, "
+          "drift_ppm for a scale-factor channel.")
       .def(
           "compensate",
           [](const CompensationModel& self, const py::object& recording, bool guarded) {
@@ -136,8 +141,8 @@ void bind_model(py::module_& m) {
             return to_array(std::move(out));
           },
           py::arg("recording"), py::arg("guarded") = true,
-          "gyro − drift_dph: the compensated gyro of a recording, °/h (the gyro the model "
-          "compensates, Model.target).")
+          "gyro − drift_dph: the compensated gyro of a recording, °/h (the channel the model "
+          "compensates, Model.target, in its unit).")
       // Pickled as its file's text: a model crosses to another process (a Dask worker)
       // unchanged and checked again on arrival.
       .def(py::pickle([](const CompensationModel& self) { return to_json(self); },

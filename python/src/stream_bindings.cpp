@@ -30,7 +30,7 @@ const FaultPolicy kFaults;
 struct Stream {
   StreamingCompensator compensator;
   bool reads_acc1, reads_acc2;
-  std::string gyro_column;  ///< the gyro the model compensates (gyro_dph or gyro_NAME_dph)
+  std::string gyro_column;  ///< the column the model compensates (Model.target)
   /// The further thermometers' columns (temp_NAME_degc, FeatureSpec::further), and one sample's
   /// readings of them.
   std::vector<std::string> further_columns;

@@ -38,10 +38,7 @@ py::object train(const py::object& campaign, const std::string& method, const st
                  std::size_t hidden, std::size_t max_degree, const py::object& progress,
                  const std::string& target, bool validate_only) {
   CampaignTrainOptions o;
-  if (!is_target_column(target))
-    throw OptionError("target", "'" + target +
-                                    "' is not gyro_dph or gyro_NAME_dph, a gyro axis "
-                                    "the recordings carry");
+  target_of(target, "target");
   o.dataset.target_column = target;
   TrainOptions& t = o.train;
   t.method = parse_method(method, "method");
@@ -267,9 +264,11 @@ void bind_train(py::module_& m) {
       "one recording per entry (what fogdrift.simulate returns); the same model bytes either "
       "way. thermometers: the thermometers the features read, e.g. ['fog', 'acc1', 'acc2', "
       "'case'] for a further column temp_case_degc (docs/logs.md, \"More thermometers\"); "
-      "'auto': those of fog, acc1, acc2 every recording has. target: the gyro column to "
-      "compensate, gyro_dph or another axis the recordings "
-      "carry (gyro_y_dph, ...); save_models writes the models of every axis as one file, as "
+      "'auto': those of fog, acc1, acc2 every recording has. target: the column to "
+      "compensate, gyro_dph or another gyro axis the recordings carry (gyro_y_dph, ...), an "
+      "accelerometer (accel_x_g, accel_NAME_g) or a scale-factor channel (sf_NAME_ppm), each "
+      "less its reference in the manifest (docs/logs.md, \"Other targets\"); save_models writes "
+      "the models of every axis as one file, as "
       "`fogdrift train --targets` does. validate_only: check the options and return None "
       "without reading the campaign (train_fleet does, once, before any unit runs).");
   m.def(
@@ -280,7 +279,7 @@ void bind_train(py::module_& m) {
         save(set, path);
       },
       py::arg("path"), py::arg("models"),
-      "Writes the models of several gyro axes (each trained with its own target) as one model "
+      "Writes the models of several axes (each trained with its own target) as one model "
       "file, atomically, as `fogdrift train --targets` writes it; Model.load(path, target=...) "
       "reads one back.");
 }

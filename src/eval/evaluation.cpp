@@ -36,6 +36,17 @@ nlohmann::ordered_json metrics_json(const CompensationMetrics& m) {
           {"opposite_difference_after_dph", m.opposite_after_dph}};
 }
 
+/// The metrics of a target in `unit`: the keys above, ending in _dph for a gyro, in _UNIT else.
+nlohmann::ordered_json metrics_json(const CompensationMetrics& m, std::string_view unit) {
+  nlohmann::ordered_json j = metrics_json(m);
+  if (unit == "dph") return j;
+  nlohmann::ordered_json out;
+  for (const auto& [key, value] : j.items())
+    out[key.ends_with("_dph") ? fmt::format("{}_{}", key.substr(0, key.size() - 4), unit) : key] =
+        value;
+  return out;
+}
+
 nlohmann::ordered_json terms_json(const NoiseTerms& t) {
   return {{"arw_deg_per_rt_h", t.arw_deg_per_rt_h},
           {"bias_instability_dph", t.bias_instability_dph},
@@ -55,7 +66,9 @@ Evaluation evaluate(const CompensationModel& model, const std::vector<RecordingI
                     fmt::join(model.feature_names, ","), fmt::join(data.feature_names, ",")));
   Evaluation e;
   e.method = std::string(to_string(model.provenance.method));
+  e.target = model.dataset.target_column;
   e.guarded = options.guarded;
+  const bool gyro = target_of(e.target).kind == TargetKind::gyro;
   e.rows = data.rows;
   e.warnings = data.warnings;
   const std::vector<CompensationMetrics> per =
@@ -73,7 +86,7 @@ Evaluation evaluate(const CompensationModel& model, const std::vector<RecordingI
     r.metrics = per[g];
     const RecordingPrediction p = model.predict(rec, options.guarded);
     r.novelty = summarize_novelty(p.novelty, p.weight);
-    if (options.allan) r.allan = allan_comparison(rec, p.drift_dph);
+    if (options.allan && gyro) r.allan = allan_comparison(rec, p.drift_dph);
     r.duration_s = rec.time_s.back() - rec.time_s.front();
     r.samples = rec.time_s.size();
     e.recordings.push_back(std::move(r));
@@ -95,14 +108,15 @@ std::string to_json(const Evaluation& e, const std::string& model_label,
   j["model"] = model_label;
   j["method"] = e.method;
   j["source"] = source;
-  j["overall"] = metrics_json(e.overall);
+  const std::string_view unit = target_of(e.target).unit();
+  j["overall"] = metrics_json(e.overall, unit);
   j["guard"] = e.guarded;
   j["recordings"] = nlohmann::ordered_json::array();
   for (const RecordingEvaluation& r : e.recordings) {
     nlohmann::ordered_json o = {{"file", r.info.file},
                                 {"initial_temp_degc", r.info.initial_temp_degc},
                                 {"repetition", r.info.repetition}};
-    o.update(metrics_json(r.metrics));
+    o.update(metrics_json(r.metrics, unit));
     const double n = static_cast<double>(std::max<std::size_t>(1, r.novelty.samples));
     o["novelty_outside_share"] = static_cast<double>(r.novelty.outside) / n;
     o["novelty_reduced_share"] = static_cast<double>(r.novelty.reduced) / n;

@@ -8,6 +8,48 @@ set -u
 fd=$(cd "$(dirname "$1")" && pwd)/$(basename "$1")
 source "$(dirname "$0")/common.sh"
 root=$(cd "$(dirname "$0")/../.." && pwd)
+
+# header_matches_stream HEADER MODEL RECORDING TARGET...: the header of every axis (prefix imu),
+# compiled as strict C99 and fed the recording's time and three thermometers, gives each axis's
+# drift as `fogdrift stream --target TARGET` does, to 1e-9 of its size, in imu_axis_names order.
+header_matches_stream() {
+  local header=$1 model=$2 recording=$3
+  shift 3
+  sed "s/@HEADER@/$header/" > driver.c <<'EOF2'
+#include <stdio.h>
+#include "@HEADER@"
+int main(void) {
+  imu_state s;
+  double t, fog, acc1, acc2, drift[IMU_N_AXES];
+  int k;
+  imu_reset(&s);
+  while (scanf("%lf %lf %lf %lf", &t, &fog, &acc1, &acc2) == 4) {
+    imu_update(&s, t, fog, acc1, acc2, drift);
+    for (k = 0; k < IMU_N_AXES; ++k) printf(k ? ",%.17g" : "%.17g", drift[k]);
+    printf("\n");
+  }
+  return 0;
+}
+EOF2
+  cc -std=c99 -Wall -Wextra -pedantic -Werror -O2 -o driver driver.c -lm || return 1
+  awk -F, 'NR > 1 {print $1, $3, $4, $5}' "$recording" | ./driver > c_drift.csv || return 1
+  for target in "$@"; do
+    "$fd" stream "$model" "$recording" --rate-hz 0.016666666666666666 --target "$target" \
+      2>/dev/null > "stream_$target.csv" || return 1
+  done
+  python3 - "$@" <<'EOF2'
+import csv, sys
+header = [[float(v) for v in line.split(",")] for line in open("c_drift.csv")]
+ok = len(header) == 60
+for k, target in enumerate(sys.argv[1:]):
+    rows = list(csv.reader(open(f"stream_{target}.csv")))
+    drift = [float(r[-5]) for r in rows[1:]]  # drift, comp, novelty, weight, flags
+    worst = max(abs(a[k] - b) for a, b in zip(header, drift))
+    print(f"{target}: header against stream, worst {worst:.3g}")
+    ok = ok and len(drift) == 60 and worst <= 1e-9 * max(abs(b) for b in drift)
+raise SystemExit(0 if ok else 1)
+EOF2
+}
 check "fixture" python3 "$root/scripts/make_chamber_fixture.py" "$work"
 check "fixture is deterministic" bash -c "mkdir '$work/again' && python3 '$root/scripts/make_chamber_fixture.py' '$work/again' && cmp -s '$work/imu3.csv' '$work/again/imu3.csv' && cmp -s '$work/sheet.csv' '$work/again/sheet.csv'"
 cd "$work" || exit 1
@@ -17,6 +59,8 @@ imu=(--map time_s=millis --unit time_s=ms
      --map gyro_dph=gx_dps --unit gyro_dph=deg/s
      --map gyro_y_dph=gy_dps --unit gyro_y_dph=deg/s
      --map gyro_z_dph=gz_dps --unit gyro_z_dph=deg/s
+     --map accel_x_g=ax_g --map accel_z_g=az_ms2 --unit accel_z_g=m/s2
+     --map sf_gx_ppm=sf_ppm
      --map temp_fog_degc=temp_raw --unit temp_fog_degc=$u)
 sheet=(--map time_s=Time --unit time_s=clock
        --map chamber_degc="Air (C)"
@@ -28,9 +72,9 @@ sheet=(--map time_s=Time --unit time_s=clock
 check "import three axes" run 0 "$fd" import imu3.csv -o imu.csv "${imu[@]}" --step-s 60
 check "bursts averaged" out_has "-> 360 samples every 60 s by mean"
 check "only the text column is left behind" out_has "not carried onto the grid (text columns): status"
-check "every axis carried" bash -c "head -1 imu.csv | grep -qx 'time_s,gyro_dph,temp_fog_degc,gyro_y_dph,gyro_z_dph'"
+check "every axis carried" bash -c "head -1 imu.csv | grep -qx 'time_s,gyro_dph,temp_fog_degc,accel_x_g,accel_z_g,gyro_y_dph,gyro_z_dph,sf_gx_ppm'"
 check "a channel needs a telling name" run 1 "$fd" import imu3.csv -o x.csv "${imu[@]}" --map gyroY=gy_dps
-check "channel name message" err_has "nor a further channel (gyro_NAME_dph, temp_NAME_degc, accel_NAME_g"
+check "channel name message" err_has "nor a further channel (gyro_NAME_dph, temp_NAME_degc, accel_NAME_g, sf_NAME_ppm"
 
 # --- the sheet: what a new user meets first ----------------------------------------------------
 check "no gyro in the sheet" run 1 "$fd" import sheet.csv -o s.csv --map time_s=Time
@@ -56,7 +100,7 @@ check "join, estimating the clock offset" run 0 "$fd" join imu.csv sheet_fd.csv 
 check "offset printed" out_has "clock offset: "
 check "offset within 10 s of the truth, 250 s" bash -c "grep -o 'clock offset: [0-9.-]*' '$work/out' | awk '{d = \$3 - 250; exit !(d < 10 && d > -10)}'"
 check "overlap reported" out_has "joined temp_acc1_degc, temp_acc2_degc, chamber_degc, temp_case_degc by linear (limit 450 s): 360 of 360 rows kept"
-check "joined columns and every axis" bash -c "head -1 joined.csv | grep -qx 'time_s,gyro_dph,temp_fog_degc,temp_acc1_degc,temp_acc2_degc,chamber_degc,gyro_y_dph,gyro_z_dph,temp_case_degc'"
+check "joined columns and every axis" bash -c "head -1 joined.csv | grep -qx 'time_s,gyro_dph,temp_fog_degc,temp_acc1_degc,temp_acc2_degc,accel_x_g,chamber_degc,accel_z_g,gyro_y_dph,gyro_z_dph,sf_gx_ppm,temp_case_degc'"
 check "inspect the joined recording" run 0 "$fd" inspect joined.csv
 
 check "a column twice" run 1 "$fd" join imu.csv imu.csv -o x.csv --columns gyro_dph
@@ -94,7 +138,7 @@ check "the same x model as alone" bash -c "python3 -c \"import json,sys; a=json.
 check "an axis that is not there" run 1 "$fd" train camp -o x.json --targets gyro_dph,gyro_q_dph
 check "missing axis message" err_has "has no column 'gyro_q_dph', the gyro the model compensates (import it with --map gyro_q_dph=COLUMN)"
 check "an axis by another name" run 1 "$fd" train camp -o x.json --targets gyroY
-check "axis name message" err_has "option --targets: 'gyroY' is not gyro_dph or gyro_NAME_dph"
+check "axis name message" err_has "option --targets: 'gyroY' is not a target: a gyro (gyro_dph, gyro_NAME_dph), an accelerometer (accel_x_g, accel_y_g, accel_NAME_g) or a scale-factor channel (sf_NAME_ppm)"
 check "compensate every axis" run 0 "$fd" compensate m3.json camp/joined_05.csv -o comp3.csv
 check "every axis compensated" out_has "60 samples of gyro_z_dph compensated with m3.json"
 check "every axis agrees with its known law" python3 - <<'EOF2'
@@ -117,7 +161,7 @@ check "every axis's columns" bash -c "head -1 '$work/out' | grep -q ',drift_dph,
 cp "$work/out" stream_all.csv
 check "stream one axis" run 0 "$fd" stream m3.json camp/joined_05.csv --rate-hz 0.016666666666666666 --target gyro_y_dph
 check "one axis's columns" bash -c "head -1 '$work/out' | grep -q 'temp_case_degc,drift_y_dph,gyro_y_comp_dph,novelty_y,guard_weight_y,fault_flags_y$'"
-check "an axis alone is that axis together" bash -c "diff <(cut -d, -f15-19 stream_all.csv) <(cut -d, -f10-14 '$work/out')"
+check "an axis alone is that axis together" bash -c "diff <(cut -d, -f18-22 stream_all.csv) <(cut -d, -f13-17 '$work/out')"
 check "a missing axis" run 1 "$fd" stream m3.json camp/joined_05.csv --rate-hz 0.016666666666666666 --target gyro_q_dph
 check "missing axis names the axes" err_has "option --target: the model has no axis 'gyro_q_dph' (it compensates gyro_dph, gyro_y_dph, gyro_z_dph)"
 check "export one axis" run 0 "$fd" export-c m3.json --target gyro_z_dph --prefix imu_z -o imu_z.h
@@ -141,37 +185,64 @@ check "different windows message" err_has "option --target: the axes' models dif
 check "one of them alone" run 0 "$fd" export-c mixed.json --target gyro_y_dph -o y.h --stream-rate-hz 0.016666666666666666
 check "export every axis" run 0 "$fd" export-c m3.json --prefix imu --stream-rate-hz 0.016666666666666666 -o imu.h
 check "one update for all" out_has "imu_update(&state, time_s, temp_fog, temp_acc1, temp_acc2, drift[3]) for all of them"
-cat > driver.c <<'EOF2'
-#include <stdio.h>
-#include "imu.h"
-int main(void) {
-  imu_state s;
-  double t, fog, acc1, acc2, drift[IMU_N_AXES];
-  imu_reset(&s);
-  while (scanf("%lf %lf %lf %lf", &t, &fog, &acc1, &acc2) == 4) {
-    imu_update(&s, t, fog, acc1, acc2, drift);
-    printf("%.17g,%.17g,%.17g\n", drift[0], drift[1], drift[2]);
-  }
-  return 0;
-}
-EOF2
-check "the header compiles" cc -std=c99 -Wall -Wextra -pedantic -Werror -O2 -o driver driver.c -lm
-check "the header streams every axis" bash -c "awk -F, 'NR > 1 {print \$1, \$3, \$4, \$5}' camp/joined_05.csv | ./driver > c_drift.csv"
-for axis in gyro_dph gyro_y_dph gyro_z_dph; do
-  "$fd" stream m3.json camp/joined_05.csv --rate-hz 0.016666666666666666 --target "$axis" 2>/dev/null > "stream_$axis.csv"
-done
-check "the header's drift is stream's, every axis" python3 - <<'EOF2'
-import csv
-header = [[float(v) for v in line.split(",")] for line in open("c_drift.csv")]
-ok = len(header) == 60
-for k, axis in enumerate(("gyro_dph", "gyro_y_dph", "gyro_z_dph")):
-    rows = list(csv.reader(open(f"stream_{axis}.csv")))
-    drift = [float(r[-5]) for r in rows[1:]]  # drift, comp, novelty, weight, flags
-    worst = max(abs(a[k] - b) for a, b in zip(header, drift))
-    print(f"{axis}: header against stream, worst {worst:.3g} deg/h")
-    ok = ok and len(drift) == 60 and worst < 1e-9 * max(abs(b) for b in drift)
+check "the header's drift is stream's, every axis" header_matches_stream imu.h m3.json camp/joined_05.csv gyro_dph gyro_y_dph gyro_z_dph
+
+# --- other targets: accelerometers and a scale-factor channel (docs/logs.md, "Other targets") ----
+check "a campaign with references" run 0 "$fd" campaign campo joined.csv --cut-window-s 3600 --input-rate-dph 0 --test 5 -q --reference accel_x_g=0 --reference accel_z_g=1 --reference sf_gx_ppm=0
+check "references in the manifest" python3 -c "import json; r = json.load(open('campo/campaign.json'))['recordings'][0]['references']; assert r == {'accel_x_g': 0.0, 'accel_z_g': 1.0, 'sf_gx_ppm': 0.0}, r"
+check "a reference for a column not there" run 1 "$fd" campaign x joined.csv --cut-window-s 3600 --input-rate-dph 0 --reference accel_y_g=0
+check "missing column message" err_has "option --reference: joined.csv has no column 'accel_y_g' to give a reference for"
+check "a reference that is not a target" run 1 "$fd" campaign x joined.csv --input-rate-dph 0 --reference temp_fog_degc=0
+check "not a target message" err_has "option --reference: 'temp_fog_degc' is not a target"
+check "a reference without a value" run 1 "$fd" campaign x joined.csv --input-rate-dph 0 --reference accel_x_g
+check "no value message" err_has "option --reference: 'accel_x_g' is not COLUMN=VALUE with VALUE a number"
+check "nothing written by failed campaigns" test ! -e x
+check "train without a reference" run 0 "$fd" train camp -o x.json --targets accel_x_g --iterations 5
+check "no reference warning" out_has "no reference for accel_x_g is known, so the target is the accelerometer less its mean"
+check "the warning names the option" out_has "(give it with fogdrift campaign --reference accel_x_g=VALUE (g))"
+check "train a gyro, accelerometers and a scale factor" run 0 "$fd" train campo -o mo.json --targets gyro_dph,accel_x_g,accel_z_g,sf_gx_ppm
+check "four in one file" out_has "wrote mo.json (4 axes)"
+check "the scale factor is a line in the plate's temperature" out_has "warning: a straight line in T_acc2_degc predicts the held-out drift as well as the model"
+check "train the scale factor as train advises" run 0 "$fd" train campo -o sf.json --targets sf_gx_ppm --method poly --max-degree 1 --features 'T(acc2)' -q
+check "compensate every target" run 0 "$fd" compensate mo.json campo/joined_05.csv -o compo.csv
+check "an accelerometer in g" out_has "accelerometer STD"
+check "each target's columns" bash -c "head -1 compo.csv | grep -q ',drift_accel_x_g,accel_x_comp_g,novelty_accel_x,guard_weight_accel_x,drift_accel_z_g,accel_z_comp_g,novelty_accel_z,guard_weight_accel_z,drift_sf_gx_ppm,sf_gx_comp_ppm,novelty_sf_gx,guard_weight_sf_gx$'"
+check "compensate the scale factor" run 0 "$fd" compensate sf.json campo/joined_05.csv -o compsf.csv -q
+# Each model's drift against the fixture's law over the held-out hour: the accelerometers within
+# 5e-5 g RMS, where one burst mean's noise is 7e-5 g and their biases move by 1e-4 to 2e-4 g in
+# the hour (2e-3 g over the run); the scale factor's line within 2 ppm, where it moves by 31 ppm
+# in the hour (480 ppm over the run) and one burst mean's noise is 0.7 ppm.
+check "every target agrees with its known law" python3 - <<'EOF2'
+import csv, math
+truth = {row["time_s"]: row for row in csv.DictReader(open("truth.csv"))}
+ok = True
+for file, column, law, limit in (("compo.csv", "drift_dph", "drift_x_dph", 3.0),
+                                 ("compo.csv", "drift_accel_x_g", "bias_x_g", 5e-5),
+                                 ("compo.csv", "drift_accel_z_g", "bias_z_g", 5e-5),
+                                 ("compsf.csv", "drift_sf_gx_ppm", "sf_ppm", 2.0)):
+    rows = list(csv.DictReader(open(file)))
+    errors = [float(r[column]) - float(truth[r["time_s"]][law]) for r in rows]
+    rms = math.sqrt(sum(e * e for e in errors) / len(errors))
+    print(f"{column} against {law}: RMS {rms:.3g}")
+    ok = ok and len(rows) == 60 and rms < limit
 raise SystemExit(0 if ok else 1)
 EOF2
+check "evaluate every target" run 0 "$fd" evaluate mo.json campo
+check "in the accelerometer's unit" out_has "accel_x_g: ssa-svr on campo (recordings with role \"test\"): 60 rows of 1 recording"
+check "before and after in g" out_has "Before (the denoised drift) → after compensation, g:"
+check "no finding figures for a scale factor" out_has "(no north-finding figures: a four-position finding reads gyros, and sf_gx_ppm is a scale-factor channel)"
+check "evaluate every target as JSON" run 0 "$fd" evaluate mo.json campo --json
+check "keys in each target's unit" python3 -c "import json; j = json.load(open('$work/out')); a = j['axes']; assert [x['target'] for x in a] == ['gyro_dph', 'accel_x_g', 'accel_z_g', 'sf_gx_ppm']; assert 'mae_dph' in a[0]['overall'] and 'mae_g' in a[1]['overall'] and 'mae_ppm' in a[3]['overall']; assert a[1]['overall']['mae_g'] < 0.1 * a[1]['overall']['mae_before_g']"
+check "evaluate a file with its references" run 0 "$fd" evaluate mo.json campo/joined_05.csv --input-rate-dph 0 --reference accel_x_g=0 --reference accel_z_g=1 --reference sf_gx_ppm=0
+check "no warning with every reference" bash -c "! grep -q warning '$work/out'"
+check "evaluate a file without them" run 0 "$fd" evaluate mo.json campo/joined_05.csv --input-rate-dph 0
+check "a warning per target without one" bash -c "[ \$(grep -c 'warning: campo/joined_05.csv: no reference for' '$work/out') -eq 3 ]"
+check "a reference on a campaign" run 1 "$fd" evaluate mo.json campo --reference accel_x_g=0
+check "campaign reference message" err_has "option --reference: applies to recording files; a campaign says its references in campaign.json"
+check "export every target" run 0 "$fd" export-c mo.json --prefix imu --stream-rate-hz 0.016666666666666666 -o imuo.h
+check "each target's unit in the header" grep -q 'static const char\* const imu_axis_units\[4\] = {"deg/h", "g", "g", "ppm"};' imuo.h
+check "an accelerometer's own names" grep -q "imu_accel_x_compensated_g(imu_accel_x_state\* s, imu_accel_x_real accel_x_g)" imuo.h
+check "the mixed header's drift is stream's, every target" header_matches_stream imuo.h mo.json campo/joined_05.csv gyro_dph accel_x_g accel_z_g sf_gx_ppm
 
 echo "chamber: $passed passed, $failed failed"
 [ "$failed" -eq 0 ]

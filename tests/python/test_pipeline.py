@@ -4,6 +4,7 @@ denoise (PyWavelets), features (SciPy's Savitzky-Golay filter), evaluate (Table 
 import csv
 import json
 import math
+import warnings
 
 import numpy as np
 import pytest
@@ -322,10 +323,29 @@ def test_every_axis_trains_its_own_model_and_saves_as_one_file(campaign, cli, tm
     got = json.loads(cli("evaluate", tmp_path / "imu.json", tmp_path / "rec.csv", "--json",
                          "--input-rate-dph", "0"))
     assert [a["target"] for a in got["axes"]] == ["gyro_dph", "gyro_y_dph"]
-    with pytest.raises(ValueError, match="target: 'gyroY' is not gyro_dph or gyro_NAME_dph"):
+    with pytest.raises(ValueError, match="target: 'gyroY' is not a target: a gyro"):
         fogdrift.train(static, method="poly", target="gyroY")
     with pytest.raises(ValueError, match="has no column 'gyro_z_dph'"):
         fogdrift.train(static, method="poly", target="gyro_z_dph")
+
+
+def test_an_accelerometer_is_a_target_with_its_own_reference(campaign):
+    d, py = campaign
+    # The simulated unit is level: its x accelerometer senses no gravity, only its bias.
+    level = dict(py, recordings=[dict(r, references={"accel_x_g": 0.0}) for r in py["recordings"]])
+    m = fogdrift.train(level, method="poly", target="accel_x_g")["model"]
+    assert m.target == "accel_x_g"
+    rec = py["data"][-1]
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        got = fogdrift.evaluate(m, [rec], references={"accel_x_g": 0.0})["overall"]
+    assert "mae_g" in got and "mae_dph" not in got
+    assert got["mae_g"] < 0.5 * got["mae_before_g"]
+    assert np.allclose(m.compensate(rec), np.asarray(rec["accel_x_g"]) - m.predict(rec)["drift_g"])
+    with pytest.warns(UserWarning, match="no reference for accel_x_g is known"):
+        fogdrift.evaluate(m, [rec])
+    with pytest.raises(ValueError, match="references: 'temp_fog_degc' is not a target"):
+        fogdrift.evaluate(m, [rec], references={"temp_fog_degc": 0.0})
 
 
 def test_malformed_inputs_are_value_errors_naming_the_rule(campaign):

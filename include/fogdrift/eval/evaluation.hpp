@@ -23,7 +23,9 @@ namespace fogdrift::eval {
 
 struct EvaluationOptions {
   bool guarded = true;  ///< apply the novelty guard (false: the model's full correction)
-  bool allan = false;   ///< also the Allan noise terms of each recording, raw and compensated
+  /// Also the Allan noise terms of each recording, raw and compensated: a gyro's alone (its
+  /// terms are °/√h, °/h, °/h/√h); another target gets none.
+  bool allan = false;
 };
 
 /// Datasheet noise terms of a recording's gyro output before and after compensation, from the
@@ -42,7 +44,9 @@ struct RecordingEvaluation {
 };
 
 struct Evaluation {
-  std::string method;           ///< the model's method ("ssa-svr", ...)
+  std::string method;  ///< the model's method ("ssa-svr", ...)
+  /// The column the model compensates (target.hpp); the metrics are in its unit.
+  std::string target = "gyro_dph";
   bool guarded = true;          ///< as EvaluationOptions::guarded
   bool simulated = false;       ///< the recordings are a campaign `fogdrift simulate` wrote
   std::size_t rows = 0;         ///< dataset rows over all recordings
@@ -64,7 +68,8 @@ Evaluation evaluate(const CompensationModel& model, const Campaign& campaign,
 
 /// The JSON `fogdrift evaluate --json` prints: "model" (`model_label`), "method", "source",
 /// "overall", "guard", "recordings" (each with its metrics, novelty shares and, when computed,
-/// "allan"), "warnings"; metric keys name their unit (…_dph).
+/// "allan"), "warnings"; metric keys name their unit: …_dph for a gyro, …_g for an
+/// accelerometer, …_ppm for a scale-factor channel.
 std::string to_json(const Evaluation& evaluation, const std::string& model_label,
                     const std::string& source);
 

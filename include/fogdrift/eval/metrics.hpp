@@ -24,6 +24,8 @@
 // NaN (kNotApplicable; null in JSON, "n/a" in print), when a recording starts startup_s or more
 // after power-on (no start-up residual), or when its rows are more than 2·position_s apart or
 // it is shorter than three positions (no opposite difference).
+// The fields are named in °/h, a gyro's unit; a model of another target (target.hpp) gives them
+// in that target's unit, and its JSON names them so (evaluation.hpp).
 #pragma once
 
 #include <cstddef>
