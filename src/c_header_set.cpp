@@ -95,7 +95,7 @@ std::string to_c_header(const ModelSet& set, const std::string& prefix, double s
         "                                {0}_real {4}[{1}_N_AXES]) {{\n{3}}}\n\n",
         prefix, upper, params, update, drift,
         gyros ? "deg/h" : fmt::format("in {}_axis_units", prefix));
-    const std::string indent(41, ' ');
+    const std::string indent(41, ' ');  // as gyro sets have always been laid out, byte for byte
     h += fmt::format(
         "/* Every axis's {5} minus its last drift (each as AXIS_compensated_{6}). */\n"
         "static inline void {0}({1}_state* s, const {1}_real {2}[{3}_N_AXES],\n"
