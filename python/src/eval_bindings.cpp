@@ -22,6 +22,7 @@
 #include "fogdrift/eval/evaluation.hpp"
 #include "fogdrift/eval/findings.hpp"
 #include "fogdrift/eval/northfind.hpp"
+#include "fogdrift/target.hpp"
 
 namespace py = pybind11;
 
@@ -100,8 +101,20 @@ py::object evaluate(const CompensationModel& model, const py::object& data, bool
     }
     if (inputs.empty()) throw OptionError("data", "no recordings to evaluate on");
     source = std::to_string(inputs.size()) + " recording" + (inputs.size() == 1 ? "" : "s");
-    py::gil_scoped_release release;
-    e = eval::evaluate(model, inputs, options);
+    {
+      py::gil_scoped_release release;
+      e = eval::evaluate(model, inputs, options);
+    }
+    // Recordings have no campaign to give a reference in: the hint names this call's keywords.
+    const Target t = target_of(model.dataset.target_column);
+    const std::string command = fmt::format("(give it with {})", t.reference_hint());
+    const std::string keywords =
+        t.kind == TargetKind::gyro
+            ? std::string("(give it as input_rate_dph=VALUE, °/h)")
+            : fmt::format("(give it as references={{'{}': VALUE}}, {})", t.column, t.symbol());
+    for (std::string& w : e.warnings)
+      if (const auto at = w.find(command); at != std::string::npos)
+        w.replace(at, command.size(), keywords);
   }
   py::dict out = from_json(eval::to_json(e, "model", source)).cast<py::dict>();
   out.attr("pop")("model");

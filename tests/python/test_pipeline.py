@@ -342,7 +342,8 @@ def test_an_accelerometer_is_a_target_with_its_own_reference(campaign):
     assert "mae_g" in got and "mae_dph" not in got
     assert got["mae_g"] < 0.5 * got["mae_before_g"]
     assert np.allclose(m.compensate(rec), np.asarray(rec["accel_x_g"]) - m.predict(rec)["drift_g"])
-    with pytest.warns(UserWarning, match="no reference for accel_x_g is known"):
+    with pytest.warns(UserWarning, match=r"no reference for accel_x_g is known.*give it as "
+                                         r"references=\{'accel_x_g': VALUE\}, g\)"):
         fogdrift.evaluate(m, [rec])
     with pytest.raises(ValueError, match="references: 'temp_fog_degc' is not a target"):
         fogdrift.evaluate(m, [rec], references={"temp_fog_degc": 0.0})
