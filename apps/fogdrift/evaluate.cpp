@@ -272,7 +272,8 @@ void add_evaluate(CLI::App& app) {
                 "Apply the model's full correction even where its inputs are novel");
   cmd->add_flag("--allan", args->allan,
                 "Also the overlapping Allan deviation of every recording's output before and "
-                "after compensation: angle random walk, bias instability, rate random walk");
+                "after compensation: angle random walk, bias instability, rate random walk (a "
+                "gyro's terms; an accelerometer or scale-factor target gets none)");
   cmd->callback([args] { with_model_settings(args->model, [&] { run(*args); }); });
 }
 
