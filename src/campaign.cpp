@@ -184,7 +184,8 @@ Campaign parse_manifest(const std::string& text, const std::string& file, const 
                fmt::format("\"{}\" is not a target column (gyro_NAME_dph, accel_NAME_g, "
                            "sf_NAME_ppm; docs/logs.md, \"Other targets\")",
                            column));
-        e.references[column] = number_in(refs, column, -1e7, 1e7, false, file, at);
+        e.references[column] =
+            number_in(refs, column, -kReferenceLimit, kReferenceLimit, false, file, at);
       }
     }
     if (r.contains("notes")) e.notes_json = r["notes"].dump();

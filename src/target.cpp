@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <array>
+#include <cmath>
 
 #include "fogdrift/error.hpp"
 
@@ -77,6 +78,13 @@ Target target_of(std::string_view column, const std::string& option) {
                                 "scale-factor channel (sf_NAME_ppm), NAME of lower-case letters, "
                                 "digits and '_' (docs/logs.md, \"Other targets\")",
                                 column));
+}
+
+void check_reference(std::string_view column, double value, const std::string& option) {
+  const Target target = target_of(column, option);
+  if (!(std::abs(value) <= kReferenceLimit))
+    throw OptionError(option, fmt::format("{}: {} is not a number of magnitude at most {}, {}",
+                                          column, value, kReferenceLimit, target.symbol()));
 }
 
 bool is_target_column(std::string_view name) {

@@ -4,6 +4,9 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <limits>
+
 #include "fogdrift/error.hpp"
 
 namespace fogdrift {
@@ -91,6 +94,24 @@ TEST(Target, ReadingsComeFromTheNamedColumn) {
               std::string::npos)
         << e.what();
   }
+}
+
+// One rule for a reference wherever it is given (a manifest, --reference, references=).
+TEST(Target, AReferenceIsAFiniteNumberForATarget) {
+  EXPECT_NO_THROW(check_reference("accel_z_g", 1.0, "--reference"));
+  EXPECT_NO_THROW(check_reference("sf_fog_ppm", -kReferenceLimit, "--reference"));
+  for (const double bad : {std::nan(""), std::numeric_limits<double>::infinity(), 2e7}) {
+    try {
+      check_reference("accel_x_g", bad, "references");
+      FAIL() << bad;
+    } catch (const OptionError& e) {
+      EXPECT_EQ(e.option(), "references");
+      EXPECT_NE(std::string(e.what()).find("is not a number of magnitude at most 10000000, g"),
+                std::string::npos)
+          << e.what();
+    }
+  }
+  EXPECT_THROW(check_reference("temp_fog_degc", 0.0, "references"), OptionError);
 }
 
 }  // namespace

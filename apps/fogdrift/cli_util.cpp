@@ -5,7 +5,6 @@
 #include <CLI/CLI.hpp>
 
 #include <cerrno>
-#include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <fstream>
@@ -72,10 +71,11 @@ std::map<std::string, double> parse_references(const std::vector<std::string>& g
     const Target target = target_of(column, option);
     const auto value =
         eq == std::string::npos ? std::nullopt : csv::parse_number(item.substr(eq + 1));
-    if (!value || std::abs(*value) > 1e7)
-      throw OptionError(option, fmt::format("'{}' is not COLUMN=VALUE with VALUE a number of "
-                                            "magnitude at most 1e7, {} (e.g. {}=0)",
+    if (!value)
+      throw OptionError(option, fmt::format("'{}' is not COLUMN=VALUE with VALUE a number, {} "
+                                            "(e.g. {}=0)",
                                             item, target.symbol(), column));
+    check_reference(column, *value, option);
     if (!out.emplace(column, *value).second)
       throw OptionError(option, fmt::format("{} is given twice", column));
   }

@@ -60,6 +60,14 @@ bool is_target_column(std::string_view name);
 /// The axis a target column names (Target::axis).
 std::string axis_name(std::string_view target_column);
 
+/// The largest magnitude a reference may have, in its target's unit (a manifest's, a flag's, a
+/// keyword's).
+inline constexpr double kReferenceLimit = 1e7;
+
+/// Checks one reference: `column` a target column and `value` a finite number within
+/// ±kReferenceLimit; OptionError(option) naming the rule otherwise.
+void check_reference(std::string_view column, double value, const std::string& option);
+
 /// The readings of target `column` in `recording`: gyro_dph, accel_x_g, accel_y_g, or the
 /// further channel `column`. Throws InputError naming the recording when it lacks the column or
 /// a cell is not a number.

@@ -46,11 +46,7 @@ py::object evaluate(const CompensationModel& model, const py::object& data, bool
                     bool allan, std::optional<double> input_rate_dph,
                     const std::map<std::string, double>& references) {
   const eval::EvaluationOptions options{.guarded = guarded, .allan = allan};
-  for (const auto& [column, value] : references) {
-    target_of(column, "references");
-    if (!std::isfinite(value))
-      throw OptionError("references", fmt::format("{}: {} is not a finite number", column, value));
-  }
+  for (const auto& [column, value] : references) check_reference(column, value, "references");
   eval::Evaluation e;
   std::string source;
   if (is_held_campaign(data)) {

@@ -196,6 +196,8 @@ check "a reference that is not a target" run 1 "$fd" campaign x joined.csv --inp
 check "not a target message" err_has "option --reference: 'temp_fog_degc' is not a target"
 check "a reference without a value" run 1 "$fd" campaign x joined.csv --input-rate-dph 0 --reference accel_x_g
 check "no value message" err_has "option --reference: 'accel_x_g' is not COLUMN=VALUE with VALUE a number"
+check "a reference out of range" run 1 "$fd" campaign x joined.csv --cut-window-s 3600 --input-rate-dph 0 --reference accel_x_g=1e9
+check "out of range message" err_has "option --reference: accel_x_g: 1000000000 is not a number of magnitude at most 10000000, g"
 check "nothing written by failed campaigns" test ! -e x
 check "train without a reference" run 0 "$fd" train camp -o x.json --targets accel_x_g --iterations 5
 check "no reference warning" out_has "no reference for accel_x_g is known, so the target is the accelerometer less its mean"

@@ -347,6 +347,8 @@ def test_an_accelerometer_is_a_target_with_its_own_reference(campaign):
         fogdrift.evaluate(m, [rec])
     with pytest.raises(ValueError, match="references: 'temp_fog_degc' is not a target"):
         fogdrift.evaluate(m, [rec], references={"temp_fog_degc": 0.0})
+    with pytest.raises(ValueError, match="references: accel_x_g: nan is not a number of magnitude"):
+        fogdrift.evaluate(m, [rec], references={"accel_x_g": float("nan")})
 
 
 def test_malformed_inputs_are_value_errors_naming_the_rule(campaign):
