@@ -182,7 +182,7 @@ static const double @P@_dt_s = @DT@;
 #define @U@_N_THERMOMETERS @NT@ /* @THERMOMETERS@ */
 static const int @P@_reads[@U@_N_THERMOMETERS] = {@READ_FLAGS@};
 static const @REAL@ @P@_rate_taps[@NTAPS@] = {@TAPS@};
-
+@LAG_TABLES@
 typedef struct {
   @REAL@ buffer[@U@_N_THERMOMETERS][2 * @U@_RATE_WINDOW]; /* newest at size - 1 */
   long size;                             /* samples in the buffer */
@@ -210,7 +210,7 @@ typedef struct {
   long sum_count;
   double data_time_s;          /* time of the last data sample */
   double sum[@U@_N_THERMOMETERS]; /* sums of a block in double: up to 2000 samples */
-} @P@_state;
+@LAG_STATE@} @P@_state;
 
 static inline void @P@_reset(@P@_state* s) {
   int k;
@@ -234,8 +234,8 @@ static inline void @P@_reset(@P@_state* s) {
     s->seen_good[k] = s->out[k] = s->tracking[k] = 0;
     s->good_degc[k] = s->good_time_s[k] = s->good_rate[k] = s->pushed_degc[k] = 0.0;
   }
-}
-
+@LAG_RESET@}
+@LAG_FUNCTION@
 /* Thermometer k's sample pushed into its rate filter; returns its rate, deg C/s. */
 static inline @REAL@ @P@_push_(@P@_state* s, int k, @REAL@ v) {
   const @REAL@* taps;
@@ -371,7 +371,7 @@ static inline @REAL@ @P@_step_(@P@_state* s, double time_s,
     s->count = 0;
     s->refill = s->has_good_drift ? @U@_RATE_WINDOW - 1 : 0;
     missing = 0;
-  }
+@LAG_RESTART@  }
   for (k = 0; k < @U@_N_THERMOMETERS; ++k)
     temp[k] = !@P@_reads[k] ? 0.0 : (good[k] ? raw[k] : @P@_substitute_(s, k, t));
   for (m = 1; m <= missing; ++m) {
@@ -382,11 +382,11 @@ static inline @REAL@ @P@_step_(@P@_state* s, double time_s,
                                                            (@REAL@)(missing + 1)
                                  : @P@_substitute_(s, k, tm);
       (void)@P@_push_(s, k, v);
-    }
+@LAG_PUSH_MISSING@    }
   }
   for (k = 0; k < @U@_N_THERMOMETERS; ++k) {
     rate[k] = @P@_push_(s, k, temp[k]);
-    if (!@P@_reads[k]) continue;
+@LAG_PUSH@    if (!@P@_reads[k]) continue;
     s->pushed_degc[k] = temp[k];
     if (good[k]) {
       s->seen_good[k] = 1;
@@ -467,6 +467,30 @@ static inline @REAL@ @P@_compensated_@UNIT@(@P@_state* s, @REAL@ @READING@) {
 
 )";
 
+// The lags of the inputs dT@τ (features.hpp, LaggedRate), emitted only for a model that has them.
+constexpr std::string_view kLagStateC =
+    R"(  /* the lags of the inputs dT@tau: state, deg C; term, deg C/s; started since power-on */
+  @REAL@ lag_degc[@U@_N_LAGS], lag_rate[@U@_N_LAGS];
+  int lag_started[@U@_N_LAGS];
+)";
+
+constexpr std::string_view kLagFunctionC = R"(
+/* Thermometer k's sample into the lags that read it: s += g (T - s), the term (T - s) / tau.
+ * A lag starts at its first sample, as at rest. */
+static inline void @P@_lags_(@P@_state* s, int k, @REAL@ v) {
+  int i;
+  for (i = 0; i < @U@_N_LAGS; ++i) {
+    if (@P@_lag_thermometer[i] != k) continue;
+    if (!s->lag_started[i]) {
+      s->lag_degc[i] = v;
+      s->lag_started[i] = 1;
+    }
+    s->lag_degc[i] += @P@_lag_gain[i] * (v - s->lag_degc[i]);
+    s->lag_rate[i] = (v - s->lag_degc[i]) / @P@_lag_tau_s[i];
+  }
+}
+)";
+
 constexpr std::string_view kGuardC = R"(#if @U@_GUARD
     {
       const @REAL@ v =
@@ -506,10 +530,20 @@ std::string c_streaming_part(const CompensationModel& model, const std::string& 
     for (char& c : name) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
     flags += fmt::format("#define {}_FAULT_{} {}u\n", upper, name, 1u << k);
   }
-  // Feature assignments: FeatureColumn::value() written out in C.
+  // Feature assignments: FeatureColumn::value() written out in C, a lagged rate (dT@τ) from its
+  // lag's state (features.hpp, LaggedRate).
   std::string features;
   const std::vector<FeatureColumn> columns = model.dataset.features.columns();
+  std::vector<double> lag_gain, lag_tau_s;
+  std::vector<int> lag_thermometer;
   for (std::size_t c = 0; c < columns.size(); ++c) {
+    if (columns[c].lagged()) {
+      features += fmt::format("    f[{}] = s->lag_rate[{}];\n", c, lag_gain.size());
+      lag_gain.push_back(LaggedRate(columns[c].tau_s, dt_s).gain());
+      lag_tau_s.push_back(columns[c].tau_s);
+      lag_thermometer.push_back(static_cast<int>(columns[c].a));
+      continue;
+    }
     const auto a = static_cast<std::size_t>(columns[c].a);
     const auto b = static_cast<std::size_t>(columns[c].b);
     std::string value;
@@ -532,6 +566,8 @@ std::string c_streaming_part(const CompensationModel& model, const std::string& 
       case FeatureTerm::temp_rate_product:
         value = fmt::format("temp[{}] * rate[{}]", a, a);
         break;
+      case FeatureTerm::lagged_rate:
+        break;  // above
     }
     features += fmt::format("    f[{}] = {};\n", c, value);
   }
@@ -562,6 +598,23 @@ std::string c_streaming_part(const CompensationModel& model, const std::string& 
             : "\n * NOTE: this model was trained with centred rates; streaming applies causal "
               "ones, which\n * lag. Train with --differentiator causal for firmware."},
        {"@FEATURES@", features},
+       {"@LAG_STATE@", lag_gain.empty() ? "" : std::string(kLagStateC)},
+       {"@LAG_RESET@",
+        lag_gain.empty() ? "" : "  for (k = 0; k < @U@_N_LAGS; ++k) s->lag_started[k] = 0;\n"},
+       {"@LAG_RESTART@",
+        lag_gain.empty() ? "" : "    for (k = 0; k < @U@_N_LAGS; ++k) s->lag_started[k] = 0;\n"},
+       {"@LAG_FUNCTION@", lag_gain.empty() ? "" : std::string(kLagFunctionC)},
+       {"@LAG_PUSH_MISSING@", lag_gain.empty() ? "" : "      @P@_lags_(s, k, v);\n"},
+       {"@LAG_PUSH@", lag_gain.empty() ? "" : "    @P@_lags_(s, k, temp[k]);\n"},
+       {"@LAG_TABLES@",
+        lag_gain.empty()
+            ? std::string()
+            : fmt::format("#define @U@_N_LAGS {} /* inputs dT@tau: rates through a lag */\n"
+                          "static const int @P@_lag_thermometer[@U@_N_LAGS] = {{{}}};\n"
+                          "static const @REAL@ @P@_lag_gain[@U@_N_LAGS] = {{{}}};\n"
+                          "static const @REAL@ @P@_lag_tau_s[@U@_N_LAGS] = {{{}}};\n",
+                          lag_gain.size(), fmt::join(lag_thermometer, ", "), c_array(lag_gain),
+                          c_array(lag_tau_s))},
        {"@FLAGS@", flags},
        {"@READS@", thermometers_read(model)},
        {"@READ_FLAGS@", read_flags},

@@ -30,6 +30,8 @@ StreamingCompensator::StreamingCompensator(const CompensationModel& model, doubl
       stuck_(nt_),
       block_(nt_) {
   validate(faults_);
+  for (std::size_t c = 0; c < columns_.size(); ++c)
+    if (columns_[c].lagged()) lags_.push_back({c, LaggedRate(columns_[c].tau_s, dt_s_)});
   for (std::size_t k = 0; k < nt_; ++k) {
     thermometers_[k].read = model.dataset.features.reads(static_cast<Thermometer>(k));
     thermometers_[k].others_degc.assign(nt_, 0.0);
@@ -45,6 +47,7 @@ void StreamingCompensator::ThermometerState::clear() noexcept {
 
 void StreamingCompensator::reset() noexcept {
   for (auto& r : rates_) r.reset();
+  for (Lag& lag : lags_) lag.rate.reset();
   filter_.reset();
   weight_ = 1.0;
   for (ThermometerState& th : thermometers_) th.clear();
@@ -105,6 +108,12 @@ void StreamingCompensator::check_thermometers(double time_s, std::uint32_t& flag
       good[k] = false;
       flags |= fault::temp_stuck;
     }
+}
+
+// Thermometer k's value for one sample into the lags that read it.
+void StreamingCompensator::push_lags(std::size_t k, double temp_degc) noexcept {
+  for (Lag& lag : lags_)
+    if (static_cast<std::size_t>(columns_[lag.column].a) == k) lag.value = lag.rate.push(temp_degc);
 }
 
 // The sample's further thermometers into raw_[3…]; one the sample does not hold is a reading
@@ -224,7 +233,9 @@ StreamOutput StreamingCompensator::step(const Sample& s, std::uint32_t flags) no
     (th.out ? any_out : any_bridged) = true;
   }
   if (restart_rates) {
+    // The lags start again with the rates, as at rest (features.hpp, LaggedRate).
     for (auto& r : rates_) r.reset();
+    for (Lag& lag : lags_) lag.rate.reset();
     // At power-on (no drift given yet) the short windows are those the model was trained with.
     refill_ = has_good_drift_ ? rates_[0].window() - 1 : 0;
     missing = 0;
@@ -244,8 +255,10 @@ StreamOutput StreamingCompensator::step(const Sample& s, std::uint32_t flags) no
                                                   static_cast<double>(missing + 1)
                            : substitute(k, tm);
       rates_[k].push(v);
+      push_lags(k, v);
     }
     rate[k] = rates_[k].push(temp[k]);
+    push_lags(k, temp[k]);
     th.pushed_degc = temp[k];
     if (good[k]) {
       th.seen_good = true;
@@ -265,6 +278,7 @@ StreamOutput StreamingCompensator::step(const Sample& s, std::uint32_t flags) no
   } else {
     for (std::size_t c = 0; c < columns_.size(); ++c)
       features_[c] = columns_[c].value(temp, rate, t);
+    for (const Lag& lag : lags_) features_[lag.column] = lag.value;
     // While the rate window fills, novelty leaves the rates out (guard.hpp, "Warm-up").
     bool warming = false;
     for (std::size_t k = 0; k < nt_; ++k) warming |= thermometers_[k].read && !rates_[k].settled();

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 #include <algorithm>
 #include <array>
+#include <charconv>
 #include <cmath>
 
 #include "fogdrift/enum_names.hpp"
@@ -12,16 +13,20 @@ namespace fogdrift {
 namespace {
 
 constexpr std::array<std::string_view, 3> kThermometerNames = {"fog", "acc1", "acc2"};
-constexpr std::array<EnumName<FeatureTerm>, 6> kTermNames = {
+constexpr std::array<EnumName<FeatureTerm>, 7> kTermNames = {
     {{FeatureTerm::temp, "T"},
      {FeatureTerm::rate, "dT"},
      {FeatureTerm::gradient, "grad"},
      {FeatureTerm::gradient_rate, "dgrad"},
      {FeatureTerm::time, "t"},
-     {FeatureTerm::temp_rate_product, "TdT"}}};
-constexpr std::array kTerms = {FeatureTerm::temp,     FeatureTerm::rate,
-                               FeatureTerm::gradient, FeatureTerm::gradient_rate,
-                               FeatureTerm::time,     FeatureTerm::temp_rate_product};
+     {FeatureTerm::temp_rate_product, "TdT"},
+     {FeatureTerm::lagged_rate, "dT@"}}};
+// The longest lag a term may name, s: a day, far beyond any start-up.
+constexpr double kMaxLagS = 86400;
+constexpr std::array kTerms = {FeatureTerm::temp,       FeatureTerm::rate,
+                               FeatureTerm::gradient,   FeatureTerm::gradient_rate,
+                               FeatureTerm::time,       FeatureTerm::temp_rate_product,
+                               FeatureTerm::lagged_rate};
 
 bool is_gradient(FeatureTerm term) {
   return term == FeatureTerm::gradient || term == FeatureTerm::gradient_rate;
@@ -57,6 +62,14 @@ std::string_view to_string(FeatureTerm term) {
   return name_in(kTermNames, term);
 }
 
+LaggedRate::LaggedRate(double tau_s, double dt_s)
+    : tau_s_(tau_s), gain_(-std::expm1(-dt_s / tau_s)) {
+  if (!(tau_s > 0) || !std::isfinite(tau_s))
+    throw OptionError("features", fmt::format("dT@{}: the lag must be a time > 0 s", tau_s));
+  if (!(dt_s > 0) || !std::isfinite(dt_s))
+    throw OptionError("dt_s", "the sample interval must be positive and finite");
+}
+
 std::string thermometer_column(std::string_view name) {
   return fmt::format("temp_{}_degc", name);
 }
@@ -85,9 +98,10 @@ std::vector<std::string> FeatureSpec::thermometer_columns() const {
 FeatureSpec FeatureSpec::parse(std::string_view text,
                                const std::vector<std::string>& thermometers) {
   const auto fail = [&](const std::string& why) {
-    throw OptionError("features", fmt::format("'{}': {}; write terms such as T,dT,grad or "
-                                              "T(fog,acc1) from T, dT, grad, dgrad, t, TdT",
-                                              text, why));
+    throw OptionError("features",
+                      fmt::format("'{}': {}; write terms such as T,dT,grad or T(fog,acc1) from T, "
+                                  "dT, grad, dgrad, t, TdT, dT@SECONDS",
+                                  text, why));
   };
   FeatureSpec spec;
   // A thermometer's number, a further one numbered as it is first met.
@@ -118,13 +132,29 @@ FeatureSpec FeatureSpec::parse(std::string_view text,
       list = split_terms(item.substr(open + 1, item.size() - open - 2));
       has_list = true;
     }
-    const auto term_it = std::find_if(kTerms.begin(), kTerms.end(), [&](FeatureTerm t) {
-      return fogdrift::to_string(t) == name;
-    });
-    if (term_it == kTerms.end()) fail(fmt::format("'{}' is not a term", name));
-    FeatureTermSpec term{*term_it, {}};
+    FeatureTermSpec term;
+    if (name.starts_with("dT@")) {
+      term.term = FeatureTerm::lagged_rate;
+      const std::string_view tau = name.substr(3);
+      double value = 0;
+      const auto [end, ec] = std::from_chars(tau.data(), tau.data() + tau.size(), value);
+      if (ec != std::errc() || end != tau.data() + tau.size() || !(value > 0) ||
+          !(value <= kMaxLagS))
+        fail(
+            fmt::format("'{}': the lag after '@' must be a number of seconds, > 0 and at most "
+                        "{} (a day)",
+                        name, kMaxLagS));
+      term.tau_s = value;
+    } else {
+      const auto term_it = std::find_if(kTerms.begin(), kTerms.end(), [&](FeatureTerm t) {
+        return t != FeatureTerm::lagged_rate && fogdrift::to_string(t) == name;
+      });
+      if (term_it == kTerms.end()) fail(fmt::format("'{}' is not a term", name));
+      term.term = *term_it;
+    }
     for (const auto& existing : spec.terms) {
-      if (existing.term == term.term) fail(fmt::format("'{}' appears twice", name));
+      if (existing.term == term.term && existing.tau_s == term.tau_s)
+        fail(fmt::format("'{}' appears twice", name));
     }
     if (term.term == FeatureTerm::time) {
       if (has_list) fail("'t' takes no thermometers");
@@ -152,6 +182,7 @@ std::string FeatureSpec::to_string() const {
   for (const auto& term : terms) {
     if (!out.empty()) out += ',';
     out += fogdrift::to_string(term.term);
+    if (term.term == FeatureTerm::lagged_rate) out += fmt::format("{}", term.tau_s);
     if (term.term != FeatureTerm::time && term.thermometers != three) {
       out += '(';
       for (std::size_t k = 0; k < term.thermometers.size(); ++k) {
@@ -174,7 +205,7 @@ std::vector<FeatureColumn> FeatureSpec::columns() const {
       for (std::size_t i = 0; i < th.size(); ++i)
         for (std::size_t j = i + 1; j < th.size(); ++j) out.push_back({term.term, th[i], th[j]});
     } else {
-      for (auto k : th) out.push_back({term.term, k});
+      for (auto k : th) out.push_back({term.term, k, k, term.tau_s});
     }
   }
   return out;
@@ -202,6 +233,9 @@ std::vector<std::string> FeatureSpec::names() const {
         break;
       case FeatureTerm::temp_rate_product:
         out.push_back(fmt::format("TdT_{}_degc2_per_s", ta));
+        break;
+      case FeatureTerm::lagged_rate:
+        out.push_back(fmt::format("dT{}s_{}_degc_per_s", c.tau_s, ta));
         break;
     }
   }
@@ -381,6 +415,12 @@ FeatureTable compute_features(const Recording& recording, const FeatureSpec& spe
     }
     for (std::size_t c = 0; c < plan.size(); ++c)
       columns[c][s] = plan[c].value(temp, rate, recording.time_s[s]);
+  }
+  for (std::size_t c = 0; c < plan.size(); ++c) {
+    if (!plan[c].lagged()) continue;
+    LaggedRate lag(plan[c].tau_s, dt);
+    const std::vector<double>& temp_c = *temps[static_cast<std::size_t>(plan[c].a)];
+    for (std::size_t s = 0; s < n; ++s) columns[c][s] = lag.push(temp_c[s]);
   }
 
   FeatureTable table;

@@ -81,6 +81,53 @@ TEST(FeatureSpec, BadSpecsNameTheProblem) {
   EXPECT_NE(message("T(fog").find("no closing parenthesis"), std::string::npos);
   EXPECT_NE(message("t(fog)").find("'t' takes no thermometers"), std::string::npos);
   EXPECT_NE(message("T(fog,fog)").find("appears twice"), std::string::npos);
+  EXPECT_NE(message("dT@0").find("'dT@0': the lag after '@' must be a number of seconds"),
+            std::string::npos);
+  EXPECT_NE(message("dT@-5").find("must be a number of seconds"), std::string::npos);
+  EXPECT_NE(message("dT@600s").find("must be a number of seconds"), std::string::npos);
+  EXPECT_NE(message("dT@").find("must be a number of seconds"), std::string::npos);
+  EXPECT_NE(message("dT@1e9").find("at most 86400"), std::string::npos);
+  EXPECT_NE(message("dT@600,T,dT@600(fog)").find("'dT@600' appears twice"), std::string::npos);
+}
+
+// dT@τ (features.hpp, LaggedRate): one term per time constant, its τ in the text and the names.
+TEST(FeatureSpec, ALaggedRateCarriesItsTimeConstant) {
+  const FeatureSpec spec = FeatureSpec::parse("T,dT@600(fog),dT@90.5(acc1,acc2)");
+  EXPECT_EQ(spec.to_string(), "T,dT@600(fog),dT@90.5(acc1,acc2)");
+  EXPECT_EQ(FeatureSpec::parse(spec.to_string()).to_string(), spec.to_string());
+  EXPECT_EQ(spec.names(), (std::vector<std::string>{
+                              "T_fog_degc", "T_acc1_degc", "T_acc2_degc", "dT600s_fog_degc_per_s",
+                              "dT90.5s_acc1_degc_per_s", "dT90.5s_acc2_degc_per_s"}));
+  const std::vector<FeatureColumn> columns = spec.columns();
+  EXPECT_TRUE(columns[3].lagged());
+  EXPECT_EQ(columns[3].tau_s, 600);
+  EXPECT_EQ(columns[5].tau_s, 90.5);
+  EXPECT_EQ(columns[5].a, Thermometer::acc2);
+  EXPECT_FALSE(columns[0].lagged());
+  // Not a rate of the differentiator: the guard's warm-up keeps it (guard.hpp).
+  EXPECT_EQ(spec.rate_inputs(), (std::vector<bool>(6, false)));
+  EXPECT_TRUE(spec.reads(Thermometer::acc2));
+}
+
+// A ramp T = a·t into the lag from rest: the error e = T − s obeys e_n = (1 − g)(e_(n−1) + a·dt),
+// so e_n = a·dt·(1 − g)(1 − (1 − g)^n)/g, tending to the rate a, low-passed, times τ.
+TEST(LaggedRate, FollowsARampInClosedForm) {
+  const double tau = 300, dt = 1, a = 0.01;
+  LaggedRate lag(tau, dt);
+  const double q = std::exp(-dt / tau);  // 1 − g
+  EXPECT_NEAR(lag.gain(), 1 - q, 1e-16);
+  for (int n = 0; n <= 3000; ++n) {
+    const double e = a * dt * q * (1 - std::pow(q, n)) / (1 - q);
+    ASSERT_NEAR(lag.push(5.0 + a * dt * n), e / tau, 1e-15) << n;
+  }
+  // Far into the ramp the term is the rate, but for half a step of lag: a·dt/(τ(e^(dt/τ) − 1)).
+  double far = 0;
+  for (int n = 3001; n <= 12000; ++n) far = lag.push(5.0 + a * dt * n);
+  EXPECT_NEAR(far, a * dt / (tau * std::expm1(dt / tau)), 1e-13);
+  lag.reset();
+  EXPECT_EQ(lag.push(40.0), 0.0);  // from rest again
+  EXPECT_THROW(LaggedRate(0, 1), OptionError);
+  EXPECT_THROW(LaggedRate(10, 0), OptionError);
 }
 
 // Temperatures that are quadratic in time: the centred degree-2 differentiator is exact, so every
@@ -172,6 +219,30 @@ TEST(Features, BlockMeansOfExactFeatures) {
       ASSERT_NEAR(table.x[b * 12 + c], expect[c], 1e-9) << table.names[c] << " block " << b;
     }
   }
+}
+
+// The lagged rate's block means are those of the recursion run on the recording's samples.
+TEST(Features, ALaggedRateIsRunOnTheSamples) {
+  const Recording r = quadratic_recording(605, 1.0);
+  const FeatureTable table = compute_features(r, FeatureSpec::parse("T(fog),dT@120(fog,acc2)"));
+  ASSERT_EQ(table.names, (std::vector<std::string>{"T_fog_degc", "dT120s_fog_degc_per_s",
+                                                   "dT120s_acc2_degc_per_s"}));
+  LaggedRate fog(120, 1.0), acc2(120, 1.0);
+  std::vector<double> fog_rate, acc2_rate;
+  for (std::size_t i = 0; i < r.size(); ++i) {
+    fog_rate.push_back(fog.push(r.temp_fog_degc[i]));
+    acc2_rate.push_back(acc2.push(r.temp_acc2_degc[i]));
+  }
+  for (std::size_t b = 0; b < table.rows; ++b) {
+    double f = 0, g = 0;
+    for (std::size_t j = 0; j < 10; ++j)
+      f += fog_rate[b * 10 + j] / 10, g += acc2_rate[b * 10 + j] / 10;
+    ASSERT_NEAR(table.x[b * 3 + 1], f, 1e-15) << b;
+    ASSERT_NEAR(table.x[b * 3 + 2], g, 1e-15) << b;
+  }
+  // After 5 time constants the fog's term is its rate, 0.02 − 2e-6·t °C/s, a time constant late,
+  // to 1.5 % (the start's e^(−5), the half step of lag).
+  EXPECT_NEAR(table.x[59 * 3 + 1], 0.02 - 2e-6 * (595.5 - 120), 3e-4);
 }
 
 TEST(Features, IrregularSamplingIsAnInputErrorWithTheLine) {

@@ -390,8 +390,9 @@ void add_train(CLI::App& app) {
   cmd->add_option("--fitness", args->fitness, "cv (grouped cross-validation) or train")
       ->capture_default_str();
   cmd->add_option("--features", args->features,
-                  "Feature spec: terms T, dT, grad, dgrad, t, TdT, each optionally with its "
-                  "thermometers, e.g. 'T,dT(fog),grad'; auto: the paper's T,dT,grad over the "
+                  "Feature spec: terms T, dT, grad, dgrad, t, TdT, dT@SECONDS (the rate through a "
+                  "lag of that time constant), each optionally with its thermometers, e.g. "
+                  "'T,dT(fog),grad' or 'T,dT,grad,dT@300'; auto: the paper's T,dT,grad over the "
                   "thermometers every training recording has (T(fog),dT(fog) with one)")
       ->capture_default_str();
   cmd->add_option("--thermometers", args->thermometers,

@@ -98,6 +98,13 @@ class StreamingCompensator {
   std::size_t nt_;        // thermometers numbered in the model's spec
   std::vector<signal::CausalDifferentiator> rates_;
   std::vector<FeatureColumn> columns_;  // the model's inputs (FeatureSpec::columns())
+  // The lagged rates (dT@τ) among them: the input each fills and its lag.
+  struct Lag {
+    std::size_t column;
+    LaggedRate rate;
+    double value = 0;  // its term at the last sample pushed, °C/s
+  };
+  std::vector<Lag> lags_;
   std::vector<double> features_, work_;
   bool guarded_;
   GuardFilter filter_;
@@ -123,6 +130,7 @@ class StreamingCompensator {
   StreamOutput step(const Sample& s, std::uint32_t flags) noexcept;
   void check_thermometers(double time_s, std::uint32_t& flags) noexcept;
   void further_into_raw(const Sample& s) noexcept;
+  void push_lags(std::size_t k, double temp_degc) noexcept;
   double substitute(std::size_t k, double time_s) const noexcept;
   double degraded(double time_s, std::uint32_t& flags) const noexcept;
   StreamOutput finish(const Sample& s, double drift_dph, std::uint32_t flags) noexcept;

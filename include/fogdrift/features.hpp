@@ -8,8 +8,10 @@
 //   "T(fog,acc1,acc2,case),dT,grad"  or a further one, NAME of a column temp_NAME_degc
 // Terms: T (temperature, °C), dT (rate, °C/s), grad (T_i - T_j for every pair i < j of the
 // term's thermometers, °C), dgrad (rate of that gradient, °C/s; the eq. 3 term d(grad T)/dt),
-// t (time since power-on, s), TdT (T_k times dT_k/dt, °C²/s). A term without a list reads the
-// three (fog, acc1, acc2), or the list parse() is given (train --thermometers).
+// t (time since power-on, s), TdT (T_k times dT_k/dt, °C²/s), dT@τ (the rate through a
+// first-order lag of τ seconds, °C/s: LaggedRate; "dT@600(fog)"; several τ may be named). A term
+// without a list reads the three (fog, acc1, acc2), or the list parse() is given (train
+// --thermometers).
 //
 // Thermometers are numbered: fog, acc1, acc2 are 0, 1, 2, and further ones 3, 4, … in the
 // order the spec first names them (FeatureSpec::further); a term's list is kept in that order.
@@ -37,9 +39,18 @@ namespace fogdrift {
 /// A thermometer by number: the three every model knows by name, and further ones, Thermometer(3
 /// + i) for FeatureSpec::further[i] (docs/logs.md, "More thermometers").
 enum class Thermometer : std::uint8_t { fog, acc1, acc2 };
-enum class FeatureTerm { temp, rate, gradient, gradient_rate, time, temp_rate_product };
+enum class FeatureTerm {
+  temp,
+  rate,
+  gradient,
+  gradient_rate,
+  time,
+  temp_rate_product,
+  lagged_rate
+};
 
-std::string_view to_string(FeatureTerm term);  ///< "T", "dT", "grad", "dgrad", "t", "TdT"
+/// "T", "dT", "grad", "dgrad", "t", "TdT", "dT@" (written with its time constant: dT@600).
+std::string_view to_string(FeatureTerm term);
 
 /// The recording column thermometer NAME is read from: temp_NAME_degc ("temp_fog_degc", ...).
 std::string thermometer_column(std::string_view name);
@@ -52,6 +63,33 @@ bool is_thermometer_name(std::string_view name);
 struct FeatureTermSpec {
   FeatureTerm term = FeatureTerm::temp;
   std::vector<Thermometer> thermometers;  ///< in number order; unused for t
+  double tau_s = 0;                       ///< the lag's time constant of dT@τ, s; else 0
+};
+
+/// The rate of a temperature seen through a first-order lag of time constant tau_s (the term
+/// dT@τ, docs/field.md, "A rate through a lag"): the lag's state s follows the temperature,
+/// s += (1 − e^(−dt/τ))·(T − s), and the term is ds/dt = (T − s)/τ, °C/s: the temperature's
+/// rate low-passed at τ. The state starts at the first reading (the unit at rest at power-on),
+/// so the term starts at 0. The batch features, the streaming compensator and the C header
+/// run this one recursion.
+class LaggedRate {
+ public:
+  LaggedRate(double tau_s, double dt_s);
+  /// Pushes one reading, °C; returns the term, °C/s.
+  double push(double temp_degc) noexcept {
+    if (!started_) {
+      state_degc_ = temp_degc;
+      started_ = true;
+    }
+    state_degc_ += gain_ * (temp_degc - state_degc_);
+    return (temp_degc - state_degc_) / tau_s_;
+  }
+  void reset() noexcept { started_ = false; }
+  double gain() const noexcept { return gain_; }
+
+ private:
+  double tau_s_, gain_, state_degc_ = 0;
+  bool started_ = false;
 };
 
 /// One model input as an operation on a sample's temperatures, their rates and its time: the
@@ -59,6 +97,11 @@ struct FeatureTermSpec {
 struct FeatureColumn {
   FeatureTerm term = FeatureTerm::temp;
   Thermometer a = Thermometer::fog, b = Thermometer::fog;
+  double tau_s = 0;  ///< dT@τ's time constant, s
+
+  /// Whether its value is a state carried from sample to sample (dT@τ, LaggedRate), which
+  /// value() cannot give: the caller runs a LaggedRate on thermometer a per such column.
+  bool lagged() const noexcept { return term == FeatureTerm::lagged_rate; }
 
   /// Its value for one sample; temperatures and rates are indexed by Thermometer, one per
   /// thermometer of the spec (FeatureSpec::thermometer_count).
@@ -78,6 +121,8 @@ struct FeatureColumn {
         return time_s;
       case FeatureTerm::temp_rate_product:
         return temp_degc[i] * rate_degc_per_s[i];
+      case FeatureTerm::lagged_rate:
+        break;  // a state: see lagged()
     }
     return 0.0;
   }
@@ -116,7 +161,8 @@ struct FeatureSpec {
   /// written only when they are not fog, acc1, acc2.
   std::string to_string() const;
   /// One name per model input, with its unit: T_fog_degc, dT_acc1_degc_per_s,
-  /// grad_fog_acc1_degc, dgrad_fog_acc2_degc_per_s, t_s, TdT_fog_degc2_per_s.
+  /// grad_fog_acc1_degc, dgrad_fog_acc2_degc_per_s, t_s, TdT_fog_degc2_per_s,
+  /// dT600s_fog_degc_per_s (dT@600).
   std::vector<std::string> names() const;
   std::size_t size() const { return columns().size(); }
   /// The model inputs in order, as operations on one sample: the one description of what each

@@ -301,6 +301,11 @@ check "bad C range" run 1 "$fd" train "$work/small" --c-min 0 -o "$work/x.json"
 check "C range message" err_has "option --c-min: 0 must be finite and > 0"
 check "bad feature spec" run 1 "$fd" train "$work/small" --features "T,bogus" -o "$work/x.json"
 check "feature spec message" err_has "--features"
+check "bad lag" run 1 "$fd" train "$work/small" --features "T,dT@0" -o "$work/x.json"
+check "lag message" err_has "option --features: 'T,dT@0': 'dT@0': the lag after '@' must be a number of seconds"
+check "train with a lagged rate" run 0 "$fd" train "$work/small" --method poly \
+  --features "T,dT,dT@300(fog)" -q -o "$work/lagged.json"
+check "lagged rate in the model" grep -q '"dT300s_fog_degc_per_s"' "$work/lagged.json"
 check "train with causal rates" run 0 "$fd" train "$work/small" --method poly --differentiator causal \
   -q -o "$work/causal.json"
 check "causal rates in the model" grep -q '"causality": "causal"' "$work/causal.json"
