@@ -282,6 +282,15 @@ FeatureSpec default_feature_spec(const std::vector<std::string>& thermometers) {
                                 : fmt::format("T({0}),dT({0}),grad({0})", list));
 }
 
+FeatureSpec recommended_feature_spec(const std::vector<std::string>& thermometers) {
+  const FeatureSpec paper = default_feature_spec(thermometers);
+  const bool three = thermometers == std::vector<std::string>{"fog", "acc1", "acc2"};
+  return FeatureSpec::parse(
+      fmt::format("{},dT@{}{}", paper.to_string(), kRecommendedLagS,
+                  three ? std::string() : fmt::format("({})", fmt::join(thermometers, ","))),
+      thermometers);
+}
+
 std::vector<std::string> thermometers_of(const Recording& recording) {
   std::vector<std::string> out = {"fog"};
   if (!recording.temp_acc1_degc.empty()) out.emplace_back("acc1");

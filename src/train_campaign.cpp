@@ -25,9 +25,9 @@ CampaignTrainResult train_inputs(const std::vector<RecordingInput>& inputs,
   for (const auto& in : inputs) shortest = std::min(shortest, in.recording.size());
   const FeatureOptions fitted = preprocessing_for(dt_s, shortest, dataset.preprocessing);
   if (options.auto_features && !options.thermometers.empty()) {
-    dataset.features = default_feature_spec(options.thermometers);
+    dataset.features = recommended_feature_spec(options.thermometers);
   } else if (options.auto_features) {
-    // The paper's inputs over those of fog, acc1, acc2 every training recording has.
+    // The recommended inputs over those of fog, acc1, acc2 every training recording has.
     std::vector<std::string> common = {"fog", "acc1", "acc2"};
     for (const auto& in : inputs) {
       const auto has = thermometers_of(in.recording);
@@ -35,7 +35,7 @@ CampaignTrainResult train_inputs(const std::vector<RecordingInput>& inputs,
         return std::find(has.begin(), has.end(), k) == has.end();
       });
     }
-    dataset.features = default_feature_spec(common);
+    dataset.features = recommended_feature_spec(common);
     if (common.size() < 3)
       out.notes.push_back(
           {"features", fmt::format("{} thermometer{}: features '{}'", common.size(),

@@ -109,6 +109,20 @@ TEST(FeatureSpec, ALaggedRateCarriesItsTimeConstant) {
   EXPECT_TRUE(spec.reads(Thermometer::acc2));
 }
 
+// train's default: the paper's inputs and their rates through the recommended lag, over the
+// thermometers the unit has.
+TEST(FeatureSpec, TrainsDefaultAddsTheLaggedRates) {
+  EXPECT_EQ(recommended_feature_spec({"fog", "acc1", "acc2"}).to_string(), "T,dT,grad,dT@300");
+  EXPECT_EQ(recommended_feature_spec({"fog", "acc1", "acc2"}).size(), 12u);
+  EXPECT_EQ(recommended_feature_spec({"fog"}).to_string(), "T(fog),dT(fog),dT@300(fog)");
+  const FeatureSpec four = recommended_feature_spec({"fog", "acc1", "acc2", "case"});
+  EXPECT_EQ(four.to_string(),
+            "T(fog,acc1,acc2,case),dT(fog,acc1,acc2,case),"
+            "grad(fog,acc1,acc2,case),dT@300(fog,acc1,acc2,case)");
+  EXPECT_EQ(four.size(), 18u);
+  EXPECT_EQ(default_feature_spec().to_string(), "T,dT,grad");  // the paper's, for fogdrift paper
+}
+
 // A ramp T = a·t into the lag from rest: the error e = T − s obeys e_n = (1 − g)(e_(n−1) + a·dt),
 // so e_n = a·dt·(1 − g)(1 − (1 − g)^n)/g, tending to the rate a, low-passed, times τ.
 TEST(LaggedRate, FollowsARampInClosedForm) {

@@ -389,15 +389,17 @@ void add_train(CLI::App& app) {
       ->capture_default_str();
   cmd->add_option("--fitness", args->fitness, "cv (grouped cross-validation) or train")
       ->capture_default_str();
-  cmd->add_option("--features", args->features,
-                  "Feature spec: terms T, dT, grad, dgrad, t, TdT, dT@SECONDS (the rate through a "
-                  "lag of that time constant), each optionally with its thermometers, e.g. "
-                  "'T,dT(fog),grad' or 'T,dT,grad,dT@300'; auto: the paper's T,dT,grad over the "
-                  "thermometers every training recording has (T(fog),dT(fog) with one)")
+  cmd->add_option(
+         "--features", args->features,
+         "Feature spec: terms T, dT, grad, dgrad, t, TdT, dT@SECONDS (the rate through a "
+         "lag of that time constant), each optionally with its thermometers, e.g. "
+         "'T,dT(fog),grad'; auto: the paper's T,dT,grad and the rates through a 300 s lag, "
+         "T,dT,grad,dT@300, over the thermometers every training recording has "
+         "(T(fog),dT(fog),dT@300(fog) with one; docs/field.md)")
       ->capture_default_str();
   cmd->add_option("--thermometers", args->thermometers,
-                  "The thermometers the features read, e.g. fog,acc1,acc2,case: the paper's "
-                  "inputs over them, or what a term of --features without its own list reads. "
+                  "The thermometers the features read, e.g. fog,acc1,acc2,case: the auto "
+                  "features over them, or what a term of --features without its own list reads. "
                   "fog, acc1, acc2, or NAME of a further column temp_NAME_degc; the model then "
                   "needs its reading wherever it runs (stream, export-c). auto: those of fog, "
                   "acc1, acc2 every training recording has")

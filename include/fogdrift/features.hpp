@@ -194,6 +194,15 @@ FeatureSpec default_feature_spec();
 /// empty list or a name that cannot name a thermometer.
 FeatureSpec default_feature_spec(const std::vector<std::string>& thermometers);
 
+/// The lag of train's recommended features, s (docs/field.md, "A rate through a lag").
+inline constexpr double kRecommendedLagS = 300;
+
+/// train's features when none are given: the paper's inputs over the thermometers named
+/// (default_feature_spec) and their rates through a lag of kRecommendedLagS: "T,dT,grad,dT@300"
+/// over fog, acc1, acc2; "T(a),dT(a),dT@300(a)" over one. Chosen on a population of instruments
+/// (docs/field.md, "A rate through a lag"); `fogdrift paper` keeps the paper's own inputs.
+FeatureSpec recommended_feature_spec(const std::vector<std::string>& thermometers);
+
 /// Those of fog, acc1, acc2 `recording` has, in that order (fog always).
 std::vector<std::string> thermometers_of(const Recording& recording);
 

@@ -18,8 +18,9 @@ struct CampaignTrainOptions {
   /// Preprocessing and target settings. Its features are used as given unless auto_features;
   /// its block, rate window and degree only where block_s, rate_window_s, rate_degree say so.
   DatasetOptions dataset;
-  /// The paper's inputs over the thermometers every training recording has (features.hpp,
-  /// default_feature_spec) instead of dataset.features.
+  /// The recommended inputs over the thermometers every training recording has (features.hpp,
+  /// recommended_feature_spec: the paper's and their rates through a lag) instead of
+  /// dataset.features.
   bool auto_features = true;
   /// With auto_features, the thermometers the features read (fog, acc1, acc2 or the NAME of a
   /// further column temp_NAME_degc); empty: those of fog, acc1, acc2 every training recording

@@ -84,7 +84,7 @@ py::dict features(const py::object& recording, const std::optional<std::string>&
     o = model->dataset.preprocessing;
   } else {
     s = spec && *spec != "auto" ? FeatureSpec::parse(*spec)
-                                : default_feature_spec(thermometers_of(r));
+                                : recommended_feature_spec(thermometers_of(r));
     o.rates.causality = signal::parse_causality(differentiator);
     o = preprocessing_for(sample_interval_s(r), r.size(), o);
     if (const auto w = seconds_or_auto(rate_window_s, "rate_window_s")) o.rates.window_s = *w;
@@ -127,7 +127,8 @@ void bind_signal(py::module_& m) {
         "a dict with 'names' (each with its unit), 'x' (rows × features float64), 'time_s' "
         "(block centres), 'block' (samples per block), and the 'spec', 'rate_window_s' and "
         "'block_s' used. spec: a feature spec ('T,dT,grad', docs/signal.md §4) or None for the "
-        "paper's inputs over the unit's thermometers; with model=, the model's own features and "
+        "inputs train chooses over the unit's thermometers (T,dT,grad,dT@300 over three); with "
+        "model=, the model's own features and "
         "preprocessing, the rows it predicts from.");
 }
 

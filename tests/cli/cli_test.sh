@@ -285,7 +285,7 @@ sum=$(sha256sum "$work/small/cal_r1_20C.csv" | cut -d' ' -f1)
 check "provenance checksum matches sha256sum" grep -q "$sum" "$work/m1.json"
 check "train --json" run 0 "$fd" train "$work/small" --method svr --json -o "$work/svr.json"
 check "json summary method" out_has '"method": "svr"'
-check "json default gamma" out_has '"gamma": 0.1111111111111111'
+check "json default gamma" out_has '"gamma": 0.08333333333333333'
 check "train bp" run 0 "$fd" train "$work/small" --method bp --hidden 4 -q -o "$work/bp.json"
 check "bp weights in the model" grep -q '"type": "mlp"' "$work/bp.json"
 check "train poly" run 0 "$fd" train "$work/small" --method poly --max-degree 2 --json -o "$work/poly.json"
@@ -514,7 +514,7 @@ check "stream rate required message" err_has "--rate-hz is required"
 
 # --- export-c ---------------------------------------------------------------------------------
 check "export-c" run 0 "$fd" export-c "$work/bp.json" -o "$work/unit.h" --prefix unit42
-check "export-c summary" out_has "unit42_predict_dph(features[9])"
+check "export-c summary" out_has "unit42_predict_dph(features[12])"
 check "export-c streaming" run 0 "$fd" export-c "$work/bp.json" -o "$work/unit_stream.h" --prefix u --stream-rate-hz 1
 check "export-c streaming summary" out_has "u_update(&state, time_s, temp_fog, temp_acc1, temp_acc2) at 1 Hz"
 check "export-c warns of centred rates" out_has "train with --differentiator causal for firmware"

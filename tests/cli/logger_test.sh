@@ -135,10 +135,10 @@ check "campaign of one thermometer" run 0 "$fd" campaign "$work/one" "$work"/one
 check "inspect the campaign" run 0 "$fd" inspect "$work/one"
 check "absent columns said so" out_has "absent"
 check "train picks features it can compute" run 0 "$fd" train "$work/one" -o "$work/one.json" --method svr
-check "train says which" out_has "1 thermometer: features 'T(fog),dT(fog)' (--features)"
+check "train says which" out_has "1 thermometer: features 'T(fog),dT(fog),dT@300(fog)' (--features)"
 check "a spec reading an absent thermometer" run 1 "$fd" train "$work/one" -o "$work/x.json" --method svr --features T,dT,grad
 check "absent thermometer message" err_has "has no temp_acc1_degc column, which the feature T_acc1_degc reads (spec 'T,dT,grad'); a unit with fewer thermometers trains on those it has, e.g. --features \"T(fog),dT(fog)\""
-check "same model as three copies" bash -c "'$fd' train '$work/camp' -o '$work/copies.json' --method svr --features 'T(fog),dT(fog)' -q && python3 -c 'import json,sys; a=json.load(open(sys.argv[1]))[\"regressor\"]; b=json.load(open(sys.argv[2]))[\"regressor\"]; assert a==b' '$work/one.json' '$work/copies.json'"
+check "same model as three copies" bash -c "'$fd' train '$work/camp' -o '$work/copies.json' --method svr --features 'T(fog),dT(fog),dT@300(fog)' -q && python3 -c 'import json,sys; a=json.load(open(sys.argv[1]))[\"regressor\"]; b=json.load(open(sys.argv[2]))[\"regressor\"]; assert a==b' '$work/one.json' '$work/copies.json'"
 check "evaluate one thermometer" run 0 "$fd" evaluate "$work/one.json" "$work/one"
 check "compensate one thermometer" run 0 "$fd" compensate "$work/one.json" "$work/one/one_2_02.csv" -o "$work/one_comp.csv"
 check "stream without the absent columns" bash -c "'$fd' stream '$work/one.json' '$work/one/one_2_02.csv' --rate-hz 0.016666666666666666 --no-guard >'$work/one_stream.csv'"

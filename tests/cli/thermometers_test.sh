@@ -14,12 +14,12 @@ check "add the case thermometer" python3 "$root/scripts/add_case_thermometer.py"
 
 # --- train: the three by default, the fourth when named --------------------------------------
 check "train on the three" run 0 "$fd" train cal -o three.json --method poly --differentiator causal
-check "the fourth is said to be unread" out_has "note: temp_case_degc not read by the features 'T,dT,grad': a further thermometer becomes a feature when named, e.g. fog,acc1,acc2,case"
+check "the fourth is said to be unread" out_has "note: temp_case_degc not read by the features 'T,dT,grad,dT@300': a further thermometer becomes a feature when named, e.g. fog,acc1,acc2,case"
 check "and the option that reads it" out_has "(--thermometers)"
 check "train on four" run 0 "$fd" train cal -o four.json --method poly --differentiator causal --thermometers fog,acc1,acc2,case
-check "fourteen features" out_has "(14 features)"
+check "eighteen features" out_has "(18 features)"
 check "no note once it is read" bash -c "! grep -q 'not read by the features' '$work/out'"
-check "spec stored" bash -c "grep -q '\"spec\": \"T(fog,acc1,acc2,case),dT(fog,acc1,acc2,case),grad(fog,acc1,acc2,case)\"' four.json"
+check "spec stored" bash -c "grep -q '\"spec\": \"T(fog,acc1,acc2,case),dT(fog,acc1,acc2,case),grad(fog,acc1,acc2,case),dT@300(fog,acc1,acc2,case)\"' four.json"
 check "a term of --features reads the list" run 0 "$fd" train cal -o gradonly.json --method poly --features "T(fog),grad" --thermometers fog,case
 check "its features" out_has "(2 features)"
 check "bad thermometer name" run 1 "$fd" train cal -o x.json --thermometers fog,Case

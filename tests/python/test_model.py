@@ -30,7 +30,7 @@ def test_a_model_file_reads_and_writes_byte_for_byte(trained):
     m = fogdrift.Model.load(d / "m.json")
     assert m.method == "svr"
     assert m.hyperparameters["C"] == 1.0 and m.hyperparameters["epsilon"] == 0.1
-    assert len(m.feature_names) == 9 and m.training_rows > 0
+    assert len(m.feature_names) == 12 and m.training_rows > 0
     assert all(len(sha) == 64 for _, sha in m.training_files)
     assert m.to_json() == text
     m.save(d / "again.json")

@@ -9,7 +9,7 @@ import warnings
 import numpy as np
 import pytest
 import pywt
-from scipy.signal import savgol_filter
+from scipy.signal import lfilter, savgol_filter
 
 import fogdrift
 
@@ -102,9 +102,9 @@ def test_features_are_block_means_of_the_temperatures_and_their_rates(campaign):
     d, py = campaign
     rec = py["data"][0]
     f = fogdrift.features(rec)
-    assert f["spec"] == "T,dT,grad" and len(f["names"]) == 9 and f["block"] == 10
+    assert f["spec"] == "T,dT,grad,dT@300" and len(f["names"]) == 12 and f["block"] == 10
     x = f["x"]
-    assert x.shape == (rec["time_s"].size // 10, 9) and x.flags.c_contiguous
+    assert x.shape == (rec["time_s"].size // 10, 12) and x.flags.c_contiguous
     blocks = lambda v: v[:x.shape[0] * 10].reshape(-1, 10).mean(axis=1)  # noqa: E731
     col = {n: x[:, i] for i, n in enumerate(f["names"])}
     np.testing.assert_allclose(col["T_fog_degc"], blocks(rec["temp_fog_degc"]), rtol=1e-13)
@@ -116,6 +116,12 @@ def test_features_are_block_means_of_the_temperatures_and_their_rates(campaign):
     inner = slice(7, x.shape[0] - 7)
     np.testing.assert_allclose(col["dT_fog_degc_per_s"][inner], blocks(rate)[inner], atol=1e-12)
     np.testing.assert_allclose(f["time_s"], blocks(rec["time_s"]))
+    # The rate through a 300 s lag: SciPy's first-order IIR s = g·T + (1 − g)·s, from rest at
+    # the first sample, and (T − s)/τ (docs/signal.md §4).
+    g = -np.expm1(-1.0 / 300)
+    temp = rec["temp_acc2_degc"]
+    s, _ = lfilter([g], [1.0, g - 1.0], temp, zi=[(1.0 - g) * temp[0]])
+    np.testing.assert_allclose(col["dT300s_acc2_degc_per_s"], blocks((temp - s) / 300), atol=1e-14)
     # A model's own features: the rows it predicts from.
     m = fogdrift.Model.load(d / "m.json")
     fm = fogdrift.features(rec, model=m)
@@ -392,7 +398,7 @@ def test_a_fourth_thermometer_is_trained_on_and_streamed(campaign):
     four = fogdrift.train(cal, method="poly", differentiator="causal",
                           thermometers=["fog", "acc1", "acc2", "case"])
     m = four["model"]
-    assert len(four["summary"]["features"]) == 14
+    assert len(four["summary"]["features"]) == 18
     assert "T_case_degc" in four["summary"]["features"]
     assert four["summary"]["held_out"]["model_rmse"] < 0.1 * three["summary"]["held_out"]["model_rmse"]
     same = fogdrift.train(cal, method="poly", differentiator="causal",
