@@ -57,13 +57,18 @@ int main(int argc, char** argv) {
     std::string name;
     Method method;
     std::vector<double> temps;
+    std::string features = "T,dT,grad";  // the paper's; train's default adds dT@300
   };
+  const std::vector<double> eleven = {-40, -30, -20, -10, 0, 10, 20, 30, 40, 50, 60};
+  const std::vector<double> six = {-40, -20, 0, 20, 40, 60};
   const std::vector<Case> cases = {
-      {"bp", Method::bp, {-40, -30, -20, -10, 0, 10, 20, 30, 40, 50, 60}},
-      {"poly", Method::poly, {-40, -30, -20, -10, 0, 10, 20, 30, 40, 50, 60}},
+      {"bp", Method::bp, eleven},
+      {"bp, T,dT,grad,dT@300", Method::bp, eleven, "T,dT,grad,dT@300"},
+      {"poly", Method::poly, eleven},
       {"svr, 3 temperatures", Method::svr, {-40, 10, 60}},
-      {"svr, 6 temperatures", Method::svr, {-40, -20, 0, 20, 40, 60}},
-      {"svr, 11 temperatures", Method::svr, {-40, -30, -20, -10, 0, 10, 20, 30, 40, 50, 60}}};
+      {"svr, 6 temperatures", Method::svr, six},
+      {"svr, 6 temperatures, T,dT,grad,dT@300", Method::svr, six, "T,dT,grad,dT@300"},
+      {"svr, 11 temperatures", Method::svr, eleven}};
   std::printf(
       "| model | size | guard prototypes | µs/sample, guard off | µs/sample, guard on "
       "| samples/s/core, guard on | guard's share |\n|---|---|---|---|---|---|---|\n");
@@ -82,6 +87,7 @@ int main(int argc, char** argv) {
         tests.push_back(cal.recordings[i]);
     }
     DatasetOptions dataset;
+    dataset.features = FeatureSpec::parse(c.features);
     dataset.preprocessing.rates.causality = signal::Causality::causal;
     TrainOptions to;
     to.method = c.method;

@@ -283,11 +283,10 @@ FeatureSpec default_feature_spec(const std::vector<std::string>& thermometers) {
 }
 
 FeatureSpec recommended_feature_spec(const std::vector<std::string>& thermometers) {
-  const FeatureSpec paper = default_feature_spec(thermometers);
-  const bool three = thermometers == std::vector<std::string>{"fog", "acc1", "acc2"};
+  // The lag's list written out; to_string() drops it where it is fog, acc1, acc2.
   return FeatureSpec::parse(
-      fmt::format("{},dT@{}{}", paper.to_string(), kRecommendedLagS,
-                  three ? std::string() : fmt::format("({})", fmt::join(thermometers, ","))),
+      fmt::format("{},dT@{}({})", default_feature_spec(thermometers).to_string(), kRecommendedLagS,
+                  fmt::join(thermometers, ",")),
       thermometers);
 }
 
