@@ -15,6 +15,7 @@
 #include "fogdrift/text_file.hpp"
 #include "fogdrift/thread_pool.hpp"
 #include "json_number.hpp"
+#include "svr/loops.hpp"
 
 namespace fogdrift::svr {
 namespace {
@@ -206,7 +207,23 @@ std::vector<double> path_predictions(const TrainingSet& set, std::span<const Fit
         for (std::size_t c = 0; c < d; ++c)
           w[m * d + c] += beta[u * models + m] * set.data().row(used[u])[c];
   }
-  std::vector<float> k(kernel.type == KernelType::linear ? 0 : l);
+  // RBF: the support vectors alone, feature-major, so that a row costs one kernel value per
+  // support vector rather than per training sample (a quarter of them in a typical search). Each
+  // value is the float TrainingSet::kernel_row_of computes for that sample: the loops compute
+  // every entry from its own column alone.
+  const std::size_t m = used.size();
+  std::vector<double> xt, sq;
+  std::vector<float> k;
+  if (kernel.type != KernelType::linear) {
+    xt.resize(m * d);
+    sq.resize(m);
+    for (std::size_t u = 0; u < m; ++u) {
+      for (std::size_t c = 0; c < d; ++c) xt[c * m + u] = set.data().row(used[u])[c];
+      sq[u] = set.squared_norm(used[u]);
+    }
+    k.resize(m);
+  }
+  const detail::Loops& loops = detail::loops();
   for (std::size_t r = 0; r < rows.size(); ++r) {
     const std::size_t row = rows[r];
     if (row >= data.rows)
@@ -216,12 +233,20 @@ std::vector<double> path_predictions(const TrainingSet& set, std::span<const Fit
     if (kernel.type == KernelType::linear) {
       for (std::size_t m = 0; m < models; ++m)
         for (std::size_t c = 0; c < d; ++c) f[m] += w[m * d + c] * x[c];
-    } else {
-      set.kernel_row_of(kernel, x, k.data());
-      for (std::size_t u = 0; u < used.size(); ++u) {
-        const double kv = k[used[u]];
-        const double* b = beta.data() + u * models;
-        for (std::size_t m = 0; m < models; ++m) f[m] += b[m] * kv;
+    } else if (m > 0) {
+      double sq_x = 0;  // summed in feature order, as the set's own norms
+      for (std::size_t c = 0; c < d; ++c) sq_x += x[c] * x[c];
+      loops.rbf_row(x, sq_x, xt.data(), m, sq.data(), m, d, kernel.gamma, k.data());
+      if (models == 1) {  // one fit, as a search scores it: the same sum without the inner loop
+        double f0 = 0;
+        for (std::size_t u = 0; u < m; ++u) f0 += beta[u] * static_cast<double>(k[u]);
+        f[0] = f0;
+      } else {
+        for (std::size_t u = 0; u < m; ++u) {
+          const double kv = k[u];
+          const double* b = beta.data() + u * models;
+          for (std::size_t j = 0; j < models; ++j) f[j] += b[j] * kv;
+        }
       }
     }
     for (std::size_t m = 0; m < models; ++m) out[r * models + m] = f[m] - path[m].model.rho;

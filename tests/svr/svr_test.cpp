@@ -235,6 +235,22 @@ TEST(SvrWarmStart, APathsTestErrorsArePredictionsErrors) {
       EXPECT_NEAR(sse[k], expected, tolerance * expected) << "C=" << cs[k];
       EXPECT_EQ(sse[k], from_predictions) << "C=" << cs[k];  // the same sums, in the same order
     }
+    if (kernel.type == KernelType::linear) continue;
+    // RBF: each kernel value is the float of the training set's own row for that point,
+    // though only the support vectors' values are computed.
+    std::vector<float> row(set.size());
+    const std::size_t l = set.size();
+    for (std::size_t r = 0; r < test_rows.size(); ++r) {
+      set.kernel_row_of(kernel, d.row(test_rows[r]), row.data());
+      for (std::size_t k = 0; k < cs.size(); ++k) {
+        double f_k = 0;
+        for (std::size_t i = 0; i < l; ++i) {
+          const double beta = path[k].dual.alpha[i] - path[k].dual.alpha[i + l];
+          if (beta != 0) f_k += beta * static_cast<double>(row[i]);
+        }
+        EXPECT_EQ(f[r * cs.size() + k], f_k - path[k].model.rho) << "C=" << cs[k] << " row " << r;
+      }
+    }
   }
   const std::vector<std::size_t> outside{d.rows};
   EXPECT_THROW(
