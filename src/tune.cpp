@@ -247,6 +247,7 @@ class SvrObjective {
       std::iota(all.begin(), all.end(), 0);
       add(scale_split(data, all, all));
     }
+    for (const FoldState& f : folds_) test_rows_ += f.test.rows;
     // Every thread may run a fit of the largest fold at once: checked once, here, so that a
     // search too large for this machine fails before its first batch.
     const auto largest = std::max_element(folds_.begin(), folds_.end(), [](auto& a, auto& b) {
@@ -283,19 +284,14 @@ class SvrObjective {
 
     // One task per (candidate, fold); warm starts only from earlier batches. Tasks are handed
     // out longest first (LPT), the length guessed from the nearest solved candidate's fit time,
-    // so that both threads finish a batch together; the order never changes a result.
+    // so that both threads finish a stage together; the order never changes a result.
     const std::size_t tasks = fresh.size() * folds;
     std::vector<double> sse(tasks, 0.0), seconds(tasks, 0.0), guess(tasks, 0.0);
     std::vector<std::shared_ptr<const svr::DualSolution>> duals(tasks);
-    std::vector<char> warm(tasks, 0);
+    std::vector<char> warm(tasks, 0), ran(tasks, 0);
     for (std::size_t t = 0; t < tasks; ++t)
       guess[t] = guessed_seconds(folds_[t % folds], fresh[t / folds]);
-    std::vector<std::size_t> schedule(tasks);
-    std::iota(schedule.begin(), schedule.end(), 0);
-    std::stable_sort(schedule.begin(), schedule.end(),
-                     [&](std::size_t a, std::size_t b) { return guess[a] > guess[b]; });
-    auto task = [&](std::size_t k) {
-      const std::size_t t = schedule[k];
+    auto task = [&](std::size_t t) {
       const std::size_t c = t / folds, f = t % folds;
       FoldState& fold = folds_[f];
       const svr::Params params = to_params_(fresh[c]);
@@ -310,33 +306,94 @@ class SvrObjective {
                                         fold.test, fold.test_rows)[0];
       seconds[t] = fit.summary.seconds;
       duals[t] = std::make_shared<const svr::DualSolution>(std::move(fit.dual));
+      ran[t] = 1;
     };
-    if (options_.pool)
-      options_.pool->parallel_for(tasks, task);
-    else
-      for (std::size_t t = 0; t < tasks; ++t) task(t);
+    auto run = [&](std::vector<std::size_t> stage) {
+      std::stable_sort(stage.begin(), stage.end(),
+                       [&](std::size_t a, std::size_t b) { return guess[a] > guess[b]; });
+      auto one = [&](std::size_t k) { task(stage[k]); };
+      if (options_.pool)
+        options_.pool->parallel_for(stage.size(), one);
+      else
+        for (std::size_t k = 0; k < stage.size(); ++k) one(k);
+    };
+
+    // Racing (header): once a complete candidate is known, the folds run in stages, the fold
+    // where the best candidate errs most first, and a candidate whose squared errors so far
+    // already exceed the best's total leaves the race. Before that, one stage holds every fold.
+    const double stop_above = options_.racing && folds > 1 && std::isfinite(best_loss_)
+                                  ? best_loss_ * best_loss_ * static_cast<double>(test_rows_)
+                                  : INFINITY;
+    std::vector<double> partial(fresh.size(), 0.0);
+    std::vector<char> alive(fresh.size(), 1);
+    if (!std::isfinite(stop_above)) {
+      std::vector<std::size_t> all(tasks);
+      std::iota(all.begin(), all.end(), 0);
+      run(std::move(all));
+    } else {
+      const std::vector<std::size_t> order = fold_order();
+      for (std::size_t stage = 0; stage < folds; ++stage) {
+        const std::size_t f = order[stage];
+        std::vector<std::size_t> these;
+        for (std::size_t c = 0; c < fresh.size(); ++c)
+          if (alive[c]) these.push_back(c * folds + f);
+        run(these);
+        for (std::size_t c = 0; c < fresh.size(); ++c) {
+          if (!alive[c]) continue;
+          partial[c] += sse[c * folds + f];
+          if (stage + 1 < folds && partial[c] > stop_above) alive[c] = 0;
+        }
+      }
+    }
 
     std::vector<double> loss(fresh.size());
     for (std::size_t c = 0; c < fresh.size(); ++c) {
       double s = 0;
-      std::size_t count = 0;
+      bool complete = true;
       for (std::size_t f = 0; f < folds; ++f) {
-        s += sse[c * folds + f];
-        count += folds_[f].test.rows;
-        fit_seconds_ += seconds[c * folds + f];
-        warm_fits_ += warm[c * folds + f] ? 1 : 0;
+        const std::size_t t = c * folds + f;
+        if (!ran[t]) {
+          complete = false;
+          continue;
+        }
+        s += sse[t];
+        fit_seconds_ += seconds[t];
+        warm_fits_ += warm[t] ? 1 : 0;
+        ++fits_;
       }
-      loss[c] = std::sqrt(s / static_cast<double>(count));
+      // A candidate out of the race: its squared errors so far, scaled to all folds as the best
+      // candidate's errors spread over them; above the best loss, since they alone exceed it.
+      double scale = 1;
+      if (!complete) {
+        double all = 0, run_part = 0;
+        for (std::size_t f = 0; f < folds; ++f) {
+          all += best_fold_sse_[f];
+          if (ran[c * folds + f]) run_part += best_fold_sse_[f];
+        }
+        if (run_part > 0) scale = all / run_part;
+      }
+      loss[c] = std::sqrt(s * scale / static_cast<double>(test_rows_));
       memo_.emplace(fresh[c], loss[c]);
-      history_.push_back({to_params_(fresh[c]), loss[c]});
+      history_.push_back({to_params_(fresh[c]), loss[c], complete});
+      if (!complete) ++raced_;
     }
-    fits_ += tasks;
+    // The best complete candidate so far bounds the next batches' races.
+    for (std::size_t c = 0; c < fresh.size(); ++c) {
+      if (!alive[c] || !(loss[c] < best_loss_)) continue;
+      best_loss_ = loss[c];
+      best_fold_sse_.assign(sse.begin() + static_cast<std::ptrdiff_t>(c * folds),
+                            sse.begin() + static_cast<std::ptrdiff_t>((c + 1) * folds));
+    }
     // Keep the most recent solutions of each fold as warm starts for later batches.
     for (std::size_t f = 0; f < folds; ++f) {
       auto& kept = folds_[f].solved;
-      for (std::size_t c = 0; c < fresh.size(); ++c)
+      std::size_t solved_here = 0;
+      for (std::size_t c = 0; c < fresh.size(); ++c) {
+        if (!ran[c * folds + f]) continue;
         kept.push_back({fresh[c], duals[c * folds + f], seconds[c * folds + f]});
-      const std::size_t keep = std::max<std::size_t>(2 * fresh.size(), 8);
+        ++solved_here;
+      }
+      const std::size_t keep = std::max<std::size_t>(2 * solved_here, 8);
       if (kept.size() > keep)
         kept.erase(kept.begin(), kept.end() - static_cast<std::ptrdiff_t>(keep));
     }
@@ -352,7 +409,7 @@ class SvrObjective {
     candidates_ += fresh.size();
   }
 
-  std::size_t candidates_ = 0, repeats_ = 0, fits_ = 0, warm_fits_ = 0;
+  std::size_t candidates_ = 0, repeats_ = 0, fits_ = 0, warm_fits_ = 0, raced_ = 0;
   std::vector<Candidate> history_;
   double fit_seconds_ = 0;
 
@@ -398,9 +455,23 @@ class SvrObjective {
     return s ? s->seconds : INFINITY;
   }
 
+  // The folds by the best candidate's squared error on them, largest first (ties: in order):
+  // the fold most likely to take a poor candidate past the bound runs first.
+  std::vector<std::size_t> fold_order() const {
+    std::vector<std::size_t> order(folds_.size());
+    std::iota(order.begin(), order.end(), 0);
+    std::stable_sort(order.begin(), order.end(), [this](std::size_t a, std::size_t b) {
+      return best_fold_sse_[a] > best_fold_sse_[b];
+    });
+    return order;
+  }
+
   const TuneOptions& options_;
   ToParams to_params_;
   std::vector<FoldState> folds_;
+  std::size_t test_rows_ = 0;          // held-out rows over all folds
+  double best_loss_ = INFINITY;        // of the complete candidates of earlier batches
+  std::vector<double> best_fold_sse_;  // its squared error on each fold
   // One workspace per fit running at once, kept for the whole search: each fit reuses the
   // memory of an earlier one instead of new pages.
   svr::WorkspacePool workspaces_;
@@ -437,6 +508,7 @@ TuneSummary tune_svr(const Dataset& data, const TuneOptions& options) {
   out.repeats = objective.repeats_;
   out.fits = objective.fits_;
   out.warm_fits = objective.warm_fits_;
+  out.raced = objective.raced_;
   out.fit_seconds = objective.fit_seconds_;
   out.history = std::move(objective.history_);
   out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -492,6 +564,7 @@ std::vector<BoxEdge> box_edges(const TuneSummary& summary, const SearchSpace& sp
       const double inset = std::min(1.0, 0.25 * span);
       double inside = std::numeric_limits<double>::infinity();
       for (const Candidate& c : summary.history) {
+        if (!c.complete) continue;  // a lower bound only
         const double x = std::log10(a.get(c.params));
         if ((upper ? edge - x : x - edge) >= inset) inside = std::min(inside, c.loss);
       }

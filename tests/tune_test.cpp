@@ -202,18 +202,66 @@ TEST(TuneSvr, SameSeedSameResultWhateverTheThreadCount) {
     EXPECT_EQ(s1.optimizer.log.size(), s2.optimizer.log.size());
     for (std::size_t t = 0; t < s1.optimizer.log.size(); ++t)
       ASSERT_EQ(s1.optimizer.log[t].mean_fitness, s2.optimizer.log[t].mean_fitness);
-    // Bookkeeping: every distinct candidate is fitted once per fold.
-    EXPECT_EQ(s1.fits, s1.candidates * 3);
+    // Bookkeeping: every distinct candidate is fitted once per fold, but for the folds racing
+    // spared (at least one, at most two of three a stopped candidate).
+    EXPECT_EQ(s1.fits, s2.fits);
+    EXPECT_EQ(s1.raced, s2.raced);
+    EXPECT_LE(s1.fits, s1.candidates * 3 - s1.raced);
+    EXPECT_GE(s1.fits, s1.candidates * 3 - 2 * s1.raced);
     EXPECT_EQ(s1.candidates + s1.repeats, s1.optimizer.evaluations);
     EXPECT_EQ(s1.folds.size(), 3u);
     ASSERT_EQ(s1.history.size(), s1.candidates);
     double lowest = INFINITY;
-    for (const Candidate& c : s1.history) lowest = std::min(lowest, c.loss);
+    std::size_t stopped = 0;
+    for (const Candidate& c : s1.history) {
+      lowest = std::min(lowest, c.loss);
+      stopped += c.complete ? 0 : 1;
+    }
     EXPECT_EQ(lowest, s1.best_fitness);
+    EXPECT_EQ(stopped, s1.raced);
     // The reported fitness is the loss of the reported parameters.
     EXPECT_NEAR(svr_loss(d, s1.best, small_search(a, nullptr)), s1.best_fitness,
                 1e-3 * s1.best_fitness);
   }
+}
+
+// Racing stops only candidates that cannot win: a stopped candidate's full cross-validation loss
+// and the estimate the optimizer saw both lie above the best, so full evaluation of the
+// candidates the search visited would choose the same one. Without racing every fold of every
+// candidate is fitted.
+TEST(TuneSvr, RacingStopsOnlyCandidatesThatCannotWin) {
+  const Dataset d = synthetic();
+  ThreadPool pool(2);
+  TuneOptions o = small_search(opt::Algorithm::ssa, &pool);
+  const TuneSummary raced = tune_svr(d, o);
+  ASSERT_GT(raced.raced, 0u);
+  TuneOptions full_options = o;
+  full_options.racing = false;
+  TuneOptions one_candidate = o;
+  one_candidate.pool = nullptr;
+  std::size_t checked = 0;
+  for (const Candidate& c : raced.history) {
+    const double full = svr_loss(d, c.params, one_candidate);
+    // The search warm-starts some fits, svr_loss none: the same optimum to the solver's
+    // tolerance.
+    if (c.complete) {
+      EXPECT_NEAR(full, c.loss, 1e-3 * c.loss);
+      continue;
+    }
+    EXPECT_GT(c.loss, raced.best_fitness) << "C=" << c.params.c;
+    EXPECT_GT(full, raced.best_fitness * (1 - 1e-3)) << "C=" << c.params.c;  // cold vs warm fits
+    ++checked;
+  }
+  EXPECT_EQ(checked, raced.raced);
+
+  const TuneSummary full = tune_svr(d, full_options);
+  EXPECT_EQ(full.raced, 0u);
+  EXPECT_EQ(full.fits, full.candidates * 3);
+  for (const Candidate& c : full.history) EXPECT_TRUE(c.complete);
+  // Fewer fits for a search of the same length, ending as low (the optimizer saw estimates for
+  // the losers, so it may have visited other candidates).
+  EXPECT_LT(raced.fits, full.fits);
+  EXPECT_LE(raced.best_fitness, full.best_fitness * 1.01);
 }
 
 // The search ends at least as low as the best point of a 9 × 9 grid over the same box (up to

@@ -214,6 +214,7 @@ py::object train(const py::object& campaign, const std::string& method, const st
     search["evaluations"] = tr.optimizer.evaluations;
     search["candidates"] = tr.candidates;
     search["fits"] = tr.fits;
+    search["raced"] = tr.raced;
     search["initial_best_rmse"] = tr.optimizer.initial_best_fitness;
     search["seconds"] = tr.seconds;
     summary["search"] = search;
