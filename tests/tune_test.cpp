@@ -206,6 +206,7 @@ TEST(TuneSvr, SameSeedSameResultWhateverTheThreadCount) {
     // spared (at least one, at most two of three a stopped candidate).
     EXPECT_EQ(s1.fits, s2.fits);
     EXPECT_EQ(s1.raced, s2.raced);
+    EXPECT_EQ(s1.warm_fits, s2.warm_fits);
     EXPECT_LE(s1.fits, s1.candidates * 3 - s1.raced);
     EXPECT_GE(s1.fits, s1.candidates * 3 - 2 * s1.raced);
     EXPECT_EQ(s1.candidates + s1.repeats, s1.optimizer.evaluations);
@@ -219,9 +220,11 @@ TEST(TuneSvr, SameSeedSameResultWhateverTheThreadCount) {
     }
     EXPECT_EQ(lowest, s1.best_fitness);
     EXPECT_EQ(stopped, s1.raced);
-    // The reported fitness is the loss of the reported parameters.
+    // The reported fitness is the loss of the reported parameters, up to the solver's
+    // tolerance: the search warm-starts fits (some from a near σ), svr_loss fits cold, and two
+    // solutions within the tolerance differ in loss by up to about 2e-3 here.
     EXPECT_NEAR(svr_loss(d, s1.best, small_search(a, nullptr)), s1.best_fitness,
-                1e-3 * s1.best_fitness);
+                3e-3 * s1.best_fitness);
   }
 }
 
@@ -243,13 +246,13 @@ TEST(TuneSvr, RacingStopsOnlyCandidatesThatCannotWin) {
   for (const Candidate& c : raced.history) {
     const double full = svr_loss(d, c.params, one_candidate);
     // The search warm-starts some fits, svr_loss none: the same optimum to the solver's
-    // tolerance.
+    // tolerance (as above).
     if (c.complete) {
-      EXPECT_NEAR(full, c.loss, 1e-3 * c.loss);
+      EXPECT_NEAR(full, c.loss, 3e-3 * c.loss);
       continue;
     }
     EXPECT_GT(c.loss, raced.best_fitness) << "C=" << c.params.c;
-    EXPECT_GT(full, raced.best_fitness * (1 - 1e-3)) << "C=" << c.params.c;  // cold vs warm fits
+    EXPECT_GT(full, raced.best_fitness * (1 - 3e-3)) << "C=" << c.params.c;  // cold vs warm fits
     ++checked;
   }
   EXPECT_EQ(checked, raced.raced);

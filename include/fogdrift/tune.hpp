@@ -12,10 +12,12 @@
 //
 // Speed: each fold's data is prepared once (svr::TrainingSet) and reused by every candidate; a
 // population is fitted in parallel, one (candidate, fold) fit per task; a candidate already
-// evaluated is never refitted (the optimizers often revisit a bound); and each new fit is
-// warm-started from the nearest candidate (in log coordinates) already solved on that fold, whose
-// dual solution is rescaled to the new C (smo_solver.hpp). Warm starts come only from earlier
-// batches, so results do not depend on the thread count.
+// evaluated is never refitted (the optimizers often revisit a bound); held-out rows are scored
+// with vectorised kernel rows over the support vectors; and a new fit is warm-started from the
+// nearest candidate (in log coordinates) already solved on that fold with the same σ, whose dual
+// solution is rescaled to the new C (smo_solver.hpp), or else from the nearest one when it lies
+// within a tenth of a decade in C and σ (its gradient rebuilt). Warm starts come only from
+// earlier batches, so results do not depend on the thread count.
 //
 // Racing: the loss is sqrt(Σ squared errors / held-out rows), so a candidate whose errors on the
 // folds run so far already exceed the best complete candidate's total cannot beat it. Once an
