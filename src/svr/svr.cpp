@@ -211,17 +211,17 @@ std::vector<double> path_predictions(const TrainingSet& set, std::span<const Fit
   // support vector rather than per training sample (a quarter of them in a typical search). Each
   // value is the float TrainingSet::kernel_row_of computes for that sample: the loops compute
   // every entry from its own column alone.
-  const std::size_t m = used.size();
+  const std::size_t n_used = used.size();
   std::vector<double> xt, sq;
   std::vector<float> k;
   if (kernel.type != KernelType::linear) {
-    xt.resize(m * d);
-    sq.resize(m);
-    for (std::size_t u = 0; u < m; ++u) {
-      for (std::size_t c = 0; c < d; ++c) xt[c * m + u] = set.data().row(used[u])[c];
+    xt.resize(n_used * d);
+    sq.resize(n_used);
+    for (std::size_t u = 0; u < n_used; ++u) {
+      for (std::size_t c = 0; c < d; ++c) xt[c * n_used + u] = set.data().row(used[u])[c];
       sq[u] = set.squared_norm(used[u]);
     }
-    k.resize(m);
+    k.resize(n_used);
   }
   const detail::Loops& loops = detail::loops();
   for (std::size_t r = 0; r < rows.size(); ++r) {
@@ -233,16 +233,16 @@ std::vector<double> path_predictions(const TrainingSet& set, std::span<const Fit
     if (kernel.type == KernelType::linear) {
       for (std::size_t m = 0; m < models; ++m)
         for (std::size_t c = 0; c < d; ++c) f[m] += w[m * d + c] * x[c];
-    } else if (m > 0) {
+    } else if (n_used > 0) {
       double sq_x = 0;  // summed in feature order, as the set's own norms
       for (std::size_t c = 0; c < d; ++c) sq_x += x[c] * x[c];
-      loops.rbf_row(x, sq_x, xt.data(), m, sq.data(), m, d, kernel.gamma, k.data());
+      loops.rbf_row(x, sq_x, xt.data(), n_used, sq.data(), n_used, d, kernel.gamma, k.data());
       if (models == 1) {  // one fit, as a search scores it: the same sum without the inner loop
         double f0 = 0;
-        for (std::size_t u = 0; u < m; ++u) f0 += beta[u] * static_cast<double>(k[u]);
+        for (std::size_t u = 0; u < n_used; ++u) f0 += beta[u] * static_cast<double>(k[u]);
         f[0] = f0;
       } else {
-        for (std::size_t u = 0; u < m; ++u) {
+        for (std::size_t u = 0; u < n_used; ++u) {
           const double kv = k[u];
           const double* b = beta.data() + u * models;
           for (std::size_t j = 0; j < models; ++j) f[j] += b[j] * kv;
