@@ -21,6 +21,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <memory>
+#include <numeric>
 #include <string>
 #include <vector>
 
@@ -114,11 +115,14 @@ int main(int argc, char** argv) {
   std::vector<tune::ScaledSplit> splits;
   std::vector<LibsvmData> lib_train, lib_test;
   std::vector<std::unique_ptr<svr::TrainingSet>> sets;
+  std::vector<std::vector<std::size_t>> test_rows;  // 0 … rows − 1 of each held-out fold
   for (const auto& f : folds) splits.push_back(tune::scale_split(data, f.train_rows, f.test_rows));
   for (const auto& sp : splits) {
     lib_train.emplace_back(sp.train);
     lib_test.emplace_back(sp.test);
     sets.push_back(std::make_unique<svr::TrainingSet>(sp.train));
+    test_rows.emplace_back(sp.test.rows);
+    std::iota(test_rows.back().begin(), test_rows.back().end(), std::size_t{0});
   }
   const std::size_t n = s.history.size();
   sample = std::min(sample, n);
@@ -134,10 +138,8 @@ int main(int argc, char** argv) {
       t_lib += seconds_since(t0);
       t0 = Clock::now();
       const svr::FitResult fit = svr::fit(*sets[f], c.params, nullptr, &workspace);
-      std::vector<std::size_t> test_rows(splits[f].test.rows);
-      for (std::size_t r = 0; r < test_rows.size(); ++r) test_rows[r] = r;
       sse_ours += svr::path_squared_errors(*sets[f], std::span<const svr::FitResult>(&fit, 1),
-                                           splits[f].test, test_rows)[0];
+                                           splits[f].test, test_rows[f])[0];
       t_ours += seconds_since(t0);
       rows += splits[f].test.rows;
     }

@@ -572,7 +572,7 @@ std::vector<BoxEdge> box_edges(const TuneSummary& summary, const SearchSpace& sp
       const double inset = std::min(1.0, 0.25 * span);
       double inside = std::numeric_limits<double>::infinity();
       for (const Candidate& c : summary.history) {
-        if (!c.complete) continue;  // a lower bound only
+        if (!c.complete) continue;  // an estimate only
         const double x = std::log10(a.get(c.params));
         if ((upper ? edge - x : x - edge) >= inset) inside = std::min(inside, c.loss);
       }

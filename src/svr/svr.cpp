@@ -237,16 +237,12 @@ std::vector<double> path_predictions(const TrainingSet& set, std::span<const Fit
       double sq_x = 0;  // summed in feature order, as the set's own norms
       for (std::size_t c = 0; c < d; ++c) sq_x += x[c] * x[c];
       loops.rbf_row(x, sq_x, xt.data(), n_used, sq.data(), n_used, d, kernel.gamma, k.data());
-      if (models == 1) {  // one fit, as a search scores it: the same sum without the inner loop
-        double f0 = 0;
-        for (std::size_t u = 0; u < n_used; ++u) f0 += beta[u] * static_cast<double>(k[u]);
-        f[0] = f0;
-      } else {
-        for (std::size_t u = 0; u < n_used; ++u) {
-          const double kv = k[u];
-          const double* b = beta.data() + u * models;
-          for (std::size_t j = 0; j < models; ++j) f[j] += b[j] * kv;
-        }
+      // Each model's sum over the support vectors in order, held in a register.
+      for (std::size_t j = 0; j < models; ++j) {
+        double sum = 0;
+        for (std::size_t u = 0; u < n_used; ++u)
+          sum += beta[u * models + j] * static_cast<double>(k[u]);
+        f[j] = sum;
       }
     }
     for (std::size_t m = 0; m < models; ++m) out[r * models + m] = f[m] - path[m].model.rho;
