@@ -41,11 +41,7 @@ std::vector<std::string> split(const std::string& s) {
 }
 
 std::vector<RecordingInput> inputs_of(const sim::SimulatedCampaign& c, Role role) {
-  std::vector<RecordingInput> inputs;
-  for (std::size_t i = 0; i < c.recordings.size(); ++i)
-    if (c.campaign.recordings[i].role == role)
-      inputs.push_back(recording_input(c.campaign, c.campaign.recordings[i], c.recordings[i]));
-  return inputs;
+  return recording_inputs(c.campaign, c.recordings, role);
 }
 
 }  // namespace

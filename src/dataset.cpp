@@ -143,6 +143,22 @@ RecordingInput recording_input(const Campaign& campaign, const CampaignEntry& en
   return input;
 }
 
+std::vector<RecordingInput> recording_inputs(const Campaign& campaign,
+                                             std::span<const Recording> recordings,
+                                             std::optional<Role> role, Scenario scenario) {
+  if (recordings.size() != campaign.recordings.size())
+    throw InputError("campaign", 0, 0,
+                     fmt::format("has {} recordings in its manifest and {} given",
+                                 campaign.recordings.size(), recordings.size()));
+  std::vector<RecordingInput> inputs;
+  for (std::size_t i = 0; i < recordings.size(); ++i) {
+    const CampaignEntry& e = campaign.recordings[i];
+    if (e.scenario == scenario && (!role || e.role == *role))
+      inputs.push_back(recording_input(campaign, e, recordings[i]));
+  }
+  return inputs;
+}
+
 std::vector<RecordingInput> read_inputs(const Campaign& campaign, std::optional<Role> role,
                                         Scenario scenario) {
   std::vector<const CampaignEntry*> chosen;

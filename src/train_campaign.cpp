@@ -96,16 +96,7 @@ CampaignTrainResult train_campaign(const Campaign& campaign, const CampaignTrain
 CampaignTrainResult train_campaign(const Campaign& campaign,
                                    const std::vector<Recording>& recordings,
                                    const CampaignTrainOptions& options) {
-  if (recordings.size() != campaign.recordings.size())
-    throw InputError("campaign", 0, 0,
-                     fmt::format("has {} recordings in its manifest and {} given",
-                                 campaign.recordings.size(), recordings.size()));
-  std::vector<RecordingInput> inputs;
-  for (std::size_t i = 0; i < recordings.size(); ++i) {
-    const CampaignEntry& e = campaign.recordings[i];
-    if (e.scenario == Scenario::calibration && e.role == Role::train)
-      inputs.push_back(recording_input(campaign, e, recordings[i]));
-  }
+  const std::vector<RecordingInput> inputs = recording_inputs(campaign, recordings, Role::train);
   if (inputs.empty())
     throw InputError("campaign", 0, 0, "no calibration recordings with role train in the campaign");
   CampaignTrainResult out = train_inputs(inputs, "campaign", options);

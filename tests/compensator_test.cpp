@@ -77,9 +77,8 @@ CompensationModel causal_model(std::vector<double> temps_degc, int repetitions, 
   co.test_repetitions = 0;
   co.powered_s = 900;
   const sim::SimulatedCampaign sc = sim::simulate_calibration(sim::Instrument{}, co);
-  std::vector<RecordingInput> inputs;
-  for (std::size_t i = 0; i < sc.recordings.size(); ++i)
-    inputs.push_back(recording_input(sc.campaign, sc.campaign.recordings[i], sc.recordings[i]));
+  const std::vector<RecordingInput> inputs =
+      recording_inputs(sc.campaign, sc.recordings, std::nullopt);
   DatasetOptions dataset;
   dataset.features = features;
   dataset.preprocessing.rates.causality = signal::Causality::causal;

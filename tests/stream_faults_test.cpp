@@ -81,10 +81,8 @@ const Fixture& fixture() {
     co.repetitions = 3;
     co.powered_s = 1800;
     const sim::SimulatedCampaign sc = sim::simulate_calibration(sim::Instrument{}, co);
-    std::vector<RecordingInput> inputs;
-    for (std::size_t i = 0; i < sc.recordings.size(); ++i)
-      if (sc.campaign.recordings[i].role == Role::train)
-        inputs.push_back(recording_input(sc.campaign, sc.campaign.recordings[i], sc.recordings[i]));
+    const std::vector<RecordingInput> inputs =
+        recording_inputs(sc.campaign, sc.recordings, Role::train);
     DatasetOptions dataset;
     dataset.preprocessing.rates.causality = signal::Causality::causal;
     const Dataset data = build_dataset(inputs, dataset);

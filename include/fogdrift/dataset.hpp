@@ -99,6 +99,14 @@ Dataset build_dataset(const std::vector<RecordingInput>& inputs);
 RecordingInput recording_input(const Campaign& campaign, const CampaignEntry& entry,
                                Recording recording);
 
+/// The recordings of a campaign held in memory (`recordings` in manifest order) that are of
+/// `scenario`, and of `role` if given, each with what the manifest knows about it. Throws
+/// InputError naming the campaign when the two lists differ in length.
+std::vector<RecordingInput> recording_inputs(const Campaign& campaign,
+                                             std::span<const Recording> recordings,
+                                             std::optional<Role> role,
+                                             Scenario scenario = Scenario::calibration);
+
 /// Memory a command that reads recordings and builds a dataset from them takes, per byte of
 /// recording CSV, at its peak: measured on simulated campaigns of 7.5 to 60 MB
 /// (docs/reliability.md, "Size limits"), with headroom.

@@ -56,12 +56,8 @@ py::object evaluate(const CompensationModel& model, const py::object& data, bool
       throw OptionError(input_rate_dph ? "input_rate_dph" : "references",
                         "applies to recordings; a campaign says its input in its manifest");
     const HeldCampaign held = held_campaign(data);
-    std::vector<RecordingInput> inputs;
-    for (std::size_t i = 0; i < held.recordings.size(); ++i) {
-      const CampaignEntry& entry = held.campaign.recordings[i];
-      if (entry.role == Role::test && entry.scenario == Scenario::calibration)
-        inputs.push_back(recording_input(held.campaign, entry, held.recordings[i]));
-    }
+    const std::vector<RecordingInput> inputs =
+        recording_inputs(held.campaign, held.recordings, Role::test);
     if (inputs.empty())
       throw InputError("campaign", 0, 0, "has no calibration recordings with role test");
     source = "campaign (recordings with role \"test\")";
