@@ -7,6 +7,7 @@
 #include <cmath>
 #include <functional>
 #include <map>
+#include <mutex>
 #include <optional>
 
 #include "fogdrift/dataset.hpp"
@@ -15,6 +16,7 @@
 #include "fogdrift/eval/northfind.hpp"
 #include "fogdrift/eval/startup.hpp"
 #include "fogdrift/features.hpp"
+#include "fogdrift/thread_pool.hpp"
 #include "fogdrift/train.hpp"
 #include "report/paper_figures.hpp"
 
@@ -27,14 +29,8 @@ double seconds_since(Clock::time_point start) {
   return std::chrono::duration<double>(Clock::now() - start).count();
 }
 
-std::vector<RecordingInput> inputs_of(const sim::SimulatedCampaign& c, std::optional<Role> role) {
-  std::vector<RecordingInput> inputs;
-  for (std::size_t i = 0; i < c.recordings.size(); ++i) {
-    const CampaignEntry& e = c.campaign.recordings[i];
-    if (role && e.role != *role) continue;
-    inputs.push_back(recording_input(c.campaign, e, c.recordings[i]));
-  }
-  return inputs;
+std::vector<RecordingInput> inputs_of(const sim::SimulatedCampaign& c, Role role) {
+  return recording_inputs(c.campaign, c.recordings, role);
 }
 
 // Table 2 of a model on test rows: per recording, pooled (eval/metrics.hpp).
@@ -109,10 +105,14 @@ std::pair<double, double> start_up_rmse_deg(const CompensationModel& model,
           eval::field_summary(c.campaign, c.recordings, unguarded).comp_mean_rmse_deg()};
 }
 
+// The progress line: stages are reported from the pool's threads, in the order they start.
 struct Stages {
+  explicit Stages(const PaperOptions& options) : o(options) {}
   const PaperOptions& o;
   double done = 0, total = 1;
+  std::mutex mutex;
   void step(const std::string& stage, double weight) {
+    const std::lock_guard<std::mutex> lock(mutex);
     if (o.progress) o.progress(stage, std::min(1.0, done / total));
     done += weight;
   }
@@ -120,137 +120,153 @@ struct Stages {
 
 constexpr double kTunedWeight = 6, kOtherWeight = 1, kLotoWeight = 4;
 
-SeedRun run_seed(const PaperOptions& o, std::uint64_t seed, Stages& stages, FirstSeed* keep) {
-  const auto start = Clock::now();
+// One seed's campaigns and datasets, and its run as the method tasks fill it in.
+struct SeedCase {
+  sim::SimulatedCampaign cal, nf;
+  std::vector<sim::SimulatedCampaign> start_ups;  // one per PaperOptions::start_ups
+  Dataset train, test;
   SeedRun run;
+  std::vector<std::optional<CompensationModel>> models;  // kPaperMethods order, first seed only
+};
+
+// Simulates a seed's campaigns and measures what needs no model: raw, floor, stable.
+void prepare_seed(const PaperOptions& o, std::uint64_t seed, Stages& stages, SeedCase& c) {
+  const auto start = Clock::now();
+  SeedRun& run = c.run;
   run.seed = seed;
   stages.step(fmt::format("seed {}: simulating the campaigns", seed), kOtherWeight);
   sim::CalibrationOptions co = o.calibration;
   co.seed = seed;
   sim::NorthfindOptions no = o.northfind, so = o.stable;
   no.seed = so.seed = seed;
-  sim::SimulatedCampaign cal = sim::simulate_calibration(o.instrument, co);
-  sim::SimulatedCampaign nf = sim::simulate_northfind(o.instrument, no);
+  c.cal = sim::simulate_calibration(o.instrument, co);
+  c.nf = sim::simulate_northfind(o.instrument, no);
   const sim::SimulatedCampaign st = sim::simulate_stable(o.instrument, so);
 
   const DatasetOptions dataset;
-  Dataset train = build_dataset(inputs_of(cal, Role::train), dataset);
-  Dataset test = build_dataset(inputs_of(cal, Role::test), dataset);
-  run.raw_rmse_deg = northfind_rmse(nf, {});
+  c.train = build_dataset(inputs_of(c.cal, Role::train), dataset);
+  c.test = build_dataset(inputs_of(c.cal, Role::test), dataset);
+  run.raw_rmse_deg = northfind_rmse(c.nf, {});
   run.raw_mean_rmse_deg = mean_of(run.raw_rmse_deg);
-  if (has_true_drift(nf)) {
+  if (has_true_drift(c.nf)) {
     run.oracle_rmse_deg = northfind_rmse(
-        nf, [](const Recording& rec) { return rec.numeric_column("drift_true_dph"); });
+        c.nf, [](const Recording& rec) { return rec.numeric_column("drift_true_dph"); });
     run.oracle_mean_rmse_deg = mean_of(run.oracle_rmse_deg);
   }
   run.stable_rmse_deg = mean_of(northfind_rmse(st, {}));
   // The start-up conditions table: the same temperatures under every approach asked for.
-  std::vector<sim::SimulatedCampaign> start_ups;
   for (sim::Approach a : o.start_ups) {
     sim::NorthfindOptions ao = no;
     ao.approach = a;
-    start_ups.push_back(sim::simulate_northfind(o.instrument, ao));
+    c.start_ups.push_back(sim::simulate_northfind(o.instrument, ao));
     const eval::FieldSummary f =
-        eval::field_summary(start_ups.back().campaign, start_ups.back().recordings, {});
+        eval::field_summary(c.start_ups.back().campaign, c.start_ups.back().recordings, {});
     run.start_up_raw_rmse_deg.push_back(f.raw_mean_rmse_deg());
     run.start_up_floor_rmse_deg.push_back(f.floor_mean_rmse_deg());
   }
   run.denoised_std_dph =
-      eval::pool(eval::metrics_per_recording(test, std::vector<double>(test.rows, 0.0)))
+      eval::pool(eval::metrics_per_recording(c.test, std::vector<double>(c.test.rows, 0.0)))
           .std_before_dph;
-
-  for (const Method method : kPaperMethods) {
-    const std::string name = to_string(method);
-    const bool tuned = method != Method::svr && method != Method::bp;
-    stages.step(fmt::format("seed {}: training {}", seed, name),
-                tuned ? kTunedWeight : kOtherWeight);
-    TrainResult trained =
-        fogdrift::train(train, dataset, train_options(o, method, seed, o.fitness));
-    MethodRun m;
-    m.method = method;
-    m.table2 = table2_of(trained.model, test);
-    m.rmse_deg = northfind_rmse(nf, predicted_by(trained.model));
-    m.mean_rmse_deg = mean_of(m.rmse_deg);
-    for (const sim::SimulatedCampaign& c : start_ups) {
-      const auto [guarded, unguarded] = start_up_rmse_deg(trained.model, c);
-      m.start_up_rmse_deg.push_back(guarded);
-      m.start_up_unguarded_rmse_deg.push_back(unguarded);
-    }
-    if (method == Method::ssa_svr && o.causal && !start_ups.empty()) {
-      // What firmware runs: the same C, σ and ε on causal rates, over the causal window and
-      // degree `train` uses. Its batch prediction equals the streaming compensator's sample
-      // for sample (compensator.hpp).
-      DatasetOptions causal = dataset;
-      causal.preprocessing.rates = signal::recommended_rates(signal::Causality::causal);
-      TrainOptions to = train_options(o, Method::svr, seed, o.fitness);
-      MethodRun tuned;
-      tuned.hyperparameters = trained.summary.hyperparameters;
-      to.svr_params = svr_params_of(tuned);
-      const CompensationModel streamed =
-          fogdrift::train(build_dataset(inputs_of(cal, Role::train), causal), causal, to).model;
-      for (const sim::SimulatedCampaign& c : start_ups) {
-        const auto [guarded, unguarded] = start_up_rmse_deg(streamed, c);
-        run.causal_start_up_rmse_deg.push_back(guarded);
-        run.causal_start_up_unguarded_rmse_deg.push_back(unguarded);
-      }
-    }
-    m.hyperparameters = trained.summary.hyperparameters;
-    m.fitness_value = trained.summary.fitness_value;
-    m.train_seconds = trained.summary.seconds;
-    run.methods.push_back(std::move(m));
-    if (keep) keep->models.emplace(method, std::move(trained.model));
-  }
-  if (keep) {
-    keep->cal = std::move(cal);
-    keep->nf = std::move(nf);
-    keep->train = std::move(train);
-    keep->test = std::move(test);
-    keep->dataset = dataset;
-  }
+  run.methods.resize(kPaperMethods.size());
+  c.models.resize(kPaperMethods.size());
   run.seconds = seconds_since(start);
-  return run;
 }
 
-std::vector<LotoRow> loto_study(const PaperOptions& o, const SeedRun& run, const FirstSeed& f) {
+// Trains one method on a seed's campaign and scores it: Table 2, Table 3 and the start-up
+// conditions; for SSA-SVR also the causal refit. Writes only its own entries of the seed's run,
+// so the tasks of one seed may run side by side. Returns the task's own time.
+double run_method(const PaperOptions& o, std::size_t method_index, Stages& stages, SeedCase& c,
+                  bool keep_model) {
+  const auto start = Clock::now();
+  const Method method = kPaperMethods[method_index];
+  SeedRun& run = c.run;
+  const std::uint64_t seed = run.seed;
+  const std::string name = to_string(method);
+  const bool tuned = method != Method::svr && method != Method::bp;
+  stages.step(fmt::format("seed {}: training {}", seed, name), tuned ? kTunedWeight : kOtherWeight);
+  const DatasetOptions dataset;
+  TrainResult trained =
+      fogdrift::train(c.train, dataset, train_options(o, method, seed, o.fitness));
+  MethodRun& m = run.methods[method_index];
+  m.method = method;
+  m.table2 = table2_of(trained.model, c.test);
+  m.rmse_deg = northfind_rmse(c.nf, predicted_by(trained.model));
+  m.mean_rmse_deg = mean_of(m.rmse_deg);
+  for (const sim::SimulatedCampaign& sc : c.start_ups) {
+    const auto [guarded, unguarded] = start_up_rmse_deg(trained.model, sc);
+    m.start_up_rmse_deg.push_back(guarded);
+    m.start_up_unguarded_rmse_deg.push_back(unguarded);
+  }
+  m.hyperparameters = trained.summary.hyperparameters;
+  if (method == Method::ssa_svr && o.causal && !c.start_ups.empty()) {
+    // What firmware runs: the same C, σ and ε on causal rates, over the causal window and
+    // degree `train` uses. Its batch prediction equals the streaming compensator's sample
+    // for sample (compensator.hpp).
+    DatasetOptions causal = dataset;
+    causal.preprocessing.rates = signal::recommended_rates(signal::Causality::causal);
+    TrainOptions to = train_options(o, Method::svr, seed, o.fitness);
+    to.svr_params = svr_params_of(m);
+    const CompensationModel streamed =
+        fogdrift::train(build_dataset(inputs_of(c.cal, Role::train), causal), causal, to).model;
+    for (const sim::SimulatedCampaign& sc : c.start_ups) {
+      const auto [guarded, unguarded] = start_up_rmse_deg(streamed, sc);
+      run.causal_start_up_rmse_deg.push_back(guarded);
+      run.causal_start_up_unguarded_rmse_deg.push_back(unguarded);
+    }
+  }
+  m.fitness_value = trained.summary.fitness_value;
+  m.train_seconds = trained.summary.seconds;
+  if (keep_model) c.models[method_index] = std::move(trained.model);
+  return seconds_since(start);
+}
+
+// fn(0) … fn(n − 1) on the pool, longest first as the caller orders them; serially without one.
+void for_each_task(ThreadPool* pool, std::size_t n, const std::function<void(std::size_t)>& fn) {
+  if (pool)
+    pool->parallel_for(n, fn);
+  else
+    for (std::size_t k = 0; k < n; ++k) fn(k);
+}
+
+// The calibration temperatures of a dataset, ascending.
+std::vector<double> temperatures_of(const Dataset& data) {
   std::vector<double> temps;
-  for (const auto& g : f.train.groups) temps.push_back(g.initial_temp_degc);
+  for (const auto& g : data.groups) temps.push_back(g.initial_temp_degc);
   std::sort(temps.begin(), temps.end());
   temps.erase(std::unique(temps.begin(), temps.end()), temps.end());
-  const Method methods[] = {Method::ssa_svr, Method::bp};
-  std::vector<LotoRow> rows(temps.size() * 2);
-  auto job = [&](std::size_t k) {
-    const double t = temps[k / 2];
-    const Method method = methods[k % 2];
-    std::vector<std::size_t> keep_groups, test_groups;
-    for (std::size_t g = 0; g < f.train.groups.size(); ++g)
-      if (f.train.groups[g].initial_temp_degc != t) keep_groups.push_back(g);
-    for (std::size_t g = 0; g < f.test.groups.size(); ++g)
-      if (f.test.groups[g].initial_temp_degc == t) test_groups.push_back(g);
-    const Dataset train = f.train.select_groups(keep_groups);
-    const Dataset test = f.test.select_groups(test_groups);
-    // The pool is nested inside the study's loop here: it runs serially.
-    TrainOptions to =
-        train_options(o, method == Method::bp ? Method::bp : Method::svr, run.seed, o.fitness);
-    // One temperature fewer to deal into temperature folds (they only score the model here).
-    if (to.tune.cv.scheme == tune::CvScheme::temperature) {
-      if (temps.size() >= 3)
-        to.tune.cv.folds = std::min(to.tune.cv.folds, temps.size() - 1);
-      else
-        to.tune.cv = tune::CvOptions{};
-    }
-    if (method != Method::bp) to.svr_params = svr_params_of(run.method(method));
-    const TrainResult loto = fogdrift::train(train, f.dataset, to);
-    const eval::CompensationMetrics all = table2_of(f.models.at(method), test);
-    const eval::CompensationMetrics left = table2_of(loto.model, test);
-    rows[k] =
-        LotoRow{t,           method,      all.std_before_dph, all.std_after_dph, left.std_after_dph,
-                all.mae_dph, left.mae_dph};
-  };
-  if (o.pool)
-    o.pool->parallel_for(rows.size(), job);
-  else
-    for (std::size_t k = 0; k < rows.size(); ++k) job(k);
-  return rows;
+  return temps;
+}
+
+// Row k of the leave-one-temperature-out study: temperature temps[k / 2], SSA-SVR (its tuned
+// C, σ and ε refitted) for even k, BP for odd k.
+LotoRow loto_row(const PaperOptions& o, const SeedRun& run, const FirstSeed& f,
+                 const std::vector<double>& temps, std::size_t k) {
+  const double t = temps[k / 2];
+  const Method method = k % 2 ? Method::bp : Method::ssa_svr;
+  std::vector<std::size_t> keep_groups, test_groups;
+  for (std::size_t g = 0; g < f.train.groups.size(); ++g)
+    if (f.train.groups[g].initial_temp_degc != t) keep_groups.push_back(g);
+  for (std::size_t g = 0; g < f.test.groups.size(); ++g)
+    if (f.test.groups[g].initial_temp_degc == t) test_groups.push_back(g);
+  const Dataset train = f.train.select_groups(keep_groups);
+  const Dataset test = f.test.select_groups(test_groups);
+  // Run as a task of the pool: its own pool loops run serially.
+  TrainOptions to =
+      train_options(o, method == Method::bp ? Method::bp : Method::svr, run.seed, o.fitness);
+  // One temperature fewer to deal into temperature folds (they only score the model here).
+  if (to.tune.cv.scheme == tune::CvScheme::temperature) {
+    if (temps.size() >= 3)
+      to.tune.cv.folds = std::min(to.tune.cv.folds, temps.size() - 1);
+    else
+      to.tune.cv = tune::CvOptions{};
+  }
+  if (method != Method::bp) to.svr_params = svr_params_of(run.method(method));
+  const TrainResult loto = fogdrift::train(train, f.dataset, to);
+  const eval::CompensationMetrics all = table2_of(f.models.at(method), test);
+  const eval::CompensationMetrics left = table2_of(loto.model, test);
+  return LotoRow{
+      t,           method,      all.std_before_dph, all.std_after_dph, left.std_after_dph,
+      all.mae_dph, left.mae_dph};
 }
 
 std::vector<FitnessRow> fitness_study(const PaperOptions& o, const SeedRun& run,
@@ -355,16 +371,45 @@ PaperResult run_paper(const PaperOptions& options) {
   const double per_seed = 3 * kTunedWeight + 3 * kOtherWeight;
   stages.total = per_seed * static_cast<double>(options.seeds) +
                  (options.studies ? kLotoWeight + kTunedWeight : 0.0) + 1;
+  // Every seed's campaigns first, then every (seed, method) pair as one task, the tuned SVRs
+  // first: each search then runs serially inside its task, and both cores stay busy to the end
+  // instead of waiting at the end of each of a search's batches. Results do not depend on it.
+  std::vector<SeedCase> cases(options.seeds);
+  for_each_task(options.pool, cases.size(), [&](std::size_t k) {
+    prepare_seed(options, options.first_seed + k, stages, cases[k]);
+  });
+  std::vector<std::pair<std::size_t, std::size_t>> tasks;  // (seed, method index)
+  for (const bool tuned : {true, false})
+    for (std::size_t j = 0; j < kPaperMethods.size(); ++j)
+      if (tuned == (kPaperMethods[j] != Method::svr && kPaperMethods[j] != Method::bp))
+        for (std::size_t k = 0; k < cases.size(); ++k) tasks.emplace_back(k, j);
+  std::vector<double> task_seconds(tasks.size());
+  for_each_task(options.pool, tasks.size(), [&](std::size_t t) {
+    const auto [k, j] = tasks[t];
+    task_seconds[t] = run_method(options, j, stages, cases[k], k == 0);
+  });
+  for (std::size_t t = 0; t < tasks.size(); ++t)
+    cases[tasks[t].first].run.seconds += task_seconds[t];
   FirstSeed first;
-  for (std::size_t k = 0; k < options.seeds; ++k) {
-    const std::uint64_t seed = options.first_seed + k;
-    r.seeds.push_back(run_seed(options, seed, stages, k == 0 ? &first : nullptr));
-  }
+  for (std::size_t j = 0; j < kPaperMethods.size(); ++j)
+    first.models.emplace(kPaperMethods[j], std::move(*cases.front().models[j]));
+  first.cal = std::move(cases.front().cal);
+  first.nf = std::move(cases.front().nf);
+  first.train = std::move(cases.front().train);
+  first.test = std::move(cases.front().test);
+  for (SeedCase& c : cases) r.seeds.push_back(std::move(c.run));
   if (options.studies) {
-    stages.step("study: leave one temperature out", kLotoWeight);
-    r.loto = loto_study(options, r.seeds.front(), first);
-    stages.step("study: training-loss against cross-validation fitness", kTunedWeight);
-    r.fitness = fitness_study(options, r.seeds.front(), first);
+    // The fitness study's search (the longest job) beside the leave-one-temperature-out fits.
+    stages.step("studies: leave one temperature out; training-loss against cv fitness",
+                kLotoWeight + kTunedWeight);
+    const std::vector<double> temps = temperatures_of(first.train);
+    r.loto.resize(2 * temps.size());
+    for_each_task(options.pool, r.loto.size() + 1, [&](std::size_t k) {
+      if (k == 0)
+        r.fitness = fitness_study(options, r.seeds.front(), first);
+      else
+        r.loto[k - 1] = loto_row(options, r.seeds.front(), first, temps, k - 1);
+    });
   }
   stages.step("figures", 1);
   r.figures = paper_figures(r, first);

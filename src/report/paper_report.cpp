@@ -557,6 +557,8 @@ std::string paper_markdown(const PaperResult& r) {
         s.method(Method::bp).table2.std_after_dph, s.raw_mean_rmse_deg, ssa.mean_rmse_deg,
         s.stable_rmse_deg, ssa.hyperparameter("C"), ssa.hyperparameter("sigma"), s.seconds);
   }
+  md << "\n*s* is the time of the seed's own work, one thread. Seeds and methods run side by "
+        "side on the pool, so these add up to more than the run's wall time.\n";
   md << "\n## Figures\n\n";
   for (const Figure& f : r.figures) {
     md << fmt::format("![{}]({}.png)\n\n*{}* — data: `{}.json`\n\n", f.title, f.name, f.title,

@@ -73,7 +73,9 @@ struct PaperOptions {
   /// on causal rates (`fogdrift train --differentiator causal`), the model `stream` and the C
   /// header run; one SVR fit per seed.
   bool causal = true;
-  ThreadPool* pool = nullptr;  ///< parallel fits; results do not depend on it
+  /// Runs the seeds' method tasks and the studies side by side (a search is then serial inside its
+  /// task); results do not depend on it.
+  ThreadPool* pool = nullptr;
   /// Called at every stage with what is being done and the fraction of the run done, [0, 1].
   std::function<void(const std::string& stage, double fraction)> progress;
 };
@@ -114,6 +116,8 @@ struct SeedRun {
   /// causal rates and applied causally, sample by sample, guarded and not. Empty when not run.
   std::vector<double> causal_start_up_rmse_deg, causal_start_up_unguarded_rmse_deg;
   std::vector<MethodRun> methods;  ///< in kPaperMethods order
+  /// Time of the seed's own work (simulation and its methods' tasks, each on one thread); the
+  /// seeds' tasks run side by side on the pool, so the seeds' sum exceeds the run's wall time.
   double seconds = 0;
   const MethodRun& method(Method m) const;  ///< throws std::out_of_range if not run
 };
