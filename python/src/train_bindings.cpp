@@ -34,7 +34,8 @@ py::object train(const py::object& campaign, const std::string& method, const st
                  const py::object& block_s, const py::object& rate_window_s,
                  const py::object& rate_degree, std::size_t population, std::size_t iterations,
                  std::uint64_t seed, int threads, double c_min, double c_max, double sigma_min,
-                 double sigma_max, double epsilon, bool search_epsilon, bool auto_box, bool denoise,
+                 double sigma_max, double epsilon, bool search_epsilon, bool auto_box, bool racing,
+                 bool denoise,
                  std::size_t hidden, std::size_t max_degree, const py::object& progress,
                  const std::string& target, bool validate_only) {
   CampaignTrainOptions o;
@@ -83,6 +84,7 @@ py::object train(const py::object& campaign, const std::string& method, const st
   t.tune.space.epsilon = epsilon;
   t.tune.space.search_epsilon = search_epsilon;
   t.auto_box_rounds = auto_box ? 3 : 0;
+  t.tune.racing = racing;
   t.mlp.hidden = hidden;
   t.poly_max_degree = max_degree;
   // The callback runs on the training thread with the GIL taken; an exception in it stops the
@@ -256,7 +258,8 @@ void bind_train(py::module_& m) {
       py::arg("c_min") = kSpace.c_min, py::arg("c_max") = kSpace.c_max,
       py::arg("sigma_min") = kSpace.sigma_min, py::arg("sigma_max") = kSpace.sigma_max,
       py::arg("epsilon") = kSpace.epsilon, py::arg("search_epsilon") = false,
-      py::arg("auto_box") = false, py::arg("denoise") = true, py::arg("hidden") = kTrain.mlp.hidden,
+      py::arg("auto_box") = false, py::arg("racing") = kTrain.tune.racing,
+      py::arg("denoise") = true, py::arg("hidden") = kTrain.mlp.hidden,
       py::arg("max_degree") = kTrain.poly_max_degree, py::arg("progress") = py::none(),
       py::arg("target") = "gyro_dph", py::arg("validate_only") = false,
       "Trains a compensation model on a campaign's training recordings, as `fogdrift train` "
@@ -270,7 +273,9 @@ void bind_train(py::module_& m) {
       "accelerometer (accel_x_g, accel_NAME_g) or a scale-factor channel (sf_NAME_ppm), each "
       "less its reference in the manifest (docs/logs.md, \"Other targets\"); save_models writes "
       "the models of every axis as one file, as "
-      "`fogdrift train --targets` does. validate_only: check the options and return None "
+      "`fogdrift train --targets` does. racing: stop a search's candidate once its folds so far "
+      "cannot beat the best (False fits every fold, as `train --no-racing`; docs/tuning.md, "
+      "\"Speed\"). validate_only: check the options and return None "
       "without reading the campaign (train_fleet does, once, before any unit runs).");
   m.def(
       "save_models",

@@ -162,6 +162,13 @@ def test_train_gives_the_command_lines_model_byte_for_byte(trained, tmp_path, cl
     assert [e["parameter"] for e in tuned["summary"]["box_edges"]] == \
         [e["parameter"] for e in got["box_edges"]]
     assert tuned["summary"]["search"]["evaluations"] == got["search"]["evaluations"]
+    # racing=False is --no-racing: every fold fitted, no candidate stopped, the same model.
+    every = fogdrift.train(str(d / "cal"), population=8, iterations=3, seed=5, racing=False)
+    cli("train", d / "cal", "--population", "8", "--iterations", "3", "--seed", "5",
+        "--no-racing", "-o", tmp_path / "every.json", "-q")
+    assert every["model"].to_json() == (tmp_path / "every.json").read_text()
+    assert every["summary"]["search"]["raced"] == 0
+    assert every["summary"]["search"]["fits"] >= tuned["summary"]["search"]["fits"]
     assert set(got) - {"model"} <= set(tuned["summary"])  # every key but the file written
     for method, key in (("poly", "poly_cv_rmse_by_degree"), ("bp", "bp")):
         line = json.loads(cli("train", d / "cal", "--method", method, "-o", tmp_path / "b.json",
