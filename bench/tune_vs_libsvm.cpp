@@ -15,13 +15,10 @@
 #include <svm.h>
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
-#include <memory>
-#include <numeric>
 #include <string>
 #include <vector>
 
@@ -34,35 +31,9 @@
 namespace {
 
 using namespace fogdrift;
-using fogdrift::bench::Clock;
 using fogdrift::bench::median;
-using fogdrift::bench::seconds_since;
 
 void quiet(const char*) {}
-
-using fogdrift::bench::LibsvmData;
-
-// One cold LIBSVM fit and the squared error on the test fold.
-double libsvm_fold(const LibsvmData& train, const LibsvmData& test, const svr::Params& p,
-                   double cache_mb) {
-  svm_parameter sp{};
-  sp.svm_type = EPSILON_SVR;
-  sp.kernel_type = RBF;
-  sp.gamma = p.kernel.gamma;
-  sp.cache_size = cache_mb;
-  sp.eps = p.tolerance;
-  sp.C = p.c;
-  sp.p = p.epsilon;
-  sp.shrinking = 1;
-  svm_model* m = svm_train(&train.prob, &sp);
-  double sse = 0;
-  for (int i = 0; i < test.prob.l; ++i) {
-    const double e = svm_predict(m, test.prob.x[i]) - test.y[static_cast<std::size_t>(i)];
-    sse += e * e;
-  }
-  svm_free_and_destroy_model(&m);
-  return sse;
-}
 
 }  // namespace
 
@@ -110,50 +81,26 @@ int main(int argc, char** argv) {
   const tune::TuneSummary raced = search(options, "racing", walls);
   const tune::TuneSummary s = search(every_fold, "every fold", full_walls);
 
-  // The same folds, as LIBSVM data.
-  const auto folds = tune::grouped_folds(data, options.cv);
-  std::vector<tune::ScaledSplit> splits;
-  std::vector<LibsvmData> lib_train, lib_test;
-  std::vector<std::unique_ptr<svr::TrainingSet>> sets;
-  std::vector<std::vector<std::size_t>> test_rows;  // 0 … rows − 1 of each held-out fold
-  for (const auto& f : folds) splits.push_back(tune::scale_split(data, f.train_rows, f.test_rows));
-  for (const auto& sp : splits) {
-    lib_train.emplace_back(sp.train);
-    lib_test.emplace_back(sp.test);
-    sets.push_back(std::make_unique<svr::TrainingSet>(sp.train));
-    test_rows.emplace_back(sp.test.rows);
-    std::iota(test_rows.back().begin(), test_rows.back().end(), std::size_t{0});
-  }
+  // The same folds, fitted cold by each engine on a sample of complete candidates.
+  bench::FoldPair folds(data, options.cv);
   const std::size_t n = s.history.size();
   sample = std::min(sample, n);
   double t_lib = 0, t_ours = 0, worst_rel = 0;
-  svr::Workspace workspace;  // the memory reuse the tuner's fits have too
   for (std::size_t k = 0; k < sample; ++k) {
     const tune::Candidate& c = s.history[k * n / sample];
-    double sse_lib = 0, sse_ours = 0;
-    std::size_t rows = 0;
-    for (std::size_t f = 0; f < folds.size(); ++f) {
-      auto t0 = Clock::now();
-      sse_lib += libsvm_fold(lib_train[f], lib_test[f], c.params, options.cache_mb);
-      t_lib += seconds_since(t0);
-      t0 = Clock::now();
-      const svr::FitResult fit = svr::fit(*sets[f], c.params, nullptr, &workspace);
-      sse_ours += svr::path_squared_errors(*sets[f], std::span<const svr::FitResult>(&fit, 1),
-                                           splits[f].test, test_rows[f])[0];
-      t_ours += seconds_since(t0);
-      rows += splits[f].test.rows;
-    }
-    const double loss_lib = std::sqrt(sse_lib / static_cast<double>(rows));
-    worst_rel = std::max(worst_rel, std::abs(loss_lib - c.loss) / c.loss);
+    const bench::FoldPair::Scored r = folds.score(c.params, options.cache_mb);
+    t_lib += r.libsvm_s;
+    t_ours += r.fogdrift_s;
+    worst_rel = std::max(worst_rel, std::abs(r.libsvm_loss - c.loss) / c.loss);
   }
-  const double per_fit_lib = t_lib / static_cast<double>(sample * folds.size());
-  const double per_fit_ours = t_ours / static_cast<double>(sample * folds.size());
-  const double lib_total = per_fit_lib * static_cast<double>(s.candidates * folds.size());
+  const double per_fit_lib = t_lib / static_cast<double>(sample * folds.folds());
+  const double per_fit_ours = t_ours / static_cast<double>(sample * folds.folds());
+  const double lib_total = per_fit_lib * static_cast<double>(s.candidates * folds.folds());
   const double wall = median(walls), full_wall = median(full_walls);
 
   std::printf("| quantity | value |\n|---|---|\n");
   std::printf("| training rows, features, folds | %zu, %zu, %zu |\n", data.rows, data.cols(),
-              folds.size());
+              folds.folds());
   std::printf(
       "| search, racing (default) | SSA, population 20, 50 iterations: %zu evaluations, %zu "
       "distinct candidates, %zu stopped early, %zu fits |\n",
@@ -174,11 +121,11 @@ int main(int argc, char** argv) {
   print_walls("fogdrift search, every fold", full_wall, full_walls);
   std::printf("| ratio every fold / racing | %.2f× |\n", full_wall / wall);
   std::printf("| fogdrift fit + predict, cold, 1 thread, mean of %zu sampled fits | %.1f ms |\n",
-              sample * folds.size(), 1e3 * per_fit_ours);
+              sample * folds.folds(), 1e3 * per_fit_ours);
   std::printf("| LIBSVM fit + predict, cold, 1 thread, same fits | %.1f ms |\n", 1e3 * per_fit_lib);
   std::printf(
       "| LIBSVM equivalent of the search (%zu candidates × %zu folds × mean) | **%.0f s** |\n",
-      s.candidates, folds.size(), lib_total);
+      s.candidates, folds.folds(), lib_total);
   std::printf("| ratio LIBSVM equivalent / fogdrift search, racing | **%.1f×** |\n",
               lib_total / wall);
   std::printf("| ratio LIBSVM equivalent / fogdrift search, every fold | %.1f× |\n",
