@@ -40,10 +40,6 @@ std::vector<std::string> split(const std::string& s) {
   return out;
 }
 
-std::vector<RecordingInput> inputs_of(const sim::SimulatedCampaign& c, Role role) {
-  return recording_inputs(c.campaign, c.recordings, role);
-}
-
 }  // namespace
 
 int main(int argc, char** argv) try {
@@ -110,7 +106,8 @@ int main(int argc, char** argv) try {
   for (std::size_t seed = 1; seed <= seeds; ++seed) {
     co.seed = seed;
     const sim::SimulatedCampaign cal = sim::simulate_calibration(instrument, co);
-    const Dataset train = build_dataset(inputs_of(cal, Role::train), dataset);
+    const Dataset train =
+        build_dataset(recording_inputs(cal.campaign, cal.recordings, Role::train), dataset);
     std::vector<sim::SimulatedCampaign> nf;
     for (sim::Approach a : field) {
       sim::NorthfindOptions no;

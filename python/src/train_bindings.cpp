@@ -35,9 +35,8 @@ py::object train(const py::object& campaign, const std::string& method, const st
                  const py::object& rate_degree, std::size_t population, std::size_t iterations,
                  std::uint64_t seed, int threads, double c_min, double c_max, double sigma_min,
                  double sigma_max, double epsilon, bool search_epsilon, bool auto_box, bool racing,
-                 bool denoise,
-                 std::size_t hidden, std::size_t max_degree, const py::object& progress,
-                 const std::string& target, bool validate_only) {
+                 bool denoise, std::size_t hidden, std::size_t max_degree,
+                 const py::object& progress, const std::string& target, bool validate_only) {
   CampaignTrainOptions o;
   target_of(target, "target");
   o.dataset.target_column = target;

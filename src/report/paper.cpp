@@ -29,8 +29,9 @@ double seconds_since(Clock::time_point start) {
   return std::chrono::duration<double>(Clock::now() - start).count();
 }
 
-std::vector<RecordingInput> inputs_of(const sim::SimulatedCampaign& c, Role role) {
-  return recording_inputs(c.campaign, c.recordings, role);
+// The methods whose C and σ a search chooses: PSO-, GWO- and SSA-SVR.
+bool is_searched(Method method) {
+  return method != Method::svr && method != Method::bp;
 }
 
 // Table 2 of a model on test rows: per recording, pooled (eval/metrics.hpp).
@@ -144,8 +145,8 @@ void prepare_seed(const PaperOptions& o, std::uint64_t seed, Stages& stages, See
   const sim::SimulatedCampaign st = sim::simulate_stable(o.instrument, so);
 
   const DatasetOptions dataset;
-  c.train = build_dataset(inputs_of(c.cal, Role::train), dataset);
-  c.test = build_dataset(inputs_of(c.cal, Role::test), dataset);
+  c.train = build_dataset(recording_inputs(c.cal.campaign, c.cal.recordings, Role::train), dataset);
+  c.test = build_dataset(recording_inputs(c.cal.campaign, c.cal.recordings, Role::test), dataset);
   run.raw_rmse_deg = northfind_rmse(c.nf, {});
   run.raw_mean_rmse_deg = mean_of(run.raw_rmse_deg);
   if (has_true_drift(c.nf)) {
@@ -182,8 +183,8 @@ double run_method(const PaperOptions& o, std::size_t method_index, Stages& stage
   SeedRun& run = c.run;
   const std::uint64_t seed = run.seed;
   const std::string name = to_string(method);
-  const bool tuned = method != Method::svr && method != Method::bp;
-  stages.step(fmt::format("seed {}: training {}", seed, name), tuned ? kTunedWeight : kOtherWeight);
+  stages.step(fmt::format("seed {}: training {}", seed, name),
+              is_searched(method) ? kTunedWeight : kOtherWeight);
   const DatasetOptions dataset;
   TrainResult trained =
       fogdrift::train(c.train, dataset, train_options(o, method, seed, o.fitness));
@@ -207,7 +208,10 @@ double run_method(const PaperOptions& o, std::size_t method_index, Stages& stage
     TrainOptions to = train_options(o, Method::svr, seed, o.fitness);
     to.svr_params = svr_params_of(m);
     const CompensationModel streamed =
-        fogdrift::train(build_dataset(inputs_of(c.cal, Role::train), causal), causal, to).model;
+        fogdrift::train(
+            build_dataset(recording_inputs(c.cal.campaign, c.cal.recordings, Role::train), causal),
+            causal, to)
+            .model;
     for (const sim::SimulatedCampaign& sc : c.start_ups) {
       const auto [guarded, unguarded] = start_up_rmse_deg(streamed, sc);
       run.causal_start_up_rmse_deg.push_back(guarded);
@@ -381,7 +385,7 @@ PaperResult run_paper(const PaperOptions& options) {
   std::vector<std::pair<std::size_t, std::size_t>> tasks;  // (seed, method index)
   for (const bool tuned : {true, false})
     for (std::size_t j = 0; j < kPaperMethods.size(); ++j)
-      if (tuned == (kPaperMethods[j] != Method::svr && kPaperMethods[j] != Method::bp))
+      if (tuned == is_searched(kPaperMethods[j]))
         for (std::size_t k = 0; k < cases.size(); ++k) tasks.emplace_back(k, j);
   std::vector<double> task_seconds(tasks.size());
   for_each_task(options.pool, tasks.size(), [&](std::size_t t) {
