@@ -72,13 +72,13 @@ DatasetOptions dataset_options(const Point& p, const std::string& target) {
   return d;
 }
 
-Dataset dataset_of(const Point& p, const std::string& target) {
+// The training recordings of a point's campaign (seed 3), simulated once for all its targets.
+std::vector<RecordingInput> training_inputs(const Point& p) {
   sim::CalibrationOptions cal;
   cal.repetitions = p.repetitions;
   cal.seed = 3;
   const sim::SimulatedCampaign c = sim::simulate_calibration(sim::Instrument{}, cal);
-  return build_dataset(recording_inputs(c.campaign, c.recordings, Role::train),
-                       dataset_options(p, target));
+  return recording_inputs(c.campaign, c.recordings, Role::train);
 }
 
 // Least-squares slope of log y against log x: the exponent of y ∝ x^a.
@@ -163,10 +163,19 @@ int main(int argc, char** argv) {
     m.point = pi;
     double train_s = 0, ours_ms = 0;
     bool measured = true;
+    const std::vector<RecordingInput> inputs = training_inputs(p);
     for (const std::string& target : p.targets) {
-      const Dataset data = dataset_of(p, target);
+      const Dataset data = build_dataset(inputs, dataset_options(p, target));
       m.rows = std::max(m.rows, data.rows);
       m.inputs = data.cols();
+      // Every other point is sampled on the base search's candidates and scaled from its time.
+      if (pi == 0 && data.rows > std::min(max_rows, measure_up_to)) {
+        std::fprintf(stderr,
+                     "train_growth: --max-rows and --measure-up-to must reach the base campaign "
+                     "(%zu rows)\n",
+                     data.rows);
+        return 2;
+      }
       if (data.rows > max_rows) break;
       std::fprintf(stderr, "[%zu/%zu] %s: %s, target %s, %zu rows, %zu inputs\n", pi + 1,
                    points.size(), p.axis.c_str(), p.campaign.c_str(), target.c_str(), data.rows,
@@ -229,12 +238,6 @@ int main(int argc, char** argv) {
       continue;
     }
     if (measured) m.train_s = train_s;
-    if (pi == 0 && !measured) {
-      std::fprintf(stderr,
-                   "train_growth: --measure-up-to must reach the base campaign (%zu rows)\n",
-                   m.rows);
-      return 2;
-    }
     // Scaled from the measured campaign of this axis (or the base) with the most rows below
     // this one's: the search's fit count and racing change with size, so the nearest is best.
     const Measured* ref = out.empty() ? &m : &out.front();
