@@ -11,6 +11,7 @@
 #   `fogdrift train` (the study in docs/field.md passed a smaller search budget,
 #   --population 10 --iterations 15, to fit a 2-core session: say so when quoting it).
 # Each instrument's rows also land in $POPULATION_OUT (default: a temporary folder) as JSON.
+# $POPULATION_WORK, if set, keeps the instruments, campaigns and models there for a later look.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 fd=${1:-$root/build}/apps/fogdrift/fogdrift
@@ -18,8 +19,13 @@ count=${2:-20}
 seed=${3:-1}
 jobs=${4:-2}
 shift $(($# < 4 ? $# : 4))
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
+if [[ -n ${POPULATION_WORK:-} ]]; then
+  work=$POPULATION_WORK
+  mkdir -p "$work"
+else
+  work=$(mktemp -d)
+  trap 'rm -rf "$work"' EXIT
+fi
 out=${POPULATION_OUT:-$work/results}
 mkdir -p "$out"
 "$fd" simulate population --out "$work/units" --count "$count" --seed "$seed" >/dev/null
