@@ -140,8 +140,9 @@ constexpr std::string_view kStreamingC =
  *   drift_@UNIT@ = @P@_update(&s, time_s, @TEMP_ARGS@);
  *   @READING_COMP@ = @P@_compensated_@UNIT@(&s, @READING@);
  *   s.flags: what was wrong with the sample (@U@_FAULT_* bits, 0 for a good sample).
- * Temperature rates: causal Savitzky-Golay derivative over the last @W@ samples (fewer
- * during the first @W@); the taps for k + 1 samples start at k(k + 1)/2 in the table.
+ * Temperature rates: causal Savitzky-Golay derivative over the last @W@ samples (during the
+ * first @W@, the samples before power-on taken equal to the first, as if the unit had been at
+ * rest); the taps for k + 1 samples start at k(k + 1)/2 in the table.
  * Thermometers this model reads: @READS@; pass anything for the others.@NOTE@
  * Sensor faults (fogdrift docs/compensation.md, "Sensor faults"): a thermometer reading that is
  * not a number, outside [@U@_TEMP_MIN_DEGC, @U@_TEMP_MAX_DEGC], more than @U@_TEMP_JUMP_DEGC

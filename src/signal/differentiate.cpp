@@ -37,6 +37,19 @@ std::vector<double> derivative_taps(std::ptrdiff_t first, std::size_t count, int
   return taps;
 }
 
+// The causal taps for a start-up's first `count` samples (count < w): the full window's fit to
+// the signal with the samples before power-on taken equal to the first one, as if the unit had
+// been at rest (docs/signal.md §2, "Warm-up"). The missing samples' weights fall on the first
+// sample; it is given the weight that makes the taps sum to zero, as the full window's do, so
+// that a constant signal has a rate of exactly 0 (the first output among them).
+std::vector<double> warmup_taps(const std::vector<double>& full, std::size_t count) {
+  std::vector<double> taps(full.end() - static_cast<std::ptrdiff_t>(count), full.end());
+  double rest = 0.0;
+  for (std::size_t j = 1; j < count; ++j) rest += taps[j];
+  taps[0] = -rest;
+  return taps;
+}
+
 double apply(const std::vector<double>& taps, std::span<const double> x, std::size_t first) {
   double sum = 0.0;
   for (std::size_t j = 0; j < taps.size(); ++j) sum += taps[j] * x[first + j];
@@ -152,7 +165,7 @@ std::vector<double> differentiate(std::span<const double> x, double dt_s,
       if (i + 1 >= w) {
         out[i] = apply(full, x, i + 1 - w);
       } else {
-        out[i] = apply(derivative_taps(-static_cast<std::ptrdiff_t>(i), i + 1, p), x, 0);
+        out[i] = apply(warmup_taps(full, i + 1), x, 0);
       }
     }
   }
@@ -167,8 +180,9 @@ CausalDifferentiator::CausalDifferentiator(const DifferentiatorOptions& options,
   validate(causal, dt_s);
   w_ = window_samples(causal, dt_s);
   taps_.reserve(w_);
-  for (std::size_t k = 1; k <= w_; ++k)
-    taps_.push_back(derivative_taps(-static_cast<std::ptrdiff_t>(k - 1), k, causal.poly_order));
+  const auto full = derivative_taps(-static_cast<std::ptrdiff_t>(w_ - 1), w_, causal.poly_order);
+  for (std::size_t k = 1; k < w_; ++k) taps_.push_back(warmup_taps(full, k));
+  taps_.push_back(full);
   buffer_.assign(2 * w_, 0.0);
 }
 

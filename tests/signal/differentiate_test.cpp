@@ -52,7 +52,9 @@ TEST(Differentiate, ExactOnPolynomials) {
     for (auto causality : {Causality::centred, Causality::causal}) {
       const DifferentiatorOptions options{21.0, p, causality};
       const auto d = differentiate(x, dt, options);
-      for (std::size_t i = static_cast<std::size_t>(p) + 1; i < x.size(); ++i) {
+      // The causal warm-up takes the unit at rest before power-on (WarmUpTakesTheUnitAtRest).
+      const std::size_t first = warmup_samples(options, dt);
+      for (std::size_t i = first; i < x.size(); ++i) {
         ASSERT_NEAR(d[i], dx[i], 1e-9) << to_string(causality) << " p=" << p << " i=" << i;
       }
     }
@@ -108,6 +110,53 @@ TEST(Differentiate, CausalUsesOnlyThePast) {
   for (std::size_t i = 0; i < 150; ++i) ASSERT_EQ(before[i], after[i]) << i;
   EXPECT_NE(before[150], after[150]);
   EXPECT_EQ(before[0], 0.0);
+}
+
+// The first W − 1 causal rates are the full window's fit to the signal with the samples before
+// power-on equal to the first one (docs/signal.md §2, "Warm-up"): checked against the full filter
+// run on that padded signal, built independently. Their noise is what their taps say, and at most
+// a few times the full window's, where a fit to the few samples there are is mostly noise.
+TEST(Differentiate, WarmUpTakesTheUnitAtRest) {
+  Rng rng(11);
+  for (int p = 1; p <= 2; ++p) {
+    const DifferentiatorOptions options{31.0, p, Causality::causal};
+    const std::size_t w = 31;
+    ASSERT_EQ(warmup_samples(options, 1.0), w - 1);
+    std::vector<double> x(100);
+    for (std::size_t i = 0; i < x.size(); ++i)
+      x[i] = 20.0 + 0.01 * static_cast<double>(i) + 0.01 * rng.normal();
+    std::vector<double> padded(w - 1, x[0]);
+    padded.insert(padded.end(), x.begin(), x.end());
+    const auto d = differentiate(x, 1.0, options);
+    const auto reference = differentiate(padded, 1.0, options);
+    for (std::size_t i = 0; i < x.size(); ++i)
+      ASSERT_NEAR(d[i], reference[i + w - 1], 1e-12) << "p=" << p << " i=" << i;
+    EXPECT_EQ(d[0], 0.0);
+    const std::vector<double> constant(w, 7.25);
+    for (double r : differentiate(constant, 1.0, options)) EXPECT_NEAR(r, 0.0, 1e-15);
+
+    // Noise: each warm-up output's standard deviation over many realisations of white noise,
+    // against √Σ taps² and against the full window's gain.
+    const CausalDifferentiator filter(options, 1.0);
+    const double gain = differentiator_properties(options, 1.0).noise_gain_per_s;
+    std::vector<double> sum_sq(w - 1, 0.0);
+    const int trials = 20000;
+    for (int t = 0; t < trials; ++t) {
+      std::vector<double> noise(w - 1);
+      for (double& v : noise) v = rng.normal();
+      const auto n = differentiate(noise, 1.0, options);
+      for (std::size_t i = 0; i < n.size(); ++i) sum_sq[i] += n[i] * n[i];
+    }
+    for (std::size_t i = 1; i < sum_sq.size(); ++i) {
+      double power = 0.0;
+      for (double h : filter.taps(i + 1)) power += h * h;
+      const double measured = std::sqrt(sum_sq[i] / trials);
+      EXPECT_NEAR(measured, std::sqrt(power), 0.03 * std::sqrt(power)) << "p=" << p << " i=" << i;
+      EXPECT_LE(measured, 3.0 * gain) << "p=" << p << " i=" << i;
+    }
+    // A fit to the first three samples alone would have a noise gain of √(12 / 24) = 0.71 /s.
+    EXPECT_LT(std::sqrt(sum_sq[2] / trials), 0.1);
+  }
 }
 
 TEST(Differentiate, BadOptionsNameTheField) {

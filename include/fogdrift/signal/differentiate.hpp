@@ -7,8 +7,10 @@
 //                      The first and last (W-1)/2 outputs use the first and last W samples,
 //                      the fit evaluated off centre (SciPy's savgol_filter, mode='interp').
 //   causal (online)    k = -(W-1) .. 0, only the past: derivative of the fit at the newest
-//                      sample. The first W-1 outputs use the samples there are (a shorter
-//                      window); the very first output is 0.
+//                      sample. The first W-1 outputs take the samples before the first equal
+//                      to it, as if the unit had been at rest before power-on (the warm-up,
+//                      docs/signal.md §2): a fit to the few samples there are would be noise.
+//                      The very first output is 0.
 // Delay and noise gain follow from the taps (differentiator_properties): for a signal with
 // constant second derivative the output is x'(t - delay_s), with delay_s = -(dt^2/2) sum h_k k^2
 // (dt = sample interval; h in 1/s), and white noise of standard deviation s gives output noise
@@ -63,7 +65,8 @@ struct DifferentiatorProperties {
 };
 
 /// Samples at the start of a signal whose rate the causal differentiator takes from fewer than W
-/// samples (W − 1); 0 for the centred one, whose every output is a fit to W samples.
+/// real samples, the rest of its window taken equal to the first (W − 1); 0 for the centred one,
+/// whose every output is a fit to W samples.
 std::size_t warmup_samples(const DifferentiatorOptions& options, double dt_s);
 
 /// The interior filter's delay and noise gain (see the file comment).
@@ -87,7 +90,7 @@ class CausalDifferentiator {
   std::size_t window() const { return w_; }
   double dt_s() const { return dt_s_; }
   /// Whether the last push() used a full window of W samples; before that the rate comes from
-  /// a shorter, noisier fit (the warm-up, docs/field.md "The guard at power-on").
+  /// the window padded with the first sample (the warm-up, docs/signal.md §2).
   bool settled() const noexcept { return count_ >= w_; }
   /// The taps applied when `samples` (1 … window()) samples are available, oldest first; the
   /// derivative is their dot product with those samples, divided by dt_s().
