@@ -27,6 +27,12 @@ else
   trap 'rm -rf "$work"' EXIT
 fi
 out=${POPULATION_OUT:-$work/results}
+# North-finding start-ups per condition: 18 temperatures across the range, 5 findings each, the
+# 90 findings a condition pools (docs/field.md, "Instruments unlike ours"). The share of a small
+# removable error is a ratio of two small numbers, and a mean over 35 findings (the paper's 7
+# temperatures, POPULATION_NF_TEMPS=-32,-16,-5,17,28,43,54, as before 2026-11-26) scatters 1.6
+# times as much as one over 90.
+nf_temps=${POPULATION_NF_TEMPS:--38,-32,-27,-21,-16,-10,-5,1,6,12,17,23,28,34,39,45,50,56}
 mkdir -p "$out"
 "$fd" simulate population --out "$work/units" --count "$count" --seed "$seed" >/dev/null
 
@@ -40,7 +46,7 @@ one() { # one instrument: $1 = its number
     --approach calibration,soaked,warm,ramping --instrument "$inst" >/dev/null
   for a in calibration soaked warm ramping; do
     "$fd" simulate northfind --out "$d/nf_$a" --seed "$k" --approach "$a" \
-      --instrument "$inst" >/dev/null
+      --temps "$nf_temps" --instrument "$inst" >/dev/null
   done
   local sim_s=$((SECONDS - start))
   for path in centred causal; do
@@ -63,6 +69,8 @@ for path in ("centred", "causal"):
     row[f"{path}.train_s"] = int(open(f"{d}/{path}.seconds").read())
     row[f"{path}.expected"] = t["held_out"].get("expected_share")
     row[f"{path}.expected_startup"] = t["held_out"].get("expected_startup_share")
+    row[f"{path}.startup_warning"] = any("within a start-up" in w
+                                         for w in t["held_out"].get("warnings", []))
     for a in ("calibration", "soaked", "warm", "ramping"):
         for g in ("on", "off"):
             n = json.load(open(f"{d}/{path}.{a}.{g}.json"))
@@ -78,7 +86,7 @@ PY
   echo "unit $k done" >&2
 }
 export -f one
-export fd work out
+export fd work out nf_temps
 TRAIN_FLAGS=("$@")
 export TRAIN_FLAGS_STR="${*:-}"
 seq "$count" | xargs -P "$jobs" -I{} bash -c 'TRAIN_FLAGS=($TRAIN_FLAGS_STR); one {}'
@@ -125,8 +133,9 @@ table(f"Share of the removable north-finding error removed over {len(rows)} inst
       " (median / 10th percentile / worst):", lambda r, p, c: True)
 table("The same where the drift makes at least a quarter of the raw error's square"
       " ((raw² − floor²) / raw² ≥ 0.25):", lambda r, p, c: r[f"{p}.{c}.drift_part"] >= 0.25)
-table("The same where train expects to remove at least half the drift's variation within a"
-      " start-up (no warning):", lambda r, p, c: r[f"{p}.expected_startup"] >= 0.5)
+table("The same where train does not warn that the model may not help the north-finder"
+      " (its expected share within a start-up is high enough):",
+      lambda r, p, c: not r[f"{p}.startup_warning"])
 t = [r[f"{p}.train_s"] for r in rows for p in ("centred", "causal")]
 print(f"train: median {quantile(t, .5):.0f} s, longest {max(t)} s (one thread); simulate: median "
       f"{quantile([r['simulate_s'] for r in rows], .5):.0f} s per instrument")

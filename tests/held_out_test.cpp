@@ -165,6 +165,25 @@ TEST(HeldOut, AModelBlindWithinAStartUpIsWarnedOf) {
   EXPECT_NE(r.warnings[0].find("within a start-up"), std::string::npos) << r.warnings[0];
 }
 
+// A model that predicts a share a of the drift leaves (1 − a)·y: in closed form it removes a of
+// the variation within a start-up. The warning fires below 65 % (docs/tuning.md, "How sure
+// train is"), chosen where it named the failing instruments of a population (docs/field.md).
+TEST(HeldOut, TheStartUpWarningFiresBelowItsThreshold) {
+  const Dataset d = thermal(0.01, 0.001);
+  const auto folds = temperature_folds(d);
+  const auto warns_within = [](const HeldOutReport& r) {
+    for (const std::string& w : r.warnings)
+      if (w.find("within a start-up") != std::string::npos) return true;
+    return false;
+  };
+  const HeldOutReport below = held_out_report(d, folds, share_of_target(0.6), "test folds");
+  EXPECT_NEAR(below.expected_startup_share, 0.6, 1e-12);
+  EXPECT_TRUE(warns_within(below));
+  const HeldOutReport above = held_out_report(d, folds, share_of_target(0.7), "test folds");
+  EXPECT_NEAR(above.expected_startup_share, 0.7, 1e-12);
+  EXPECT_FALSE(warns_within(above));
+}
+
 TEST(HeldOut, NoTemperatureSignalIsSaid) {
   const Dataset d = thermal(0.0, 0.01);
   const auto folds = temperature_folds(d);

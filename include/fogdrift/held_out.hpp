@@ -41,7 +41,7 @@ struct HeldOutReport {
   double expected_startup_share = 0;
   /// The model removes less than 10 % (or does no better than the mean), and then also when no
   /// temperature line beats the mean by 5 % (no temperature signal); or it does no better than a
-  /// straight line in one temperature; or it removes less than half the variation within a
+  /// straight line in one temperature; or it removes less than 65 % of the variation within a
   /// start-up. Empty when the model beats them all.
   std::vector<std::string> warnings;
 };
