@@ -269,7 +269,7 @@ void run(const TrainArgs& a) {
   options.tune.space.sigma_max = a.sigma_max;
   options.tune.space.epsilon = a.epsilon;
   options.tune.space.search_epsilon = a.search_epsilon;
-  options.auto_box_rounds = a.auto_box ? 3 : 0;
+  options.auto_box_rounds = a.auto_box ? TrainOptions::kAutoBoxRounds : 0;
   options.tune.racing = !a.no_racing;
   dataset.denoise_target = !a.no_denoise;
   options.mlp.hidden = a.hidden;
@@ -461,8 +461,10 @@ void add_train(CLI::App& app) {
                 "Train on the raw gyro, not its wavelet-denoised version (for recordings too "
                 "short to denoise, or already smooth: a log of burst means)");
   cmd->add_flag("--auto-box", args->auto_box,
-                "When the best C, σ or ε lies on an edge of its box, widen the box a decade "
-                "there and search again (at most 3 times); train warns of such edges either way");
+                fmt::format("When the best C, σ or ε lies on an edge of its box, widen the box a "
+                            "decade there and search again (at most {} times); train warns of "
+                            "such edges either way",
+                            TrainOptions::kAutoBoxRounds));
   cmd->add_flag("--no-racing", args->no_racing,
                 "Fit every fold of every candidate. By default a candidate whose held-out errors "
                 "on the folds fitted so far already exceed the best candidate's leaves the "

@@ -36,6 +36,8 @@ struct TrainOptions {
   /// Tuned SVRs: when the best C, σ or ε lies on an edge of its box, widen the box by a decade
   /// there and search again, at most this many times (0: never; tune::box_edges()).
   std::size_t auto_box_rounds = 0;
+  /// The rounds `train --auto-box` and Python's `auto_box=True` ask for.
+  static constexpr std::size_t kAutoBoxRounds = 3;
   /// Score the model and the baselines on held-out rows (TrainSummary::held_out).
   bool held_out = true;
 };

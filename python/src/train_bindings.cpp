@@ -82,7 +82,7 @@ py::object train(const py::object& campaign, const std::string& method, const st
   t.tune.space.sigma_max = sigma_max;
   t.tune.space.epsilon = epsilon;
   t.tune.space.search_epsilon = search_epsilon;
-  t.auto_box_rounds = auto_box ? 3 : 0;
+  t.auto_box_rounds = auto_box ? TrainOptions::kAutoBoxRounds : 0;
   t.tune.racing = racing;
   t.mlp.hidden = hidden;
   t.poly_max_degree = max_degree;
