@@ -27,8 +27,8 @@ else
   trap 'rm -rf "$work"' EXIT
 fi
 out=${POPULATION_OUT:-$work/results}
-# North-finding start-ups per condition: 18 temperatures across the range, 5 findings each, the
-# 90 findings a condition pools (docs/field.md, "Instruments unlike ours"). The share of a small
+# North-finding start-ups per condition: 18 temperatures across the range, 5 findings each, 90
+# findings a condition (docs/field.md, "Ninety findings a condition"). The share of a small
 # removable error is a ratio of two small numbers, and a mean over 35 findings (the paper's 7
 # temperatures, POPULATION_NF_TEMPS=-32,-16,-5,17,28,43,54, as before 2026-11-26) scatters 1.6
 # times as much as one over 90.
