@@ -18,7 +18,7 @@ constexpr double kUsefulShare = 0.10;
 /// Below this share of the variation within a start-up, compensation may not help the
 /// north-finder (docs/tuning.md, "How sure train is": on a population of 20 instruments the two
 /// whose start-ups like the calibration ended worse than raw had 58-62 %, every other 66 % or
-/// more).
+/// more; docs/field.md also gives a second population, where it does less well).
 constexpr double kStartupShare = 0.65;
 
 double centred_sum_of_squares(const std::vector<double>& v) {
