@@ -10,9 +10,9 @@
 #include <string>
 #include <string_view>
 #include <utility>
-#include <variant>
 #include <vector>
 
+#include "c_text.hpp"
 #include "fogdrift/decimate.hpp"
 #include "fogdrift/error.hpp"
 #include "fogdrift/signal/differentiate.hpp"
@@ -33,23 +33,8 @@ std::string thermometers_read(const CompensationModel& model) {
 
 }  // namespace
 
-namespace {
-
-std::string c_number(double v) {
-  return fmt::format("{:.17g}", v);
-}
-
-std::string c_array(std::span<const double> values, std::size_t per_line = 4) {
-  std::string out;
-  for (std::size_t i = 0; i < values.size(); ++i) {
-    if (i % per_line == 0) out += "\n    ";
-    out += c_number(values[i]);
-    if (i + 1 < values.size()) out += ", ";
-  }
-  return out;
-}
-
-}  // namespace
+using detail::c_array;
+using detail::c_number;
 
 namespace {
 
@@ -708,76 +693,11 @@ std::string to_c_header(const CompensationModel& model, const std::string& prefi
   h += fmt::format("static const @REAL@ {}_drift_scale_@UNIT@ = {};\n\n", prefix,
                    c_number(model.y_scaler.scale[0]));
 
-  std::string body;  // computes `z` (standardised prediction) from `x` (standardised features)
-  if (const auto* m = std::get_if<svr::Model>(&model.regressor)) {
-    const std::size_t n = m->size();
-    h += fmt::format("#define {}_N_SV {}\n", upper, n);
-    h += fmt::format("static const @REAL@ {}_sv[{}] = {{{}}};\n", prefix,
-                     std::max<std::size_t>(1, n * d), n ? c_array(m->support_vectors) : "0");
-    h += fmt::format("static const @REAL@ {}_coef[{}] = {{{}}};\n", prefix,
-                     std::max<std::size_t>(1, n), n ? c_array(m->coef) : "0");
-    h += fmt::format("static const @REAL@ {}_gamma = {};\nstatic const @REAL@ {}_rho = {};\n\n",
-                     prefix, c_number(m->kernel.gamma), prefix, c_number(m->rho));
-    const bool rbf = m->kernel.type == svr::KernelType::rbf;
-    body = fmt::format(
-        "  @REAL@ z = -{0}_rho, carry = 0.0; /* compensated sum (Kahan): terms of C in the\n"
-        "                                      hundreds cancel to a z of order 1 */\n"
-        "  int i, k;\n"
-        "  for (i = 0; i < {1}_N_SV; ++i) {{\n"
-        "    const @REAL@* s = {0}_sv + i * {1}_N_FEATURES;\n"
-        "    @REAL@ acc = 0.0, term, sum;\n"
-        "    for (k = 0; k < {1}_N_FEATURES; ++k) {{\n"
-        "{2}"
-        "    }}\n"
-        "    term = {0}_coef[i] * {3} - carry;\n"
-        "    sum = z + term;\n"
-        "    carry = (sum - z) - term;\n"
-        "    z = sum;\n"
-        "  }}\n",
-        prefix, upper,
-        rbf ? "      const @REAL@ e = x[k] - s[k];\n      acc += e * e;\n"
-            : "      acc += x[k] * s[k];\n",
-        rbf ? fmt::format("exp@F@(-{}_gamma * acc)", prefix) : "acc");
-  } else if (const auto* m = std::get_if<Mlp>(&model.regressor)) {
-    h += fmt::format("#define {}_N_HIDDEN {}\n", upper, m->hidden);
-    h += fmt::format("static const @REAL@ {}_w1[{}] = {{{}}};\n", prefix, m->w1.size(),
-                     c_array(m->w1));
-    h += fmt::format("static const @REAL@ {}_b1[{}] = {{{}}};\n", prefix, m->b1.size(),
-                     c_array(m->b1));
-    h += fmt::format("static const @REAL@ {}_w2[{}] = {{{}}};\n", prefix, m->w2.size(),
-                     c_array(m->w2));
-    h += fmt::format("static const @REAL@ {}_b2 = {};\n\n", prefix, c_number(m->b2));
-    body = fmt::format(
-        "  @REAL@ z = {0}_b2;\n"
-        "  int h, k;\n"
-        "  for (h = 0; h < {1}_N_HIDDEN; ++h) {{\n"
-        "    @REAL@ a = {0}_b1[h];\n"
-        "    for (k = 0; k < {1}_N_FEATURES; ++k) a += {0}_w1[h * {1}_N_FEATURES + k] * x[k];\n"
-        "    z += {0}_w2[h] * tanh@F@(a);\n"
-        "  }}\n",
-        prefix, upper);
-  } else {
-    const Poly& poly = std::get<Poly>(model.regressor);
-    h += fmt::format("#define {}_N_TERMS {}\n", upper, poly.terms());
-    h += fmt::format("static const unsigned char {}_exponents[{}] = {{", prefix,
-                     poly.exponents.size());
-    for (std::size_t i = 0; i < poly.exponents.size(); ++i)
-      h += fmt::format("{}{}{}", i % 20 == 0 ? "\n    " : "", poly.exponents[i],
-                       i + 1 < poly.exponents.size() ? ", " : "");
-    h += "};\n";
-    h += fmt::format("static const @REAL@ {}_poly_coef[{}] = {{{}}};\n\n", prefix, poly.terms(),
-                     c_array(poly.coef));
-    body = fmt::format(
-        "  @REAL@ z = 0.0;\n"
-        "  int t, k, e;\n"
-        "  for (t = 0; t < {1}_N_TERMS; ++t) {{\n"
-        "    @REAL@ term = {0}_poly_coef[t];\n"
-        "    for (k = 0; k < {1}_N_FEATURES; ++k)\n"
-        "      for (e = {0}_exponents[t * {1}_N_FEATURES + k]; e > 0; --e) term *= x[k];\n"
-        "    z += term;\n"
-        "  }}\n",
-        prefix, upper);
-  }
+  // The regressor's tables, and `body`, which computes `z` (standardised prediction) from `x`
+  // (standardised features).
+  const CRegressor regressor = to_c(model.regressor, {prefix, upper});
+  h += regressor.tables;
+  const std::string& body = regressor.body;
   h += fmt::format(
       "/* Predicted drift, @UNIT_TEXT@, for one row of features in their own units. */\n"
       "static inline @REAL@ {0}_predict_@UNIT@(const @REAL@ features[{1}_N_FEATURES]) {{\n"

@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
+#include "c_text.hpp"
 #include "fogdrift/error.hpp"
 #include "fogdrift/random.hpp"
 #include "fogdrift/text_file.hpp"
@@ -181,6 +182,34 @@ Mlp mlp_from_json(const std::string& text, const std::string& source) {
     fail("w1",
          fmt::format("weights do not match {} inputs and {} hidden units", n.inputs, n.hidden));
   return n;
+}
+
+}  // namespace fogdrift
+
+namespace fogdrift {
+
+CRegressor to_c(const Mlp& m, const CNames& names) {
+  const std::string& prefix = names.prefix;
+  const std::string& upper = names.upper;
+  CRegressor out;
+  out.tables = fmt::format("#define {}_N_HIDDEN {}\n", upper, m.hidden);
+  out.tables += fmt::format("static const @REAL@ {}_w1[{}] = {{{}}};\n", prefix, m.w1.size(),
+                            detail::c_array(m.w1));
+  out.tables += fmt::format("static const @REAL@ {}_b1[{}] = {{{}}};\n", prefix, m.b1.size(),
+                            detail::c_array(m.b1));
+  out.tables += fmt::format("static const @REAL@ {}_w2[{}] = {{{}}};\n", prefix, m.w2.size(),
+                            detail::c_array(m.w2));
+  out.tables += fmt::format("static const @REAL@ {}_b2 = {};\n\n", prefix, detail::c_number(m.b2));
+  out.body = fmt::format(
+      "  @REAL@ z = {0}_b2;\n"
+      "  int h, k;\n"
+      "  for (h = 0; h < {1}_N_HIDDEN; ++h) {{\n"
+      "    @REAL@ a = {0}_b1[h];\n"
+      "    for (k = 0; k < {1}_N_FEATURES; ++k) a += {0}_w1[h * {1}_N_FEATURES + k] * x[k];\n"
+      "    z += {0}_w2[h] * tanh@F@(a);\n"
+      "  }}\n",
+      prefix, upper);
+  return out;
 }
 
 }  // namespace fogdrift

@@ -184,20 +184,6 @@ std::string checksum_of(std::string_view text) {
   return sha256_hex(lf);
 }
 
-// The regressor object of the model file: its type, then the regressor's own JSON.
-ojson regressor_json(const std::variant<svr::Model, Mlp, Poly>& regressor) {
-  auto typed = [](const char* type, const std::string& text) {
-    ojson out;
-    out["type"] = type;
-    const ojson own = ojson::parse(text);  // named: a temporary would die before the loop
-    for (const auto& [k, v] : own.items()) out[k] = v;
-    return out;
-  };
-  if (const auto* m = std::get_if<svr::Model>(&regressor)) return typed("svr", svr::to_json(*m));
-  if (const auto* m = std::get_if<Mlp>(&regressor)) return typed("mlp", to_json(*m));
-  return typed("poly", to_json(std::get<Poly>(regressor)));
-}
-
 }  // namespace
 
 std::string to_json(const CompensationModel& m) {
@@ -227,7 +213,7 @@ std::string to_json(const CompensationModel& m) {
   j["scalers"] = {{"features", {{"mean", m.x_scaler.mean}, {"scale", m.x_scaler.scale}}},
                   {drift_scaler_name(d.target_column),
                    {{"mean", m.y_scaler.mean[0]}, {"scale", m.y_scaler.scale[0]}}}};
-  j["regressor"] = regressor_json(m.regressor);
+  j["regressor"] = ojson::parse(to_json(m.regressor));
   if (!m.guard.empty())
     j["guard"] = {{"full_at", m.guard.settings.full_at},
                   {"zero_at", m.guard.settings.zero_at},
@@ -348,16 +334,9 @@ CompensationModel compensation_model_from_json(const std::string& text, const st
     const std::string type = r.at("type").get<std::string>();
     ojson own = r;  // the regressor's own JSON, without its type
     own.erase("type");
-    const std::string where_regressor = source + " (regressor)";
-    if (type == "svr") {
-      m.regressor = svr::model_from_json(own.dump(), where_regressor);
-    } else if (type == "mlp") {
-      m.regressor = mlp_from_json(own.dump(), where_regressor);
-    } else if (type == "poly") {
-      m.regressor = poly_from_json(own.dump(), where_regressor);
-    } else {
-      fail("regressor.type", fmt::format("'{}' is not svr, mlp or poly", type));
-    }
+    if (!is_regressor_type(type))
+      fail("regressor.type", fmt::format("'{}' is not {}", type, regressor_types()));
+    m.regressor = regressor_from_json(type, own.dump(), source + " (regressor)");
     if (version >= 2) {
       where = "guard";
       const ojson& g = doc.at("guard");
@@ -407,14 +386,7 @@ CompensationModel compensation_model_from_json(const std::string& text, const st
     for (double v : m.guard.prototypes)
       if (!std::isfinite(v)) fail("guard.points", "must be finite numbers");
   }
-  const std::size_t regressor_inputs = std::visit(
-      [](const auto& r) -> std::size_t {
-        if constexpr (std::is_same_v<std::decay_t<decltype(r)>, svr::Model>)
-          return r.dims;
-        else
-          return r.inputs;
-      },
-      m.regressor);
+  const std::size_t regressor_inputs = input_count(m.regressor);
   if (regressor_inputs != d)
     fail("regressor",
          fmt::format("takes {} inputs but the model has {} features", regressor_inputs, d));

@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
+#include "c_text.hpp"
 #include "fogdrift/error.hpp"
 #include "fogdrift/text_file.hpp"
 #include "json_number.hpp"
@@ -119,6 +120,36 @@ Poly poly_from_json(const std::string& text, const std::string& source) {
     }
   }
   return p;
+}
+
+}  // namespace fogdrift
+
+namespace fogdrift {
+
+CRegressor to_c(const Poly& poly, const CNames& names) {
+  const std::string& prefix = names.prefix;
+  const std::string& upper = names.upper;
+  CRegressor out;
+  out.tables = fmt::format("#define {}_N_TERMS {}\n", upper, poly.terms());
+  out.tables += fmt::format("static const unsigned char {}_exponents[{}] = {{", prefix,
+                            poly.exponents.size());
+  for (std::size_t i = 0; i < poly.exponents.size(); ++i)
+    out.tables += fmt::format("{}{}{}", i % 20 == 0 ? "\n    " : "", poly.exponents[i],
+                              i + 1 < poly.exponents.size() ? ", " : "");
+  out.tables += "};\n";
+  out.tables += fmt::format("static const @REAL@ {}_poly_coef[{}] = {{{}}};\n\n", prefix,
+                            poly.terms(), detail::c_array(poly.coef));
+  out.body = fmt::format(
+      "  @REAL@ z = 0.0;\n"
+      "  int t, k, e;\n"
+      "  for (t = 0; t < {1}_N_TERMS; ++t) {{\n"
+      "    @REAL@ term = {0}_poly_coef[t];\n"
+      "    for (k = 0; k < {1}_N_FEATURES; ++k)\n"
+      "      for (e = {0}_exponents[t * {1}_N_FEATURES + k]; e > 0; --e) term *= x[k];\n"
+      "    z += term;\n"
+      "  }}\n",
+      prefix, upper);
+  return out;
 }
 
 }  // namespace fogdrift

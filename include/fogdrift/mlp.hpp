@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "fogdrift/regressor.hpp"
 #include "fogdrift/svr/kernel.hpp"
 
 namespace fogdrift {
@@ -28,6 +29,7 @@ struct MlpOptions {
 void validate(const MlpOptions& options);
 
 struct Mlp {
+  static constexpr std::string_view kType = "mlp";  ///< in model files (regressor.hpp)
   std::size_t inputs = 0, hidden = 0;
   std::vector<double> w1;  ///< hidden × inputs, row-major
   std::vector<double> b1;  ///< hidden
@@ -44,6 +46,15 @@ std::string to_json(const Mlp& mlp);
 /// Parses to_json's text. Throws InputError(source, 0, 0, "FIELD: rule") for a missing or
 /// mistyped field, another activation, or weights whose sizes disagree.
 Mlp mlp_from_json(const std::string& text, const std::string& source);
+/// The Regressor parts (regressor.hpp): mlp_from_json, inputs, and the C of ŷ.
+inline Mlp regressor_from_json(std::type_identity<Mlp>, const std::string& text,
+                               const std::string& source) {
+  return mlp_from_json(text, source);
+}
+inline std::size_t input_count(const Mlp& mlp) {
+  return mlp.inputs;
+}
+CRegressor to_c(const Mlp& mlp, const CNames& names);
 
 enum class MlpStatus { early_stopped, epoch_limit };
 

@@ -3,7 +3,8 @@
 //   features  the FeatureSpec text and names, the differentiator and block settings
 //   target    how the training target was formed (wavelet denoising settings)
 //   scalers   feature and target standardisation fitted on the training rows
-//   regressor ε-SVR (support vectors, coefficients, γ, ρ), BP network weights, or polynomial
+//   regressor one of the registry's (regressors.hpp): ε-SVR (support vectors, coefficients, γ,
+//              ρ), BP network weights, or polynomial
 //   provenance method, fitness, hyperparameters, seed, optimizer budget, training files with
 //              their SHA-256, fogdrift version. Nothing depends on the clock, so one seed gives
 //              one file, byte for byte.
@@ -20,9 +21,7 @@
 
 #include "fogdrift/dataset.hpp"
 #include "fogdrift/guard.hpp"
-#include "fogdrift/mlp.hpp"
-#include "fogdrift/poly.hpp"
-#include "fogdrift/svr/svr.hpp"
+#include "fogdrift/regressors.hpp"
 
 namespace fogdrift {
 
@@ -71,7 +70,7 @@ struct CompensationModel {
   std::vector<std::string> feature_names;
   Standardizer x_scaler;
   Standardizer y_scaler;  ///< one column, "drift_dph"
-  std::variant<svr::Model, Mlp, Poly> regressor;
+  AnyRegressor regressor;
   Provenance provenance;
   /// The region of feature space the model was trained on (guard.hpp); empty in files written
   /// before format version 2, which then compensate unguarded.

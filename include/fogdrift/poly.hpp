@@ -9,11 +9,13 @@
 #include <string>
 #include <vector>
 
+#include "fogdrift/regressor.hpp"
 #include "fogdrift/svr/kernel.hpp"
 
 namespace fogdrift {
 
 struct Poly {
+  static constexpr std::string_view kType = "poly";  ///< in model files (regressor.hpp)
   std::size_t inputs = 0;
   std::size_t degree = 0;
   std::vector<std::uint8_t> exponents;  ///< terms × inputs, graded order, the constant first
@@ -30,6 +32,15 @@ std::string to_json(const Poly& poly);
 /// Parses to_json's text. Throws InputError(source, 0, 0, "FIELD: rule") for a missing or
 /// mistyped field, an exponent outside 0 … degree, or rows that disagree with the inputs.
 Poly poly_from_json(const std::string& text, const std::string& source);
+/// The Regressor parts (regressor.hpp): poly_from_json, inputs, and the C of ŷ.
+inline Poly regressor_from_json(std::type_identity<Poly>, const std::string& text,
+                                const std::string& source) {
+  return poly_from_json(text, source);
+}
+inline std::size_t input_count(const Poly& poly) {
+  return poly.inputs;
+}
+CRegressor to_c(const Poly& poly, const CNames& names);
 
 /// The monomials of total degree ≤ `degree` in `inputs` variables, in graded order
 /// (C(inputs + degree, degree) of them), as rows of exponents.

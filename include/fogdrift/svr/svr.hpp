@@ -13,8 +13,10 @@
 #include <span>
 #include <string>
 #include <string_view>
+#include <type_traits>
 #include <vector>
 
+#include "fogdrift/regressor.hpp"
 #include "fogdrift/svr/kernel.hpp"
 #include "fogdrift/svr/smo_solver.hpp"
 #include "fogdrift/svr/workspace.hpp"
@@ -55,6 +57,7 @@ void validate(const Params& params, const ParamNames& names = {});
 
 /// A trained regressor. predict() needs no allocation and is safe from several threads.
 struct Model {
+  static constexpr std::string_view kType = "svr";  ///< in model files (regressor.hpp)
   Kernel kernel;
   std::size_t dims = 0;
   std::vector<double> support_vectors;  ///< n_sv × dims, row-major
@@ -144,6 +147,16 @@ std::string to_json(const Model& model);
 /// Parses to_json's output; `source` names the text in errors. Rejects another format, a
 /// newer version, missing or extra keys and inconsistent sizes with an InputError.
 Model model_from_json(const std::string& text, const std::string& source);
+/// The Regressor parts (regressor.hpp): model_from_json, dims, and the C of f(x), RBF or linear,
+/// summed with compensation (Kahan) because terms of C in the hundreds cancel to a z of order 1.
+inline Model regressor_from_json(std::type_identity<Model>, const std::string& text,
+                                 const std::string& source) {
+  return model_from_json(text, source);
+}
+inline std::size_t input_count(const Model& model) {
+  return model.dims;
+}
+CRegressor to_c(const Model& model, const CNames& names);
 /// Atomic write of to_json's text.
 void save_model(const Model& model, const std::filesystem::path& path);
 Model load_model(const std::filesystem::path& path);
