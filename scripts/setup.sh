@@ -12,7 +12,7 @@ packages=(
   gnuplot-nox                          # fogdrift paper's figures (PNG)
   pybind11-dev python3-dev             # the Python package (python/)
   python3-venv python3-pip python3-build   # installing it: pip, a virtual environment, a wheel
-  python3-sklearn python3-pytest       # its tests: scikit-learn's estimator checks and SVR as reference
+  python3-sklearn python3-pytest       # its tests: scikit-learn's estimator checks, its SVR and GP as references
   python3-pandas                       # recordings as DataFrames, and scikit-learn's DataFrame checks
   python3-dask python3-distributed     # fogdrift.fleet: one model per unit on a Dask cluster
   python3-matplotlib                   # docs/python.md's worked example, run as a test

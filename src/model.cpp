@@ -24,12 +24,13 @@ using ojson = nlohmann::ordered_json;
 
 namespace {
 
-constexpr std::array<EnumName<Method>, 6> kMethodNames = {{{Method::ssa_svr, "ssa-svr"},
+constexpr std::array<EnumName<Method>, 7> kMethodNames = {{{Method::ssa_svr, "ssa-svr"},
                                                            {Method::pso_svr, "pso-svr"},
                                                            {Method::gwo_svr, "gwo-svr"},
                                                            {Method::svr, "svr"},
                                                            {Method::bp, "bp"},
-                                                           {Method::poly, "poly"}}};
+                                                           {Method::poly, "poly"},
+                                                           {Method::gp, "gp"}}};
 
 }  // namespace
 

@@ -7,6 +7,7 @@
 #include <numeric>
 
 #include "fogdrift/error.hpp"
+#include "fogdrift/gp_search.hpp"
 #include "fogdrift/version.hpp"
 
 namespace fogdrift {
@@ -49,6 +50,10 @@ void validate(const TrainOptions& options) {
     case Method::poly:
       if (options.poly_max_degree < 1 || options.poly_max_degree > 6)
         throw OptionError("degree", fmt::format("{} is outside 1 … 6", options.poly_max_degree));
+      break;
+    case Method::gp:
+      validate(options.gp);
+      if (options.gp.selection == GpSelection::cv) opt::validate(options.tune.optimizer.run);
       break;
     case Method::svr:
       break;
@@ -211,6 +216,59 @@ TrainResult train(const Dataset& data, const DatasetOptions& dataset, const Trai
         return out;
       };
       s.hyperparameters = {{"degree", static_cast<double>(best)}};
+      break;
+    }
+    case Method::gp: {
+      // Hyperparameters by the grouped folds through the search (gp_search.hpp) or by the
+      // marginal likelihood of the rows kept (gp.hpp); the fitness is the RMSE over the folds
+      // of a GP with those hyperparameters fitted on each fold's training rows, as the held-out
+      // report scores it.
+      held_folds = tune::grouped_folds(data, options.tune.cv);
+      GpFit fit;
+      if (options.gp.selection == GpSelection::cv) {
+        std::vector<tune::ScaledSplit> splits;
+        for (const auto& f : held_folds)
+          splits.push_back(tune::scale_split(data, f.train_rows, f.test_rows));
+        fit = search_gp(splits, full.train, options.gp, options.tune.optimizer, options.tune.pool)
+                  .fit;
+        p.population = options.tune.optimizer.run.population;
+        p.iterations = options.tune.optimizer.run.iterations;
+      } else {
+        fit = train_gp(full.train, options.gp);
+      }
+      m.regressor = fit.posterior.gp;
+      s.gp = fit.summary;
+      const GpHyper hyper = fit.posterior.gp.hyper;
+      const std::size_t points = options.gp.max_points;
+      held_predict = [hyper, points](const tune::ScaledSplit& split, std::size_t) {
+        const Gp gp = fit_gp(split.train.subset(gp_rows(split.train.rows, points)), hyper).gp;
+        std::vector<double> out(split.test.rows);
+        for (std::size_t r = 0; r < split.test.rows; ++r) out[r] = gp.predict(split.test.row(r));
+        return out;
+      };
+      double sse = 0;
+      std::size_t n = 0;
+      for (std::size_t k = 0; k < held_folds.size(); ++k) {
+        const tune::Fold& f = held_folds[k];
+        const tune::ScaledSplit split = tune::scale_split(data, f.train_rows, f.test_rows);
+        const std::vector<double> predicted = held_predict(split, k);
+        for (std::size_t r = 0; r < split.test.rows; ++r)
+          sse += (predicted[r] - split.test.y[r]) * (predicted[r] - split.test.y[r]);
+        n += split.test.rows;
+      }
+      s.fitness = "cv";
+      s.fitness_value = std::sqrt(sse / static_cast<double>(n));
+      p.cv = describe_folds(held_folds);
+      s.hyperparameters = {{"signal_variance", hyper.signal_variance},
+                           {"noise_variance", hyper.noise_variance},
+                           {"points", static_cast<double>(fit.summary.points)}};
+      if (options.gp.ard) {
+        for (std::size_t k = 0; k < hyper.length_scale.size(); ++k)
+          s.hyperparameters.emplace_back("length_scale:" + data.feature_names[k],
+                                         hyper.length_scale[k]);
+      } else {
+        s.hyperparameters.emplace_back("length_scale", hyper.length_scale[0]);
+      }
       break;
     }
   }

@@ -30,9 +30,11 @@ int main(void) {
 
 TEST(CHeader, CompilesAndPredictsAsTheLibrary) {
   const Dataset d = test::synthetic();
-  for (Method method : {Method::ssa_svr, Method::bp, Method::poly}) {
+  for (Method method : {Method::ssa_svr, Method::bp, Method::poly, Method::gp}) {
     TrainOptions o;
     o.method = method;
+    o.gp.max_points = 150;
+    o.gp.max_iterations = 20;
     o.tune.optimizer.run.population = 6;
     o.tune.optimizer.run.iterations = 2;
     o.tune.space.c_max = 10;

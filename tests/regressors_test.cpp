@@ -29,7 +29,7 @@ WithoutC regressor_from_json(std::type_identity<WithoutC>, const std::string&, c
 }
 static_assert(!Regressor<WithoutC>);
 static_assert(!Regressor<int>);
-static_assert(Regressor<svr::Model> && Regressor<Mlp> && Regressor<Poly>);
+static_assert(Regressor<svr::Model> && Regressor<Mlp> && Regressor<Poly> && Regressor<Gp>);
 
 AnyRegressor example(std::string_view type) {
   if (type == "svr") {
@@ -46,15 +46,21 @@ AnyRegressor example(std::string_view type) {
     m.inputs = 2, m.hidden = 1, m.w1 = {0.5, -0.25}, m.b1 = {0.1}, m.w2 = {2}, m.b2 = -0.3;
     return m;
   }
+  if (type == "gp") {
+    Gp g;
+    g.inputs = 2, g.hyper = {0.8, {1.0, 2.0}, 0.01};
+    g.points = {0.1, 0.2, -0.3, 0.4}, g.alpha = {0.5, -1.5};
+    return g;
+  }
   Poly p;
   p.inputs = 2, p.degree = 1, p.exponents = monomials(2, 1), p.coef = {1, 2, 3};
   return p;
 }
 
 TEST(Regressors, EachTypeRoundTripsThroughTheRegistry) {
-  EXPECT_EQ(regressor_types(), "svr, mlp or poly");
+  EXPECT_EQ(regressor_types(), "svr, mlp, poly or gp");
   const double x[2] = {0.3, -0.7};
-  for (std::string_view type : {"svr", "mlp", "poly"}) {
+  for (std::string_view type : {"svr", "mlp", "poly", "gp"}) {
     const AnyRegressor r = example(type);
     EXPECT_EQ(regressor_type(r), type);
     EXPECT_TRUE(is_regressor_type(type));
@@ -81,7 +87,7 @@ TEST(Regressors, AnUnknownTypeIsNamed) {
     fogdrift::regressor_from_json("rf", "{}", "m.json");
     FAIL();
   } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("'rf' is not svr, mlp or poly"), std::string::npos)
+    EXPECT_NE(std::string(e.what()).find("'rf' is not svr, mlp, poly or gp"), std::string::npos)
         << e.what();
   }
 }

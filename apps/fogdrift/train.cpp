@@ -51,6 +51,9 @@ struct TrainArgs {
   bool no_denoise = false;
   std::size_t hidden = kTrain.mlp.hidden;
   std::size_t max_degree = kTrain.poly_max_degree;
+  std::size_t gp_points = kTrain.gp.max_points;
+  std::string gp_kernel = kTrain.gp.ard ? "ard" : "rbf";
+  std::string gp_fit = std::string(to_string(kTrain.gp.selection));
   std::string targets = "gyro_dph";
   bool json = false;
   bool quiet = false;
@@ -70,6 +73,9 @@ const FlagTable kTrainFlags = {{"population", "--population"},
                                {"folds", "--folds"},
                                {"hidden", "--hidden"},
                                {"degree", "--max-degree"},
+                               {"gp_points", "--gp-points"},
+                               {"gp_kernel", "--gp-kernel"},
+                               {"gp_fit", "--gp-fit"},
                                {"features", "--features"},
                                {"thermometers", "--thermometers"},
                                {"block_s", "--block-s"},
@@ -155,6 +161,12 @@ nlohmann::ordered_json summary_json(const TrainArgs& a, const CampaignTrainResul
                  {"early_stopped", s.mlp.status == MlpStatus::early_stopped},
                  {"train_rmse", s.mlp.train_rmse}};
     if (s.method == Method::poly) j["poly_cv_rmse_by_degree"] = s.poly_cv_rmse;
+    if (s.method == Method::gp)
+      j["gp"] = {{"points", s.gp.points},
+                 {"log_likelihood", s.gp.log_likelihood},
+                 {"iterations", s.gp.iterations},
+                 {"evaluations", s.gp.evaluations},
+                 {"converged", s.gp.converged}};
     j["notes"] = notes;
     nlohmann::ordered_json edges = nlohmann::ordered_json::array();
     for (const auto& e : s.box_edges)
@@ -274,6 +286,9 @@ void run(const TrainArgs& a) {
   dataset.denoise_target = !a.no_denoise;
   options.mlp.hidden = a.hidden;
   options.poly_max_degree = a.max_degree;
+  options.gp.max_points = a.gp_points;
+  options.gp.ard = a.gp_kernel == "ard";
+  options.gp.selection = parse_gp_selection(a.gp_fit, "--gp-fit");
   ThreadPool pool(a.threads);
   options.tune.pool = &pool;
 
@@ -372,6 +387,8 @@ void add_train(CLI::App& app) {
       "  svr      untuned: LIBSVM's defaults C = 1, γ = 1/features, ε = 0.1\n"
       "  bp       one-hidden-layer tanh network, Adam, early stopping on held-out recordings\n"
       "  poly     polynomial in the features, degree chosen by cross-validation\n"
+      "  gp       Gaussian process, squared-exponential kernel, its length scale and noise\n"
+      "           chosen by the same search and folds, on --gp-points rows (docs/gp.md)\n"
       "Fitness of a candidate (C, σ): 'cv' (default) is the RMSE over grouped folds that never\n"
       "split a recording: with --cv auto, three folds of whole calibration temperatures (a model\n"
       "scored where it was not trained, as a start-up at a new temperature asks), or with fewer\n"
@@ -389,7 +406,7 @@ void add_train(CLI::App& app) {
   cmd->add_option("campaign", args->campaign, "Campaign folder (or its campaign.json)")->required();
   cmd->add_option("-o,--output", args->output, "Model file to write (JSON, atomically)")
       ->required();
-  cmd->add_option("--method", args->method, "ssa-svr, pso-svr, gwo-svr, svr, bp or poly")
+  cmd->add_option("--method", args->method, "ssa-svr, pso-svr, gwo-svr, svr, bp, poly or gp")
       ->capture_default_str();
   cmd->add_option("--fitness", args->fitness, "cv (grouped cross-validation) or train")
       ->capture_default_str();
@@ -472,6 +489,22 @@ void add_train(CLI::App& app) {
                 "(docs/tuning.md)");
   cmd->add_option("--hidden", args->hidden, "bp: hidden tanh units")->capture_default_str();
   cmd->add_option("--max-degree", args->max_degree, "poly: highest degree tried")
+      ->capture_default_str();
+  cmd->add_option("--gp-points", args->gp_points,
+                  "gp: training rows the Gaussian process keeps, evenly spaced, 10 … 4000; its "
+                  "time grows as the cube, its C header's work per sample linearly")
+      ->capture_default_str();
+  cmd->add_option("--gp-fit", args->gp_fit,
+                  "gp: how the hyperparameters are chosen: cv, the length scale and the noise "
+                  "ratio by the search over --cv's folds, as the SVR's C and σ (population, "
+                  "iterations and seed as above); likelihood, all of them by the marginal "
+                  "likelihood, which favours short length scales on start-up data (docs/gp.md)")
+      ->check(CLI::IsMember({"cv", "likelihood"}))
+      ->capture_default_str();
+  cmd->add_option("--gp-kernel", args->gp_kernel,
+                  "gp: rbf, one length scale for all features, or ard, one per feature "
+                  "(with --gp-fit likelihood)")
+      ->check(CLI::IsMember({"ard", "rbf"}))
       ->capture_default_str();
   cmd->add_option("--targets", args->targets,
                   "The columns to compensate, comma-separated: gyro_dph and further gyro axes the "

@@ -4,7 +4,7 @@
 //   target    how the training target was formed (wavelet denoising settings)
 //   scalers   feature and target standardisation fitted on the training rows
 //   regressor one of the registry's (regressors.hpp): ε-SVR (support vectors, coefficients, γ,
-//              ρ), BP network weights, or polynomial
+//              ρ), BP network weights, polynomial, or Gaussian process
 //   provenance method, fitness, hyperparameters, seed, optimizer budget, training files with
 //              their SHA-256, fogdrift version. Nothing depends on the clock, so one seed gives
 //              one file, byte for byte.
@@ -25,9 +25,9 @@
 
 namespace fogdrift {
 
-/// The paper's methods (Table 2) and the classical baseline.
-enum class Method { ssa_svr, pso_svr, gwo_svr, svr, bp, poly };
-/// "ssa-svr", "pso-svr", "gwo-svr", "svr", "bp", "poly".
+/// The paper's methods (Table 2), the classical baseline, and a Gaussian process (gp.hpp).
+enum class Method { ssa_svr, pso_svr, gwo_svr, svr, bp, poly, gp };
+/// "ssa-svr", "pso-svr", "gwo-svr", "svr", "bp", "poly", "gp".
 std::string to_string(Method method);
 Method parse_method(const std::string& text, const std::string& option = "method");
 

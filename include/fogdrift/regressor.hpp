@@ -1,6 +1,6 @@
 // One shape for every regressor a compensation model can hold (docs/architecture.md,
 // "Regressors"). A regressor is a value type R with
-//   R::kType                     its name in model files ("svr", "mlp", "poly")
+//   R::kType                     its name in model files ("svr", "mlp", "poly", "gp")
 //   r.predict(x)                 ŷ for one row of standardised features, no allocation
 //   input_count(r)               how many features it takes
 //   to_json(r)                   its JSON text, the model file's "regressor" without "type"

@@ -6,6 +6,7 @@
 #include <string>
 #include <variant>
 
+#include "fogdrift/gp.hpp"
 #include "fogdrift/mlp.hpp"
 #include "fogdrift/poly.hpp"
 #include "fogdrift/regressor.hpp"
@@ -13,7 +14,7 @@
 
 namespace fogdrift {
 
-using AnyRegressor = std::variant<svr::Model, Mlp, Poly>;
+using AnyRegressor = std::variant<svr::Model, Mlp, Poly, Gp>;
 
 namespace detail {
 template <class T>

@@ -9,13 +9,17 @@
 //                              a third of the recordings dealt across temperatures and
 //                              repetitions, which keeps every temperature and start-up
 //                              condition in training;
-//   poly                       polynomial in the features, degree 1 … max chosen by grouped CV.
+//   poly                       polynomial in the features, degree 1 … max chosen by grouped CV;
+//   gp                         Gaussian process, hyperparameters by marginal likelihood on at
+//                              most gp.max_points evenly spaced rows (gp.hpp).
 // Every method reports a fitness on the standardised target: the tuner's (cv or train) for the
-// SVRs, the validation RMSE for BP, the CV RMSE of the chosen degree for the polynomial.
+// SVRs, the validation RMSE for BP, the CV RMSE of the chosen degree for the polynomial, and for
+// the GP the CV RMSE of its hyperparameters refitted on each fold.
 #pragma once
 
 #include <optional>
 
+#include "fogdrift/gp.hpp"
 #include "fogdrift/held_out.hpp"
 #include "fogdrift/mlp.hpp"
 #include "fogdrift/model.hpp"
@@ -28,6 +32,7 @@ struct TrainOptions {
   tune::TuneOptions tune;           ///< fitness, folds, search box, optimizer budget, seed, pool
   MlpOptions mlp;                   ///< BP settings; its seed is set from tune.optimizer.run.seed
   std::size_t poly_max_degree = 3;  ///< highest polynomial degree tried, 1 … 6
+  GpOptions gp;                     ///< gp: rows kept and the likelihood search
   /// svr: fit with these instead of LIBSVM's defaults (a study refitting a tuned SVR on other
   /// rows); the tolerance is tune.tolerance.
   std::optional<svr::Params> svr_params;
@@ -54,6 +59,7 @@ struct TrainSummary {
   std::vector<tune::BoxEdge> box_edges;
   MlpSummary mlp;                    ///< bp
   std::vector<double> poly_cv_rmse;  ///< poly: CV RMSE of degree 1, 2, …
+  GpSummary gp;                      ///< gp: the likelihood search
   /// How sure train is (held_out.hpp): the model's held-out RMSE beside the baselines' on the
   /// same folds, and the share it is expected to remove. SVRs searched on the training loss are
   /// scored on the grouped folds for it (one more fit per fold); absent, with the reason in

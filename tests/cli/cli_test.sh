@@ -290,6 +290,17 @@ check "train bp" run 0 "$fd" train "$work/small" --method bp --hidden 4 -q -o "$
 check "bp weights in the model" grep -q '"type": "mlp"' "$work/bp.json"
 check "train poly" run 0 "$fd" train "$work/small" --method poly --max-degree 2 --json -o "$work/poly.json"
 check "poly degree chosen by cv" out_has '"poly_cv_rmse_by_degree"'
+check "train gp" run 0 "$fd" train "$work/small" --method gp --gp-points 120 --population 5 \
+  --iterations 2 --json -o "$work/gp.json"
+check "gp summary" out_has '"log_likelihood"'
+check "gp in the model" grep -q '"type": "gp"' "$work/gp.json"
+check "gp header written" run 0 "$fd" export-c "$work/gp.json" -q -o "$work/gp.h"
+check "gp header predicts" grep -q "fogdrift_model_gp_coef" "$work/gp.h"
+check "ard needs the likelihood" run 1 "$fd" train "$work/small" --method gp --gp-kernel ard \
+  -o "$work/x.json"
+check "ard message" err_has "option --gp-kernel: ard (one length scale per feature) needs"
+check "gp points range" run 1 "$fd" train "$work/small" --method gp --gp-points 5 -o "$work/x.json"
+check "gp points message" err_has "option --gp-points: 5 is outside 10 … 4000"
 check "train fitness" run 0 "$fd" train "$work/small" --method gwo-svr --fitness train --population 3 \
   --iterations 1 --c-max 10 -o "$work/gwo.json"
 check "training fitness named" out_has "train RMSE"
