@@ -34,12 +34,15 @@ void add_stream(CLI::App& app);
 const report::PaperOptions& paper_defaults();
 /// "a,b,c" of approaches.
 std::string approach_list(const std::vector<sim::Approach>& approaches);
+/// "a,b,c" of methods.
+std::string method_list(const std::vector<Method>& methods);
 
 /// fogdrift paper's options; fogdrift demo runs the same command with a smaller budget.
 struct PaperArgs {
   std::string out;
   bool force = false;
   std::size_t seeds = paper_defaults().seeds;
+  std::string methods = method_list(paper_defaults().methods);
   std::uint64_t first_seed = paper_defaults().first_seed;
   std::size_t population = paper_defaults().population;
   std::size_t iterations = paper_defaults().iterations;

@@ -23,6 +23,12 @@ void add_paper_options(CLI::App* cmd, PaperArgs& a) {
   cmd->add_flag("--force", a.force, "Replace an existing --out folder");
   cmd->add_option("--seeds", a.seeds, "Independent repetitions of the whole experiment")
       ->capture_default_str();
+  cmd->add_option("--methods", a.methods,
+                  "Methods of Tables 2-3 and the start-up conditions table, in order, "
+                  "comma-separated: the paper's, and poly or gp after them (gp: a Gaussian "
+                  "process tuned by the same search and folds, docs/gp.md); bp and ssa-svr are "
+                  "always needed")
+      ->capture_default_str();
   cmd->add_option("--first-seed", a.first_seed, "Seeds are first, first + 1, …")
       ->capture_default_str();
   cmd->add_option("--population", a.population, "Optimizer population of the tuned SVRs")
@@ -78,6 +84,7 @@ namespace {
 
 // The experiment's fields and the flags of paper (and demo) that set them.
 const FlagTable kPaperFlags = {{"seeds", "--seeds"},
+                               {"methods", "--methods"},
                                {"population", "--population"},
                                {"iterations", "--iterations"},
                                {"epsilon", "--epsilon"},
@@ -98,6 +105,12 @@ const report::PaperOptions& paper_defaults() {
   return defaults;
 }
 
+std::string method_list(const std::vector<Method>& methods) {
+  std::vector<std::string> names;
+  for (const Method m : methods) names.push_back(to_string(m));
+  return fmt::format("{}", fmt::join(names, ","));
+}
+
 std::string approach_list(const std::vector<sim::Approach>& approaches) {
   std::vector<std::string_view> names;
   for (sim::Approach a : approaches) names.push_back(sim::to_string(a));
@@ -113,6 +126,9 @@ namespace {
 void run_paper_unnamed(const PaperArgs& a) {
   report::PaperOptions o;
   o.seeds = a.seeds;
+  o.methods.clear();
+  for (const std::string& m : split_list(a.methods))
+    o.methods.push_back(parse_method(m, "--methods"));
   o.first_seed = a.first_seed;
   o.population = a.population;
   o.iterations = a.iterations;

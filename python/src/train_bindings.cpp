@@ -35,7 +35,8 @@ py::object train(const py::object& campaign, const std::string& method, const st
                  const py::object& rate_degree, std::size_t population, std::size_t iterations,
                  std::uint64_t seed, int threads, double c_min, double c_max, double sigma_min,
                  double sigma_max, double epsilon, bool search_epsilon, bool auto_box, bool racing,
-                 bool denoise, std::size_t hidden, std::size_t max_degree,
+                 bool denoise, std::size_t hidden, std::size_t max_degree, std::size_t gp_points,
+                 const std::string& gp_fit, const std::string& gp_kernel,
                  const py::object& progress, const std::string& target, bool validate_only) {
   CampaignTrainOptions o;
   target_of(target, "target");
@@ -86,6 +87,11 @@ py::object train(const py::object& campaign, const std::string& method, const st
   t.tune.racing = racing;
   t.mlp.hidden = hidden;
   t.poly_max_degree = max_degree;
+  t.gp.max_points = gp_points;
+  t.gp.selection = parse_gp_selection(gp_fit, "gp_fit");
+  if (gp_kernel != "rbf" && gp_kernel != "ard")
+    throw OptionError("gp_kernel", fmt::format("'{}' is not rbf or ard", gp_kernel));
+  t.gp.ard = gp_kernel == "ard";
   // The callback runs on the training thread with the GIL taken; an exception in it stops the
   // search and is raised when train returns.
   std::exception_ptr callback_error;
@@ -159,6 +165,15 @@ py::object train(const py::object& campaign, const std::string& method, const st
     summary["bp"] = bp;
   }
   if (s.method == Method::poly) summary["poly_cv_rmse_by_degree"] = s.poly_cv_rmse;
+  if (s.method == Method::gp) {
+    py::dict gp;
+    gp["points"] = s.gp.points;
+    gp["log_likelihood"] = s.gp.log_likelihood;
+    gp["iterations"] = s.gp.iterations;
+    gp["evaluations"] = s.gp.evaluations;
+    gp["converged"] = s.gp.converged;
+    summary["gp"] = gp;
+  }
   py::list notes;
   for (const auto& n : r->notes) notes.append(py::make_tuple(keyword_of(n.field), n.text));
   summary["notes"] = notes;
@@ -259,7 +274,9 @@ void bind_train(py::module_& m) {
       py::arg("epsilon") = kSpace.epsilon, py::arg("search_epsilon") = false,
       py::arg("auto_box") = false, py::arg("racing") = kTrain.tune.racing,
       py::arg("denoise") = true, py::arg("hidden") = kTrain.mlp.hidden,
-      py::arg("max_degree") = kTrain.poly_max_degree, py::arg("progress") = py::none(),
+      py::arg("max_degree") = kTrain.poly_max_degree, py::arg("gp_points") = kTrain.gp.max_points,
+      py::arg("gp_fit") = std::string(to_string(kTrain.gp.selection)),
+      py::arg("gp_kernel") = kTrain.gp.ard ? "ard" : "rbf", py::arg("progress") = py::none(),
       py::arg("target") = "gyro_dph", py::arg("validate_only") = false,
       "Trains a compensation model on a campaign's training recordings, as `fogdrift train` "
       "does; returns {'model': Model, 'summary': dict}. campaign: a folder (or its "
@@ -274,7 +291,9 @@ void bind_train(py::module_& m) {
       "the models of every axis as one file, as "
       "`fogdrift train --targets` does. racing: stop a search's candidate once its folds so far "
       "cannot beat the best (False fits every fold, as `train --no-racing`; docs/tuning.md, "
-      "\"Speed\"). validate_only: check the options and return None "
+      "\"Speed\"). method='gp': a Gaussian process (docs/gp.md); gp_points, gp_fit ('cv' or "
+      "'likelihood') and gp_kernel ('rbf' or 'ard') as `train --gp-points/--gp-fit/--gp-kernel`. "
+      "validate_only: check the options and return None "
       "without reading the campaign (train_fleet does, once, before any unit runs).");
   m.def(
       "save_models",

@@ -29,9 +29,9 @@ double seconds_since(Clock::time_point start) {
   return std::chrono::duration<double>(Clock::now() - start).count();
 }
 
-// The methods whose C and σ a search chooses: PSO-, GWO- and SSA-SVR.
+// The methods whose hyperparameters a search chooses: PSO-, GWO- and SSA-SVR, and the GP.
 bool is_searched(Method method) {
-  return method != Method::svr && method != Method::bp;
+  return method != Method::svr && method != Method::bp && method != Method::poly;
 }
 
 // Table 2 of a model on test rows: per recording, pooled (eval/metrics.hpp).
@@ -127,7 +127,7 @@ struct SeedCase {
   std::vector<sim::SimulatedCampaign> start_ups;  // one per PaperOptions::start_ups
   Dataset train, test;
   SeedRun run;
-  std::vector<std::optional<CompensationModel>> models;  // kPaperMethods order, first seed only
+  std::vector<std::optional<CompensationModel>> models;  // o.methods order, first seed only
 };
 
 // Simulates a seed's campaigns and measures what needs no model: raw, floor, stable.
@@ -168,8 +168,8 @@ void prepare_seed(const PaperOptions& o, std::uint64_t seed, Stages& stages, See
   run.denoised_std_dph =
       eval::pool(eval::metrics_per_recording(c.test, std::vector<double>(c.test.rows, 0.0)))
           .std_before_dph;
-  run.methods.resize(kPaperMethods.size());
-  c.models.resize(kPaperMethods.size());
+  run.methods.resize(o.methods.size());
+  c.models.resize(o.methods.size());
   run.seconds = seconds_since(start);
 }
 
@@ -179,7 +179,7 @@ void prepare_seed(const PaperOptions& o, std::uint64_t seed, Stages& stages, See
 double run_method(const PaperOptions& o, std::size_t method_index, Stages& stages, SeedCase& c,
                   bool keep_model) {
   const auto start = Clock::now();
-  const Method method = kPaperMethods[method_index];
+  const Method method = o.methods[method_index];
   SeedRun& run = c.run;
   const std::uint64_t seed = run.seed;
   const std::string name = to_string(method);
@@ -356,6 +356,15 @@ void validate(const PaperOptions& o) {
   if (o.cv.scheme == tune::CvScheme::repetition && train_reps < 2)
     throw OptionError("cv.scheme",
                       "leave one repetition out needs two or more training repetitions");
+  for (std::size_t j = 0; j < o.methods.size(); ++j)
+    if (std::find(o.methods.begin(), o.methods.begin() + static_cast<std::ptrdiff_t>(j),
+                  o.methods[j]) != o.methods.begin() + static_cast<std::ptrdiff_t>(j))
+      throw OptionError("methods", fmt::format("{} is listed twice", to_string(o.methods[j])));
+  for (const Method needed : {Method::bp, Method::ssa_svr})
+    if (std::find(o.methods.begin(), o.methods.end(), needed) == o.methods.end())
+      throw OptionError("methods", fmt::format("must include {}: the report and the studies "
+                                               "compare it",
+                                               to_string(needed)));
   if (o.calibration.test_repetitions < 1 ||
       o.calibration.test_repetitions >= o.calibration.repetitions)
     throw OptionError("calibration.repetitions",
@@ -372,7 +381,8 @@ PaperResult run_paper(const PaperOptions& options) {
   r.northfind_temps_degc = options.northfind.temps_degc;
 
   Stages stages{options};
-  const double per_seed = 3 * kTunedWeight + 3 * kOtherWeight;
+  double per_seed = kOtherWeight;  // simulating the campaigns
+  for (const Method m : options.methods) per_seed += is_searched(m) ? kTunedWeight : kOtherWeight;
   stages.total = per_seed * static_cast<double>(options.seeds) +
                  (options.studies ? kLotoWeight + kTunedWeight : 0.0) + 1;
   // Every seed's campaigns first, then every (seed, method) pair as one task, the tuned SVRs
@@ -384,8 +394,8 @@ PaperResult run_paper(const PaperOptions& options) {
   });
   std::vector<std::pair<std::size_t, std::size_t>> tasks;  // (seed, method index)
   for (const bool tuned : {true, false})
-    for (std::size_t j = 0; j < kPaperMethods.size(); ++j)
-      if (tuned == is_searched(kPaperMethods[j]))
+    for (std::size_t j = 0; j < options.methods.size(); ++j)
+      if (tuned == is_searched(options.methods[j]))
         for (std::size_t k = 0; k < cases.size(); ++k) tasks.emplace_back(k, j);
   std::vector<double> task_seconds(tasks.size());
   for_each_task(options.pool, tasks.size(), [&](std::size_t t) {
@@ -395,8 +405,8 @@ PaperResult run_paper(const PaperOptions& options) {
   for (std::size_t t = 0; t < tasks.size(); ++t)
     cases[tasks[t].first].run.seconds += task_seconds[t];
   FirstSeed first;
-  for (std::size_t j = 0; j < kPaperMethods.size(); ++j)
-    first.models.emplace(kPaperMethods[j], std::move(*cases.front().models[j]));
+  for (std::size_t j = 0; j < options.methods.size(); ++j)
+    first.models.emplace(options.methods[j], std::move(*cases.front().models[j]));
   first.cal = std::move(cases.front().cal);
   first.nf = std::move(cases.front().nf);
   first.train = std::move(cases.front().train);

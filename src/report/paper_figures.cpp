@@ -166,7 +166,7 @@ Figure northfind_figure(const PaperResult& r) {
                       return s.raw_rmse_deg;
                     }),
                     true});
-  for (const Method method : kPaperMethods) {
+  for (const Method method : r.options.methods) {
     series.push_back({to_string(method), r.northfind_temps_degc,
                       mean_over_seeds([method](const SeedRun& s) -> const std::vector<double>& {
                         return s.method(method).rmse_deg;

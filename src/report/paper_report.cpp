@@ -117,7 +117,7 @@ PaperVerdict verdict(const PaperResult& r) {
         over_seeds(r, [a](const SeedRun& s) { return s.start_up_raw_rmse_deg[a]; }).mean;
     const double floor =
         over_seeds(r, [a](const SeedRun& s) { return s.start_up_floor_rmse_deg[a]; }).mean;
-    for (const Method method : kPaperMethods) {
+    for (const Method method : r.options.methods) {
       const std::string m = to_string(method);
       const double comp = over_seeds(r, [&](const SeedRun& s) {
                             return s.method(method).start_up_rmse_deg[a];
@@ -151,7 +151,7 @@ std::string paper_json(const PaperResult& r) {
   json t2;
   const MeanSd den = over_seeds(r, [](const SeedRun& s) { return s.denoised_std_dph; });
   t2["denoised"] = {{"std_dph", den.mean}, {"std_dph_sd", den.sd}};
-  for (const Method method : kPaperMethods) {
+  for (const Method method : r.options.methods) {
     const std::string m = to_string(method);
     const MeanSd mae =
         over_seeds(r, [&](const SeedRun& s) { return s.method(method).table2.mae_dph; });
@@ -181,7 +181,7 @@ std::string paper_json(const PaperResult& r) {
   };
   t3["raw"] = row([](const SeedRun& s) -> const std::vector<double>& { return s.raw_rmse_deg; },
                   [](const SeedRun& s) { return s.raw_mean_rmse_deg; });
-  for (const Method method : kPaperMethods) {
+  for (const Method method : r.options.methods) {
     const std::string m = to_string(method);
     t3[m] = row(
         [&](const SeedRun& s) -> const std::vector<double>& { return s.method(method).rmse_deg; },
@@ -229,7 +229,7 @@ std::string paper_json(const PaperResult& r) {
         over_seeds(r, [a](const SeedRun& s) { return s.start_up_raw_rmse_deg[a]; }).mean;
     x["floor_mean_deg"] =
         number(over_seeds(r, [a](const SeedRun& s) { return s.start_up_floor_rmse_deg[a]; }).mean);
-    for (const Method method : kPaperMethods) {
+    for (const Method method : r.options.methods) {
       const std::string m = to_string(method);
       x[m] = {
           {"mean_deg",
@@ -347,7 +347,7 @@ std::string paper_markdown(const PaperResult& r) {
   md << fmt::format("| denoised data | – | – | {} | {:.4f} |\n",
                     pm(over_seeds(r, [](const SeedRun& s) { return s.denoised_std_dph; })),
                     kPaperDenoisedStd);
-  for (const Method method : kPaperMethods) {
+  for (const Method method : r.options.methods) {
     const std::string m = to_string(method);
     md << fmt::format(
         "| {} | {} | {} | {} | {} |\n", m,
@@ -375,7 +375,7 @@ std::string paper_markdown(const PaperResult& r) {
   table3_row(
       "raw", [](const SeedRun& s) -> const std::vector<double>& { return s.raw_rmse_deg; },
       [](const SeedRun& s) { return s.raw_mean_rmse_deg; });
-  for (const Method method : kPaperMethods) {
+  for (const Method method : r.options.methods) {
     const std::string m = to_string(method);
     table3_row(
         m,
@@ -472,7 +472,7 @@ std::string paper_markdown(const PaperResult& r) {
     for (std::size_t a = 0; a < r.options.start_ups.size(); ++a)
       md << fmt::format(" {:.4f} |",
                         mean_at(a, [](const SeedRun& s) { return s.start_up_floor_rmse_deg; }));
-    for (const Method method : kPaperMethods) {
+    for (const Method method : r.options.methods) {
       const std::string m = to_string(method);
       md << "\n| " << m << " |";
       for (std::size_t a = 0; a < r.options.start_ups.size(); ++a) {

@@ -214,6 +214,31 @@ def test_train_options_and_errors_use_the_librarys_names(trained):
         fogdrift.train(d / "cal", population=8, iterations=3, progress=stop)
 
 
+def test_a_gaussian_process_trains_as_the_command_line_does(trained, tmp_path, cli):
+    d, _, _ = trained
+    small = dict(population=5, iterations=3, seed=2)
+    with warnings.catch_warnings():  # how sure train is; not what this test checks
+        warnings.simplefilter("ignore", UserWarning)
+        r = fogdrift.train(d / "cal", method="gp", gp_points=150, **small)
+    import json
+    line = json.loads(cli("train", d / "cal", "--method", "gp", "--gp-points", "150",
+                          "--population", "5", "--iterations", "3", "--seed", "2", "-o",
+                          tmp_path / "gp.json", "--json"))
+    assert r["model"].to_json() == (tmp_path / "gp.json").read_text()
+    assert r["model"].method == "gp"
+    assert r["summary"]["gp"] == line["gp"] and r["summary"]["gp"]["points"] == 150
+    assert set(r["summary"]["hyperparameters"]) == {"signal_variance", "noise_variance", "points",
+                                                    "length_scale"}
+    for kwargs, message in [
+            (dict(gp_fit="ml"), "option gp_fit: 'ml' is not a way to choose the hyperparameters"),
+            (dict(gp_kernel="ard"), "option gp_kernel: ard .* needs the likelihood fit"),
+            (dict(gp_kernel="matern"), "option gp_kernel: 'matern' is not rbf or ard"),
+            (dict(gp_points=5), "option gp_points: 5 is outside 10"),
+    ]:
+        with pytest.raises(ValueError, match=message):
+            fogdrift.train(d / "cal", method="gp", **kwargs)
+
+
 def test_train_rejects_a_block_that_is_not_a_positive_number(trained):
     d, _, _ = trained
     with pytest.raises(ValueError, match="option rate_window_s: must be 'auto' or a number"):

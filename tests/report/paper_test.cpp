@@ -154,6 +154,32 @@ TEST(Paper, RunsEveryMethodOnEverySeedAndReportsIt) {
   EXPECT_EQ(md.find("The paper's Table 3 at the same temperatures"), std::string::npos);
 }
 
+// A method beyond the paper's, from the registry, is a row of every table (docs/gp.md).
+TEST(Paper, AnotherMethodIsARowOfEveryTable) {
+  PaperOptions o = small_options();
+  o.seeds = 1;
+  o.studies = false;
+  o.causal = false;
+  const PaperResult paper = run_paper(o);
+  o.methods.push_back(Method::gp);
+  const PaperResult r = run_paper(o);
+  // The paper's rows are the same with the row added.
+  for (const MethodRun& m : paper.seeds[0].methods) {
+    EXPECT_EQ(r.seeds[0].method(m.method).table2.std_after_dph, m.table2.std_after_dph);
+    EXPECT_EQ(r.seeds[0].method(m.method).rmse_deg, m.rmse_deg);
+  }
+  ASSERT_EQ(r.seeds[0].methods.size(), std::size(kPaperMethods) + 1);
+  const MethodRun& gp = r.seeds[0].method(Method::gp);
+  EXPECT_LT(gp.table2.std_after_dph, r.seeds[0].denoised_std_dph);
+  EXPECT_EQ(gp.rmse_deg.size(), 2u);
+  EXPECT_EQ(gp.start_up_rmse_deg.size(), o.start_ups.size());
+  EXPECT_GT(gp.hyperparameter("length_scale"), 0.0);
+  const std::string md = paper_markdown(r);
+  EXPECT_NE(md.find("| gp | "), std::string::npos);
+  const nlohmann::json j = nlohmann::json::parse(paper_json(r));
+  EXPECT_TRUE(j.at("table2").contains("gp")) << j.at("table2").dump();
+}
+
 TEST(Paper, SameSeedSameResultWhateverTheThreads) {
   PaperOptions o = small_options();
   o.seeds = 1;
@@ -200,6 +226,8 @@ TEST(Paper, ImpossibleOptionsNameTheField) {
   expect_field([](PaperOptions& o) { o.northfind.findings = 0; }, "northfind.findings");
   expect_field([](PaperOptions& o) { o.calibration.repetitions = 1; }, "calibration.repetitions");
   expect_field([](PaperOptions& o) { o.epsilon = -0.1; }, "epsilon");
+  expect_field([](PaperOptions& o) { o.methods = {Method::bp, Method::svr}; }, "methods");
+  expect_field([](PaperOptions& o) { o.methods.push_back(Method::bp); }, "methods");
   // The folds against each scheme, on one set of options.
   PaperOptions o;
   o.cv.scheme = tune::CvScheme::temperature;

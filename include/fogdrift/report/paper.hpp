@@ -35,6 +35,9 @@ inline constexpr std::array<Method, 5> kPaperMethods = {Method::bp, Method::svr,
                                                         Method::gwo_svr, Method::ssa_svr};
 
 struct PaperOptions {
+  /// The methods run and reported, in this order: the paper's, and any others (poly, gp) after
+  /// them. BP and SSA-SVR must be among them (the report and the studies compare them).
+  std::vector<Method> methods{kPaperMethods.begin(), kPaperMethods.end()};
   std::size_t seeds = 5;         ///< independent repetitions of the whole experiment, ≥ 1
   std::uint64_t first_seed = 1;  ///< the seeds are first_seed, first_seed + 1, …
   /// Optimizer budget of each tuned SVR. The paper does not state its budget; 10 × 20 keeps the
@@ -115,7 +118,7 @@ struct SeedRun {
   /// The same for SSA-SVR as firmware runs it (PaperOptions::causal): its C, σ and ε refitted on
   /// causal rates and applied causally, sample by sample, guarded and not. Empty when not run.
   std::vector<double> causal_start_up_rmse_deg, causal_start_up_unguarded_rmse_deg;
-  std::vector<MethodRun> methods;  ///< in kPaperMethods order
+  std::vector<MethodRun> methods;  ///< in PaperOptions::methods order
   /// Time of the seed's own work (simulation and its methods' tasks, each on one thread); the
   /// seeds' tasks run side by side on the pool, so the seeds' sum exceeds the run's wall time.
   double seconds = 0;
