@@ -18,4 +18,12 @@ std::string c_array(std::span<const double> values, std::size_t per_line) {
   return out;
 }
 
+std::string fill_template(std::string text,
+                          std::initializer_list<std::pair<std::string_view, std::string>> values) {
+  for (const auto& [key, value] : values)
+    for (std::size_t at = text.find(key); at != std::string::npos; at = text.find(key, at))
+      text.replace(at, key.size(), value), at += value.size();
+  return text;
+}
+
 }  // namespace fogdrift::detail
