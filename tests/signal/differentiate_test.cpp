@@ -6,6 +6,7 @@
 #include <random>
 
 #include "fogdrift/error.hpp"
+#include "fogdrift/random.hpp"
 #include "signal/signal_reference.hpp"
 
 namespace fogdrift::signal {

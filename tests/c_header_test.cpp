@@ -1,5 +1,5 @@
-// The C99 header export: compiled with the C compiler in a small program, whose predictions must
-// be the library's.
+// The C99 header export (c_header.hpp): compiled with the C compiler in a small program, whose
+// predictions must be the library's, for every registered regressor.
 #include <gtest/gtest.h>
 
 #include <cstdio>
