@@ -63,6 +63,10 @@ TEST(GpSearch, ScaleIsTheLikelihoodsMaximumAndFitnessTheFoldsRmse) {
   EXPECT_GE(h.length_scale[0], o.box.length_min);
   EXPECT_LE(h.length_scale[0], o.box.length_max);
   EXPECT_LT(s.search.best_fitness, s.search.initial_best_fitness + 1e-12);
+  // Racing: candidates that cannot win leave before their last fold.
+  EXPECT_GT(s.fit.summary.raced, 0u);
+  EXPECT_LT(s.fit.summary.fold_fits, splits.size() * s.search.evaluations);
+  EXPECT_GE(s.fit.summary.fold_fits, s.search.evaluations);
 }
 
 TEST(GpSearch, OneSeedOneModelOnAnyThreadCount) {

@@ -166,6 +166,8 @@ nlohmann::ordered_json summary_json(const TrainArgs& a, const CampaignTrainResul
                  {"log_likelihood", s.gp.log_likelihood},
                  {"iterations", s.gp.iterations},
                  {"evaluations", s.gp.evaluations},
+                 {"fold_fits", s.gp.fold_fits},
+                 {"raced", s.gp.raced},
                  {"converged", s.gp.converged}};
     j["notes"] = notes;
     nlohmann::ordered_json edges = nlohmann::ordered_json::array();

@@ -111,6 +111,9 @@ struct GpSummary {
   std::size_t iterations = 0, evaluations = 0;
   std::size_t points = 0;  ///< rows kept
   bool converged = false;  ///< the search stopped on its tolerance, not its iteration limit
+  /// The cross-validated search (gp_search.hpp): GPs fitted on folds, and candidates stopped
+  /// by racing before their last fold; 0 for the likelihood search.
+  std::size_t fold_fits = 0, raced = 0;
 };
 struct GpFit {
   GpPosterior posterior;

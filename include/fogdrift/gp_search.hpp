@@ -10,7 +10,10 @@
 //   s² = yᵀ (E + λ I)⁻¹ y / n                                                     (docs/gp.md eq.
 //   7)
 // and σn² = λ s². Every fitness is a deterministic function of its point, so a seed gives one
-// model whatever the thread count.
+// model whatever the thread count. Racing stops a candidate once its squared errors on the
+// folds so far exceed the best complete candidate's of the batches before (a bound that does not
+// depend on the order a batch runs in): such a candidate cannot be the best, and its fitness is
+// then the RMSE of its errors so far, a lower bound above the best's.
 #pragma once
 
 #include <span>
@@ -24,8 +27,8 @@ namespace fogdrift {
 class ThreadPool;
 
 struct GpSearch {
-  GpFit fit;            ///< the GP of the best (ℓ, λ), fitted on the rows `all` keeps
-  opt::Summary search;  ///< the optimizer's run; its best fitness is the folds' RMSE
+  GpFit fit;                  ///< the GP of the best (ℓ, λ), fitted on the rows `all` keeps
+  opt::Summary search;        ///< the optimizer's run; its best fitness is the folds' RMSE
 };
 
 /// Searches (ℓ, λ) in options.box by the RMSE over `splits` (scaled folds), then fits the GP of

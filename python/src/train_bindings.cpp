@@ -171,6 +171,8 @@ py::object train(const py::object& campaign, const std::string& method, const st
     gp["log_likelihood"] = s.gp.log_likelihood;
     gp["iterations"] = s.gp.iterations;
     gp["evaluations"] = s.gp.evaluations;
+    gp["fold_fits"] = s.gp.fold_fits;
+    gp["raced"] = s.gp.raced;
     gp["converged"] = s.gp.converged;
     summary["gp"] = gp;
   }
