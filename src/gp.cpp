@@ -248,7 +248,7 @@ GpFit train_gp(const svr::Data& train, const GpOptions& o) {
   };
   // Projected L-BFGS with ten pairs and a backtracking (Armijo) line search; it stops as
   // scipy's L-BFGS-B does by default: a projected gradient below 1e-5, or a relative decrease
-  // of f below 1e7 · machine ε (docs/gp.md, "Search").
+  // of f below 1e7 · machine ε (docs/gp.md, "By the marginal likelihood").
   std::vector<double> g(p), g_new(p), t_new(p);
   double f = objective(theta, g);
   if (!std::isfinite(f))

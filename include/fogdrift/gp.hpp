@@ -1,6 +1,6 @@
 // A Gaussian-process regressor (docs/gp.md): the drift as the posterior mean of a zero-mean GP on
-// the standardised features, with a squared-exponential kernel of one length scale per input
-// (ARD) and white noise,
+// the standardised features, with a squared-exponential kernel of one length scale for all inputs
+// (or one per input, ARD) and white noise,
 //   k(x, x') = s² · exp(−½ Σ_k (x_k − x'_k)² / ℓ_k²) + σn² · [x = x']           (docs/gp.md eq. 1)
 //   f̄(x)     = Σ_i α_i · s² · exp(−½ Σ_k (x_k − p_ik)² / ℓ_k²),  α = (K + σn² I)⁻¹ y     (eq. 2)
 //   V[f(x)]  = s² − k*ᵀ (K + σn² I)⁻¹ k*                                            (eq. 3)
@@ -30,7 +30,8 @@ struct GpHyper {
   double noise_variance = 0.1;       ///< σn²
 };
 
-/// The bounds the likelihood search keeps each hyperparameter in (docs/gp.md, "Bounds").
+/// The bounds the likelihood search keeps each hyperparameter in (docs/gp.md, "By the marginal
+/// likelihood").
 struct GpBounds {
   double signal_min = 1e-3, signal_max = 1e3;
   double length_min = 1e-2, length_max = 1e3;

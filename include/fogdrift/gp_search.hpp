@@ -7,8 +7,7 @@
 // RMSE on the held-out rows of folds of whole recordings, each fold's GP fitted on at most
 // `max_points` of its training rows and scored on at most `max_points` of its held-out rows. The
 // scale then follows from the likelihood, whose maximum over s² for a fixed E + λI is closed:
-//   s² = yᵀ (E + λ I)⁻¹ y / n                                                     (docs/gp.md eq.
-//   7)
+//   s² = yᵀ (E + λ I)⁻¹ y / n                                        (docs/gp.md eq. 7)
 // and σn² = λ s². Every fitness is a deterministic function of its point, so a seed gives one
 // model whatever the thread count. Racing stops a candidate once its squared errors on the
 // folds so far exceed the best complete candidate's of the batches before (a bound that does not
@@ -27,8 +26,8 @@ namespace fogdrift {
 class ThreadPool;
 
 struct GpSearch {
-  GpFit fit;                  ///< the GP of the best (ℓ, λ), fitted on the rows `all` keeps
-  opt::Summary search;        ///< the optimizer's run; its best fitness is the folds' RMSE
+  GpFit fit;            ///< the GP of the best (ℓ, λ), fitted on the rows `all` keeps
+  opt::Summary search;  ///< the optimizer's run; its best fitness is the folds' RMSE
 };
 
 /// Searches (ℓ, λ) in options.box by the RMSE over `splits` (scaled folds), then fits the GP of
