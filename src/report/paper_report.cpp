@@ -95,7 +95,10 @@ PaperVerdict verdict(const PaperResult& r) {
                           return s.method(Method::bp).table2.std_after_dph;
                         }).mean;
   v.std_ratio = ssa_std / denoised;
-  for (const Method method : {Method::pso_svr, Method::gwo_svr, Method::ssa_svr}) {
+  for (const Method method : r.options.methods) {
+    // The tuned SVRs run (a --methods list may leave PSO- and GWO-SVR out).
+    if (method != Method::pso_svr && method != Method::gwo_svr && method != Method::ssa_svr)
+      continue;
     const double std = over_seeds(r, [method](const SeedRun& s) {
                          return s.method(method).table2.std_after_dph;
                        }).mean;

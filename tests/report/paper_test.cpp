@@ -160,6 +160,7 @@ TEST(Paper, AnotherMethodIsARowOfEveryTable) {
   o.seeds = 1;
   o.studies = false;
   o.causal = false;
+  o.methods = {Method::bp, Method::ssa_svr};  // the two the report needs: a short run
   const PaperResult paper = run_paper(o);
   o.methods.push_back(Method::gp);
   const PaperResult r = run_paper(o);
@@ -168,7 +169,7 @@ TEST(Paper, AnotherMethodIsARowOfEveryTable) {
     EXPECT_EQ(r.seeds[0].method(m.method).table2.std_after_dph, m.table2.std_after_dph);
     EXPECT_EQ(r.seeds[0].method(m.method).rmse_deg, m.rmse_deg);
   }
-  ASSERT_EQ(r.seeds[0].methods.size(), std::size(kPaperMethods) + 1);
+  ASSERT_EQ(r.seeds[0].methods.size(), 3u);
   const MethodRun& gp = r.seeds[0].method(Method::gp);
   EXPECT_LT(gp.table2.std_after_dph, r.seeds[0].denoised_std_dph);
   EXPECT_EQ(gp.rmse_deg.size(), 2u);
