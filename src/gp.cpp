@@ -9,6 +9,7 @@
 #include <limits>
 #include <nlohmann/json.hpp>
 #include <numbers>
+#include <span>
 
 #include "c_text.hpp"
 #include "fogdrift/enum_names.hpp"
@@ -56,14 +57,27 @@ void check_hyper(const GpHyper& h, std::size_t inputs) {
     throw OptionError("gp", "every hyperparameter must be finite and > 0");
 }
 
-Eigen::LLT<Matrix> cholesky(const svr::Data& data, const GpHyper& h) {
-  check_hyper(h, data.cols);
-  Eigen::LLT<Matrix> llt(covariance(data, h));
+// The factor of K = K + σn² I (covariance()); OptionError when it is not positive definite.
+Eigen::LLT<Matrix> factor_of(const Matrix& k, const GpHyper& h) {
+  Eigen::LLT<Matrix> llt(k);
   if (llt.info() != Eigen::Success)
     throw OptionError("gp", fmt::format("K + σn² I is not positive definite in floating point "
                                         "(σn² = {:.3g}); the rows repeat or σn² is too small",
                                         h.noise_variance));
   return llt;
+}
+
+Eigen::LLT<Matrix> cholesky(const svr::Data& data, const GpHyper& h) {
+  check_hyper(h, data.cols);
+  return factor_of(covariance(data, h), h);
+}
+
+// eq. 4 from α and the diagonal of L: −½ yᵀα − Σ log L_ii − (n/2) log 2π.
+double likelihood_of(std::span<const double> y, std::span<const double> alpha,
+                     std::span<const double> diagonal) {
+  double value = -0.5 * static_cast<double>(y.size()) * std::log(2 * std::numbers::pi);
+  for (std::size_t i = 0; i < y.size(); ++i) value -= 0.5 * y[i] * alpha[i] + std::log(diagonal[i]);
+  return value;
 }
 
 constexpr std::array<EnumName<GpSelection>, 2> kSelectionNames = {
@@ -152,16 +166,24 @@ GpPosterior factor(const Gp& gp) {
   return out;
 }
 
+double GpPosterior::log_likelihood(std::span<const double> y) const {
+  const std::size_t n = gp.size();
+  std::vector<double> diagonal(n);
+  for (std::size_t i = 0; i < n; ++i) diagonal[i] = lower[i * n + i];
+  return likelihood_of(y, gp.alpha, diagonal);
+}
+
 GpLikelihood log_marginal_likelihood(const svr::Data& train, const GpHyper& h, bool ard) {
   const std::size_t n = train.rows, d = train.cols;
-  const Eigen::LLT<Matrix> llt = cholesky(train, h);
+  check_hyper(h, d);
+  const Matrix cov = covariance(train, h);
+  const Eigen::LLT<Matrix> llt = factor_of(cov, h);
   const Eigen::Map<const Eigen::VectorXd> y(train.y.data(), static_cast<Eigen::Index>(n));
   const Eigen::VectorXd a = llt.solve(y);
-  const Matrix l = llt.matrixL();
+  const Eigen::VectorXd diagonal = llt.matrixLLT().diagonal();
   GpLikelihood out;
-  // eq. 4: −½ yᵀα − Σ log L_ii − (n/2) log 2π
-  out.value = -0.5 * y.dot(a) - l.diagonal().array().log().sum() -
-              0.5 * static_cast<double>(n) * std::log(2 * std::numbers::pi);
+  out.value = likelihood_of(train.y, std::span<const double>(a.data(), n),
+                            std::span<const double>(diagonal.data(), n));
   // eq. 5: ∂/∂θ_j = ½ tr(W ∂K/∂θ_j), W = ααᵀ − K⁻¹, summed over i ≥ j (W and K symmetric).
   const Matrix inverse =
       llt.solve(Matrix::Identity(static_cast<Eigen::Index>(n), static_cast<Eigen::Index>(n)));
@@ -179,8 +201,7 @@ GpLikelihood log_marginal_likelihood(const svr::Data& train, const GpHyper& h, b
       const double w = a[ii] * a[jj] - inverse(ii, jj);
       const double* xi = train.row(i);
       const double* xj = train.row(j);
-      const double kf = h.signal_variance * correlation(xi, xj, h.length_scale, d);
-      const double wk = w * kf;  // twice, for (i, j) and (j, i), times ½
+      const double wk = w * cov(ii, jj);  // s²·E_ij; twice, for (i, j) and (j, i), times ½
       out.gradient[0] += wk;
       for (std::size_t k = 0; k < d; ++k) {
         const double e = xi[k] - xj[k];

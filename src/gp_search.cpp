@@ -129,7 +129,7 @@ GpSearch search_gp(std::span<const tune::ScaledSplit> splits, const svr::Data& a
   const GpHyper hyper{s2, std::vector<double>(all.cols, length), ratio * s2};
   out.fit.posterior = fit_gp(kept, hyper);
   out.fit.summary.points = kept.rows;
-  out.fit.summary.log_likelihood = log_marginal_likelihood(kept, hyper, false).value;
+  out.fit.summary.log_likelihood = out.fit.posterior.log_likelihood(kept.y);
   out.fit.summary.iterations = out.search.iterations;
   out.fit.summary.evaluations = out.search.evaluations;
   out.fit.summary.converged = true;

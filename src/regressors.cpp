@@ -4,7 +4,9 @@
 
 #include <algorithm>
 #include <array>
+#include <cctype>
 #include <nlohmann/json.hpp>
+#include <stdexcept>
 
 #include "fogdrift/error.hpp"
 
@@ -58,12 +60,15 @@ std::size_t input_count(const AnyRegressor& regressor) {
 }
 
 std::string to_json(const AnyRegressor& regressor) {
-  using ojson = nlohmann::ordered_json;
-  ojson out;
-  out["type"] = regressor_type(regressor);
-  const ojson own = ojson::parse(std::visit([](const auto& r) { return to_json(r); }, regressor));
-  for (const auto& [k, v] : own.items()) out[k] = v;
-  return out.dump();
+  // The regressor's own object with "type" written first, as text: no parse and dump again.
+  std::string own = std::visit([](const auto& r) { return to_json(r); }, regressor);
+  while (!own.empty() && std::isspace(static_cast<unsigned char>(own.back()))) own.pop_back();
+  const std::size_t open = own.find('{');
+  if (open == std::string::npos || own.back() != '}')
+    throw std::logic_error("a regressor's JSON must be an object");
+  const bool empty = own.find_first_not_of(" \t\r\n", open + 1) == own.size() - 1;
+  const std::string type = nlohmann::json(std::string(regressor_type(regressor))).dump();
+  return "{\"type\":" + type + (empty ? "" : ",") + own.substr(open + 1);
 }
 
 AnyRegressor regressor_from_json(const std::string& type, const std::string& text,

@@ -4,6 +4,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <memory>
 #include <numeric>
 
 #include "fogdrift/error.hpp"
@@ -224,11 +225,11 @@ TrainResult train(const Dataset& data, const DatasetOptions& dataset, const Trai
       // of a GP with those hyperparameters fitted on each fold's training rows, as the held-out
       // report scores it.
       held_folds = tune::grouped_folds(data, options.tune.cv);
+      std::vector<tune::ScaledSplit> splits;
+      for (const auto& f : held_folds)
+        splits.push_back(tune::scale_split(data, f.train_rows, f.test_rows));
       GpFit fit;
       if (options.gp.selection == GpSelection::cv) {
-        std::vector<tune::ScaledSplit> splits;
-        for (const auto& f : held_folds)
-          splits.push_back(tune::scale_split(data, f.train_rows, f.test_rows));
         fit = search_gp(splits, full.train, options.gp, options.tune.optimizer, options.tune.pool)
                   .fit;
         p.population = options.tune.optimizer.run.population;
@@ -239,23 +240,24 @@ TrainResult train(const Dataset& data, const DatasetOptions& dataset, const Trai
       m.regressor = fit.posterior.gp;
       s.gp = fit.summary;
       const GpHyper hyper = fit.posterior.gp.hyper;
-      const std::size_t points = options.gp.max_points;
-      held_predict = [hyper, points](const tune::ScaledSplit& split, std::size_t) {
-        const Gp gp = fit_gp(split.train.subset(gp_rows(split.train.rows, points)), hyper).gp;
-        std::vector<double> out(split.test.rows);
-        for (std::size_t r = 0; r < split.test.rows; ++r) out[r] = gp.predict(split.test.row(r));
-        return out;
-      };
+      // The GP of each fold, fitted once: its held-out predictions give the fitness here and the
+      // held-out report below (which splits the same folds the same way).
+      auto predictions = std::make_shared<std::vector<std::vector<double>>>();
       double sse = 0;
       std::size_t n = 0;
-      for (std::size_t k = 0; k < held_folds.size(); ++k) {
-        const tune::Fold& f = held_folds[k];
-        const tune::ScaledSplit split = tune::scale_split(data, f.train_rows, f.test_rows);
-        const std::vector<double> predicted = held_predict(split, k);
-        for (std::size_t r = 0; r < split.test.rows; ++r)
+      for (const tune::ScaledSplit& split : splits) {
+        const Gp gp =
+            fit_gp(split.train.subset(gp_rows(split.train.rows, options.gp.max_points)), hyper).gp;
+        std::vector<double>& predicted = predictions->emplace_back(split.test.rows);
+        for (std::size_t r = 0; r < split.test.rows; ++r) {
+          predicted[r] = gp.predict(split.test.row(r));
           sse += (predicted[r] - split.test.y[r]) * (predicted[r] - split.test.y[r]);
+        }
         n += split.test.rows;
       }
+      held_predict = [predictions](const tune::ScaledSplit&, std::size_t fold) {
+        return (*predictions)[fold];
+      };
       s.fitness = "cv";
       s.fitness_value = std::sqrt(sse / static_cast<double>(n));
       p.cv = describe_folds(held_folds);

@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "fogdrift/error.hpp"
@@ -92,6 +93,21 @@ TEST(GpSearch, RefusesWhatItCannotSearch) {
   o.box.length_min = 30;  // above length_max
   EXPECT_THROW(search_gp(splits, splits.front().train, o, budget(1)), OptionError);
   EXPECT_THROW(search_gp({}, splits.front().train, GpOptions{}, budget(1)), OptionError);
+  // A fold that holds nothing out.
+  std::vector<tune::ScaledSplit> empty_fold = splits;
+  empty_fold[1].test = {};
+  EXPECT_THROW(search_gp(empty_fold, splits.front().train, GpOptions{}, budget(1)), OptionError);
+  // A drift that is zero everywhere has no scale s² (eq. 7): an error, not a model of NaNs.
+  svr::Data flat = splits.front().train;
+  std::fill(flat.y.begin(), flat.y.end(), 0.0);
+  std::vector<tune::ScaledSplit> flat_folds = splits;
+  for (auto& f : flat_folds) std::fill(f.train.y.begin(), f.train.y.end(), 0.0);
+  try {
+    search_gp(flat_folds, flat, GpOptions{}, budget(1));
+    ADD_FAILURE() << "a flat drift was accepted";
+  } catch (const OptionError& e) {
+    EXPECT_NE(std::string(e.what()).find("no positive scale"), std::string::npos) << e.what();
+  }
 }
 
 }  // namespace

@@ -162,12 +162,9 @@ nlohmann::ordered_json summary_json(const TrainArgs& a, const CampaignTrainResul
                  {"train_rmse", s.mlp.train_rmse}};
     if (s.method == Method::poly) j["poly_cv_rmse_by_degree"] = s.poly_cv_rmse;
     if (s.method == Method::gp)
-      j["gp"] = {{"points", s.gp.points},
-                 {"log_likelihood", s.gp.log_likelihood},
-                 {"iterations", s.gp.iterations},
-                 {"evaluations", s.gp.evaluations},
-                 {"fold_fits", s.gp.fold_fits},
-                 {"raced", s.gp.raced},
+      j["gp"] = {{"points", s.gp.points},         {"log_likelihood", s.gp.log_likelihood},
+                 {"iterations", s.gp.iterations}, {"evaluations", s.gp.evaluations},
+                 {"fold_fits", s.gp.fold_fits},   {"raced", s.gp.raced},
                  {"converged", s.gp.converged}};
     j["notes"] = notes;
     nlohmann::ordered_json edges = nlohmann::ordered_json::array();

@@ -87,6 +87,8 @@ struct GpPosterior {
   std::vector<double> lower;  ///< L with L·Lᵀ = K + σn² I, size() × size(), row-major
   /// V[f(x)], the variance of the latent drift at x (eq. 3), ≥ 0.
   double variance(const double* x) const;
+  /// log p(y | X, θ) (eq. 4) of the rows it was fitted on, whose targets are `y`.
+  double log_likelihood(std::span<const double> y) const;
 };
 
 /// The GP of `train` with the given hyperparameters (no search). Throws OptionError when
