@@ -30,6 +30,10 @@ CvScheme parse_cv_scheme(const std::string& text, const std::string& option) {
   return parse_in(kCvSchemeNames, text, option, "a cross-validation scheme");
 }
 
+std::string cv_scheme_names() {
+  return names_in(kCvSchemeNames);
+}
+
 namespace {
 
 // k folds of `available` whole units (recordings, temperatures) need 2 ≤ k ≤ available.

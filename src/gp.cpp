@@ -93,6 +93,10 @@ GpSelection parse_gp_selection(const std::string& text, const std::string& optio
   return parse_in(kSelectionNames, text, option, "a way to choose the hyperparameters");
 }
 
+std::string gp_selection_names() {
+  return names_in(kSelectionNames);
+}
+
 void validate(const GpOptions& o) {
   if (o.max_points < 10 || o.max_points > 4000)
     throw OptionError("gp_points", fmt::format("{} is outside 10 … 4000", o.max_points));

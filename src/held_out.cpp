@@ -169,7 +169,8 @@ HeldOutReport held_out_report(const Dataset& data, std::span<const tune::Fold> f
     r.warnings.push_back(fmt::format(
         "a straight line in {} predicts the held-out drift as well as the model (RMSE {:.4f} "
         "against {:.4f}, standardised, over {}): the drift is mostly a static function of that "
-        "temperature, and --method poly --max-degree 1 --features 'T({})' is simpler to trust",
+        "temperature, and a straight line in it ({{method}} poly, {{max_degree}} 1, {{features}} "
+        "'T({})') is simpler to trust",
         best_line->input, best_line->rmse, model_rmse, r.folds, thermometer_of(best_line->input)));
   }
   return r;

@@ -42,6 +42,10 @@ Method parse_method(const std::string& text, const std::string& option) {
   return parse_in(kMethodNames, text, option, "a method");
 }
 
+std::string method_names() {
+  return names_in(kMethodNames);
+}
+
 namespace {
 
 // A batch prediction never writes a drift that is not finite (docs/reliability.md, "Finite

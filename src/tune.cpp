@@ -35,6 +35,10 @@ Fitness parse_fitness(const std::string& text, const std::string& option) {
   return parse_in(kFitnessNames, text, option, "a fitness");
 }
 
+std::string fitness_names() {
+  return names_in(kFitnessNames);
+}
+
 void validate(const TuneOptions& options) {
   const SearchSpace& s = options.space;
   auto range = [](double lo, double hi, const char* lo_name, const char* hi_name) {

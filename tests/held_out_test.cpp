@@ -136,7 +136,8 @@ TEST(HeldOut, AModelNoBetterThanALineIsWarnedOfAndNamesALineThatExists) {
   EXPECT_GT(r.expected_startup_share, 0.9);  // the drift within a start-up is the same line
   ASSERT_EQ(r.warnings.size(), 1u);
   EXPECT_NE(r.warnings[0].find("straight line in T_fog_degc"), std::string::npos) << r.warnings[0];
-  EXPECT_NE(r.warnings[0].find("--features 'T(fog)'"), std::string::npos) << r.warnings[0];
+  // The advice names options as {keyword}, for each front end's own word (in_option_words).
+  EXPECT_NE(r.warnings[0].find("{features} 'T(fog)'"), std::string::npos) << r.warnings[0];
 }
 
 TEST(HeldOut, AModelBlindWithinAStartUpIsWarnedOf) {

@@ -28,6 +28,7 @@ void add_commands(CLI::App& app) {
   add_denoise(app);
   add_svr(app);
   add_train(app);
+  add_options(app);
   add_evaluate(app);
   add_compensate(app);
   add_stream(app);

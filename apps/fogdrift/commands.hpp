@@ -23,6 +23,7 @@ void add_denoise(CLI::App& app);
 void add_demo(CLI::App& app);
 void add_svr(CLI::App& app);
 void add_train(CLI::App& app);
+void add_options(CLI::App& app);
 void add_evaluate(CLI::App& app);
 void add_compensate(CLI::App& app);
 void add_export_c(CLI::App& app);

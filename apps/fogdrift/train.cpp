@@ -16,108 +16,44 @@
 #include "fogdrift/model_set.hpp"
 #include "fogdrift/thread_pool.hpp"
 #include "fogdrift/train_campaign.hpp"
+#include "fogdrift/train_option_table.hpp"
+#include "option_flags.hpp"
 
 namespace fogdrift::app {
 namespace {
 
-// The flags' defaults are the library's, so that they live in one place.
-const TrainOptions kTrain;
-const opt::RunOptions kRun;
-
 struct TrainArgs {
   std::string campaign;
   std::string output;
-  std::string method = to_string(kTrain.method);
-  std::string fitness = tune::to_string(kTrain.tune.fitness);
-  std::string features = "auto";
-  std::string thermometers = "auto";
-  std::string cv = tune::to_string(kTrain.tune.cv.scheme);
-  std::string differentiator = std::string(signal::to_string(FeatureOptions{}.rates.causality));
-  std::string block_s = "auto";
-  std::string rate_window_s = "auto";
-  std::string rate_degree = "auto";
-  std::size_t folds = kTrain.tune.cv.folds;
-  std::size_t population = kRun.population;
-  std::size_t iterations = kRun.iterations;
-  std::uint64_t seed = kRun.seed;
   unsigned threads = 0;
-  double cache_mb = kTrain.tune.cache_mb;
-  double c_min = tune::SearchSpace{}.c_min, c_max = tune::SearchSpace{}.c_max,
-         sigma_min = tune::SearchSpace{}.sigma_min, sigma_max = tune::SearchSpace{}.sigma_max,
-         epsilon = tune::SearchSpace{}.epsilon;
-  bool search_epsilon = false;
-  bool auto_box = false;
-  bool no_racing = false;
-  bool no_denoise = false;
-  std::size_t hidden = kTrain.mlp.hidden;
-  std::size_t max_degree = kTrain.poly_max_degree;
-  std::size_t gp_points = kTrain.gp.max_points;
-  std::string gp_kernel = kTrain.gp.ard ? "ard" : "rbf";
-  std::string gp_fit = std::string(to_string(kTrain.gp.selection));
   std::string targets = "gyro_dph";
   bool json = false;
   bool quiet = false;
+  /// The options that decide the model (train_option_table.hpp), and what they were set to.
+  std::shared_ptr<OptionFlags> flags;
+  CampaignTrainOptions options;
 };
 
-// The library's field names and the flags that set them.
-const FlagTable kTrainFlags = {{"population", "--population"},
-                               {"iterations", "--iterations"},
-                               {"c_min", "--c-min"},
-                               {"c_max", "--c-max"},
-                               {"sigma_min", "--sigma-min"},
-                               {"sigma_max", "--sigma-max"},
-                               {"epsilon", "--epsilon"},
-                               {"epsilon_min", "--epsilon"},
-                               {"epsilon_max", "--epsilon"},
-                               {"cv", "--cv"},
-                               {"folds", "--folds"},
-                               {"hidden", "--hidden"},
-                               {"degree", "--max-degree"},
-                               {"gp_points", "--gp-points"},
-                               {"gp_kernel", "--gp-kernel"},
-                               {"gp_fit", "--gp-fit"},
-                               {"features", "--features"},
-                               {"thermometers", "--thermometers"},
-                               {"block_s", "--block-s"},
-                               {"window_s", "--rate-window-s"},
-                               {"poly_order", "--rate-degree"},
-                               {"denoise", "--no-denoise"},
-                               {"cache_mb", "--cache-mb"}};
-
-/// "auto" or a positive number of seconds.
-std::optional<double> seconds_or_auto(const std::string& text, const std::string& flag) {
-  if (text == "auto") return std::nullopt;
-  const auto v = csv::parse_number(text);
-  if (!v || !(*v > 0))
-    throw OptionError(flag,
-                      fmt::format("'{}' is neither auto nor a positive number of seconds", text));
-  return v;
-}
-
-/// "auto" or a polynomial degree 1..4.
-std::optional<int> degree_or_auto(const std::string& text) {
-  if (text == "auto") return std::nullopt;
-  const auto v = csv::parse_number(text);
-  if (!v || *v != std::floor(*v) || *v < 1 || *v > 4)
-    throw OptionError("--rate-degree",
-                      fmt::format("'{}' is neither auto nor a whole degree 1..4", text));
-  return static_cast<int>(*v);
+/// How sure train is, its advice in flags.
+std::vector<std::string> held_out_warnings(const HeldOutReport& h) {
+  static const std::vector<OptionSpec> specs = specs_of(train_option_table());
+  std::vector<std::string> out;
+  for (const auto& w : h.warnings) out.push_back(in_option_words(w, specs, true));
+  return out;
 }
 
 /// The choices made for the user, each with the flag that would change it.
-std::vector<std::string> notes_of(const CampaignTrainResult& trained) {
+std::vector<std::string> notes_of(const TrainArgs& a, const CampaignTrainResult& trained) {
   std::vector<std::string> notes;
   for (const CampaignNote& n : trained.notes)
-    notes.push_back(fmt::format("{} ({})", n.text, flag_for(n.field, kTrainFlags)));
+    notes.push_back(fmt::format("{} ({})", n.text, flag_for(n.field, a.flags->flag_table())));
   return notes;
 }
 
 /// A best value on the edge of its box: the box, not the data, may have stopped the search.
 std::vector<std::string> edge_notes_of(const TrainArgs& a, const TrainSummary& s) {
-  return box_edge_warnings(s, a.auto_box, [](const std::string& field) {
-    return field == "auto_box"         ? std::string("--auto-box")
-           : field == "search_epsilon" ? std::string("--search-epsilon")
-                                       : flag_for(field, kTrainFlags);
+  return box_edge_warnings(s, a.options.train.auto_box_rounds > 0, [&](const std::string& field) {
+    return flag_for(field, a.flags->flag_table());
   });
 }
 
@@ -127,7 +63,7 @@ nlohmann::ordered_json summary_json(const TrainArgs& a, const CampaignTrainResul
   const Dataset& data = trained.data;
   const DatasetOptions& dataset = trained.dataset;
   const Provenance& p = trained.trained.model.provenance;
-  const std::vector<std::string> notes = notes_of(trained);
+  const std::vector<std::string> notes = notes_of(a, trained);
   {
     nlohmann::ordered_json j;
     j["model"] = a.output;
@@ -142,7 +78,7 @@ nlohmann::ordered_json summary_json(const TrainArgs& a, const CampaignTrainResul
     if (s.method == Method::ssa_svr || s.method == Method::pso_svr || s.method == Method::gwo_svr) {
       const auto& t = s.tuning;
       j["search"] = {{"optimizer", opt::to_string(t.optimizer.algorithm)},
-                     {"population", a.population},
+                     {"population", a.options.train.tune.optimizer.run.population},
                      {"iterations", t.optimizer.iterations},
                      {"evaluations", t.optimizer.evaluations},
                      {"candidates", t.candidates},
@@ -188,13 +124,13 @@ nlohmann::ordered_json summary_json(const TrainArgs& a, const CampaignTrainResul
                        {"expected_share", h.expected_share},
                        {"expected_startup_share", h.expected_startup_share},
                        {"baselines", base},
-                       {"warnings", h.warnings}};
+                       {"warnings", held_out_warnings(h)}};
     } else {
       j["held_out"] = {{"missing", s.held_out_missing}};
     }
     nlohmann::ordered_json warnings = data.warnings;
     if (s.held_out)
-      for (const auto& w : s.held_out->warnings) warnings.push_back(w);
+      for (const auto& w : held_out_warnings(*s.held_out)) warnings.push_back(w);
     j["warnings"] = warnings;
     j["block_s"] = dataset.preprocessing.block.block_s;
     j["rate_window_s"] = dataset.preprocessing.rates.window_s;
@@ -209,7 +145,7 @@ void print_summary(const TrainArgs& a, const CampaignTrainResult& trained,
   const TrainSummary& s = trained.trained.summary;
   const Dataset& data = trained.data;
   const Provenance& p = trained.trained.model.provenance;
-  const std::vector<std::string> notes = notes_of(trained);
+  const std::vector<std::string> notes = notes_of(a, trained);
   const std::vector<std::string> edge_notes = edge_notes_of(a, s);
   {
     std::string hyper;
@@ -248,46 +184,16 @@ void print_summary(const TrainArgs& a, const CampaignTrainResult& trained,
     }
     for (const auto& n : notes) std::cout << "  note: " << n << "\n";
     if (s.held_out)
-      for (const auto& w : s.held_out->warnings) std::cout << "  warning: " << w << "\n";
+      for (const auto& w : held_out_warnings(*s.held_out)) std::cout << "  warning: " << w << "\n";
     for (const auto& n : edge_notes) std::cout << "  warning: " << n << "\n";
     for (const auto& w : data.warnings) std::cout << "  warning: " << w << "\n";
   }
 }
 
-void run(const TrainArgs& a) {
-  TrainOptions options;
-  DatasetOptions dataset;
-  std::vector<std::string> thermometers;  // empty: auto
-  try {
-    options.method = parse_method(a.method, "--method");
-    options.tune.fitness = tune::parse_fitness(a.fitness, "--fitness");
-    options.tune.cv.scheme = tune::parse_cv_scheme(a.cv, "--cv");
-    if (a.thermometers != "auto") thermometers = parse_thermometers(a.thermometers);
-    if (a.features != "auto") dataset.features = FeatureSpec::parse(a.features, thermometers);
-    dataset.preprocessing.rates.causality =
-        signal::parse_causality(a.differentiator, "--differentiator");
-  } catch (const OptionError& e) {
-    throw as_flag(e, kTrainFlags);
-  }
-  options.tune.cv.folds = a.folds;
-  options.tune.optimizer.run.population = a.population;
-  options.tune.optimizer.run.iterations = a.iterations;
-  options.tune.optimizer.run.seed = a.seed;
-  options.tune.cache_mb = a.cache_mb;
-  options.tune.space.c_min = a.c_min;
-  options.tune.space.c_max = a.c_max;
-  options.tune.space.sigma_min = a.sigma_min;
-  options.tune.space.sigma_max = a.sigma_max;
-  options.tune.space.epsilon = a.epsilon;
-  options.tune.space.search_epsilon = a.search_epsilon;
-  options.auto_box_rounds = a.auto_box ? TrainOptions::kAutoBoxRounds : 0;
-  options.tune.racing = !a.no_racing;
-  dataset.denoise_target = !a.no_denoise;
-  options.mlp.hidden = a.hidden;
-  options.poly_max_degree = a.max_degree;
-  options.gp.max_points = a.gp_points;
-  options.gp.ard = a.gp_kernel == "ard";
-  options.gp.selection = parse_gp_selection(a.gp_fit, "--gp-fit");
+void run(TrainArgs& a) {
+  CampaignTrainOptions& campaign_options = a.options;
+  a.flags->apply(train_option_table(), campaign_options);
+  TrainOptions& options = campaign_options.train;
   ThreadPool pool(a.threads);
   options.tune.pool = &pool;
 
@@ -299,21 +205,14 @@ void run(const TrainArgs& a) {
           std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
       std::cerr << fmt::format(
                        "\r{}: iteration {}/{}, best {} RMSE {:.5f}, {} evaluations, {:.0f} s ",
-                       a.method, r.iteration, a.iterations, a.fitness, r.best_fitness,
-                       r.evaluations, s)
+                       to_string(options.method), r.iteration,
+                       options.tune.optimizer.run.iterations, tune::to_string(options.tune.fitness),
+                       r.best_fitness, r.evaluations, s)
                 << std::flush;
       return true;
     };
   }
 
-  CampaignTrainOptions campaign_options;
-  campaign_options.train = options;
-  campaign_options.dataset = dataset;
-  campaign_options.auto_features = a.features == "auto";
-  campaign_options.thermometers = thermometers;
-  campaign_options.block_s = seconds_or_auto(a.block_s, "--block-s");
-  campaign_options.rate_window_s = seconds_or_auto(a.rate_window_s, "--rate-window-s");
-  campaign_options.rate_degree = degree_or_auto(a.rate_degree);
   const Campaign campaign = read_campaign(a.campaign);
   // One model per target column, each with its own search and guard (docs/logs.md, "Every
   // axis"), written as one file.
@@ -333,7 +232,7 @@ void run(const TrainArgs& a) {
       results.push_back(train_campaign(campaign, campaign_options));
     } catch (const OptionError& e) {
       if (show_progress) std::cerr << "\n";
-      throw as_flag(e, kTrainFlags);
+      throw as_flag(e, a.flags->flag_table());
     }
     if (show_progress) std::cerr << "\n";
   }
@@ -405,105 +304,10 @@ void add_train(CLI::App& app) {
   cmd->add_option("campaign", args->campaign, "Campaign folder (or its campaign.json)")->required();
   cmd->add_option("-o,--output", args->output, "Model file to write (JSON, atomically)")
       ->required();
-  cmd->add_option("--method", args->method, "ssa-svr, pso-svr, gwo-svr, svr, bp, poly or gp")
-      ->capture_default_str();
-  cmd->add_option("--fitness", args->fitness, "cv (grouped cross-validation) or train")
-      ->capture_default_str();
-  cmd->add_option(
-         "--features", args->features,
-         "Feature spec: terms T, dT, grad, dgrad, t, TdT, dT@SECONDS (the rate through a "
-         "lag of that time constant), each optionally with its thermometers, e.g. "
-         "'T,dT(fog),grad'; auto: the paper's T,dT,grad and the rates through a 300 s lag, "
-         "T,dT,grad,dT@300, over the thermometers every training recording has "
-         "(T(fog),dT(fog),dT@300(fog) with one; docs/field.md)")
-      ->capture_default_str();
-  cmd->add_option("--thermometers", args->thermometers,
-                  "The thermometers the features read, e.g. fog,acc1,acc2,case: the auto "
-                  "features over them, or what a term of --features without its own list reads. "
-                  "fog, acc1, acc2, or NAME of a further column temp_NAME_degc; the model then "
-                  "needs its reading wherever it runs (stream, export-c). auto: those of fog, "
-                  "acc1, acc2 every training recording has")
-      ->capture_default_str();
-  cmd->add_option("--differentiator", args->differentiator,
-                  "Temperature rates: centred (offline, no delay) or causal (what the instrument "
-                  "can run sample by sample; train with it for a streaming compensator)")
-      ->capture_default_str();
-  cmd->add_option(
-         "--block-s", args->block_s,
-         "Averaging block of the modelling rows, s, a whole number of samples; auto: 10 s, "
-         "or the nearest whole number of samples for a log that 10 s does not divide "
-         "(one sample for logs slower than 0.1 Hz)")
-      ->capture_default_str();
-  cmd->add_option("--rate-window-s", args->rate_window_s,
-                  "Window of the temperature-rate differentiator, s; auto: 121 s centred, "
-                  "61 s causal, at least 5 samples, and (centred) no longer than the shortest "
-                  "recording")
-      ->capture_default_str();
-  cmd->add_option("--rate-degree", args->rate_degree,
-                  "Degree of the polynomial the differentiator fits, 1..4; auto: 2 centred, 1 "
-                  "causal. For causal rates 1 is the least noisy and lags by half the window, 2 "
-                  "does not lag a steady curvature and is about four times noisier "
-                  "(docs/signal.md)")
-      ->capture_default_str();
-  cmd->add_option("--cv", args->cv,
-                  "Folds: auto (temperature with at least three temperatures, else repetition), "
-                  "repetition (leave one out), recording (k folds of whole recordings) or "
-                  "temperature (k folds of whole initial temperatures: the fitness of a model at "
-                  "temperatures it never saw). bp, which is not refitted after early stopping, "
-                  "stops on a third of the recordings unless repetition or recording is asked")
-      ->capture_default_str();
-  cmd->add_option("--folds", args->folds, "k for --cv recording or temperature")
-      ->capture_default_str();
-  cmd->add_option("--population", args->population, "Optimizer population")->capture_default_str();
-  cmd->add_option("--iterations", args->iterations, "Optimizer iterations")->capture_default_str();
-  cmd->add_option("--seed", args->seed, "Seed of the search (and of BP's weights)")
-      ->capture_default_str();
+  args->flags = std::make_shared<OptionFlags>(cmd, specs_of(train_option_table()),
+                                              defaults_of(train_option_table()));
   cmd->add_option("--threads", args->threads,
                   "Threads (0: one per core); results do not depend on it")
-      ->capture_default_str();
-  cmd->add_option("--cache-mb", args->cache_mb,
-                  "Kernel-row cache of each SVR fit, MB (one fit per thread): less memory, "
-                  "slower fits")
-      ->capture_default_str();
-  cmd->add_option("--c-min", args->c_min, "Smallest C searched")->capture_default_str();
-  cmd->add_option("--c-max", args->c_max, "Largest C searched")->capture_default_str();
-  cmd->add_option("--sigma-min", args->sigma_min, "Smallest σ searched (standardised features)")
-      ->capture_default_str();
-  cmd->add_option("--sigma-max", args->sigma_max, "Largest σ searched")->capture_default_str();
-  cmd->add_option("--epsilon", args->epsilon, "ε of the tube (standardised target)")
-      ->capture_default_str();
-  cmd->add_flag("--search-epsilon", args->search_epsilon, "Also search ε in [0.001, 1]");
-  cmd->add_flag("--no-denoise", args->no_denoise,
-                "Train on the raw gyro, not its wavelet-denoised version (for recordings too "
-                "short to denoise, or already smooth: a log of burst means)");
-  cmd->add_flag("--auto-box", args->auto_box,
-                fmt::format("When the best C, σ or ε lies on an edge of its box, widen the box a "
-                            "decade there and search again (at most {} times); train warns of "
-                            "such edges either way",
-                            TrainOptions::kAutoBoxRounds));
-  cmd->add_flag("--no-racing", args->no_racing,
-                "Fit every fold of every candidate. By default a candidate whose held-out errors "
-                "on the folds fitted so far already exceed the best candidate's leaves the "
-                "search: the same best among the candidates visited, in about half the fits "
-                "(docs/tuning.md)");
-  cmd->add_option("--hidden", args->hidden, "bp: hidden tanh units")->capture_default_str();
-  cmd->add_option("--max-degree", args->max_degree, "poly: highest degree tried")
-      ->capture_default_str();
-  cmd->add_option("--gp-points", args->gp_points,
-                  "gp: training rows the Gaussian process keeps, evenly spaced, 10 … 4000; its "
-                  "time grows as the cube, its C header's work per sample linearly")
-      ->capture_default_str();
-  cmd->add_option("--gp-fit", args->gp_fit,
-                  "gp: how the hyperparameters are chosen: cv, the length scale and the noise "
-                  "ratio by the search over --cv's folds, as the SVR's C and σ (population, "
-                  "iterations and seed as above); likelihood, all of them by the marginal "
-                  "likelihood, which favours short length scales on start-up data (docs/gp.md)")
-      ->check(CLI::IsMember({"cv", "likelihood"}))
-      ->capture_default_str();
-  cmd->add_option("--gp-kernel", args->gp_kernel,
-                  "gp: rbf, one length scale for all features, or ard, one per feature "
-                  "(with --gp-fit likelihood)")
-      ->check(CLI::IsMember({"ard", "rbf"}))
       ->capture_default_str();
   cmd->add_option("--targets", args->targets,
                   "The columns to compensate, comma-separated: gyro_dph and further gyro axes the "

@@ -27,6 +27,8 @@ enum class CvScheme {
 };
 std::string to_string(CvScheme scheme);
 CvScheme parse_cv_scheme(const std::string& text, const std::string& option = "cv");
+/// "auto, repetition, recording, temperature": the names parse_cv_scheme takes.
+std::string cv_scheme_names();
 
 struct CvOptions {
   CvScheme scheme = CvScheme::automatic;

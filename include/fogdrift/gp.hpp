@@ -46,6 +46,8 @@ enum class GpSelection {
 /// "cv", "likelihood".
 std::string_view to_string(GpSelection selection);
 GpSelection parse_gp_selection(const std::string& text, const std::string& option = "gp_fit");
+/// "cv, likelihood".
+std::string gp_selection_names();
 
 /// The box of the cross-validated search, in natural units; it searches log10 of each.
 struct GpSearchBox {

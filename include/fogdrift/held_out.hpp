@@ -42,7 +42,8 @@ struct HeldOutReport {
   /// The model removes less than 10 % (or does no better than the mean), and then also when no
   /// temperature line beats the mean by 5 % (no temperature signal); or it does no better than a
   /// straight line in one temperature; or it removes less than 65 % of the variation within a
-  /// start-up. Empty when the model beats them all.
+  /// start-up. Empty when the model beats them all. Options named in their advice are written
+  /// "{keyword}", for each front end to show in its own words (in_option_words).
   std::vector<std::string> warnings;
 };
 

@@ -30,6 +30,8 @@ enum class Method { ssa_svr, pso_svr, gwo_svr, svr, bp, poly, gp };
 /// "ssa-svr", "pso-svr", "gwo-svr", "svr", "bp", "poly", "gp".
 std::string to_string(Method method);
 Method parse_method(const std::string& text, const std::string& option = "method");
+/// "ssa-svr, pso-svr, gwo-svr, svr, bp, poly, gp": the names parse_method takes.
+std::string method_names();
 
 struct SourceFile {
   std::string path;    ///< as the campaign manifest names it

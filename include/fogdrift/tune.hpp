@@ -52,6 +52,8 @@ enum class Fitness {
 };
 std::string to_string(Fitness fitness);
 Fitness parse_fitness(const std::string& text, const std::string& option = "fitness");
+/// "cv, train".
+std::string fitness_names();
 
 /// The search box, in natural units; the optimizer sees log10 of each. σ is in standardised
 /// feature units, ε in standardised target units.

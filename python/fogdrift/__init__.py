@@ -24,18 +24,23 @@ The package wraps fogdrift's C++ library (docs/python.md):
 """
 from ._fogdrift import (Model, StreamingCompensator, __version__, allan_deviation, denoise,
                         evaluate, features, find_north, noise_terms, northfind, read_recording,
-                        release_memory, save_models, simulate, train, write_recording)
+                        release_memory, save_models, simulate, train, train_options,
+                        write_recording)
 from ._keywords import method_naming_keywords, naming_keywords
+from ._options import with_options
 from .fleet import train_fleet
 from .search import SVRGridSearchCV
 from .svr import SVR
 
 # A wrong type is a TypeError naming the keyword, not the whole signature (_keywords.py).
 (allan_deviation, denoise, evaluate, features, find_north, noise_terms, northfind, read_recording,
- save_models, simulate, train, write_recording) = (
+ save_models, simulate, write_recording) = (
     naming_keywords(f) for f in (allan_deviation, denoise, evaluate, features, find_north,
                                  noise_terms, northfind, read_recording, save_models, simulate,
-                                 train, write_recording))
+                                 write_recording))
+# train checks its keywords against the library's descriptions of them (docs/options.md); its
+# signature and docstring come from the same descriptions (_options.py).
+train = with_options(train, train_options())
 for _method in ("__init__", "update", "run"):
     method_naming_keywords(StreamingCompensator, _method)
 for _method in ("predict", "compensate", "save", "to_json"):
@@ -47,4 +52,5 @@ del _method
 __all__ = ["Model", "SVR", "SVRGridSearchCV", "StreamingCompensator", "allan_deviation",
            "denoise", "evaluate", "features", "find_north", "noise_terms", "northfind",
            "read_recording", "release_memory", "save_models", "simulate", "train", "train_fleet",
+           "train_options",
            "write_recording", "__version__"]

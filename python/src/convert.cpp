@@ -10,6 +10,7 @@
 #include "fogdrift/csv.hpp"
 #include "fogdrift/error.hpp"
 #include "fogdrift/features.hpp"
+#include "fogdrift/train_option_table.hpp"
 
 namespace py = pybind11;
 
@@ -105,11 +106,8 @@ Recording to_recording(const py::object& columns, const std::string& source, boo
 }
 
 std::string keyword_of(const std::string& field) {
-  static const std::pair<const char*, const char*> kOther[] = {
-      {"degree", "max_degree"}, {"window_s", "rate_window_s"}, {"poly_order", "rate_degree"}};
-  for (const auto& [library, keyword] : kOther)
-    if (field == library) return keyword;
-  return field;
+  static const std::vector<OptionSpec> specs = specs_of(train_option_table());
+  return option_word(specs, field, false);
 }
 
 std::optional<double> seconds_or_auto(const py::object& value, const char* name) {

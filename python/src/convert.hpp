@@ -37,9 +37,9 @@ pybind11::dict to_dict(const Recording& recording);
 Recording to_recording(const pybind11::object& columns, const std::string& source,
                        bool keep_others = false);
 
-/// The Python keyword of a library field that Python names otherwise (max_degree for degree,
-/// rate_window_s for window_s, rate_degree for poly_order): the Python front end's one table of
-/// such names, as the command line's flag tables are its own. Any other field is its keyword.
+/// The Python keyword of a library field: the keyword of the option of fogdrift.train that sets
+/// it (train_option_table.hpp: max_degree for degree, rate_window_s for window_s, rate_degree
+/// for poly_order), else the field's own name.
 std::string keyword_of(const std::string& field);
 
 /// f(), with an OptionError it throws naming the keyword of its field (keyword_of).

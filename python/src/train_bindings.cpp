@@ -6,6 +6,7 @@
 #include <pybind11/stl.h>
 #include <pybind11/stl/filesystem.h>
 
+#include <algorithm>
 #include <exception>
 #include <optional>
 #include <string>
@@ -18,80 +19,99 @@
 #include "fogdrift/signal/differentiate.hpp"
 #include "fogdrift/thread_pool.hpp"
 #include "fogdrift/train_campaign.hpp"
+#include "fogdrift/train_option_table.hpp"
+#include "option_keywords.hpp"
 
 namespace py = pybind11;
 
 namespace fogdrift::python {
 namespace {
 
-const TrainOptions kTrain;
-const opt::RunOptions kRun;
-const tune::SearchSpace kSpace;
+// The keywords only Python has: how the call runs and what it returns, not what the model is.
+// `progress` is described here and read by hand (a callable has no text).
+const std::vector<OptionSpec>& python_only() {
+  static const std::vector<OptionSpec> specs = {
+      {"threads",
+       "",
+       OptionType::whole,
+       "",
+       "",
+       "Threads (0: one per core); results do not depend on it",
+       {}},
+      {"target",
+       "",
+       OptionType::text,
+       "",
+       "",
+       "The column to compensate, gyro_dph or another gyro axis the recordings carry "
+       "(gyro_y_dph, ...), an accelerometer (accel_x_g, accel_NAME_g) or a scale-factor channel "
+       "(sf_NAME_ppm), each less its reference in the manifest (docs/logs.md, \"Other "
+       "targets\"); save_models writes the models of every axis as one file, as `fogdrift train "
+       "--targets` does",
+       {}},
+      {"progress",
+       "",
+       OptionType::text,
+       "",
+       "",
+       "Called after each iteration of a search with a dict (iteration, iterations, "
+       "evaluations, best_rmse, best_point); returning False stops the search",
+       {}},
+      {"validate_only",
+       "",
+       OptionType::on_off,
+       "",
+       "",
+       "Check the options and return None without reading the campaign (train_fleet does, "
+       "once, before any unit runs)",
+       {}}};
+  return specs;
+}
 
-py::object train(const py::object& campaign, const std::string& method, const std::string& fitness,
-                 const std::string& cv, std::size_t folds, const std::string& features,
-                 const py::object& thermometers, const std::string& differentiator,
-                 const py::object& block_s, const py::object& rate_window_s,
-                 const py::object& rate_degree, std::size_t population, std::size_t iterations,
-                 std::uint64_t seed, int threads, double c_min, double c_max, double sigma_min,
-                 double sigma_max, double epsilon, bool search_epsilon, bool auto_box, bool racing,
-                 bool denoise, std::size_t hidden, std::size_t max_degree, std::size_t gp_points,
-                 const std::string& gp_fit, const std::string& gp_kernel,
-                 const py::object& progress, const std::string& target, bool validate_only) {
+const std::vector<std::string> kPythonOnlyDefaults = {"0", "gyro_dph", "None", "false"};
+
+py::object train(const py::object& campaign, const py::kwargs& kwargs) {
+  const OptionTable<CampaignTrainOptions>& table = train_option_table();
+  const std::vector<OptionSpec> specs = specs_of(table);
+  for (const auto& [key, value] : kwargs) {
+    const auto k = key.cast<std::string>();
+    const bool known =
+        find_option(table, k) || std::any_of(python_only().begin(), python_only().end(),
+                                             [&](const OptionSpec& s) { return s.keyword == k; });
+    if (!known) {
+      std::string all;
+      for (const auto& s : specs) all += (all.empty() ? "" : ", ") + s.keyword;
+      for (const auto& s : python_only()) all += ", " + s.keyword;
+      throw py::type_error(fmt::format(
+          "train() got an unexpected keyword argument '{}'; its keywords are campaign, {}", k,
+          all));
+    }
+  }
+  const auto given = [&](const std::string& k) { return kwargs.contains(k.c_str()); };
+  const auto text_of = [&](const OptionSpec& spec) {
+    return keyword_text(spec, kwargs[spec.keyword.c_str()], "train");
+  };
   CampaignTrainOptions o;
+  // The table's options in its order (features after thermometers), errors in keywords.
+  in_keywords([&] {
+    for (const auto& option : table)
+      if (given(option.spec.keyword)) option.set(o, text_of(option.spec));
+  });
+  const auto& extra = python_only();
+  const std::string target = given("target") ? text_of(extra[1]) : kPythonOnlyDefaults[1];
   target_of(target, "target");
   o.dataset.target_column = target;
+  std::uint64_t threads = 0;
+  if (given("threads")) threads = parse_whole_option(extra[0], text_of(extra[0]));
+  const bool validate_only =
+      given("validate_only") && parse_on_off_option(extra[3], text_of(extra[3]));
+  py::object progress = py::none();
+  if (given("progress")) progress = kwargs["progress"];
+  if (!progress.is_none() && !PyCallable_Check(progress.ptr()))
+    throw py::type_error("train(): progress must be callable or None, not " +
+                         py::type::of(progress).attr("__name__").cast<std::string>());
   TrainOptions& t = o.train;
-  t.method = parse_method(method, "method");
-  t.tune.fitness = tune::parse_fitness(fitness, "fitness");
-  t.tune.cv.scheme = tune::parse_cv_scheme(cv, "cv");
-  t.tune.cv.folds = folds;
-  // "auto", a list of names, or one comma-separated string of them (train --thermometers).
-  std::vector<std::string> listed;
-  if (py::isinstance<py::str>(thermometers)) {
-    if (thermometers.cast<std::string>() != "auto")
-      listed = parse_thermometers(thermometers.cast<std::string>());
-  } else {
-    std::string joined;
-    for (const py::handle& name : thermometers) {
-      if (!py::isinstance<py::str>(name))
-        throw py::type_error("thermometers: 'auto' or a list of names such as ['fog', 'case']");
-      joined += (joined.empty() ? "" : ",") + name.cast<std::string>();
-    }
-    listed = parse_thermometers(joined);
-  }
-  o.auto_features = features == "auto";
-  o.thermometers = listed;
-  if (!o.auto_features) o.dataset.features = FeatureSpec::parse(features, listed);
-  o.dataset.preprocessing.rates.causality = signal::parse_causality(differentiator);
-  o.block_s = seconds_or_auto(block_s, "block_s");
-  o.rate_window_s = seconds_or_auto(rate_window_s, "rate_window_s");
-  if (!(py::isinstance<py::str>(rate_degree) && rate_degree.cast<std::string>() == "auto")) {
-    if (!py::isinstance<py::int_>(rate_degree) || rate_degree.cast<long>() < 1 ||
-        rate_degree.cast<long>() > 4)
-      throw OptionError("rate_degree", "must be 'auto' or a whole degree 1..4 (got " +
-                                           py::repr(rate_degree).cast<std::string>() + ")");
-    o.rate_degree = rate_degree.cast<int>();
-  }
-  o.dataset.denoise_target = denoise;
-  t.tune.optimizer.run.population = population;
-  t.tune.optimizer.run.iterations = iterations;
-  t.tune.optimizer.run.seed = seed;
-  t.tune.space.c_min = c_min;
-  t.tune.space.c_max = c_max;
-  t.tune.space.sigma_min = sigma_min;
-  t.tune.space.sigma_max = sigma_max;
-  t.tune.space.epsilon = epsilon;
-  t.tune.space.search_epsilon = search_epsilon;
-  t.auto_box_rounds = auto_box ? TrainOptions::kAutoBoxRounds : 0;
-  t.tune.racing = racing;
-  t.mlp.hidden = hidden;
-  t.poly_max_degree = max_degree;
-  t.gp.max_points = gp_points;
-  t.gp.selection = parse_gp_selection(gp_fit, "gp_fit");
-  if (gp_kernel != "rbf" && gp_kernel != "ard")
-    throw OptionError("gp_kernel", fmt::format("'{}' is not rbf or ard", gp_kernel));
-  t.gp.ard = gp_kernel == "ard";
+  const std::size_t iterations = t.tune.optimizer.run.iterations;
   // The callback runs on the training thread with the GIL taken; an exception in it stops the
   // search and is raised when train returns.
   std::exception_ptr callback_error;
@@ -113,10 +133,6 @@ py::object train(const py::object& campaign, const std::string& method, const st
       }
     };
   // What can be checked without the data (train_fleet: once, before any unit runs).
-  if (threads < 0)
-    throw OptionError("threads", fmt::format("{} is not a number of threads: 0 (every core) or "
-                                             "more",
-                                             threads));
   if (validate_only) {
     in_keywords([&] { validate(t); });
     return py::none();
@@ -196,9 +212,12 @@ py::object train(const py::object& campaign, const std::string& method, const st
     held["expected_startup_share"] = h.expected_startup_share;
     held["baselines"] = base;
     summary["held_out"] = held;
-    warnings.insert(warnings.end(), h.warnings.begin(), h.warnings.end());
+    // Its advice in this function's keywords.
+    std::vector<std::string> advice;
+    for (const auto& w : h.warnings) advice.push_back(in_option_words(w, specs, false));
+    warnings.insert(warnings.end(), advice.begin(), advice.end());
     // A model that does not beat the baselines is a warning a Python user sees, not only a key.
-    for (const std::string& w : h.warnings) warn(w.c_str());
+    for (const std::string& w : advice) warn(w.c_str());
   } else {
     summary["held_out"] = py::none();
   }
@@ -227,7 +246,7 @@ py::object train(const py::object& campaign, const std::string& method, const st
     const auto& tr = s.tuning;
     py::dict search;
     search["optimizer"] = opt::to_string(tr.optimizer.algorithm);
-    search["population"] = population;
+    search["population"] = t.tune.optimizer.run.population;
     search["iterations"] = tr.optimizer.iterations;
     search["evaluations"] = tr.optimizer.evaluations;
     search["candidates"] = tr.candidates;
@@ -240,10 +259,11 @@ py::object train(const py::object& campaign, const std::string& method, const st
     summary["search"] = py::none();
   }
   // The box-edge warning the command line prints, in this function's keywords, as a warning.
-  for (const std::string& w : box_edge_warnings(s, auto_box, [](const std::string& field) {
+  for (const std::string& w :
+       box_edge_warnings(s, t.auto_box_rounds > 0, [&](const std::string& field) {
          return field == "auto_box"         ? std::string("auto_box=True")
                 : field == "search_epsilon" ? std::string("search_epsilon=True")
-                                            : field;
+                                            : option_word(specs, field, false);
        })) {
     warnings.push_back(w);
     warn(w.c_str());
@@ -260,43 +280,25 @@ py::object train(const py::object& campaign, const std::string& method, const st
 }  // namespace
 
 void bind_train(py::module_& m) {
+  m.def("train", &train, py::arg("campaign"),
+        "Trains a compensation model on a campaign's training recordings, as `fogdrift train` "
+        "does; returns {'model': Model, 'summary': dict}. campaign: a folder (or its "
+        "campaign.json), or a campaign in memory: a dict with the manifest's fields and 'data', "
+        "one recording per entry (what fogdrift.simulate returns); the same model bytes either "
+        "way. Its keywords are `fogdrift train`'s options under their library names "
+        "(docs/options.md), then threads, target, progress and validate_only.");
   m.def(
-      "train", &train, py::arg("campaign"), py::kw_only(),
-      py::arg("method") = to_string(kTrain.method),
-      py::arg("fitness") = std::string(tune::to_string(kTrain.tune.fitness)),
-      py::arg("cv") = std::string(tune::to_string(kTrain.tune.cv.scheme)),
-      py::arg("folds") = kTrain.tune.cv.folds, py::arg("features") = "auto",
-      py::arg("thermometers") = "auto",
-      py::arg("differentiator") = std::string(signal::to_string(FeatureOptions{}.rates.causality)),
-      py::arg("block_s") = "auto", py::arg("rate_window_s") = "auto",
-      py::arg("rate_degree") = "auto", py::arg("population") = kRun.population,
-      py::arg("iterations") = kRun.iterations, py::arg("seed") = kRun.seed, py::arg("threads") = 0,
-      py::arg("c_min") = kSpace.c_min, py::arg("c_max") = kSpace.c_max,
-      py::arg("sigma_min") = kSpace.sigma_min, py::arg("sigma_max") = kSpace.sigma_max,
-      py::arg("epsilon") = kSpace.epsilon, py::arg("search_epsilon") = false,
-      py::arg("auto_box") = false, py::arg("racing") = kTrain.tune.racing,
-      py::arg("denoise") = true, py::arg("hidden") = kTrain.mlp.hidden,
-      py::arg("max_degree") = kTrain.poly_max_degree, py::arg("gp_points") = kTrain.gp.max_points,
-      py::arg("gp_fit") = std::string(to_string(kTrain.gp.selection)),
-      py::arg("gp_kernel") = kTrain.gp.ard ? "ard" : "rbf", py::arg("progress") = py::none(),
-      py::arg("target") = "gyro_dph", py::arg("validate_only") = false,
-      "Trains a compensation model on a campaign's training recordings, as `fogdrift train` "
-      "does; returns {'model': Model, 'summary': dict}. campaign: a folder (or its "
-      "campaign.json), or a campaign in memory: a dict with the manifest's fields and 'data', "
-      "one recording per entry (what fogdrift.simulate returns); the same model bytes either "
-      "way. thermometers: the thermometers the features read, e.g. ['fog', 'acc1', 'acc2', "
-      "'case'] for a further column temp_case_degc (docs/logs.md, \"More thermometers\"); "
-      "'auto': those of fog, acc1, acc2 every recording has. target: the column to "
-      "compensate, gyro_dph or another gyro axis the recordings carry (gyro_y_dph, ...), an "
-      "accelerometer (accel_x_g, accel_NAME_g) or a scale-factor channel (sf_NAME_ppm), each "
-      "less its reference in the manifest (docs/logs.md, \"Other targets\"); save_models writes "
-      "the models of every axis as one file, as "
-      "`fogdrift train --targets` does. racing: stop a search's candidate once its folds so far "
-      "cannot beat the best (False fits every fold, as `train --no-racing`; docs/tuning.md, "
-      "\"Speed\"). method='gp': a Gaussian process (docs/gp.md); gp_points, gp_fit ('cv' or "
-      "'likelihood') and gp_kernel ('rbf' or 'ard') as `train --gp-points/--gp-fit/--gp-kernel`. "
-      "validate_only: check the options and return None "
-      "without reading the campaign (train_fleet does, once, before any unit runs).");
+      "train_options",
+      [] {
+        py::list out =
+            describe_options(specs_of(train_option_table()), defaults_of(train_option_table()));
+        py::list extra = describe_options(python_only(), kPythonOnlyDefaults);
+        for (const auto& d : extra) out.append(d);
+        return out;
+      },
+      "fogdrift.train's keywords, in order: one dict per keyword with its type, default (as "
+      "text), unit, doc and the flag of `fogdrift train` that sets it (empty for the keywords "
+      "only Python has).");
   m.def(
       "save_models",
       [](const std::filesystem::path& path, const std::vector<CompensationModel>& models) {

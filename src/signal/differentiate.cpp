@@ -76,6 +76,10 @@ Causality parse_causality(std::string_view text, std::string_view option) {
   return parse_in(kCausalityNames, text, option, "a differentiator");
 }
 
+std::string causality_names() {
+  return names_in(kCausalityNames);
+}
+
 DifferentiatorOptions recommended_rates(Causality causality) {
   DifferentiatorOptions o;
   o.causality = causality;

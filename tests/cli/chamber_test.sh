@@ -207,6 +207,7 @@ check "the warning names the option" out_has "(give it with fogdrift campaign --
 check "train a gyro, accelerometers and a scale factor" run 0 "$fd" train campo -o mo.json --targets gyro_dph,accel_x_g,accel_z_g,sf_gx_ppm
 check "four in one file" out_has "wrote mo.json (4 axes)"
 check "the scale factor is a line in the plate's temperature" out_has "warning: a straight line in T_acc2_degc predicts the held-out drift as well as the model"
+check "the advice is in flags" out_has "a straight line in it (--method poly, --max-degree 1, --features 'T(acc2)') is simpler to trust"
 check "train the scale factor as train advises" run 0 "$fd" train campo -o sf.json --targets sf_gx_ppm --method poly --max-degree 1 --features 'T(acc2)' -q
 check "compensate every target" run 0 "$fd" compensate mo.json campo/joined_05.csv -o compo.csv
 check "an accelerometer in g" out_has "accelerometer STD"

@@ -323,7 +323,7 @@ check "causal rates in the model" grep -q '"causality": "causal"' "$work/causal.
 check "bad differentiator" run 1 "$fd" train "$work/small" --differentiator future -o "$work/x.json"
 check "differentiator message" err_has "option --differentiator: 'future' is not a differentiator"
 check "bad rate degree" run 1 "$fd" train "$work/small" --rate-degree 5 -o "$work/x.json"
-check "rate degree message" err_has "option --rate-degree: '5' is neither auto nor a whole degree 1..4"
+check "rate degree message" err_has "option --rate-degree: 5 is outside 1 … 4"
 check "causal rates fit a line by default" grep -q '"poly_order": 1' "$work/causal.json"
 check "over 61 s by default" grep -q '"window_s": 61' "$work/causal.json"
 check "train with a causal parabola fit" run 0 "$fd" train "$work/small" --method poly --differentiator causal --rate-degree 2 -q -o "$work/parabola.json"

@@ -195,12 +195,14 @@ def test_train_options_and_errors_use_the_librarys_names(trained):
     for kwargs, message in [
             (dict(method="svm"), "option method: 'svm' is not a method"),
             (dict(population=1), "option population: 1 is too small"),
-            (dict(block_s="soon"), "option block_s: must be 'auto' or a number of seconds"),
+            (dict(block_s="soon"), "option block_s: 'soon' is neither auto nor a number of seconds"),
             (dict(features="T(gps)"), "gps"),
             # The library's fields under this function's keywords, not degree or window_s.
             (dict(method="poly", max_degree=99), "option max_degree: 99 is outside"),
             (dict(rate_window_s=3.0), "option rate_window_s: a window of 3"),
-            (dict(threads=-1), "option threads: -1 is not a number of threads"),
+            (dict(threads=-1), "option threads: '-1' is not a whole number ≥ 0"),
+            # The epsilon search's own bounds, not --epsilon's (issue 34).
+            (dict(search_epsilon=True, epsilon_min=0.0), "option epsilon_min: 0 must be finite"),
     ]:
         with pytest.raises(ValueError, match=message):
             fogdrift.train(d / "cal", **kwargs)
@@ -241,11 +243,16 @@ def test_a_gaussian_process_trains_as_the_command_line_does(trained, tmp_path, c
 
 def test_train_rejects_a_block_that_is_not_a_positive_number(trained):
     d, _, _ = trained
-    with pytest.raises(ValueError, match="option rate_window_s: must be 'auto' or a number"):
+    with pytest.raises(ValueError,
+                       match="option rate_window_s: '-5' is neither auto nor a number of seconds"):
         fogdrift.train(d / "cal", method="svr", rate_window_s=-5)
-    for bad in (0, 5, 1.5, "two"):
-        with pytest.raises(ValueError, match="option rate_degree: must be 'auto' or a whole"):
+    for bad, message in [(0, "0 is outside 1 … 4"), (5, "5 is outside 1 … 4"),
+                         ("two", "'two' is neither auto nor a whole number")]:
+        with pytest.raises(ValueError, match="option rate_degree: " + message):
             fogdrift.train(d / "cal", method="svr", rate_degree=bad)
+    with pytest.raises(TypeError, match=r"train\(\): rate_degree must be 'auto' or an int, not "
+                                        r"float \(1.5\)"):
+        fogdrift.train(d / "cal", method="svr", rate_degree=1.5)
 
 
 def test_causal_rates_default_to_a_line_over_61_s(trained):

@@ -33,6 +33,8 @@ enum class Causality {
 
 std::string_view to_string(Causality causality);
 Causality parse_causality(std::string_view text, std::string_view option = "differentiator");
+/// "centred, causal".
+std::string causality_names();
 
 struct DifferentiatorOptions {
   /// Fit window length, seconds; rounded to the nearest whole number of samples, then up to an

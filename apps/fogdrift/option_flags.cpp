@@ -1,0 +1,74 @@
+// Flags from option descriptions (option_flags.hpp).
+#include "option_flags.hpp"
+
+#include <fmt/format.h>
+#include <CLI/CLI.hpp>
+
+namespace fogdrift::app {
+namespace {
+
+/// What --help shows after a flag for its value.
+std::string type_name(const OptionSpec& spec) {
+  switch (spec.type) {
+    case OptionType::whole:
+      return "UINT";
+    case OptionType::number:
+      return spec.unit.empty() ? "NUMBER" : spec.unit;
+    case OptionType::seconds_or_auto:
+      return "auto|s";
+    case OptionType::whole_or_auto:
+      return "auto|UINT";
+    case OptionType::choice:
+      return "NAME";
+    case OptionType::names:
+      return "NAME,...";
+    case OptionType::text:
+    case OptionType::on_off:
+      break;
+  }
+  return "TEXT";
+}
+
+}  // namespace
+
+OptionFlags::OptionFlags(CLI::App* cmd, std::vector<OptionSpec> specs,
+                         std::vector<std::string> defaults)
+    : specs_(std::move(specs)), defaults_(std::move(defaults)) {
+  for (std::size_t i = 0; i < specs_.size(); ++i) {
+    const OptionSpec& s = specs_[i];
+    const std::string help = option_help(s, specs_, true);
+    texts_.push_back(std::make_unique<std::string>(defaults_[i]));
+    if (s.type == OptionType::on_off) {
+      const bool on = defaults_[i] == "true";
+      options_.push_back(cmd->add_flag(
+          s.flag,
+          on ? fmt::format("Turns {} off, which is on by default. {}", s.keyword, help) : help));
+    } else {
+      options_.push_back(cmd->add_option(s.flag, *texts_.back(), help)
+                             ->type_name(type_name(s))
+                             ->default_str(defaults_[i]));
+    }
+    flag_table_[s.keyword] = s.flag;
+    for (const std::string& field : s.fields) flag_table_[field] = s.flag;
+  }
+}
+
+std::vector<std::pair<std::string, std::string>> OptionFlags::given() const {
+  std::vector<std::pair<std::string, std::string>> out;
+  for (std::size_t i = 0; i < specs_.size(); ++i) {
+    if (options_[i]->count() == 0) continue;
+    if (specs_[i].type == OptionType::on_off)
+      out.emplace_back(specs_[i].keyword, defaults_[i] == "true" ? "false" : "true");
+    else
+      out.emplace_back(specs_[i].keyword, *texts_[i]);
+  }
+  return out;
+}
+
+bool OptionFlags::was_given(const std::string& keyword) const {
+  for (std::size_t i = 0; i < specs_.size(); ++i)
+    if (specs_[i].keyword == keyword) return options_[i]->count() > 0;
+  return false;
+}
+
+}  // namespace fogdrift::app

@@ -1,0 +1,53 @@
+// The command line's flags of an option table (option_table.hpp): one flag per option, its help
+// text, type name and default from the option's description, and the user's values handed back
+// in the table's order for the library to apply.
+#pragma once
+
+#include <memory>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "cli_util.hpp"
+#include "fogdrift/option_table.hpp"
+
+namespace CLI {
+class App;
+class Option;
+}  // namespace CLI
+
+namespace fogdrift::app {
+
+class OptionFlags {
+ public:
+  /// Adds a flag to `cmd` for each option: an on/off option off by default is a flag that turns
+  /// it on; one on by default a flag (its OptionSpec::flag, --no-NAME) that turns it off.
+  OptionFlags(CLI::App* cmd, std::vector<OptionSpec> specs, std::vector<std::string> defaults);
+
+  /// (keyword, text) of each option given on the command line, in the table's order.
+  std::vector<std::pair<std::string, std::string>> given() const;
+
+  /// Whether the option `keyword` was given.
+  bool was_given(const std::string& keyword) const;
+
+  /// The library's fields (each option's keyword and OptionSpec::fields) and their flags, for
+  /// as_flag.
+  const FlagTable& flag_table() const { return flag_table_; }
+
+  /// Sets every option given in `options`; an OptionError is named by its flag.
+  template <class O>
+  void apply(const OptionTable<O>& table, O& options) const {
+    with_flags(flag_table_, [&] {
+      for (const auto& [keyword, text] : given()) apply_option(table, options, keyword, text);
+    });
+  }
+
+ private:
+  std::vector<OptionSpec> specs_;
+  std::vector<std::string> defaults_;
+  std::vector<std::unique_ptr<std::string>> texts_;  // stable addresses for CLI11
+  std::vector<CLI::Option*> options_;
+  FlagTable flag_table_;
+};
+
+}  // namespace fogdrift::app

@@ -1,0 +1,43 @@
+"""fogdrift.train's signature and docstring, from the one description of each option.
+
+The compiled ``train`` takes its options as keywords and checks each against the description
+fogdrift's library keeps of it (docs/options.md), the same one ``fogdrift train``'s flags come
+from. ``with_options`` gives the Python function the signature and docstring those descriptions
+make, so that ``help(fogdrift.train)``, ``inspect.signature`` and editors show every keyword with
+its default.
+"""
+import functools
+import inspect
+
+
+def _value(option):
+    """The Python value of an option's default, written as text in the description."""
+    text, kind = option["default"], option["type"]
+    if text == "None":
+        return None
+    if kind == "on/off":
+        return text == "true"
+    if kind in ("whole", "whole or auto") and text != "auto":
+        return int(text)
+    if kind in ("number", "seconds or auto") and text != "auto":
+        return float(text)
+    return text
+
+
+def with_options(function, options, first="campaign"):
+    """`function` with a signature (`first`, then every option, keyword-only) and a docstring
+    listing each option as the descriptions give it."""
+    @functools.wraps(function)
+    def call(*args, **kwargs):
+        return function(*args, **kwargs)
+
+    parameters = [inspect.Parameter(first, inspect.Parameter.POSITIONAL_OR_KEYWORD)]
+    parameters += [inspect.Parameter(o["keyword"], inspect.Parameter.KEYWORD_ONLY,
+                                     default=_value(o)) for o in options]
+    call.__signature__ = inspect.Signature(parameters)
+    lines = [function.__doc__.strip().split("\n")[-1], "", "Keywords:"]
+    for o in options:
+        flag = f" (fogdrift train {o['flag']})" if o["flag"] else ""
+        lines.append(f"    {o['keyword']} = {_value(o)!r}{flag}: {o['doc']}")
+    call.__doc__ = "\n".join(lines)
+    return call

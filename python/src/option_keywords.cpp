@@ -1,0 +1,121 @@
+// Option descriptions as Python keywords (option_keywords.hpp).
+#include "option_keywords.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+
+namespace py = pybind11;
+
+namespace fogdrift::python {
+namespace {
+
+bool is_bool(const py::handle& v) {
+  return PyBool_Check(v.ptr()) || py::isinstance(v, py::module_::import("numpy").attr("bool_"));
+}
+
+/// An int, or any integer type (NumPy's) that is not a bool.
+bool is_whole(const py::handle& v) {
+  return !is_bool(v) && PyIndex_Check(v.ptr());
+}
+
+bool is_number(const py::handle& v) {
+  return !is_bool(v) && (PyFloat_Check(v.ptr()) || PyIndex_Check(v.ptr()) ||
+                         py::isinstance(v, py::module_::import("numpy").attr("floating")));
+}
+
+std::string whole_text(const py::handle& v) {
+  return py::str(py::reinterpret_steal<py::object>(PyNumber_Index(v.ptr()))).cast<std::string>();
+}
+
+std::string number_text(const py::handle& v) {
+  return option_number_text(py::float_(py::reinterpret_borrow<py::object>(v)).cast<double>());
+}
+
+/// What values of `type` Python takes, for the TypeError.
+std::string_view python_what(OptionType type) {
+  switch (type) {
+    case OptionType::whole:
+      return "an int";
+    case OptionType::number:
+      return "a number";
+    case OptionType::seconds_or_auto:
+      return "'auto' or a number of seconds";
+    case OptionType::whole_or_auto:
+      return "'auto' or an int";
+    case OptionType::choice:
+    case OptionType::text:
+      return "a str";
+    case OptionType::names:
+      return "a str or a list of str";
+    case OptionType::on_off:
+      return "a bool";
+  }
+  return "?";
+}
+
+}  // namespace
+
+std::string keyword_text(const OptionSpec& spec, const py::handle& value,
+                         const std::string& function) {
+  const bool text = py::isinstance<py::str>(value);
+  switch (spec.type) {
+    case OptionType::whole:
+      if (is_whole(value)) return whole_text(value);
+      break;
+    case OptionType::number:
+      if (is_number(value)) return number_text(value);
+      break;
+    case OptionType::seconds_or_auto:
+      if (text) return value.cast<std::string>();
+      if (is_number(value)) return number_text(value);
+      break;
+    case OptionType::whole_or_auto:
+      if (text) return value.cast<std::string>();
+      if (is_whole(value)) return whole_text(value);
+      break;
+    case OptionType::choice:
+    case OptionType::text:
+      if (text) return value.cast<std::string>();
+      break;
+    case OptionType::names:
+      if (text) return value.cast<std::string>();
+      if (py::isinstance<py::list>(value) || py::isinstance<py::tuple>(value)) {
+        std::string joined;
+        bool all_text = true;
+        for (const py::handle item : value) {
+          all_text = all_text && py::isinstance<py::str>(item);
+          if (all_text) joined += (joined.empty() ? "" : ",") + item.cast<std::string>();
+        }
+        if (all_text) return joined;
+      }
+      break;
+    case OptionType::on_off:
+      if (is_bool(value)) return value.cast<bool>() ? "true" : "false";
+      break;
+  }
+  std::string shown = py::repr(value).cast<std::string>();
+  if (shown.size() > 40) shown = shown.substr(0, 37) + "...";
+  throw py::type_error(fmt::format(
+      "{}(): {} must be {}, not {} ({})", function, spec.keyword, python_what(spec.type),
+      py::type::of(value).attr("__name__").cast<std::string>(), shown));
+}
+
+py::list describe_options(const std::vector<OptionSpec>& specs,
+                          const std::vector<std::string>& defaults) {
+  py::list out;
+  for (std::size_t i = 0; i < specs.size(); ++i) {
+    const OptionSpec& s = specs[i];
+    py::dict d;
+    d["keyword"] = s.keyword;
+    d["type"] = std::string(to_string(s.type));
+    d["default"] = defaults[i];
+    d["unit"] = s.unit;
+    d["doc"] = option_help(s, specs, false);
+    d["flag"] = s.flag;
+    out.append(d);
+  }
+  return out;
+}
+
+}  // namespace fogdrift::python

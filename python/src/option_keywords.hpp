@@ -1,0 +1,26 @@
+// Python keywords from option descriptions (option_table.hpp): a keyword's value turned into
+// the text the library's table parses, by the option's type, and the descriptions handed to
+// python/fogdrift/_options.py, which builds the function's signature and docstring from them.
+#pragma once
+
+#include <pybind11/pybind11.h>
+
+#include <string>
+#include <vector>
+
+#include "fogdrift/option_table.hpp"
+
+namespace fogdrift::python {
+
+/// The text of `value` for an option of `spec`'s type; a TypeError "FUNCTION(): KEYWORD must be
+/// WHAT, not TYPE (REPR)" when the value is not of a Python type the option takes (a value of the
+/// right type but outside the option's values is the library's OptionError, a ValueError).
+std::string keyword_text(const OptionSpec& spec, const pybind11::handle& value,
+                         const std::string& function);
+
+/// One dict per option, in order: keyword, type (to_string(OptionType)), default (as text),
+/// unit, range, doc (other options named by keyword), flag.
+pybind11::list describe_options(const std::vector<OptionSpec>& specs,
+                                const std::vector<std::string>& defaults);
+
+}  // namespace fogdrift::python

@@ -1,0 +1,81 @@
+"""The three faces of fogdrift train's options agree: the command line's flags, the Python
+keywords and docs/options.md all come from one description of each option (docs/options.md),
+and this checks that what each shows a user is that description."""
+import inspect
+import json
+import os
+import pathlib
+import re
+import subprocess
+
+import pytest
+
+import fogdrift
+
+DOCS = pathlib.Path(__file__).resolve().parents[2] / "docs" / "options.md"
+
+
+@pytest.fixture(scope="module")
+def described(cli):
+    return json.loads(cli("options", "--json"))
+
+
+def test_the_command_line_has_every_option_with_its_default(cli, described):
+    help_text = re.sub(r"\s+", " ", cli("train", "--help"))
+    for o in described:
+        if o["type"] == "on/off":
+            assert f" {o['flag']} " in help_text, o["flag"]
+        else:
+            # CLI11 writes "--c-max NUMBER=1000": the flag, its type name and the default.
+            assert re.search(re.escape(o["flag"]) + r" \S+=" + re.escape(o["default"]) + " ",
+                             help_text), o["flag"]
+        # The help text, other options named by flag.
+        assert re.sub(r"\s+", " ", o["help"]) in help_text, o["flag"]
+
+
+def test_python_has_every_option_with_its_default(described):
+    signature = inspect.signature(fogdrift.train).parameters
+    options = {o["keyword"]: o for o in fogdrift.train_options()}
+    for o in described:
+        assert o["keyword"] in signature, o["keyword"]
+        assert options[o["keyword"]]["default"] == o["default"]
+        assert options[o["keyword"]]["flag"] == o["flag"]
+        default = signature[o["keyword"]].default
+        assert str(default).lower() == o["default"] or default == float(o["default"]), o
+        assert o["doc"][:40] in fogdrift.train.__doc__, o["keyword"]
+    # Python's own keywords come after the command's options and have no flag.
+    extra = [o["keyword"] for o in fogdrift.train_options() if not o["flag"]]
+    assert extra == ["threads", "target", "progress", "validate_only"]
+    assert list(signature) == ["campaign"] + [o["keyword"] for o in fogdrift.train_options()]
+
+
+def test_the_docs_table_is_the_description(described):
+    rows = [line for line in DOCS.read_text().splitlines() if line.startswith("| `")]
+    assert [re.match(r"\| `(\w+)`", r).group(1) for r in rows] == [o["keyword"] for o in described]
+    for row, o in zip(rows, described):
+        cells = [c.strip() for c in re.split(r"(?<!\\)\|", row)[1:-1]]
+        assert cells[1] == f"`{o['flag']}`" and cells[2] == o["type"]
+        assert cells[4] == f"`{o['default']}`"
+
+
+def test_an_error_names_the_option_in_each_front_ends_words(tmp_path):
+    cli = os.environ.get("FOGDRIFT_CLI", "build/apps/fogdrift/fogdrift")
+    fogdrift.simulate("calibration", seed=1, temps_degc=[0, 20, 40], repetitions=1,
+                      test_repetitions=0, out=tmp_path / "cal")
+    # The library checks the window as window_s, the degree as degree; each front end names the
+    # option that sets it, in its own words.
+    for keyword, value, extra, rule in [
+            ("rate_window_s", 1.0, {}, "a window of 1"),
+            ("max_degree", 9, dict(method="poly"), "9 is outside 1 … 6"),
+            ("epsilon_min", 0.0, dict(search_epsilon=True), "0 must be finite and > 0")]:
+        with pytest.raises(ValueError, match=f"option {keyword}: .*{rule}"):
+            fogdrift.train(tmp_path / "cal", **{keyword: value}, **extra)
+        flag = "--" + keyword.replace("_", "-")
+        args = [cli, "train", str(tmp_path / "cal"), "-o", str(tmp_path / "m.json"), flag,
+                str(value)]
+        for k, v in extra.items():
+            args += ["--" + k.replace("_", "-")] + ([] if v is True else [str(v)])
+        done = subprocess.run(args, capture_output=True, text=True)
+        assert done.returncode == 1 and f"option {flag}: " in done.stderr, done.stderr
+        assert rule in done.stderr, done.stderr
+        assert not (tmp_path / "m.json").exists()
