@@ -1,4 +1,5 @@
-// The causal streaming compensator of the C header (c_parts.hpp, compensator.hpp).
+// The causal streaming compensator of the C header (c_parts.hpp, compensator.hpp): the model's
+// part written here around the compensator's C code, src/c/compensator.h.
 #include "c_parts.hpp"
 
 #include <fmt/format.h>
@@ -32,10 +33,36 @@ std::string thermometers_read(const CompensationModel& model) {
   return read.empty() ? std::string("none") : fmt::format("{}", fmt::join(read, ", "));
 }
 
-// The header's streaming part: the causal differentiator (taps of every start-up window length,
-// a buffer of 2W samples per thermometer), the features in compute_features()'s order and the
-// fault policy (stream_faults.hpp), the same steps in the same order as
-// StreamingCompensator::update().
+#include "c_compensator.inc"  // kCompensatorC: src/c/compensator.h, embedded at build time
+
+/// The compensator's code with its names fds_ and FDS_ given the header's prefix: every
+/// identifier that starts with them, in code and comments alike.
+std::string renamed_compensator(const std::string& prefix, const std::string& upper) {
+  const std::string_view marker = "/* fogdrift: the header's code starts here. */\n";
+  const std::string_view code = kCompensatorC.substr(kCompensatorC.find(marker) + marker.size());
+  const auto identifier = [](char c) {
+    return std::isalnum(static_cast<unsigned char>(c)) || c == '_';
+  };
+  std::string out;
+  for (std::size_t i = 0; i < code.size(); ++i) {
+    const bool start = i == 0 || !identifier(code[i - 1]);
+    if (start && code.substr(i, 4) == "fds_") {
+      out += prefix + "_";
+      i += 3;
+    } else if (start && code.substr(i, 4) == "FDS_") {
+      out += upper + "_";
+      i += 3;
+    } else {
+      out += code[i];
+    }
+  }
+  return out;
+}
+
+// The header's streaming part, around the compensator's code: the user's guide, the model's
+// constants and tables the code reads (src/c/compensator.h lists them), the features in
+// compute_features()'s order, and the entry points under the names of the model's
+// thermometers and target.
 constexpr std::string_view kStreamingC =
     R"(/* Streaming: samples every @DATA_DT@ s in, the features computed causally every @DT@ s.
  *   @P@_state s; @P@_reset(&s);   at power-on
@@ -63,6 +90,7 @@ constexpr std::string_view kStreamingC =
 #ifndef @U@_@LIMIT@
 #define @U@_@LIMIT@ (@GYRO_LIMIT@)
 #endif
+#define @U@_READING_LIMIT @U@_@LIMIT@
 #ifndef @U@_BRIDGE_S
 #define @U@_BRIDGE_S (@BRIDGE@)
 #endif
@@ -85,331 +113,39 @@ static const double @P@_dt_s = @DT@;
 #define @U@_N_THERMOMETERS @NT@ /* @THERMOMETERS@ */
 static const int @P@_reads[@U@_N_THERMOMETERS] = {@READ_FLAGS@};
 static const @REAL@ @P@_rate_taps[@NTAPS@] = {@TAPS@};
-@LAG_TABLES@
-typedef struct {
-  @REAL@ buffer[@U@_N_THERMOMETERS][2 * @U@_RATE_WINDOW]; /* newest at size - 1 */
-  long size;                             /* samples in the buffer */
-  long count;                            /* samples since the rate filters started */
-  @REAL@ weight;                         /* the guard's weight w, 1 at power-on */
-  int guard_started;                     /* the guard has seen a sample */
-  double last_time_s;                    /* time of the guard's previous sample */
-  @REAL@ novelty;                        /* nu of the last evaluated sample (0 without a guard) */
-  unsigned flags;                        /* @U@_FAULT_* bits of the last sample */
-  /* the fault policy's state */
-  int started;
-  double previous_time_s;
-  long refill;
-  int has_good_drift;
-  @REAL@ good_drift_@UNIT@, last_drift_@UNIT@, last_comp_@UNIT@;
-  double good_drift_time_s;
-  int seen_good[@U@_N_THERMOMETERS], out[@U@_N_THERMOMETERS], tracking[@U@_N_THERMOMETERS];
-  @REAL@ good_degc[@U@_N_THERMOMETERS], good_rate[@U@_N_THERMOMETERS];
-  @REAL@ pushed_degc[@U@_N_THERMOMETERS];
-  double good_time_s[@U@_N_THERMOMETERS];
-  @REAL@ unchanged_degc[@U@_N_THERMOMETERS], others_degc[@U@_N_THERMOMETERS][@U@_N_THERMOMETERS];
-  double unchanged_since_s[@U@_N_THERMOMETERS];
-  /* the block being averaged (@U@_BLOCK > 1) */
-  int data_started;
-  long sum_count;
-  double data_time_s;          /* time of the last data sample */
-  double sum[@U@_N_THERMOMETERS]; /* sums of a block in double: up to 2000 samples */
-@LAG_STATE@} @P@_state;
+@LAG_TABLES@#define @U@_DRIFT_MEAN @P@_drift_mean_@UNIT@
+#define @U@_FABS fabs@F@
+#define @U@_DIFFERENCE_FROM_NEWEST @FROM_NEWEST@
 
-static inline void @P@_reset(@P@_state* s) {
-  int k;
-  s->size = 0;
-  s->count = 0;
-  s->weight = 1.0;
-  s->guard_started = 0;
-  s->last_time_s = 0.0;
-  s->novelty = 0.0;
-  s->flags = 0;
-  s->started = 0;
-  s->previous_time_s = 0.0;
-  s->refill = 0;
-  s->has_good_drift = 0;
-  s->good_drift_@UNIT@ = s->good_drift_time_s = s->last_drift_@UNIT@ = s->last_comp_@UNIT@ = 0.0;
-  s->data_started = 0;
-  s->sum_count = 0;
-  s->data_time_s = 0.0;
-  for (k = 0; k < @U@_N_THERMOMETERS; ++k) {
-    s->sum[k] = 0.0;
-    s->seen_good[k] = s->out[k] = s->tracking[k] = 0;
-    s->good_degc[k] = s->good_time_s[k] = s->good_rate[k] = s->pushed_degc[k] = 0.0;
-  }
-@LAG_RESET@}
-@LAG_FUNCTION@
-/* Thermometer k's sample pushed into its rate filter; returns its rate, deg C/s. */
-static inline @REAL@ @P@_push_(@P@_state* s, int k, @REAL@ v) {
-  const @REAL@* taps;
-  const @REAL@* x;
-  @REAL@ sum = 0.0;
-  long used, j;
-  if (k == 0) {
-    if (s->size == 2 * @U@_RATE_WINDOW) { /* keep the newest window - 1 at the front */
-      int m;
-      for (m = 0; m < @U@_N_THERMOMETERS; ++m)
-        for (j = 0; j < @U@_RATE_WINDOW - 1; ++j)
-          s->buffer[m][j] = s->buffer[m][@U@_RATE_WINDOW + 1 + j];
-      s->size = @U@_RATE_WINDOW - 1;
-    }
-    ++s->size;
-    ++s->count;
-  }
-  s->buffer[k][s->size - 1] = v;
-  used = s->count < @U@_RATE_WINDOW ? s->count : @U@_RATE_WINDOW;
-  taps = @P@_rate_taps + (used - 1) * used / 2;
-  x = s->buffer[k] + (s->size - used);
-  /* The taps sum to 0: @RATE_REF_NOTE@ */
-  for (j = 0; j < used; ++j) sum += taps[j] * (x[j] - @RATE_REF@);
-  return sum / @P@_dt_s;
-}
-
-static inline @REAL@ @P@_clamp_degc_(@REAL@ v) {
-  return v < @U@_TEMP_MIN_DEGC ? @U@_TEMP_MIN_DEGC : (v > @U@_TEMP_MAX_DEGC ? @U@_TEMP_MAX_DEGC : v);
-}
-
-/* A faulty thermometer's stand-in: its last good reading continued along its last rate. The
- * time since that reading is a difference of doubles; the rest is in @REAL@ (in float, double
- * arithmetic would be emulated in software on every sample's jump check). */
-static inline @REAL@ @P@_substitute_(const @P@_state* s, int k, double time_s) {
-  const @REAL@ elapsed_s = (@REAL@)(time_s - s->good_time_s[k]);
-  if (!s->seen_good[k]) return @P@_clamp_degc_(0.0);
-  return @P@_clamp_degc_(s->good_degc[k] + s->good_rate[k] * elapsed_s);
-}
-
-/* The drift where the model cannot be evaluated: held, then stopped. */
-static inline @REAL@ @P@_degraded_(@P@_state* s, double time_s) {
-  if (s->has_good_drift && time_s - s->good_drift_time_s <= @U@_HOLD_S) {
-    s->flags |= @U@_FAULT_HELD;
-    return s->good_drift_@UNIT@;
-  }
-  s->flags |= @U@_FAULT_STOPPED;
-  return @P@_drift_mean_@UNIT@;
-}
-
-/* One sample at the model's interval, @P@_dt_s: the fault policy, the rates, the model. */
-static inline @REAL@ @P@_step_(@P@_state* s, double time_s,
-                                const @REAL@ raw[@U@_N_THERMOMETERS]) {
-  @REAL@ temp[@U@_N_THERMOMETERS] = {0.0}, rate[@U@_N_THERMOMETERS] = {0.0}, f[@U@_N_FEATURES];
-  int good[@U@_N_THERMOMETERS] = {0}, stuck[@U@_N_THERMOMETERS] = {0};
-  int k, j, long_gap = 0, restart_rates, any_out = 0, any_bridged = 0, refilling;
-  long missing = 0, m;
-  double t = time_s;
-  @REAL@ drift;
-  if (!isfinite(t)) {
-    s->flags |= @U@_FAULT_TIME_BAD;
-    t = s->started ? s->previous_time_s + @P@_dt_s : 0.0;
-  }
-  if (s->started) {
-    const double step = t - s->previous_time_s;
-    if (step < -@U@_BRIDGE_S) {
-      @P@_reset(s);
-      s->flags |= @U@_FAULT_RESTART;
-    } else if (step < 0.5 * @P@_dt_s) {
-      s->flags |= @U@_FAULT_OUT_OF_ORDER;
-      return s->last_drift_@UNIT@;
-    } else if (step > 1.5 * @P@_dt_s) {
-      s->flags |= @U@_FAULT_GAP;
-      if (step - @P@_dt_s > @U@_BRIDGE_S)
-        long_gap = 1;
-      else
-        missing = lround(step / @P@_dt_s) - 1;
-    }
-  }
-  for (k = 0; k < @U@_N_THERMOMETERS; ++k) {
-    if (!@P@_reads[k]) continue;
-    good[k] = isfinite(raw[k]) && raw[k] >= @U@_TEMP_MIN_DEGC && raw[k] <= @U@_TEMP_MAX_DEGC;
-    if (!good[k]) {
-      s->flags |= @U@_FAULT_TEMP_BAD;
-      continue;
-    }
-    /* A jump, judged within @U@_BRIDGE_S of the last good reading: a longer step is real. */
-    if (@U@_TEMP_JUMP_DEGC > 0 && s->seen_good[k] && t - s->good_time_s[k] <= @U@_BRIDGE_S &&
-        fabs@F@(raw[k] - @P@_substitute_(s, k, t)) > @U@_TEMP_JUMP_DEGC) {
-      good[k] = 0;
-      s->flags |= @U@_FAULT_TEMP_JUMP;
-    }
-  }
-  if (@U@_STUCK_S > 0) {
-    for (k = 0; k < @U@_N_THERMOMETERS; ++k) {
-      if (!good[k]) continue;
-      if (!s->tracking[k] || raw[k] != s->unchanged_degc[k]) {
-        s->tracking[k] = 1;
-        s->unchanged_degc[k] = raw[k];
-        s->unchanged_since_s[k] = t;
-        for (j = 0; j < @U@_N_THERMOMETERS; ++j) s->others_degc[k][j] = good[j] ? raw[j] : NAN;
-        continue;
-      }
-      for (j = 0; j < @U@_N_THERMOMETERS; ++j) {
-        if (j == k || !good[j]) continue;
-        if (isnan(s->others_degc[k][j])) s->others_degc[k][j] = raw[j];
-        if (t - s->unchanged_since_s[k] >= @U@_STUCK_S &&
-            fabs@F@(raw[j] - s->others_degc[k][j]) >= @U@_STUCK_DELTA_DEGC)
-          stuck[k] = 1;
-      }
-    }
-    for (k = 0; k < @U@_N_THERMOMETERS; ++k)
-      if (stuck[k]) {
-        good[k] = 0;
-        s->flags |= @U@_FAULT_TEMP_STUCK;
-      }
-  }
-  restart_rates = long_gap;
-  for (k = 0; k < @U@_N_THERMOMETERS; ++k) {
-    if (!@P@_reads[k]) continue;
-    if (good[k]) {
-      if (s->out[k]) restart_rates = 1;
-      s->out[k] = 0;
-      continue;
-    }
-    if (!s->seen_good[k] || t - s->good_time_s[k] > @U@_BRIDGE_S) s->out[k] = 1;
-    if (s->out[k])
-      any_out = 1;
-    else
-      any_bridged = 1;
-  }
-  if (restart_rates) {
-    s->size = 0;
-    s->count = 0;
-    s->refill = s->has_good_drift ? @U@_RATE_WINDOW - 1 : 0;
-    missing = 0;
-@LAG_RESTART@  }
-  for (k = 0; k < @U@_N_THERMOMETERS; ++k)
-    temp[k] = !@P@_reads[k] ? 0.0 : (good[k] ? raw[k] : @P@_substitute_(s, k, t));
-  for (m = 1; m <= missing; ++m) {
-    const double tm = s->previous_time_s + (double)m * @P@_dt_s;
-    for (k = 0; k < @U@_N_THERMOMETERS; ++k) {
-      const @REAL@ v = !@P@_reads[k] ? 0.0
-                       : good[k] ? s->pushed_degc[k] + (temp[k] - s->pushed_degc[k]) * (@REAL@)m /
-                                                           (@REAL@)(missing + 1)
-                                 : @P@_substitute_(s, k, tm);
-      (void)@P@_push_(s, k, v);
-@LAG_PUSH_MISSING@    }
-  }
-  for (k = 0; k < @U@_N_THERMOMETERS; ++k) {
-    rate[k] = @P@_push_(s, k, temp[k]);
-@LAG_PUSH@    if (!@P@_reads[k]) continue;
-    s->pushed_degc[k] = temp[k];
-    if (good[k]) {
-      s->seen_good[k] = 1;
-      s->good_degc[k] = raw[k];
-      s->good_time_s[k] = t;
-      s->good_rate[k] = rate[k];
-    }
-  }
-  s->started = 1;
-  s->previous_time_s = t;
-  refilling = s->refill > 0;
-  if (refilling) --s->refill;
-  if (any_out || refilling) {
-    drift = @P@_degraded_(s, t);
-  } else {
-@FEATURES@    drift = @P@_predict_@UNIT@(f);
-    if (any_bridged) s->flags |= @U@_FAULT_BRIDGED;
-@GUARD@    if (isfinite(drift)) {
-      s->has_good_drift = 1;
-      s->good_drift_@UNIT@ = drift;
-      s->good_drift_time_s = t;
-    } else {
-      drift = @P@_degraded_(s, t);
-    }
-  }
+/* The model's inputs from the thermometers' temperatures and rates at time t. */
+static inline void @P@_features_(const @REAL@ temp[@U@_N_THERMOMETERS],
+                                 const @REAL@ rate[@U@_N_THERMOMETERS], double t,
+                                 const @REAL@* lag_rate, @REAL@ f[@U@_N_FEATURES]) {
+  (void)temp;
   (void)rate;
-  s->last_drift_@UNIT@ = drift;
-  return drift;
+  (void)t;
+  (void)lag_rate;
+@FEATURES@}
+
+static inline @REAL@ @P@_predict_(const @REAL@ f[@U@_N_FEATURES]) {
+  return @P@_predict_@UNIT@(f);
 }
 
+@COMPENSATOR@
 /* Predicted drift, @UNIT_TEXT@, for the newest sample (every @P@_data_dt_s seconds since power-on):
  * the thermometers averaged over blocks of @U@_BLOCK samples, the first sample a block of its
  * own, and the model run once per block (fogdrift docs/compensation.md, "Any sample rate"). */
 static inline @REAL@ @P@_update(@P@_state* s, double time_s, @TEMP_PARAMS@) {
   const @REAL@ raw[@U@_N_THERMOMETERS] = {@TEMP_ARGS@};
-  @REAL@ mean[@U@_N_THERMOMETERS];
-  double t = time_s, c;
-  int first, k;
-  s->flags = 0;
-  if (@U@_BLOCK == 1) return @P@_step_(s, t, raw);
-  if (!isfinite(t)) {
-    s->flags |= @U@_FAULT_TIME_BAD;
-    t = s->data_started ? s->data_time_s + @P@_data_dt_s : 0.0;
-  }
-  if (s->data_started) {
-    const double gap = t - s->data_time_s;
-    if (gap < -@U@_BRIDGE_S) {
-      @P@_reset(s);
-      s->flags |= @U@_FAULT_RESTART;
-    } else if (gap < 0.5 * @P@_data_dt_s) {
-      s->flags |= @U@_FAULT_OUT_OF_ORDER;
-      return s->last_drift_@UNIT@;
-    }
-  }
-  first = !s->data_started;
-  s->data_started = 1;
-  s->data_time_s = t;
-  for (k = 0; k < @U@_N_THERMOMETERS; ++k) s->sum[k] += raw[k];
-  ++s->sum_count;
-  if (!first && s->sum_count < @U@_BLOCK) return s->last_drift_@UNIT@;
-  c = (double)s->sum_count;
-  for (k = 0; k < @U@_N_THERMOMETERS; ++k) {
-    mean[k] = (@REAL@)(s->sum[k] / c);
-    s->sum[k] = 0.0;
-  }
-  s->sum_count = 0;
-  return @P@_step_(s, t, mean);
+  return @P@_update_(s, time_s, raw);
 }
 
 /* @READING@ minus the last update's drift; the last good value where the @READING_WORD@ is not a
  * number or beyond @U@_@LIMIT@ (then @U@_FAULT_GYRO_BAD is set in s->flags). */
 static inline @REAL@ @P@_compensated_@UNIT@(@P@_state* s, @REAL@ @READING@) {
-  if (isfinite(@READING@) && fabs@F@(@READING@) <= @U@_@LIMIT@)
-    return s->last_comp_@UNIT@ = @READING@ - s->last_drift_@UNIT@;
-  s->flags |= @U@_FAULT_GYRO_BAD;
-  return s->last_comp_@UNIT@;
+  return @P@_compensated_(s, @READING@);
 }
 
-)";
-
-// The lags of the inputs dT@τ (features.hpp, LaggedRate), emitted only for a model that has them.
-constexpr std::string_view kLagStateC =
-    R"(  /* the lags of the inputs dT@tau: state, deg C; term, deg C/s; started since power-on */
-  @REAL@ lag_degc[@U@_N_LAGS], lag_rate[@U@_N_LAGS];
-  int lag_started[@U@_N_LAGS];
-)";
-
-constexpr std::string_view kLagFunctionC = R"(
-/* Thermometer k's sample into the lags that read it: s += g (T - s), the term (T - s) / tau.
- * A lag starts at its first sample, as at rest. */
-static inline void @P@_lags_(@P@_state* s, int k, @REAL@ v) {
-  int i;
-  for (i = 0; i < @U@_N_LAGS; ++i) {
-    if (@P@_lag_thermometer[i] != k) continue;
-    if (!s->lag_started[i]) {
-      s->lag_degc[i] = v;
-      s->lag_started[i] = 1;
-    }
-    s->lag_degc[i] += @P@_lag_gain[i] * (v - s->lag_degc[i]);
-    s->lag_rate[i] = (v - s->lag_degc[i]) / @P@_lag_tau_s[i];
-  }
-}
-)";
-
-constexpr std::string_view kGuardC = R"(#if @U@_GUARD
-    {
-      const @REAL@ v =
-          @P@_target_weight(s->novelty = @P@_novelty_of(f, s->count < @U@_RATE_WINDOW));
-      if (!any_bridged) {
-        const @REAL@ dt =
-            s->guard_started ? (t - s->last_time_s > 0.0 ? t - s->last_time_s : 0.0) : 0.0;
-        const @REAL@ up = s->weight + (@P@_guard_recover_s > 0 ? dt / @P@_guard_recover_s : 0.0);
-        s->weight = up < v ? up : v;
-        s->last_time_s = t;
-        s->guard_started = 1;
-      }
-      drift = s->weight == 0.0 ? @P@_drift_mean_@UNIT@
-                               : @P@_drift_mean_@UNIT@ + s->weight * (drift - @P@_drift_mean_@UNIT@);
-    }
-#endif
 )";
 
 }  // namespace
@@ -443,7 +179,7 @@ std::string c_streaming_part(const CompensationModel& model, const std::string& 
   std::vector<int> lag_thermometer;
   for (std::size_t c = 0; c < columns.size(); ++c) {
     if (columns[c].lagged()) {
-      features += fmt::format("    f[{}] = s->lag_rate[{}];\n", c, lag_gain.size());
+      features += fmt::format("  f[{}] = lag_rate[{}];\n", c, lag_gain.size());
       lag_gain.push_back(LaggedRate(columns[c].tau_s, dt_s).gain());
       lag_tau_s.push_back(columns[c].tau_s);
       lag_thermometer.push_back(static_cast<int>(columns[c].a));
@@ -474,7 +210,7 @@ std::string c_streaming_part(const CompensationModel& model, const std::string& 
       case FeatureTerm::lagged_rate:
         break;  // above
     }
-    features += fmt::format("    f[{}] = {};\n", c, value);
+    features += fmt::format("  f[{}] = {};\n", c, value);
   }
   // One argument per thermometer of the spec, the further ones after fog, acc1, acc2.
   const FeatureSpec& spec = model.dataset.features;
@@ -492,7 +228,7 @@ std::string c_streaming_part(const CompensationModel& model, const std::string& 
   const bool gyro = target_of(model.dataset.target_column).kind == TargetKind::gyro;
   return fill_template(
       std::string(kStreamingC),
-      {{"@GUARD@", guarded ? std::string(kGuardC) : std::string()},
+      {{"@COMPENSATOR@", renamed_compensator(prefix, upper)},
        {"@GUARD_DEFINE@", guarded ? fmt::format("#ifndef {0}_GUARD\n#define {0}_GUARD 1 /* 0: full "
                                                 "correction always */\n#endif\n",
                                                 upper)
@@ -503,17 +239,9 @@ std::string c_streaming_part(const CompensationModel& model, const std::string& 
             : "\n * NOTE: this model was trained with centred rates; streaming applies causal "
               "ones, which\n * lag. Train with --differentiator causal for firmware."},
        {"@FEATURES@", features},
-       {"@LAG_STATE@", lag_gain.empty() ? "" : std::string(kLagStateC)},
-       {"@LAG_RESET@",
-        lag_gain.empty() ? "" : "  for (k = 0; k < @U@_N_LAGS; ++k) s->lag_started[k] = 0;\n"},
-       {"@LAG_RESTART@",
-        lag_gain.empty() ? "" : "    for (k = 0; k < @U@_N_LAGS; ++k) s->lag_started[k] = 0;\n"},
-       {"@LAG_FUNCTION@", lag_gain.empty() ? "" : std::string(kLagFunctionC)},
-       {"@LAG_PUSH_MISSING@", lag_gain.empty() ? "" : "      @P@_lags_(s, k, v);\n"},
-       {"@LAG_PUSH@", lag_gain.empty() ? "" : "    @P@_lags_(s, k, temp[k]);\n"},
        {"@LAG_TABLES@",
         lag_gain.empty()
-            ? std::string()
+            ? std::string("#define @U@_N_LAGS 0\n")
             : fmt::format("#define @U@_N_LAGS {} /* inputs dT@tau: rates through a lag */\n"
                           "static const int @P@_lag_thermometer[@U@_N_LAGS] = {{{}}};\n"
                           "static const @REAL@ @P@_lag_gain[@U@_N_LAGS] = {{{}}};\n"
@@ -541,9 +269,7 @@ std::string c_streaming_part(const CompensationModel& model, const std::string& 
        {"@TEMP_JUMP@", c_number(faults.temp_jump_degc)},
        // In float, differences from the newest sample keep the rate's rounding that of the change
        // in temperature over the window, not of the temperature itself.
-       {"@RATE_REF@", single ? "x[used - 1]" : "0.0"},
-       {"@RATE_REF_NOTE@", single ? "in float, samples less the newest lose less to rounding."
-                                  : "in double, the samples as they are (fogdrift's own sums)."},
+       {"@FROM_NEWEST@", single ? "1" : "0"},
        {"@DATA_DT@", c_number(data_dt_s)},
        {"@BLOCK@", std::to_string(block)},
        {"@DT@", c_number(dt_s)},

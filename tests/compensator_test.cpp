@@ -280,6 +280,12 @@ TEST(StreamingCompensator, AnAccelerometerReadingIsCheckedForANumber) {
   EXPECT_NE(h.find("static inline acc_real acc_predict_g("), std::string::npos);
   EXPECT_NE(h.find("#define ACC_READING_LIMIT_G (HUGE_VAL)"), std::string::npos);
   EXPECT_EQ(h.find("_dph"), std::string::npos) << "a name in °/h in an accelerometer's header";
+  // The compensator's code (src/c/compensator.h) under the header's prefix, none of its own
+  // names left.
+  EXPECT_NE(h.find("static inline acc_real acc_update_(acc_state* s, double time_s,"),
+            std::string::npos);
+  EXPECT_EQ(h.find("fds_"), std::string::npos);
+  EXPECT_EQ(h.find("FDS_"), std::string::npos);
   test::TempDir dir;
   test::write_file(dir / "acc.h", h);
   // The same reading with the header's default and with a range the firmware sets.
