@@ -242,6 +242,7 @@ std::string to_json(const CompensationModel& m) {
                      {"training_rows", p.training_rows},
                      {"files", files},
                      {"fogdrift_version", p.fogdrift_version}};
+  if (!p.search.empty()) j["provenance"]["search"] = p.search;
   // The checksum covers the text before it (model.hpp): every field as written, in file order.
   std::string text = j.dump(1);
   text.resize(text.size() - 2);  // the closing "\n}"
@@ -371,6 +372,7 @@ CompensationModel compensation_model_from_json(const std::string& text, const st
       m.provenance.files.push_back(
           {f.at("path").get<std::string>(), f.at("sha256").get<std::string>()});
     m.provenance.fogdrift_version = p.at("fogdrift_version").get<std::string>();
+    if (p.contains("search")) m.provenance.search = p.at("search").get<std::string>();
   } catch (const ojson::exception& e) {
     fail(where, fmt::format("missing or mistyped field ({})", json_error_text(e)));
   } catch (const OptionError& e) {

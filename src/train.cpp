@@ -2,11 +2,13 @@
 
 #include <fmt/format.h>
 
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <memory>
 #include <numeric>
 
+#include "fogdrift/enum_names.hpp"
 #include "fogdrift/error.hpp"
 #include "fogdrift/gp_search.hpp"
 #include "fogdrift/version.hpp"
@@ -33,9 +35,82 @@ opt::Algorithm algorithm_of(Method m) {
                               : (m == Method::gwo_svr ? opt::Algorithm::gwo : opt::Algorithm::ssa);
 }
 
+constexpr std::array<EnumName<Search>, 5> kSearchNames = {{{Search::own, "auto"},
+                                                           {Search::none, "none"},
+                                                           {Search::ssa, "ssa"},
+                                                           {Search::pso, "pso"},
+                                                           {Search::gwo, "gwo"}}};
+
+/// The SVR method a search makes of svr, and the optimizer of a search.
+Method svr_method_of(Search s) {
+  return s == Search::pso ? Method::pso_svr
+                          : (s == Search::gwo ? Method::gwo_svr : Method::ssa_svr);
+}
+opt::Algorithm algorithm_of(Search s) {
+  return s == Search::pso ? opt::Algorithm::pso
+                          : (s == Search::gwo ? opt::Algorithm::gwo : opt::Algorithm::ssa);
+}
+
 }  // namespace
 
-void validate(const TrainOptions& options) {
+std::string_view to_string(Search search) {
+  return name_in(kSearchNames, search);
+}
+
+Search parse_search(std::string_view text, std::string_view option) {
+  return parse_in(kSearchNames, text, option, "a search");
+}
+
+std::string search_names() {
+  return names_in(kSearchNames);
+}
+
+TrainOptions resolved(const TrainOptions& options) {
+  TrainOptions r = options;
+  r.search = Search::own;
+  const Search s = options.search;
+  if (s == Search::own) return r;
+  const std::string method = to_string(options.method);
+  const std::string search(to_string(s));
+  switch (options.method) {
+    case Method::svr:
+      if (s != Search::none) r.method = svr_method_of(s);
+      return r;
+    case Method::ssa_svr:
+    case Method::pso_svr:
+    case Method::gwo_svr:
+      if (s == Search::none || svr_method_of(s) != options.method)
+        throw OptionError(
+            "search", fmt::format("'{}' contradicts {{method}} {}, which is svr searched by {}; "
+                                  "give {{method}} svr with {{search}} {}",
+                                  search, method, method.substr(0, 3), search));
+      return r;
+    case Method::gp:
+      if (options.gp.selection == GpSelection::likelihood)
+        throw OptionError("search", fmt::format("'{}': {{gp_fit}} likelihood chooses by the "
+                                                "likelihood's gradient, not by a search",
+                                                search));
+      if (s == Search::none)
+        throw OptionError("search",
+                          "gp's cv fit needs a search (ssa, pso or gwo), or {gp_fit} "
+                          "likelihood");
+      r.tune.optimizer.algorithm = algorithm_of(s);
+      return r;
+    case Method::bp:
+    case Method::poly:
+      if (s != Search::none)
+        throw OptionError("search", fmt::format("{} has no search: {} (auto or none)", method,
+                                                method == "bp" ? "it trains by Adam with early "
+                                                                 "stopping"
+                                                               : "cross-validation picks its "
+                                                                 "degree"));
+      return r;
+  }
+  return r;
+}
+
+void validate(const TrainOptions& given) {
+  const TrainOptions options = resolved(given);
   switch (options.method) {
     case Method::ssa_svr:
     case Method::pso_svr:
@@ -61,8 +136,9 @@ void validate(const TrainOptions& options) {
   }
 }
 
-TrainResult train(const Dataset& data, const DatasetOptions& dataset, const TrainOptions& options) {
+TrainResult train(const Dataset& data, const DatasetOptions& dataset, const TrainOptions& given) {
   const auto start = std::chrono::steady_clock::now();
+  const TrainOptions options = resolved(given);
   validate(options);
   if (data.rows == 0) throw OptionError("data", "there are no training rows");
   TrainResult out;
@@ -74,6 +150,10 @@ TrainResult train(const Dataset& data, const DatasetOptions& dataset, const Trai
   m.feature_names = data.feature_names;
   Provenance& p = m.provenance;
   p.method = options.method;
+  // A search that is not the method's own (gp searched by pso) is said; svr's is its method.
+  if (options.method == Method::gp && options.gp.selection == GpSelection::cv &&
+      options.tune.optimizer.algorithm != opt::Algorithm::ssa)
+    p.search = opt::to_string(options.tune.optimizer.algorithm);
   p.seed = options.tune.optimizer.run.seed;
   p.training_rows = data.rows;
   p.fogdrift_version = kVersion;

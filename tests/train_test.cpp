@@ -226,5 +226,58 @@ TEST(Train, RejectsImpossibleOptions) {
   EXPECT_THROW(train(Dataset{}, test::kDefaultDataset, quick(Method::svr)), OptionError);
 }
 
+// A method is a regressor and a search: svr searched by pso is pso-svr, to the byte; a gp's
+// search may be any optimizer, and its model says which; contradictions name the search.
+TEST(Train, AMethodIsARegressorAndASearch) {
+  const Dataset d = test::synthetic();
+  for (const auto& [search, method] :
+       {std::pair{Search::ssa, Method::ssa_svr}, std::pair{Search::pso, Method::pso_svr},
+        std::pair{Search::gwo, Method::gwo_svr}}) {
+    TrainOptions o = quick(Method::svr);
+    o.search = search;
+    EXPECT_EQ(resolved(o).method, method);
+    EXPECT_EQ(to_json(train(d, test::kDefaultDataset, o).model),
+              to_json(train(d, test::kDefaultDataset, quick(method)).model))
+        << to_string(search);
+    TrainOptions own = quick(method);
+    own.search = search;  // the method's own search, said again
+    EXPECT_EQ(resolved(own).method, method);
+  }
+  TrainOptions none = quick(Method::svr);
+  none.search = Search::none;
+  EXPECT_EQ(resolved(none).method, Method::svr);
+
+  TrainOptions gp = quick(Method::gp);
+  gp.gp.max_points = 60;
+  gp.search = Search::pso;
+  EXPECT_EQ(resolved(gp).tune.optimizer.algorithm, opt::Algorithm::pso);
+  const CompensationModel by_pso = train(d, test::kDefaultDataset, gp).model;
+  EXPECT_EQ(by_pso.provenance.search, "pso");
+  EXPECT_EQ(compensation_model_from_json(to_json(by_pso), "gp").provenance.search, "pso");
+  gp.search = Search::own;
+  EXPECT_EQ(train(d, test::kDefaultDataset, gp).model.provenance.search, "");
+  EXPECT_EQ(to_json(train(d, test::kDefaultDataset, gp).model).find("\"search\""),
+            std::string::npos);
+
+  const auto refused = [](Method method, Search search) {
+    TrainOptions o = quick(method);
+    o.search = search;
+    try {
+      validate(o);
+    } catch (const OptionError& e) {
+      return e.option();
+    }
+    return std::string();
+  };
+  EXPECT_EQ(refused(Method::ssa_svr, Search::pso), "search");
+  EXPECT_EQ(refused(Method::gwo_svr, Search::none), "search");
+  EXPECT_EQ(refused(Method::bp, Search::ssa), "search");
+  EXPECT_EQ(refused(Method::poly, Search::gwo), "search");
+  EXPECT_EQ(refused(Method::gp, Search::none), "search");
+  EXPECT_EQ(refused(Method::bp, Search::none), "");
+  EXPECT_EQ(parse_search("auto"), Search::own);
+  EXPECT_THROW(parse_search("fast"), OptionError);
+}
+
 }  // namespace
 }  // namespace fogdrift

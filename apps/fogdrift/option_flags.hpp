@@ -34,12 +34,18 @@ class OptionFlags {
   /// as_flag.
   const FlagTable& flag_table() const { return flag_table_; }
 
-  /// Sets every option given in `options`; an OptionError is named by its flag.
+  /// `e` named by the flag that sets its field, the options its message names ({keyword},
+  /// option_table.hpp) by their flags.
+  OptionError named(const OptionError& e) const;
+
+  /// Sets every option given in `options`; an OptionError is named().
   template <class O>
   void apply(const OptionTable<O>& table, O& options) const {
-    with_flags(flag_table_, [&] {
+    try {
       for (const auto& [keyword, text] : given()) apply_option(table, options, keyword, text);
-    });
+    } catch (const OptionError& e) {
+      throw named(e);
+    }
   }
 
  private:

@@ -198,6 +198,12 @@ void run(TrainArgs& a) {
   options.tune.pool = &pool;
 
   const bool show_progress = !a.quiet && !a.json && stderr_is_terminal();
+  // The method as trained (svr with --search ssa is ssa-svr); a contradiction is train's error.
+  std::string label = to_string(options.method);
+  try {
+    label = to_string(resolved(options).method);
+  } catch (const OptionError&) {
+  }
   const auto start = std::chrono::steady_clock::now();
   if (show_progress) {
     options.tune.optimizer.run.progress = [&](const opt::IterationRecord& r) {
@@ -205,9 +211,8 @@ void run(TrainArgs& a) {
           std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
       std::cerr << fmt::format(
                        "\r{}: iteration {}/{}, best {} RMSE {:.5f}, {} evaluations, {:.0f} s ",
-                       to_string(options.method), r.iteration,
-                       options.tune.optimizer.run.iterations, tune::to_string(options.tune.fitness),
-                       r.best_fitness, r.evaluations, s)
+                       label, r.iteration, options.tune.optimizer.run.iterations,
+                       tune::to_string(options.tune.fitness), r.best_fitness, r.evaluations, s)
                 << std::flush;
       return true;
     };
@@ -232,7 +237,7 @@ void run(TrainArgs& a) {
       results.push_back(train_campaign(campaign, campaign_options));
     } catch (const OptionError& e) {
       if (show_progress) std::cerr << "\n";
-      throw as_flag(e, a.flags->flag_table());
+      throw a.flags->named(e);
     }
     if (show_progress) std::cerr << "\n";
   }
@@ -287,6 +292,8 @@ void add_train(CLI::App& app) {
       "  poly     polynomial in the features, degree chosen by cross-validation\n"
       "  gp       Gaussian process, squared-exponential kernel, its length scale and noise\n"
       "           chosen by the same search and folds, on --gp-points rows (docs/gp.md)\n"
+      "A method is a regressor and a search: --method svr --search pso is pso-svr, and\n"
+      "--method gp --search gwo searches the Gaussian process's by grey wolf.\n"
       "Fitness of a candidate (C, σ): 'cv' (default) is the RMSE over grouped folds that never\n"
       "split a recording: with --cv auto, three folds of whole calibration temperatures (a model\n"
       "scored where it was not trained, as a start-up at a new temperature asks), or with fewer\n"

@@ -47,6 +47,9 @@ struct Provenance {
   std::vector<std::pair<std::string, double>> hyperparameters;
   std::uint64_t seed = 0;
   std::size_t population = 0, iterations = 0;  ///< optimizer budget (0 when none)
+  /// The search, where it is not the method's own (gp searched by "pso" or "gwo"); empty
+  /// otherwise, and then not written.
+  std::string search;
   std::size_t training_rows = 0;
   std::vector<SourceFile> files;
   std::string fogdrift_version;

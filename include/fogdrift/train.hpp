@@ -27,8 +27,26 @@
 
 namespace fogdrift {
 
+/// How a regressor's hyperparameters are searched (train --search): a method is a regressor and
+/// a search, and ssa-svr is svr searched by ssa.
+enum class Search {
+  own,   ///< the method's own: ssa for ssa-svr and gp, pso for pso-svr, gwo for gwo-svr, none else
+  none,  ///< none: svr with LIBSVM's defaults; bp, poly and gp's likelihood fit their own way
+  ssa,   ///< sparrow search over the grouped folds (opt/ssa.hpp)
+  pso,   ///< particle swarm
+  gwo,   ///< grey wolf
+};
+/// "auto", "none", "ssa", "pso", "gwo".
+std::string_view to_string(Search search);
+Search parse_search(std::string_view text, std::string_view option = "search");
+/// "auto, none, ssa, pso, gwo".
+std::string search_names();
+
 struct TrainOptions {
   Method method = Method::ssa_svr;
+  /// With method svr, ssa/pso/gwo make it ssa-svr/pso-svr/gwo-svr (resolved()); with gp's cv
+  /// fit, the optimizer of its search; own: the method's own.
+  Search search = Search::own;
   tune::TuneOptions tune;           ///< fitness, folds, search box, optimizer budget, seed, pool
   MlpOptions mlp;                   ///< BP settings; its seed is set from tune.optimizer.run.seed
   std::size_t poly_max_degree = 3;  ///< highest polynomial degree tried, 1 … 6
@@ -74,6 +92,12 @@ struct TrainResult {
   CompensationModel model;
   TrainSummary summary;
 };
+
+/// The options with method and search made one: svr with a search is that search's SVR method,
+/// gp's optimizer is the search's, and search is then own. Throws OptionError("search") for a
+/// method and a search that contradict (pso-svr with ssa) or a method with no such search (bp
+/// with pso, svr-less none for gp's cv fit).
+TrainOptions resolved(const TrainOptions& options);
 
 /// Checks what can be checked without data: the search's box, budget and folds for a tuned SVR,
 /// the network's for bp, the degree for poly. Throws OptionError naming the field (train_fleet

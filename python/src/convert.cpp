@@ -110,6 +110,11 @@ std::string keyword_of(const std::string& field) {
   return option_word(specs, field, false);
 }
 
+std::string in_keywords_text(const std::string& text) {
+  static const std::vector<OptionSpec> specs = specs_of(train_option_table());
+  return in_option_words(text, specs, false);
+}
+
 std::optional<double> seconds_or_auto(const py::object& value, const char* name) {
   if (py::isinstance<py::str>(value)) {
     if (value.cast<std::string>() == "auto") return std::nullopt;

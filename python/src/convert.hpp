@@ -42,13 +42,17 @@ Recording to_recording(const pybind11::object& columns, const std::string& sourc
 /// for poly_order), else the field's own name.
 std::string keyword_of(const std::string& field);
 
-/// f(), with an OptionError it throws naming the keyword of its field (keyword_of).
+/// `text` with the options it names as {keyword} (option_table.hpp) in this module's keywords.
+std::string in_keywords_text(const std::string& text);
+
+/// f(), with an OptionError it throws naming the keyword of its field (keyword_of), and the
+/// options its message names in keywords.
 template <class F>
 auto in_keywords(F&& f) {
   try {
     return f();
   } catch (const OptionError& e) {
-    throw OptionError(keyword_of(e.option()), e.message());
+    throw OptionError(keyword_of(e.option()), in_keywords_text(e.message()));
   }
 }
 

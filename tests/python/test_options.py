@@ -67,7 +67,8 @@ def test_an_error_names_the_option_in_each_front_ends_words(tmp_path):
     for keyword, value, extra, rule in [
             ("rate_window_s", 1.0, {}, "a window of 1"),
             ("max_degree", 9, dict(method="poly"), "9 is outside 1 … 6"),
-            ("epsilon_min", 0.0, dict(search_epsilon=True), "0 must be finite and > 0")]:
+            ("epsilon_min", 0.0, dict(search_epsilon=True), "0 must be finite and > 0"),
+            ("search", "pso", dict(method="ssa-svr"), "'pso' contradicts ")]:
         with pytest.raises(ValueError, match=f"option {keyword}: .*{rule}"):
             fogdrift.train(tmp_path / "cal", **{keyword: value}, **extra)
         flag = "--" + keyword.replace("_", "-")
@@ -79,3 +80,9 @@ def test_an_error_names_the_option_in_each_front_ends_words(tmp_path):
         assert done.returncode == 1 and f"option {flag}: " in done.stderr, done.stderr
         assert rule in done.stderr, done.stderr
         assert not (tmp_path / "m.json").exists()
+    # A message that names other options names them in each front end's words.
+    with pytest.raises(ValueError, match="give method svr with search pso"):
+        fogdrift.train(tmp_path / "cal", method="ssa-svr", search="pso")
+    done = subprocess.run([cli, "train", str(tmp_path / "cal"), "-o", str(tmp_path / "m.json"),
+                           "--method", "ssa-svr", "--search", "pso"], capture_output=True, text=True)
+    assert "give --method svr with --search pso" in done.stderr, done.stderr
