@@ -19,11 +19,11 @@ ROOT = Path(__file__).resolve().parent
 
 
 def version():
-    """The one version, from include/fogdrift/version.hpp."""
-    text = (ROOT / "include" / "fogdrift" / "version.hpp").read_text()
+    """The one version, from include/fogdrift/base/version.hpp."""
+    text = (ROOT / "include" / "fogdrift" / "base" / "version.hpp").read_text()
     found = re.search(r'kVersion = "([0-9]+\.[0-9]+\.[0-9]+)"', text)
     if not found:
-        raise RuntimeError("include/fogdrift/version.hpp: no kVersion = \"X.Y.Z\"")
+        raise RuntimeError("include/fogdrift/base/version.hpp: no kVersion = \"X.Y.Z\"")
     return found.group(1)
 
 

@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "fogdrift/random.hpp"
+#include "fogdrift/base/random.hpp"
 #include "fogdrift/signal/denoise.hpp"
 
 int main(int argc, char** argv) {

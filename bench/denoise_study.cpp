@@ -17,8 +17,8 @@
 #include <string>
 #include <vector>
 
-#include "fogdrift/earth.hpp"
-#include "fogdrift/error.hpp"
+#include "fogdrift/base/earth.hpp"
+#include "fogdrift/base/error.hpp"
 #include "fogdrift/signal/denoise.hpp"
 #include "fogdrift/signal/resample.hpp"
 #include "fogdrift/sim/scenarios.hpp"

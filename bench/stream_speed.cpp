@@ -14,10 +14,10 @@
 #include <string>
 #include <vector>
 
-#include "fogdrift/compensator.hpp"
-#include "fogdrift/dataset.hpp"
+#include "fogdrift/model/compensator.hpp"
+#include "fogdrift/model/dataset.hpp"
 #include "fogdrift/sim/scenarios.hpp"
-#include "fogdrift/train.hpp"
+#include "fogdrift/tune/train.hpp"
 
 namespace {
 

@@ -19,9 +19,9 @@
 #include <string>
 #include <vector>
 
+#include "fogdrift/base/thread_pool.hpp"
 #include "fogdrift/svr/libsvm_format.hpp"
 #include "fogdrift/svr/svr.hpp"
-#include "fogdrift/thread_pool.hpp"
 #include "libsvm_data.hpp"
 #include "svr/datasets.hpp"
 

@@ -32,12 +32,12 @@
 #include <string>
 #include <vector>
 
-#include "fogdrift/dataset.hpp"
-#include "fogdrift/features.hpp"
+#include "fogdrift/base/thread_pool.hpp"
+#include "fogdrift/model/dataset.hpp"
+#include "fogdrift/model/features.hpp"
 #include "fogdrift/sim/scenarios.hpp"
-#include "fogdrift/thread_pool.hpp"
-#include "fogdrift/train.hpp"
-#include "fogdrift/tune.hpp"
+#include "fogdrift/tune/train.hpp"
+#include "fogdrift/tune/tune.hpp"
 #include "libsvm_data.hpp"
 
 namespace {

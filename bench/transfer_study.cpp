@@ -18,12 +18,12 @@
 #include <string>
 #include <vector>
 
-#include "fogdrift/dataset.hpp"
-#include "fogdrift/error.hpp"
+#include "fogdrift/base/error.hpp"
+#include "fogdrift/base/thread_pool.hpp"
 #include "fogdrift/eval/field.hpp"
+#include "fogdrift/model/dataset.hpp"
 #include "fogdrift/sim/scenarios.hpp"
-#include "fogdrift/thread_pool.hpp"
-#include "fogdrift/train.hpp"
+#include "fogdrift/tune/train.hpp"
 
 namespace {
 

@@ -22,10 +22,10 @@
 #include <string>
 #include <vector>
 
-#include "fogdrift/campaign.hpp"
-#include "fogdrift/features.hpp"
-#include "fogdrift/thread_pool.hpp"
-#include "fogdrift/tune.hpp"
+#include "fogdrift/base/thread_pool.hpp"
+#include "fogdrift/io/campaign.hpp"
+#include "fogdrift/model/features.hpp"
+#include "fogdrift/tune/tune.hpp"
 #include "libsvm_data.hpp"
 
 namespace {

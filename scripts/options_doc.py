@@ -2,7 +2,7 @@
 """Writes (or checks) the table of training options in docs/options.md.
 
 The table is what `fogdrift options` prints: the one description fogdrift keeps of each option
-of `fogdrift train` and Python's fogdrift.train (src/train_option_table.cpp). This script puts
+of `fogdrift train` and Python's fogdrift.train (src/tune/train_option_table.cpp). This script puts
 it between the page's two marker lines, so that the page cannot fall behind the code.
 
 Usage:

@@ -8,7 +8,7 @@ if [ "${1:-}" = "--sanitize" ]; then
   build="$root/build-asan"
   # The benchmarks are built (and so checked) by the Release pass; the sanitizer pass skips them.
   # -Og compiles the instrumented code in less than half the time -O2 takes (measured: 18 s
-  # against 41 s for src/model.cpp), which keeps CI inside its time; -g1 keeps function names
+  # against 41 s for src/model/model.cpp), which keeps CI inside its time; -g1 keeps function names
   # and line tables for the sanitizers' stack traces.
   bash "$root/scripts/build.sh" "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DFOGDRIFT_SANITIZE=ON \
     -DFOGDRIFT_BUILD_BENCH=OFF -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-Og -g1 -DNDEBUG" \

@@ -6,8 +6,8 @@
 
 #include <cmath>
 
-#include "fogdrift/dataset.hpp"
-#include "fogdrift/random.hpp"
+#include "fogdrift/base/random.hpp"
+#include "fogdrift/model/dataset.hpp"
 
 namespace fogdrift::test {
 

@@ -4,7 +4,7 @@
 #include <string>
 
 #include "commands.hpp"
-#include "fogdrift/version.hpp"
+#include "fogdrift/base/version.hpp"
 
 namespace fogdrift::app {
 

@@ -11,12 +11,12 @@
 
 #include "cli_util.hpp"
 #include "commands.hpp"
-#include "fogdrift/atomic_file.hpp"
-#include "fogdrift/campaign.hpp"
-#include "fogdrift/cut.hpp"
-#include "fogdrift/error.hpp"
-#include "fogdrift/recording.hpp"
-#include "fogdrift/version.hpp"
+#include "fogdrift/base/atomic_file.hpp"
+#include "fogdrift/base/error.hpp"
+#include "fogdrift/base/version.hpp"
+#include "fogdrift/io/campaign.hpp"
+#include "fogdrift/io/cut.hpp"
+#include "fogdrift/io/recording.hpp"
 
 namespace fs = std::filesystem;
 

@@ -12,10 +12,10 @@
 #include <map>
 #include <sstream>
 
-#include "fogdrift/csv.hpp"
-#include "fogdrift/error.hpp"
-#include "fogdrift/model_set.hpp"
-#include "fogdrift/target.hpp"
+#include "fogdrift/base/csv.hpp"
+#include "fogdrift/base/error.hpp"
+#include "fogdrift/io/target.hpp"
+#include "fogdrift/model/model_set.hpp"
 
 namespace fogdrift::app {
 

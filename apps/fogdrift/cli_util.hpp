@@ -8,9 +8,9 @@
 #include <string>
 #include <vector>
 
-#include "fogdrift/error.hpp"
-#include "fogdrift/model.hpp"
-#include "fogdrift/model_set.hpp"
+#include "fogdrift/base/error.hpp"
+#include "fogdrift/model/model.hpp"
+#include "fogdrift/model/model_set.hpp"
 
 namespace CLI {
 class App;

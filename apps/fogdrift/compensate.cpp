@@ -9,12 +9,12 @@
 
 #include "cli_util.hpp"
 #include "commands.hpp"
-#include "fogdrift/atomic_file.hpp"
-#include "fogdrift/csv.hpp"
-#include "fogdrift/error.hpp"
+#include "fogdrift/base/atomic_file.hpp"
+#include "fogdrift/base/csv.hpp"
+#include "fogdrift/base/error.hpp"
 #include "fogdrift/eval/metrics.hpp"
-#include "fogdrift/model.hpp"
-#include "fogdrift/model_set.hpp"
+#include "fogdrift/model/model.hpp"
+#include "fogdrift/model/model_set.hpp"
 
 namespace fogdrift::app {
 namespace {

@@ -9,9 +9,9 @@
 #include <optional>
 
 #include "commands.hpp"
-#include "fogdrift/atomic_file.hpp"
-#include "fogdrift/csv.hpp"
-#include "fogdrift/error.hpp"
+#include "fogdrift/base/atomic_file.hpp"
+#include "fogdrift/base/csv.hpp"
+#include "fogdrift/base/error.hpp"
 #include "fogdrift/signal/denoise.hpp"
 
 namespace fogdrift::app {

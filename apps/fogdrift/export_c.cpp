@@ -9,11 +9,11 @@
 #include "cli_util.hpp"
 #include "commands.hpp"
 #include "fault_options.hpp"
-#include "fogdrift/atomic_file.hpp"
-#include "fogdrift/c_header.hpp"
-#include "fogdrift/decimate.hpp"
-#include "fogdrift/error.hpp"
-#include "fogdrift/model.hpp"
+#include "fogdrift/base/atomic_file.hpp"
+#include "fogdrift/base/error.hpp"
+#include "fogdrift/firmware/c_header.hpp"
+#include "fogdrift/model/decimate.hpp"
+#include "fogdrift/model/model.hpp"
 
 namespace fogdrift::app {
 namespace {

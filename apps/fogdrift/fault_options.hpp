@@ -5,8 +5,8 @@
 #include <CLI/CLI.hpp>
 
 #include "cli_util.hpp"
-#include "fogdrift/model.hpp"
-#include "fogdrift/stream_faults.hpp"
+#include "fogdrift/model/model.hpp"
+#include "fogdrift/model/stream_faults.hpp"
 
 namespace fogdrift::app {
 

@@ -11,10 +11,10 @@
 
 #include "cli_util.hpp"
 #include "commands.hpp"
-#include "fogdrift/error.hpp"
-#include "fogdrift/import.hpp"
-#include "fogdrift/recording.hpp"
-#include "fogdrift/regrid.hpp"
+#include "fogdrift/base/error.hpp"
+#include "fogdrift/io/import.hpp"
+#include "fogdrift/io/recording.hpp"
+#include "fogdrift/io/regrid.hpp"
 #include "fogdrift/signal/hampel.hpp"
 
 namespace fs = std::filesystem;

@@ -7,10 +7,10 @@
 #include <nlohmann/json.hpp>
 
 #include "commands.hpp"
-#include "fogdrift/campaign.hpp"
-#include "fogdrift/error.hpp"
-#include "fogdrift/inspect.hpp"
-#include "fogdrift/recording.hpp"
+#include "fogdrift/base/error.hpp"
+#include "fogdrift/io/campaign.hpp"
+#include "fogdrift/io/inspect.hpp"
+#include "fogdrift/io/recording.hpp"
 
 namespace fs = std::filesystem;
 

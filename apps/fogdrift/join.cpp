@@ -9,9 +9,9 @@
 
 #include "cli_util.hpp"
 #include "commands.hpp"
-#include "fogdrift/error.hpp"
-#include "fogdrift/join.hpp"
-#include "fogdrift/recording.hpp"
+#include "fogdrift/base/error.hpp"
+#include "fogdrift/io/join.hpp"
+#include "fogdrift/io/recording.hpp"
 
 namespace fs = std::filesystem;
 

@@ -9,7 +9,7 @@
 
 #include "cli_util.hpp"
 #include "commands.hpp"
-#include "fogdrift/error.hpp"
+#include "fogdrift/base/error.hpp"
 #include "fogdrift/svr/svr.hpp"
 
 int main(int argc, char** argv) {

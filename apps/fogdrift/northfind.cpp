@@ -9,12 +9,12 @@
 
 #include "cli_util.hpp"
 #include "commands.hpp"
-#include "fogdrift/campaign.hpp"
-#include "fogdrift/error.hpp"
+#include "fogdrift/base/error.hpp"
 #include "fogdrift/eval/findings.hpp"
 #include "fogdrift/eval/northfind.hpp"
-#include "fogdrift/model.hpp"
-#include "fogdrift/model_set.hpp"
+#include "fogdrift/io/campaign.hpp"
+#include "fogdrift/model/model.hpp"
+#include "fogdrift/model/model_set.hpp"
 
 namespace fogdrift::app {
 namespace {

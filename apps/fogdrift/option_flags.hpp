@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "cli_util.hpp"
-#include "fogdrift/option_table.hpp"
+#include "fogdrift/base/option_table.hpp"
 
 namespace CLI {
 class App;

@@ -6,7 +6,7 @@
 #include <nlohmann/json.hpp>
 
 #include "commands.hpp"
-#include "fogdrift/train_option_table.hpp"
+#include "fogdrift/tune/train_option_table.hpp"
 
 namespace fogdrift::app {
 

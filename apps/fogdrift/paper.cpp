@@ -9,8 +9,8 @@
 
 #include "cli_util.hpp"
 #include "commands.hpp"
-#include "fogdrift/atomic_file.hpp"
-#include "fogdrift/error.hpp"
+#include "fogdrift/base/atomic_file.hpp"
+#include "fogdrift/base/error.hpp"
 #include "fogdrift/report/paper_report.hpp"
 #include "fogdrift/sim/instrument.hpp"
 

@@ -9,9 +9,9 @@
 #include <nlohmann/json.hpp>
 
 #include "commands.hpp"
-#include "fogdrift/atomic_file.hpp"
-#include "fogdrift/csv.hpp"
-#include "fogdrift/error.hpp"
+#include "fogdrift/base/atomic_file.hpp"
+#include "fogdrift/base/csv.hpp"
+#include "fogdrift/base/error.hpp"
 #include "fogdrift/svr/libsvm_format.hpp"
 #include "fogdrift/svr/svr.hpp"
 

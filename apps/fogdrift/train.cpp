@@ -10,13 +10,13 @@
 
 #include "cli_util.hpp"
 #include "commands.hpp"
-#include "fogdrift/campaign.hpp"
-#include "fogdrift/csv.hpp"
-#include "fogdrift/error.hpp"
-#include "fogdrift/model_set.hpp"
-#include "fogdrift/thread_pool.hpp"
-#include "fogdrift/train_campaign.hpp"
-#include "fogdrift/train_option_table.hpp"
+#include "fogdrift/base/csv.hpp"
+#include "fogdrift/base/error.hpp"
+#include "fogdrift/base/thread_pool.hpp"
+#include "fogdrift/io/campaign.hpp"
+#include "fogdrift/model/model_set.hpp"
+#include "fogdrift/tune/train_campaign.hpp"
+#include "fogdrift/tune/train_option_table.hpp"
 #include "option_flags.hpp"
 
 namespace fogdrift::app {

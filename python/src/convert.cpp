@@ -7,10 +7,10 @@
 #include <filesystem>
 #include <memory>
 
-#include "fogdrift/csv.hpp"
-#include "fogdrift/error.hpp"
-#include "fogdrift/features.hpp"
-#include "fogdrift/train_option_table.hpp"
+#include "fogdrift/base/csv.hpp"
+#include "fogdrift/base/error.hpp"
+#include "fogdrift/model/features.hpp"
+#include "fogdrift/tune/train_option_table.hpp"
 
 namespace py = pybind11;
 

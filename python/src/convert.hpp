@@ -9,9 +9,9 @@
 #include <string>
 #include <vector>
 
-#include "fogdrift/campaign.hpp"
-#include "fogdrift/error.hpp"
-#include "fogdrift/recording.hpp"
+#include "fogdrift/base/error.hpp"
+#include "fogdrift/io/campaign.hpp"
+#include "fogdrift/io/recording.hpp"
 
 namespace fogdrift::python {
 

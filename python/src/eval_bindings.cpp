@@ -16,13 +16,13 @@
 
 #include "bindings.hpp"
 #include "convert.hpp"
-#include "fogdrift/campaign.hpp"
-#include "fogdrift/error.hpp"
+#include "fogdrift/base/error.hpp"
 #include "fogdrift/eval/allan.hpp"
 #include "fogdrift/eval/evaluation.hpp"
 #include "fogdrift/eval/findings.hpp"
 #include "fogdrift/eval/northfind.hpp"
-#include "fogdrift/target.hpp"
+#include "fogdrift/io/campaign.hpp"
+#include "fogdrift/io/target.hpp"
 
 namespace py = pybind11;
 

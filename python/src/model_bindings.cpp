@@ -12,10 +12,10 @@
 
 #include "bindings.hpp"
 #include "convert.hpp"
-#include "fogdrift/error.hpp"
-#include "fogdrift/model.hpp"
-#include "fogdrift/model_set.hpp"
-#include "fogdrift/recording.hpp"
+#include "fogdrift/base/error.hpp"
+#include "fogdrift/io/recording.hpp"
+#include "fogdrift/model/model.hpp"
+#include "fogdrift/model/model_set.hpp"
 
 namespace py = pybind11;
 

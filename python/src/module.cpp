@@ -4,8 +4,8 @@
 #include <pybind11/pybind11.h>
 
 #include "bindings.hpp"
-#include "fogdrift/error.hpp"
-#include "fogdrift/memory.hpp"
+#include "fogdrift/base/error.hpp"
+#include "fogdrift/base/memory.hpp"
 
 namespace py = pybind11;
 

@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "fogdrift/option_table.hpp"
+#include "fogdrift/base/option_table.hpp"
 
 namespace fogdrift::python {
 

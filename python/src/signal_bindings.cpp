@@ -9,9 +9,9 @@
 
 #include "bindings.hpp"
 #include "convert.hpp"
-#include "fogdrift/error.hpp"
-#include "fogdrift/features.hpp"
-#include "fogdrift/model.hpp"
+#include "fogdrift/base/error.hpp"
+#include "fogdrift/model/features.hpp"
+#include "fogdrift/model/model.hpp"
 #include "fogdrift/signal/denoise.hpp"
 
 namespace py = pybind11;

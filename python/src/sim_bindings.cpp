@@ -13,10 +13,10 @@
 
 #include "bindings.hpp"
 #include "convert.hpp"
-#include "fogdrift/error.hpp"
+#include "fogdrift/base/error.hpp"
+#include "fogdrift/base/text_file.hpp"
 #include "fogdrift/sim/instrument.hpp"
 #include "fogdrift/sim/scenarios.hpp"
-#include "fogdrift/text_file.hpp"
 
 namespace py = pybind11;
 

@@ -16,8 +16,8 @@
 
 #include "bindings.hpp"
 #include "convert.hpp"
-#include "fogdrift/compensator.hpp"
-#include "fogdrift/error.hpp"
+#include "fogdrift/base/error.hpp"
+#include "fogdrift/model/compensator.hpp"
 
 namespace py = pybind11;
 

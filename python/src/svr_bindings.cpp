@@ -19,9 +19,9 @@
 #include <vector>
 
 #include "bindings.hpp"
-#include "fogdrift/error.hpp"
+#include "fogdrift/base/error.hpp"
+#include "fogdrift/base/thread_pool.hpp"
 #include "fogdrift/svr/svr.hpp"
-#include "fogdrift/thread_pool.hpp"
 
 namespace py = pybind11;
 

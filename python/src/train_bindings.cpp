@@ -13,13 +13,13 @@
 
 #include "bindings.hpp"
 #include "convert.hpp"
-#include "fogdrift/campaign.hpp"
-#include "fogdrift/error.hpp"
-#include "fogdrift/model_set.hpp"
+#include "fogdrift/base/error.hpp"
+#include "fogdrift/base/thread_pool.hpp"
+#include "fogdrift/io/campaign.hpp"
+#include "fogdrift/model/model_set.hpp"
 #include "fogdrift/signal/differentiate.hpp"
-#include "fogdrift/thread_pool.hpp"
-#include "fogdrift/train_campaign.hpp"
-#include "fogdrift/train_option_table.hpp"
+#include "fogdrift/tune/train_campaign.hpp"
+#include "fogdrift/tune/train_option_table.hpp"
 #include "option_keywords.hpp"
 
 namespace py = pybind11;

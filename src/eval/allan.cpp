@@ -8,7 +8,7 @@
 #include <tuple>
 #include <utility>
 
-#include "fogdrift/error.hpp"
+#include "fogdrift/base/error.hpp"
 
 namespace fogdrift::eval {
 

@@ -6,8 +6,8 @@
 #include <algorithm>
 #include <nlohmann/json.hpp>
 
-#include "fogdrift/error.hpp"
-#include "fogdrift/features.hpp"
+#include "fogdrift/base/error.hpp"
+#include "fogdrift/model/features.hpp"
 
 namespace fogdrift::eval {
 namespace {

@@ -5,7 +5,7 @@
 #include <cmath>
 #include <limits>
 
-#include "fogdrift/error.hpp"
+#include "fogdrift/base/error.hpp"
 #include "fogdrift/eval/northfind.hpp"
 #include "fogdrift/eval/startup.hpp"
 

@@ -9,7 +9,7 @@
 #include <nlohmann/json.hpp>
 #include <optional>
 
-#include "fogdrift/error.hpp"
+#include "fogdrift/base/error.hpp"
 #include "fogdrift/eval/field.hpp"
 #include "fogdrift/eval/startup.hpp"
 

@@ -6,8 +6,8 @@
 #include <cmath>
 #include <numbers>
 
-#include "fogdrift/earth.hpp"
-#include "fogdrift/error.hpp"
+#include "fogdrift/base/earth.hpp"
+#include "fogdrift/base/error.hpp"
 
 namespace fogdrift::eval {
 namespace {

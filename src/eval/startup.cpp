@@ -4,7 +4,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "fogdrift/inspect.hpp"
+#include "fogdrift/io/inspect.hpp"
 
 namespace fogdrift::eval {
 

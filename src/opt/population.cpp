@@ -4,9 +4,9 @@
 
 #include <algorithm>
 
-#include "fogdrift/enum_names.hpp"
-#include "fogdrift/error.hpp"
-#include "fogdrift/thread_pool.hpp"
+#include "fogdrift/base/enum_names.hpp"
+#include "fogdrift/base/error.hpp"
+#include "fogdrift/base/thread_pool.hpp"
 
 namespace fogdrift::opt {
 

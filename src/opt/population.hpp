@@ -8,9 +8,9 @@
 #include <span>
 #include <vector>
 
+#include "fogdrift/base/random.hpp"
 #include "fogdrift/opt/problem.hpp"
 #include "fogdrift/opt/summary.hpp"
-#include "fogdrift/random.hpp"
 
 namespace fogdrift::opt::detail {
 

@@ -4,7 +4,7 @@
 
 #include <cmath>
 
-#include "fogdrift/error.hpp"
+#include "fogdrift/base/error.hpp"
 #include "opt/population.hpp"
 
 namespace fogdrift::opt {

@@ -6,7 +6,7 @@
 #include <cmath>
 #include <numeric>
 
-#include "fogdrift/error.hpp"
+#include "fogdrift/base/error.hpp"
 #include "opt/population.hpp"
 
 namespace fogdrift::opt {

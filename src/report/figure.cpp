@@ -9,8 +9,8 @@
 #include <sstream>
 #include <system_error>
 
-#include "fogdrift/atomic_file.hpp"
-#include "fogdrift/csv.hpp"
+#include "fogdrift/base/atomic_file.hpp"
+#include "fogdrift/base/csv.hpp"
 
 namespace fogdrift::report {
 namespace {

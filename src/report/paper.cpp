@@ -10,14 +10,14 @@
 #include <mutex>
 #include <optional>
 
-#include "fogdrift/dataset.hpp"
-#include "fogdrift/error.hpp"
+#include "fogdrift/base/error.hpp"
+#include "fogdrift/base/thread_pool.hpp"
 #include "fogdrift/eval/field.hpp"
 #include "fogdrift/eval/northfind.hpp"
 #include "fogdrift/eval/startup.hpp"
-#include "fogdrift/features.hpp"
-#include "fogdrift/thread_pool.hpp"
-#include "fogdrift/train.hpp"
+#include "fogdrift/model/dataset.hpp"
+#include "fogdrift/model/features.hpp"
+#include "fogdrift/tune/train.hpp"
 #include "report/paper_figures.hpp"
 
 namespace fogdrift::report {

@@ -6,7 +6,7 @@
 #include <string_view>
 
 #include "fogdrift/eval/startup.hpp"
-#include "fogdrift/features.hpp"
+#include "fogdrift/model/features.hpp"
 
 namespace fogdrift::report {
 namespace {

@@ -6,8 +6,8 @@
 #include <string>
 #include <vector>
 
-#include "fogdrift/dataset.hpp"
-#include "fogdrift/model.hpp"
+#include "fogdrift/model/dataset.hpp"
+#include "fogdrift/model/model.hpp"
 #include "fogdrift/report/figure.hpp"
 #include "fogdrift/report/paper.hpp"
 #include "fogdrift/sim/scenarios.hpp"

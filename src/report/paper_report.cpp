@@ -9,8 +9,8 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "fogdrift/base/version.hpp"
 #include "fogdrift/eval/field.hpp"
-#include "fogdrift/version.hpp"
 
 namespace fogdrift::report {
 namespace {

@@ -4,8 +4,8 @@
 #include <cmath>
 #include <string>
 
-#include "fogdrift/enum_names.hpp"
-#include "fogdrift/error.hpp"
+#include "fogdrift/base/enum_names.hpp"
+#include "fogdrift/base/error.hpp"
 
 namespace fogdrift::signal {
 namespace {

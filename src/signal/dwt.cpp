@@ -3,8 +3,8 @@
 #include <cstdint>
 #include <string>
 
-#include "fogdrift/enum_names.hpp"
-#include "fogdrift/error.hpp"
+#include "fogdrift/base/enum_names.hpp"
+#include "fogdrift/base/error.hpp"
 
 namespace fogdrift::signal {
 namespace {

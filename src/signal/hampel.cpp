@@ -5,7 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "fogdrift/error.hpp"
+#include "fogdrift/base/error.hpp"
 
 namespace fogdrift::signal {
 namespace {

@@ -3,7 +3,7 @@
 #include <cmath>
 #include <string>
 
-#include "fogdrift/error.hpp"
+#include "fogdrift/base/error.hpp"
 
 namespace fogdrift::signal {
 

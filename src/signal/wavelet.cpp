@@ -4,7 +4,7 @@
 #include <array>
 #include <span>
 
-#include "fogdrift/error.hpp"
+#include "fogdrift/base/error.hpp"
 
 namespace fogdrift::signal {
 namespace {

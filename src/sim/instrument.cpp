@@ -5,8 +5,8 @@
 #include <cmath>
 #include <nlohmann/json.hpp>
 
-#include "fogdrift/error.hpp"
-#include "fogdrift/text_file.hpp"
+#include "fogdrift/base/error.hpp"
+#include "fogdrift/base/text_file.hpp"
 
 namespace fogdrift::sim {
 namespace {

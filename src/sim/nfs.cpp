@@ -4,8 +4,8 @@
 
 #include <cmath>
 
-#include "fogdrift/error.hpp"
-#include "fogdrift/random.hpp"
+#include "fogdrift/base/error.hpp"
+#include "fogdrift/base/random.hpp"
 #include "fogdrift/sim/accelerometer.hpp"
 #include "fogdrift/sim/fog_error_model.hpp"
 

@@ -6,13 +6,13 @@
 #include <cmath>
 #include <nlohmann/json.hpp>
 
-#include "fogdrift/atomic_file.hpp"
-#include "fogdrift/csv.hpp"
-#include "fogdrift/enum_names.hpp"
-#include "fogdrift/error.hpp"
-#include "fogdrift/random.hpp"
+#include "fogdrift/base/atomic_file.hpp"
+#include "fogdrift/base/csv.hpp"
+#include "fogdrift/base/enum_names.hpp"
+#include "fogdrift/base/error.hpp"
+#include "fogdrift/base/random.hpp"
+#include "fogdrift/base/version.hpp"
 #include "fogdrift/sim/nfs.hpp"
-#include "fogdrift/version.hpp"
 
 namespace fogdrift::sim {
 namespace {

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <numbers>
 
-#include "fogdrift/earth.hpp"
+#include "fogdrift/base/earth.hpp"
 
 namespace fogdrift::sim {
 namespace {

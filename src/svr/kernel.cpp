@@ -6,10 +6,10 @@
 #include <cassert>
 #include <cmath>
 
-#include "fogdrift/enum_names.hpp"
-#include "fogdrift/error.hpp"
-#include "fogdrift/memory.hpp"
-#include "fogdrift/thread_pool.hpp"
+#include "fogdrift/base/enum_names.hpp"
+#include "fogdrift/base/error.hpp"
+#include "fogdrift/base/memory.hpp"
+#include "fogdrift/base/thread_pool.hpp"
 #include "svr/loops.hpp"
 #include "svr/rows.hpp"
 #include "svr/workspace_state.hpp"

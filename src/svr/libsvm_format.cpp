@@ -6,10 +6,10 @@
 #include <cmath>
 #include <string_view>
 
-#include "fogdrift/atomic_file.hpp"
-#include "fogdrift/csv.hpp"
-#include "fogdrift/error.hpp"
-#include "fogdrift/text_file.hpp"
+#include "fogdrift/base/atomic_file.hpp"
+#include "fogdrift/base/csv.hpp"
+#include "fogdrift/base/error.hpp"
+#include "fogdrift/base/text_file.hpp"
 
 namespace fogdrift::svr {
 namespace {

@@ -10,8 +10,8 @@
 #include <string>
 #include <vector>
 
-#include "fogdrift/enum_names.hpp"
-#include "fogdrift/error.hpp"
+#include "fogdrift/base/enum_names.hpp"
+#include "fogdrift/base/error.hpp"
 #include "fogdrift/svr/svr.hpp"
 
 namespace fogdrift::svr {

@@ -9,12 +9,12 @@
 #include <numeric>
 #include <set>
 
-#include "fogdrift/atomic_file.hpp"
-#include "fogdrift/error.hpp"
-#include "fogdrift/memory.hpp"
-#include "fogdrift/text_file.hpp"
-#include "fogdrift/thread_pool.hpp"
-#include "json_number.hpp"
+#include "base/json_number.hpp"
+#include "fogdrift/base/atomic_file.hpp"
+#include "fogdrift/base/error.hpp"
+#include "fogdrift/base/memory.hpp"
+#include "fogdrift/base/text_file.hpp"
+#include "fogdrift/base/thread_pool.hpp"
 #include "svr/loops.hpp"
 
 namespace fogdrift::svr {

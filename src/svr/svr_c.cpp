@@ -3,7 +3,7 @@
 
 #include <algorithm>
 
-#include "../c_text.hpp"
+#include "base/c_text.hpp"
 #include "fogdrift/svr/svr.hpp"
 
 namespace fogdrift::svr {

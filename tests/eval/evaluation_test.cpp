@@ -8,9 +8,9 @@
 #include <memory>
 #include <nlohmann/json.hpp>
 
-#include "fogdrift/error.hpp"
+#include "fogdrift/base/error.hpp"
 #include "fogdrift/sim/scenarios.hpp"
-#include "fogdrift/train_campaign.hpp"
+#include "fogdrift/tune/train_campaign.hpp"
 #include "test_util.hpp"
 
 namespace fogdrift::eval {

@@ -9,7 +9,7 @@
 #include <stdexcept>
 #include <vector>
 
-#include "fogdrift/error.hpp"
+#include "fogdrift/base/error.hpp"
 #include "fogdrift/eval/northfind.hpp"
 #include "fogdrift/eval/startup.hpp"
 #include "fogdrift/sim/scenarios.hpp"

@@ -5,9 +5,9 @@
 #include <cmath>
 #include <numbers>
 
-#include "fogdrift/earth.hpp"
-#include "fogdrift/error.hpp"
-#include "fogdrift/random.hpp"
+#include "fogdrift/base/earth.hpp"
+#include "fogdrift/base/error.hpp"
+#include "fogdrift/base/random.hpp"
 #include "fogdrift/sim/turntable.hpp"
 
 namespace fogdrift::eval {

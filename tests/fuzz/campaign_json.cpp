@@ -5,8 +5,8 @@
 // reading every recording, as train and evaluate do.
 #include <string>
 
-#include "fogdrift/campaign.hpp"
-#include "fogdrift/recording.hpp"
+#include "fogdrift/io/campaign.hpp"
+#include "fogdrift/io/recording.hpp"
 #include "fuzz_util.hpp"
 
 namespace {

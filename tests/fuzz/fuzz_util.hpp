@@ -11,7 +11,7 @@
 #include <fstream>
 #include <string>
 
-#include "fogdrift/error.hpp"
+#include "fogdrift/base/error.hpp"
 
 namespace fogdrift::fuzz {
 

@@ -8,8 +8,8 @@
 #include <string>
 #include <vector>
 
-#include "fogdrift/import.hpp"
-#include "fogdrift/join.hpp"
+#include "fogdrift/io/import.hpp"
+#include "fogdrift/io/join.hpp"
 #include "fuzz_util.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {

@@ -4,7 +4,7 @@
 // whether format versions 1 and 2 load (--allow-old-format).
 #include <vector>
 
-#include "fogdrift/model.hpp"
+#include "fogdrift/model/model.hpp"
 #include "fuzz_util.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {

@@ -1,5 +1,5 @@
 // Fuzz target: the recording reader (read_recording), the file every command reads.
-#include "fogdrift/recording.hpp"
+#include "fogdrift/io/recording.hpp"
 #include "fuzz_util.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {

@@ -9,9 +9,9 @@
 #include <limits>
 #include <mutex>
 
-#include "fogdrift/error.hpp"
-#include "fogdrift/random.hpp"
-#include "fogdrift/thread_pool.hpp"
+#include "fogdrift/base/error.hpp"
+#include "fogdrift/base/random.hpp"
+#include "fogdrift/base/thread_pool.hpp"
 #include "opt/test_functions.hpp"
 
 namespace fogdrift::opt {

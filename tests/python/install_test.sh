@@ -26,7 +26,7 @@ case $where in
   "$work/venv/"*) ;;
   *) fail "fogdrift imported from $where, not from the environment" ;;
 esac
-expected=$(sed -n 's/.*kVersion = "\([0-9.]*\)".*/\1/p' "$root/include/fogdrift/version.hpp")
+expected=$(sed -n 's/.*kVersion = "\([0-9.]*\)".*/\1/p' "$root/include/fogdrift/base/version.hpp")
 got=$("$work/venv/bin/python" -c "import fogdrift; print(fogdrift.__version__)")
 [ "$got" = "$expected" ] || fail "version $got, not version.hpp's $expected"
 got=$("$work/venv/bin/pip" show fogdrift 2>/dev/null | sed -n 's/^Version: //p')

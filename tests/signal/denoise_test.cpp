@@ -5,7 +5,7 @@
 #include <cmath>
 #include <random>
 
-#include "fogdrift/error.hpp"
+#include "fogdrift/base/error.hpp"
 #include "signal/signal_reference.hpp"
 
 namespace fogdrift::signal {

@@ -5,8 +5,8 @@
 #include <cmath>
 #include <random>
 
-#include "fogdrift/error.hpp"
-#include "fogdrift/random.hpp"
+#include "fogdrift/base/error.hpp"
+#include "fogdrift/base/random.hpp"
 #include "signal/signal_reference.hpp"
 
 namespace fogdrift::signal {

@@ -6,7 +6,7 @@
 #include <map>
 #include <random>
 
-#include "fogdrift/error.hpp"
+#include "fogdrift/base/error.hpp"
 #include "signal/signal_reference.hpp"
 
 namespace fogdrift::signal {

@@ -6,7 +6,7 @@
 #include <cmath>
 #include <random>
 
-#include "fogdrift/error.hpp"
+#include "fogdrift/base/error.hpp"
 
 namespace fogdrift::signal {
 namespace {

@@ -5,7 +5,7 @@
 #include <cmath>
 #include <numeric>
 
-#include "fogdrift/error.hpp"
+#include "fogdrift/base/error.hpp"
 #include "signal/signal_reference.hpp"
 
 namespace fogdrift::signal {

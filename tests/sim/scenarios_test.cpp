@@ -5,9 +5,9 @@
 #include <algorithm>
 #include <cmath>
 
-#include "fogdrift/campaign.hpp"
-#include "fogdrift/error.hpp"
+#include "fogdrift/base/error.hpp"
 #include "fogdrift/eval/startup.hpp"
+#include "fogdrift/io/campaign.hpp"
 #include "test_util.hpp"
 
 namespace fogdrift::sim {

@@ -4,7 +4,7 @@
 
 #include <cmath>
 
-#include "fogdrift/random.hpp"
+#include "fogdrift/base/random.hpp"
 
 namespace fogdrift::sim {
 namespace {

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <cstddef>
 
-#include "fogdrift/random.hpp"
+#include "fogdrift/base/random.hpp"
 #include "fogdrift/svr/kernel.hpp"
 
 namespace fogdrift::svr::testing {

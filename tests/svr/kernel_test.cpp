@@ -9,7 +9,7 @@
 #include <cstring>
 #include <vector>
 
-#include "fogdrift/random.hpp"
+#include "fogdrift/base/random.hpp"
 #include "svr/datasets.hpp"
 
 namespace fogdrift::svr {

@@ -2,7 +2,7 @@
 
 #include <gtest/gtest.h>
 
-#include "fogdrift/error.hpp"
+#include "fogdrift/base/error.hpp"
 
 namespace fogdrift::svr {
 namespace {

@@ -10,8 +10,8 @@
 #include <string>
 #include <vector>
 
-#include "fogdrift/error.hpp"
-#include "fogdrift/random.hpp"
+#include "fogdrift/base/error.hpp"
+#include "fogdrift/base/random.hpp"
 #include "fogdrift/svr/svr.hpp"
 
 namespace fogdrift::svr {

@@ -7,7 +7,7 @@
 #include <utility>
 #include <vector>
 
-#include "fogdrift/random.hpp"
+#include "fogdrift/base/random.hpp"
 #include "svr/datasets.hpp"
 
 namespace fogdrift::svr {

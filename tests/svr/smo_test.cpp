@@ -9,7 +9,7 @@
 #include <climits>
 #include <cmath>
 
-#include "fogdrift/random.hpp"
+#include "fogdrift/base/random.hpp"
 
 namespace fogdrift::svr::detail {
 namespace {

@@ -10,10 +10,10 @@
 #include <string>
 #include <vector>
 
-#include "fogdrift/error.hpp"
-#include "fogdrift/random.hpp"
+#include "fogdrift/base/error.hpp"
+#include "fogdrift/base/random.hpp"
+#include "fogdrift/base/thread_pool.hpp"
 #include "fogdrift/svr/libsvm_format.hpp"
-#include "fogdrift/thread_pool.hpp"
 #include "svr/datasets.hpp"
 #include "svr/libsvm_oracle.hpp"
 #include "test_util.hpp"

@@ -8,8 +8,8 @@
 #include <thread>
 #include <vector>
 
+#include "fogdrift/base/thread_pool.hpp"
 #include "fogdrift/svr/svr.hpp"
-#include "fogdrift/thread_pool.hpp"
 #include "svr/datasets.hpp"
 
 namespace fogdrift::svr {

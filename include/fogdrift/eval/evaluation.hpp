@@ -12,12 +12,12 @@
 #include <string>
 #include <vector>
 
-#include "fogdrift/campaign.hpp"
-#include "fogdrift/dataset.hpp"
 #include "fogdrift/eval/allan.hpp"
 #include "fogdrift/eval/metrics.hpp"
-#include "fogdrift/guard.hpp"
-#include "fogdrift/model.hpp"
+#include "fogdrift/io/campaign.hpp"
+#include "fogdrift/model/dataset.hpp"
+#include "fogdrift/model/guard.hpp"
+#include "fogdrift/model/model.hpp"
 
 namespace fogdrift::eval {
 

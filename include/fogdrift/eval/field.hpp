@@ -14,8 +14,8 @@
 #include <string>
 #include <vector>
 
-#include "fogdrift/campaign.hpp"
-#include "fogdrift/recording.hpp"
+#include "fogdrift/io/campaign.hpp"
+#include "fogdrift/io/recording.hpp"
 
 namespace fogdrift::eval {
 

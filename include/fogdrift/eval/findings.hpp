@@ -9,8 +9,8 @@
 #include <string>
 #include <vector>
 
-#include "fogdrift/campaign.hpp"
-#include "fogdrift/model.hpp"
+#include "fogdrift/io/campaign.hpp"
+#include "fogdrift/model/model.hpp"
 
 namespace fogdrift::eval {
 

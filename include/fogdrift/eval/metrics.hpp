@@ -34,7 +34,7 @@
 #include <utility>
 #include <vector>
 
-#include "fogdrift/dataset.hpp"
+#include "fogdrift/model/dataset.hpp"
 
 namespace fogdrift::eval {
 

@@ -15,7 +15,7 @@
 #include <array>
 #include <vector>
 
-#include "fogdrift/recording.hpp"
+#include "fogdrift/io/recording.hpp"
 
 namespace fogdrift::eval {
 

@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "fogdrift/eval/northfind.hpp"
-#include "fogdrift/recording.hpp"
+#include "fogdrift/io/recording.hpp"
 
 namespace fogdrift::eval {
 

@@ -19,14 +19,14 @@
 #include <string_view>
 #include <vector>
 
+#include "fogdrift/base/thread_pool.hpp"
 #include "fogdrift/eval/metrics.hpp"
-#include "fogdrift/mlp.hpp"
-#include "fogdrift/model.hpp"
+#include "fogdrift/model/mlp.hpp"
+#include "fogdrift/model/model.hpp"
 #include "fogdrift/report/figure.hpp"
 #include "fogdrift/sim/instrument.hpp"
 #include "fogdrift/sim/scenarios.hpp"
-#include "fogdrift/thread_pool.hpp"
-#include "fogdrift/tune.hpp"
+#include "fogdrift/tune/tune.hpp"
 
 namespace fogdrift::report {
 

@@ -3,7 +3,7 @@
 // temperature of its own node, plus white noise.
 #pragma once
 
-#include "fogdrift/random.hpp"
+#include "fogdrift/base/random.hpp"
 #include "fogdrift/sim/instrument.hpp"
 #include "fogdrift/sim/turntable.hpp"
 

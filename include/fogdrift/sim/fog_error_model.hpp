@@ -11,7 +11,7 @@
 
 #include <cstdint>
 
-#include "fogdrift/random.hpp"
+#include "fogdrift/base/random.hpp"
 #include "fogdrift/sim/instrument.hpp"
 
 namespace fogdrift::sim {

@@ -5,7 +5,7 @@
 #include <cstdint>
 #include <functional>
 
-#include "fogdrift/recording.hpp"
+#include "fogdrift/io/recording.hpp"
 #include "fogdrift/sim/instrument.hpp"
 #include "fogdrift/sim/thermal_network.hpp"
 #include "fogdrift/sim/turntable.hpp"

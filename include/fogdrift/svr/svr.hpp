@@ -16,7 +16,7 @@
 #include <type_traits>
 #include <vector>
 
-#include "fogdrift/regressor.hpp"
+#include "fogdrift/base/regressor.hpp"
 #include "fogdrift/svr/kernel.hpp"
 #include "fogdrift/svr/smo_solver.hpp"
 #include "fogdrift/svr/workspace.hpp"

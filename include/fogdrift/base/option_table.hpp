@@ -1,0 +1,142 @@
+// One description of each option a command takes (docs/options.md): its Python keyword, its
+// command-line flag, its type, unit, allowed values and help text, and how it reads and sets the
+// library's options struct. The command line's flags, the Python function's keywords, the words
+// its errors use in each, and docs/options.md's tables are all made from the one table, so they
+// cannot disagree (option_table_test, train_option_table_test, tests/python/test_options.py).
+//
+//   const OptionTable<CampaignTrainOptions>& t = train_option_table();
+//   CampaignTrainOptions o;
+//   apply_option(t, o, "c_max", "1e4");      // what `--c-max 1e4` and c_max=1e4 both do
+//
+// Values travel as the text a user writes on a command line ("1e4", "auto", "true"); the Python
+// front end turns a keyword's value into that text by the option's type (docs/python.md).
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "fogdrift/base/error.hpp"
+
+namespace fogdrift {
+
+/// What values an option takes, and so how each front end spells and checks them.
+enum class OptionType {
+  whole,            ///< a whole number ≥ 0; Python int
+  number,           ///< a finite real number; Python float or int
+  seconds_or_auto,  ///< "auto" or a number of seconds > 0; Python "auto", float or int
+  whole_or_auto,    ///< "auto" or a whole number; Python "auto" or int
+  choice,           ///< one of a few names (OptionSpec::range lists them); Python str
+  text,             ///< free text with a grammar of its own (OptionSpec::doc); Python str
+  names,            ///< comma-separated names; Python str or a list of str
+  on_off,           ///< a switch; Python bool. On the command line a flag that turns it on, or,
+                    ///< for a switch on by default, a flag --no-NAME that turns it off
+};
+
+/// "whole", "number", "seconds or auto", "whole or auto", "choice", "text", "names", "on/off".
+std::string_view to_string(OptionType type);
+
+/// How an option is described to its users.
+struct OptionSpec {
+  std::string keyword;  ///< the Python keyword, and the option's name in docs and messages
+  std::string flag;     ///< the command line's flag, e.g. "--c-max" or "--no-racing"
+  OptionType type = OptionType::text;
+  std::string unit;   ///< "s", "MB", …; empty for a pure number or a name
+  std::string range;  ///< the values allowed, as a user reads them ("1 … 4", "cv, train")
+  /// What it does, in a sentence or a few (the --help text). "{keyword}" names another option
+  /// and is shown in each front end's own word for it (option_help).
+  std::string doc;
+  /// The library's own names for what the option sets, where they differ from the keyword
+  /// (rate_window_s sets window_s): an OptionError naming one of them is about this option.
+  std::vector<std::string> fields;
+};
+
+/// One option of an options struct `O`: its description, its value in an `O` as a user would
+/// write it, and how a user's text sets it.
+template <class O>
+struct Option {
+  OptionSpec spec;
+  std::function<std::string(const O&)> text_of;
+  /// Parses the text as spec.type says and sets the field; OptionError(spec.keyword) if the
+  /// text is not of that type. Ranges are checked where the library validates the options.
+  std::function<void(O&, const std::string&)> set;
+};
+
+/// The options of one command, in the order they are applied: an option whose parsing needs
+/// another (features needs thermometers) comes after it.
+template <class O>
+using OptionTable = std::vector<Option<O>>;
+
+/// The table's descriptions, in order.
+template <class O>
+std::vector<OptionSpec> specs_of(const OptionTable<O>& table) {
+  std::vector<OptionSpec> specs;
+  for (const auto& o : table) specs.push_back(o.spec);
+  return specs;
+}
+
+/// Each option's value in a default-constructed `O`: the defaults users see.
+template <class O>
+std::vector<std::string> defaults_of(const OptionTable<O>& table) {
+  const O defaults = O();
+  std::vector<std::string> texts;
+  for (const auto& o : table) texts.push_back(o.text_of(defaults));
+  return texts;
+}
+
+/// The option named `keyword`, or nullptr.
+template <class O>
+const Option<O>* find_option(const OptionTable<O>& table, std::string_view keyword) {
+  for (const auto& o : table)
+    if (o.spec.keyword == keyword) return &o;
+  return nullptr;
+}
+
+/// Sets the option `keyword` of `options` from a user's text; OptionError naming the keyword for
+/// a text of the wrong type or an option the table does not have.
+template <class O>
+void apply_option(const OptionTable<O>& table, O& options, std::string_view keyword,
+                  const std::string& text) {
+  const Option<O>* o = find_option(table, keyword);
+  if (!o) throw OptionError(std::string(keyword), "is not an option");
+  o->set(options, text);
+}
+
+/// The word a front end uses for what the library calls `field`: the keyword (Python) or the
+/// flag (`flag`, the command line) of the option that sets it; `field` itself when no option
+/// does (an option the front end names itself, such as --targets).
+std::string option_word(const std::vector<OptionSpec>& specs, const std::string& field, bool flag);
+
+/// `text` with every "{keyword}" of an option in `specs` replaced by its word: the flag (`flag`)
+/// or the keyword. The library writes advice that names options this way (a held-out warning's
+/// "{method} poly"), and each front end shows it in its own words.
+std::string in_option_words(std::string text, const std::vector<OptionSpec>& specs, bool flag);
+
+/// The option's help text as --help (`flag`) and the docstring show it: doc, then the unit and
+/// the values allowed, e.g. "Largest C searched (> --c-min)", every "{keyword}" in them replaced
+/// by that option's word (option_word).
+std::string option_help(const OptionSpec& spec, const std::vector<OptionSpec>& specs, bool flag);
+
+/// docs/options.md's table of one command's options, a Markdown table with one row per option
+/// (keyword, flag, type, unit, default, allowed, description), other options named by keyword.
+std::string options_markdown(const std::vector<OptionSpec>& specs,
+                             const std::vector<std::string>& defaults);
+
+// The parsers every table's setters use. Each throws OptionError(spec.keyword, …) naming the
+// text and what was expected.
+std::uint64_t parse_whole_option(const OptionSpec& spec, const std::string& text);
+double parse_number_option(const OptionSpec& spec, const std::string& text);
+/// nullopt for "auto".
+std::optional<double> parse_seconds_or_auto_option(const OptionSpec& spec, const std::string& text);
+std::optional<std::uint64_t> parse_whole_or_auto_option(const OptionSpec& spec,
+                                                        const std::string& text);
+/// "true" or "false" (also 1/0, yes/no, on/off).
+bool parse_on_off_option(const OptionSpec& spec, const std::string& text);
+
+/// A number as an option's text: the shortest that reads back to the same double.
+std::string option_number_text(double value);
+
+}  // namespace fogdrift

@@ -1,0 +1,296 @@
+#include "fogdrift/base/csv.hpp"
+
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
+#include <cctype>
+#include <cerrno>
+#include <charconv>
+#include <cmath>
+#include <cstring>
+#include <fstream>
+#include <sstream>
+#include <unordered_set>
+
+#include "fogdrift/base/error.hpp"
+#include "fogdrift/base/text_file.hpp"
+
+namespace fogdrift::csv {
+namespace {
+
+std::string_view trim(std::string_view s) {
+  while (!s.empty() && (s.front() == ' ' || s.front() == '\t')) s.remove_prefix(1);
+  while (!s.empty() && (s.back() == ' ' || s.back() == '\t')) s.remove_suffix(1);
+  return s;
+}
+
+// Splits one physical line into fields. Quotes may not span lines.
+std::vector<std::string> split_line(std::string_view line, char delimiter, const std::string& file,
+                                    std::size_t line_no) {
+  std::vector<std::string> fields;
+  std::string field;
+  std::size_t i = 0;
+  while (true) {
+    field.clear();
+    // Leading spaces before an opening quote are tolerated, as pandas does with skipinitialspace.
+    std::size_t j = i;
+    while (j < line.size() && line[j] == ' ') ++j;
+    if (j < line.size() && line[j] == '"') {
+      i = j + 1;
+      bool closed = false;
+      while (i < line.size()) {
+        if (line[i] == '"') {
+          if (i + 1 < line.size() && line[i + 1] == '"') {
+            field += '"';
+            i += 2;
+            continue;
+          }
+          closed = true;
+          ++i;
+          break;
+        }
+        field += line[i++];
+      }
+      if (!closed) {
+        throw InputError(file, line_no, fields.size() + 1,
+                         "unterminated quoted field (quotes must close on the same line)");
+      }
+      while (i < line.size() && line[i] == ' ') ++i;
+      if (i < line.size() && line[i] != delimiter) {
+        throw InputError(file, line_no, fields.size() + 1, "unexpected text after a closing quote");
+      }
+    } else {
+      const std::size_t end = line.find(delimiter, i);
+      field.assign(
+          line.substr(i, end == std::string_view::npos ? std::string_view::npos : end - i));
+      i = end == std::string_view::npos ? line.size() : end;
+    }
+    fields.push_back(field);
+    if (i >= line.size()) break;
+    ++i;  // skip the delimiter
+    if (i == line.size()) {
+      fields.emplace_back();  // a trailing delimiter makes one more (empty) field
+      break;
+    }
+  }
+  return fields;
+}
+
+bool all_blank(const std::vector<std::string>& fields) {
+  for (const auto& f : fields)
+    if (!trim(f).empty()) return false;
+  return true;
+}
+
+// drop_empty: removes the header's nameless columns (indices in increasing order) from the table;
+// one that holds a value anywhere is an error naming its first such cell.
+void drop_nameless(Table& table, const std::vector<std::size_t>& nameless) {
+  for (std::size_t c : nameless) {
+    for (std::size_t i = 0; i < table.rows.size(); ++i) {
+      if (!trim(table.rows[i][c]).empty()) {
+        throw InputError(table.file, table.row_line[i], c + 1,
+                         fmt::format("'{}' is in a column with no name in the header; name the "
+                                     "column, or empty it",
+                                     excerpt(table.rows[i][c])));
+      }
+    }
+  }
+  auto keep = [&](std::vector<std::string>& fields) {
+    std::vector<std::string> kept;
+    kept.reserve(fields.size() - nameless.size());
+    for (std::size_t c = 0, next = 0; c < fields.size(); ++c) {
+      if (next < nameless.size() && nameless[next] == c) {
+        ++next;
+        continue;
+      }
+      kept.push_back(std::move(fields[c]));
+    }
+    fields = std::move(kept);
+  };
+  keep(table.header);
+  for (auto& row : table.rows) keep(row);
+  std::vector<std::string> where;
+  for (std::size_t c : nameless) where.push_back(std::to_string(c + 1));
+  table.notes.push_back(fmt::format("dropped {} empty column(s) with no name (column {})",
+                                    nameless.size(), fmt::join(where, ", ")));
+}
+
+}  // namespace
+
+std::optional<std::size_t> Table::find(std::string_view name) const {
+  for (std::size_t i = 0; i < header.size(); ++i) {
+    if (header[i] == name) return i;
+  }
+  return std::nullopt;
+}
+
+Table read(const std::string& path, const ReadOptions& options) {
+  return parse(read_text_file(path), path, options);
+}
+
+Table parse(std::string_view text, const std::string& file, const ReadOptions& options) {
+  Table table;
+  table.file = file;
+  if (text.size() >= 3 && static_cast<unsigned char>(text[0]) == 0xEF &&
+      static_cast<unsigned char>(text[1]) == 0xBB && static_cast<unsigned char>(text[2]) == 0xBF) {
+    text.remove_prefix(3);
+  }
+  if (text.find('\0') != std::string_view::npos) {
+    throw InputError(file, 0, 0, "contains a NUL byte: this is not a text CSV file");
+  }
+
+  std::size_t pos = 0;
+  std::size_t line_no = 0;
+  std::size_t pending_blank_line = 0;  // first blank line seen after the header, if any
+  bool have_header = false;
+  std::vector<std::size_t> nameless;  // drop_empty: header fields with no name, in file order
+  std::size_t blank_rows = 0;         // drop_empty: rows of empty fields dropped
+  while (pos < text.size()) {
+    std::size_t end = text.find('\n', pos);
+    if (end == std::string_view::npos) end = text.size();
+    std::string_view line = text.substr(pos, end - pos);
+    pos = end + 1;
+    ++line_no;
+    if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
+    if (line_no <= options.skip_lines) continue;
+    if (options.comment != 0 && !trim(line).empty() && trim(line).front() == options.comment)
+      continue;
+    if (trim(line).empty()) {
+      if (!have_header) {
+        throw InputError(file, line_no, 0, "empty line where the header row was expected");
+      }
+      if (pending_blank_line == 0) pending_blank_line = line_no;
+      continue;
+    }
+    if (pending_blank_line != 0) {
+      throw InputError(file, pending_blank_line, 0, "empty line between data rows");
+    }
+    std::vector<std::string> fields = split_line(line, options.delimiter, file, line_no);
+    if (have_header && options.drop_empty && all_blank(fields)) {
+      ++blank_rows;  // a spreadsheet's row of empty cells (",,,,")
+      continue;
+    }
+    if (!have_header) {
+      std::unordered_set<std::string> seen;
+      for (std::size_t c = 0; c < fields.size(); ++c) {
+        std::string name(trim(fields[c]));
+        if (name.empty() && options.drop_empty) {
+          nameless.push_back(c);
+          continue;
+        }
+        if (name.empty()) throw InputError(file, line_no, c + 1, "empty column name in the header");
+        if (!seen.insert(name).second) {
+          throw InputError(file, line_no, c + 1,
+                           fmt::format("duplicated column name '{}' in the header", name));
+        }
+        fields[c] = std::move(name);
+      }
+      table.header = std::move(fields);  // nameless ones included until the rows are read
+      have_header = true;
+      continue;
+    }
+    if (fields.size() != table.header.size()) {
+      throw InputError(file, line_no, 0,
+                       fmt::format("row has {} fields but the header has {} columns", fields.size(),
+                                   table.header.size()));
+    }
+    table.rows.push_back(std::move(fields));
+    table.row_line.push_back(line_no);
+  }
+  if (!have_header) throw InputError(file, 0, 0, "empty file: a header row is required");
+  if (!nameless.empty()) drop_nameless(table, nameless);
+  if (blank_rows > 0)
+    table.notes.push_back(fmt::format("dropped {} row(s) with every field empty", blank_rows));
+  return table;
+}
+
+std::optional<double> parse_number(std::string_view field, bool decimal_comma) {
+  field = trim(field);
+  if (field.empty()) return std::nullopt;
+  if (field.front() == '+') field.remove_prefix(1);
+  if (field.empty()) return std::nullopt;
+  std::string replaced;
+  if (decimal_comma) {
+    if (field.find('.') != std::string_view::npos) return std::nullopt;
+    replaced.assign(field);
+    const auto comma = replaced.find(',');
+    if (comma != std::string::npos) {
+      if (replaced.find(',', comma + 1) != std::string::npos) return std::nullopt;
+      replaced[comma] = '.';
+    }
+    field = replaced;
+  }
+  // from_chars accepts "nan" and "inf"; fogdrift never does.
+  for (char ch : field) {
+    if (!(std::isdigit(static_cast<unsigned char>(ch)) || ch == '.' || ch == '-' || ch == 'e' ||
+          ch == 'E' || ch == '+')) {
+      return std::nullopt;
+    }
+  }
+  double value = 0.0;
+  const char* first = field.data();
+  const char* last = field.data() + field.size();
+  const auto result = std::from_chars(first, last, value, std::chars_format::general);
+  if (result.ec != std::errc() || result.ptr != last || !std::isfinite(value)) return std::nullopt;
+  return value;
+}
+
+std::string format_number(double value) {
+  char buffer[32];
+  const auto result = std::to_chars(buffer, buffer + sizeof buffer, value);
+  return std::string(buffer, result.ptr);
+}
+
+std::string quote(std::string_view field, char delimiter) {
+  const bool needs = field.find(delimiter) != std::string_view::npos ||
+                     field.find('"') != std::string_view::npos ||
+                     field.find('\n') != std::string_view::npos ||
+                     field.find('\r') != std::string_view::npos ||
+                     (!field.empty() && (field.front() == ' ' || field.back() == ' '));
+  if (!needs) return std::string(field);
+  std::string out = "\"";
+  for (char ch : field) {
+    if (ch == '"') out += '"';
+    out += ch;
+  }
+  out += '"';
+  return out;
+}
+
+std::string excerpt(std::string_view field) {
+  constexpr std::size_t kShown = 40;
+  if (field.size() <= kShown) return std::string(field);
+  return fmt::format("{}…({} characters)", field.substr(0, kShown), field.size());
+}
+
+bool LineReader::next(std::string& line) {
+  line.clear();
+  std::streambuf* in = in_.rdbuf();
+  using traits = std::char_traits<char>;
+  bool any = false;
+  for (;;) {
+    const int c = in->sbumpc();
+    if (traits::eq_int_type(c, traits::eof())) {
+      in_.setstate(std::ios::eofbit);
+      break;
+    }
+    if (after_cr_) {
+      after_cr_ = false;
+      if (c == '\n') continue;  // the LF of a CRLF
+    }
+    any = true;
+    if (c == '\n') break;
+    if (c == '\r') {
+      after_cr_ = true;
+      break;
+    }
+    line.push_back(traits::to_char_type(c));
+  }
+  if (first_ && any) {
+    first_ = false;
+    if (line.rfind("\xEF\xBB\xBF", 0) == 0) line.erase(0, 3);
+  }
+  return any;
+}
+
+}  // namespace fogdrift::csv

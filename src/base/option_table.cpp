@@ -1,0 +1,132 @@
+// Option descriptions: their words, help texts, docs table and parsers (option_table.hpp).
+#include "fogdrift/base/option_table.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "fogdrift/base/csv.hpp"
+
+namespace fogdrift {
+
+std::string_view to_string(OptionType type) {
+  switch (type) {
+    case OptionType::whole:
+      return "whole";
+    case OptionType::number:
+      return "number";
+    case OptionType::seconds_or_auto:
+      return "seconds or auto";
+    case OptionType::whole_or_auto:
+      return "whole or auto";
+    case OptionType::choice:
+      return "choice";
+    case OptionType::text:
+      return "text";
+    case OptionType::names:
+      return "names";
+    case OptionType::on_off:
+      return "on/off";
+  }
+  return "?";
+}
+
+std::string option_word(const std::vector<OptionSpec>& specs, const std::string& field, bool flag) {
+  for (const OptionSpec& s : specs)
+    if (s.keyword == field || std::find(s.fields.begin(), s.fields.end(), field) != s.fields.end())
+      return flag ? s.flag : s.keyword;
+  return field;
+}
+
+std::string in_option_words(std::string text, const std::vector<OptionSpec>& specs, bool flag) {
+  for (const OptionSpec& s : specs) {
+    const std::string mark = "{" + s.keyword + "}";
+    for (auto at = text.find(mark); at != std::string::npos; at = text.find(mark, at))
+      text.replace(at, mark.size(), flag ? s.flag : s.keyword);
+  }
+  return text;
+}
+
+namespace {
+
+/// A table cell: pipes escaped, so that a cell's text cannot end it.
+std::string cell(const std::string& text) {
+  std::string out;
+  for (char c : text) {
+    if (c == '|') out += '\\';
+    out += c;
+  }
+  return out;
+}
+
+}  // namespace
+
+std::string option_help(const OptionSpec& spec, const std::vector<OptionSpec>& specs, bool flag) {
+  std::string what;
+  if (!spec.unit.empty()) what = spec.unit;
+  if (!spec.range.empty()) what += (what.empty() ? "" : "; ") + spec.range;
+  return in_option_words(what.empty() ? spec.doc : fmt::format("{} ({})", spec.doc, what), specs,
+                         flag);
+}
+
+std::string options_markdown(const std::vector<OptionSpec>& specs,
+                             const std::vector<std::string>& defaults) {
+  std::string out =
+      "| keyword | flag | type | unit | default | allowed | description |\n"
+      "|---|---|---|---|---|---|---|\n";
+  for (std::size_t i = 0; i < specs.size(); ++i) {
+    const OptionSpec& s = specs[i];
+    out += fmt::format(
+        "| `{}` | `{}` | {} | {} | `{}` | {} | {} |\n", s.keyword, s.flag, to_string(s.type),
+        cell(s.unit), cell(i < defaults.size() ? defaults[i] : ""),
+        cell(in_option_words(s.range, specs, false)), cell(in_option_words(s.doc, specs, false)));
+  }
+  return out;
+}
+
+std::uint64_t parse_whole_option(const OptionSpec& spec, const std::string& text) {
+  const auto v = csv::parse_number(text);
+  if (!v || *v < 0 || *v != std::floor(*v) || *v > 9.007199254740992e15)
+    throw OptionError(spec.keyword, fmt::format("'{}' is not a whole number ≥ 0", text));
+  return static_cast<std::uint64_t>(*v);
+}
+
+double parse_number_option(const OptionSpec& spec, const std::string& text) {
+  const auto v = csv::parse_number(text);
+  if (!v) throw OptionError(spec.keyword, fmt::format("'{}' is not a finite number", text));
+  return *v;
+}
+
+std::optional<double> parse_seconds_or_auto_option(const OptionSpec& spec,
+                                                   const std::string& text) {
+  if (text == "auto") return std::nullopt;
+  const auto v = csv::parse_number(text);
+  if (!v || !(*v > 0))
+    throw OptionError(spec.keyword,
+                      fmt::format("'{}' is neither auto nor a number of seconds > 0", text));
+  return v;
+}
+
+std::optional<std::uint64_t> parse_whole_or_auto_option(const OptionSpec& spec,
+                                                        const std::string& text) {
+  if (text == "auto") return std::nullopt;
+  const auto v = csv::parse_number(text);
+  if (!v || *v < 0 || *v != std::floor(*v) || *v > 9.007199254740992e15)
+    throw OptionError(spec.keyword, fmt::format("'{}' is neither auto nor a whole number", text));
+  return static_cast<std::uint64_t>(*v);
+}
+
+bool parse_on_off_option(const OptionSpec& spec, const std::string& text) {
+  static constexpr std::string_view kOn[] = {"true", "1", "yes", "on"};
+  static constexpr std::string_view kOff[] = {"false", "0", "no", "off"};
+  if (std::find(std::begin(kOn), std::end(kOn), text) != std::end(kOn)) return true;
+  if (std::find(std::begin(kOff), std::end(kOff), text) != std::end(kOff)) return false;
+  throw OptionError(spec.keyword, fmt::format("'{}' is not true or false", text));
+}
+
+std::string option_number_text(double value) {
+  return fmt::format("{}", value);
+}
+
+}  // namespace fogdrift

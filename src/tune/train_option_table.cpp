@@ -1,0 +1,390 @@
+// `fogdrift train`'s options, described once (train_option_table.hpp). Defaults are read from a
+// default CampaignTrainOptions, never written here; ranges are checked where the library
+// validates the options (validate(TrainOptions), the dataset's and the differentiator's checks).
+#include "fogdrift/tune/train_option_table.hpp"
+
+#include <fmt/format.h>
+
+#include "fogdrift/model/features.hpp"
+#include "fogdrift/model/gp.hpp"
+#include "fogdrift/signal/differentiate.hpp"
+
+namespace fogdrift {
+namespace {
+
+using O = CampaignTrainOptions;
+
+/// A whole-number option on the field `get(o)` returns.
+template <class Get>
+Option<O> whole(OptionSpec spec, Get get) {
+  spec.type = OptionType::whole;
+  return {spec, [get](const O& o) { return std::to_string(get(o)); },
+          [get, spec](O& o, const std::string& text) {
+            using T = std::remove_cvref_t<decltype(get(o))>;
+            get(o) = static_cast<T>(parse_whole_option(spec, text));
+          }};
+}
+
+/// A real-number option on the field `get(o)` returns.
+template <class Get>
+Option<O> number(OptionSpec spec, Get get) {
+  spec.type = OptionType::number;
+  return {spec, [get](const O& o) { return option_number_text(get(o)); },
+          [get, spec](O& o, const std::string& text) { get(o) = parse_number_option(spec, text); }};
+}
+
+/// An on/off option on the bool field `get(o)` returns.
+template <class Get>
+Option<O> on_off(OptionSpec spec, Get get) {
+  spec.type = OptionType::on_off;
+  return {spec, [get](const O& o) { return std::string(get(o) ? "true" : "false"); },
+          [get, spec](O& o, const std::string& text) { get(o) = parse_on_off_option(spec, text); }};
+}
+
+/// An optional number of seconds, unset meaning "auto".
+template <class Get>
+Option<O> seconds_or_auto(OptionSpec spec, Get get) {
+  spec.type = OptionType::seconds_or_auto;
+  spec.unit = "s";
+  return {spec,
+          [get](const O& o) {
+            const auto& v = get(o);
+            return v ? option_number_text(*v) : std::string("auto");
+          },
+          [get, spec](O& o, const std::string& text) {
+            get(o) = parse_seconds_or_auto_option(spec, text);
+          }};
+}
+
+OptionTable<O> make_table() {
+  OptionTable<O> t;
+  t.push_back(
+      {{"method",
+        "--method",
+        OptionType::choice,
+        "",
+        method_names(),
+        "The regressor: svr an ε-SVR, with LIBSVM's defaults (C = 1, γ = 1/features, "
+        "ε = 0.1) unless {search} names a search; ssa-svr, pso-svr, gwo-svr an ε-SVR "
+        "with C and σ tuned by sparrow search, particle swarm or grey wolf (svr with that "
+        "{search}); bp a one-hidden-layer tanh network, early-stopped on held-out "
+        "recordings; poly a polynomial of the degree cross-validation picks; gp a "
+        "Gaussian process (docs/gp.md)",
+        {}},
+       [](const O& o) { return to_string(o.train.method); },
+       [](O& o, const std::string& text) { o.train.method = parse_method(text, "method"); }});
+  t.push_back(
+      {{"search",
+        "--search",
+        OptionType::choice,
+        "",
+        search_names(),
+        "How the regressor's hyperparameters are searched, over the folds of {cv} with "
+        "{population} and {iterations}: ssa (sparrow search), pso (particle swarm), gwo "
+        "(grey wolf); none; auto, the method's own (ssa for ssa-svr and gp's cv fit, none "
+        "for svr, bp and poly). {method} svr with {search} ssa is ssa-svr",
+        {}},
+       [](const O& o) { return std::string(to_string(o.train.search)); },
+       [](O& o, const std::string& text) { o.train.search = parse_search(text, "search"); }});
+  t.push_back({{"fitness",
+                "--fitness",
+                OptionType::choice,
+                "",
+                tune::fitness_names(),
+                "What a tuned SVR's candidate (C, σ) is scored by: cv, the RMSE over grouped "
+                "folds that never split a recording; train, the paper's training RMSE, which "
+                "favours over-fitting",
+                {}},
+               [](const O& o) { return tune::to_string(o.train.tune.fitness); },
+               [](O& o, const std::string& text) {
+                 o.train.tune.fitness = tune::parse_fitness(text, "fitness");
+               }});
+  t.push_back({{"cv",
+                "--cv",
+                OptionType::choice,
+                "",
+                tune::cv_scheme_names(),
+                "Folds: auto (temperature with at least three temperatures, else repetition), "
+                "repetition (leave one out), recording (k folds of whole recordings) or "
+                "temperature (k folds of whole initial temperatures: the fitness of a model at "
+                "temperatures it never saw). bp, which is not refitted after early stopping, "
+                "stops on a third of the recordings unless repetition or recording is asked",
+                {}},
+               [](const O& o) { return tune::to_string(o.train.tune.cv.scheme); },
+               [](O& o, const std::string& text) {
+                 o.train.tune.cv.scheme = tune::parse_cv_scheme(text, "cv");
+               }});
+  t.push_back(whole(
+      {"folds", "--folds", {}, "", "≥ 2", "k of {cv} recording or temperature", {}},
+      [](auto& o) -> auto& { return o.train.tune.cv.folds; }));
+  t.push_back({{"thermometers",
+                "--thermometers",
+                OptionType::names,
+                "",
+                "fog, acc1, acc2, NAME",
+                "The thermometers the features read, e.g. fog,acc1,acc2,case: the auto features "
+                "over them, or what a term of {features} without its own list reads. NAME is a "
+                "further column temp_NAME_degc; the model then needs its reading wherever it runs "
+                "(stream, export-c). auto: those of fog, acc1, acc2 every training recording has",
+                {}},
+               [](const O& o) {
+                 return o.thermometers.empty() ? std::string("auto")
+                                               : fmt::format("{}", fmt::join(o.thermometers, ","));
+               },
+               [](O& o, const std::string& text) {
+                 o.thermometers =
+                     text == "auto" ? std::vector<std::string>{} : parse_thermometers(text);
+               }});
+  t.push_back({{"features",
+                "--features",
+                OptionType::text,
+                "",
+                "",
+                "Feature spec: terms T, dT, grad, dgrad, t, TdT, dT@SECONDS (the rate through a "
+                "lag of that time constant), each optionally with its thermometers, e.g. "
+                "'T,dT(fog),grad'; auto: the paper's T,dT,grad and the rates through a 300 s lag, "
+                "T,dT,grad,dT@300, over the thermometers every training recording has "
+                "(T(fog),dT(fog),dT@300(fog) with one; docs/field.md)",
+                {}},
+               [](const O& o) {
+                 return o.auto_features ? std::string("auto") : o.dataset.features.to_string();
+               },
+               [](O& o, const std::string& text) {
+                 o.auto_features = text == "auto";
+                 if (!o.auto_features)
+                   o.dataset.features = FeatureSpec::parse(text, o.thermometers);
+               }});
+  t.push_back({{"differentiator",
+                "--differentiator",
+                OptionType::choice,
+                "",
+                signal::causality_names(),
+                "Temperature rates: centred (offline, no delay) or causal (what the instrument can "
+                "run sample by sample; train with it for a streaming compensator)",
+                {"causality"}},
+               [](const O& o) {
+                 return std::string(signal::to_string(o.dataset.preprocessing.rates.causality));
+               },
+               [](O& o, const std::string& text) {
+                 o.dataset.preprocessing.rates.causality =
+                     signal::parse_causality(text, "differentiator");
+               }});
+  t.push_back(seconds_or_auto(
+      {"block_s",
+       "--block-s",
+       {},
+       "",
+       "> 0, a whole number of samples",
+       "Averaging block of the modelling rows; auto: 10 s, or the nearest whole number of samples "
+       "for a log that 10 s does not divide (one sample for logs slower than 0.1 Hz)",
+       {}},
+      [](auto& o) -> auto& { return o.block_s; }));
+  t.push_back(seconds_or_auto(
+      {"rate_window_s",
+       "--rate-window-s",
+       {},
+       "",
+       "> 0, at least 5 samples",
+       "Window of the temperature-rate differentiator; auto: 121 s centred, 61 s causal, at least "
+       "5 samples, and (centred) no longer than the shortest recording",
+       {"window_s"}},
+      [](auto& o) -> auto& { return o.rate_window_s; }));
+  t.push_back({{"rate_degree",
+                "--rate-degree",
+                OptionType::whole_or_auto,
+                "",
+                "1 … 4",
+                "Degree of the polynomial the differentiator fits; auto: 2 centred, 1 causal. For "
+                "causal rates 1 is the least noisy and lags by half the window, 2 does not lag a "
+                "steady curvature and is about four times noisier (docs/signal.md)",
+                {"poly_order"}},
+               [](const O& o) {
+                 return o.rate_degree ? std::to_string(*o.rate_degree) : std::string("auto");
+               },
+               [](O& o, const std::string& text) {
+                 const OptionSpec spec{
+                     "rate_degree", "", OptionType::whole_or_auto, "", "", "", {}};
+                 const auto v = parse_whole_or_auto_option(spec, text);
+                 if (v && (*v < 1 || *v > 4))
+                   throw OptionError("rate_degree", fmt::format("{} is outside 1 … 4", *v));
+                 o.rate_degree = v ? std::optional<int>(static_cast<int>(*v)) : std::nullopt;
+               }});
+  t.push_back(on_off(
+      {"denoise",
+       "--no-denoise",
+       {},
+       "",
+       "",
+       "Train on the wavelet-denoised gyro; turn it off for recordings "
+       "too short to denoise or already smooth (a log of burst means)",
+       {}},
+      [](auto& o) -> auto& { return o.dataset.denoise_target; }));
+  t.push_back(whole(
+      {"population",
+       "--population",
+       {},
+       "",
+       "≥ 2; ssa-svr ≥ 5",
+       "Individuals of the search's optimizer",
+       {}},
+      [](auto& o) -> auto& { return o.train.tune.optimizer.run.population; }));
+  t.push_back(whole(
+      {"iterations",
+       "--iterations",
+       {},
+       "",
+       "≥ 1",
+       "Iterations of the search after its initial population",
+       {}},
+      [](auto& o) -> auto& { return o.train.tune.optimizer.run.iterations; }));
+  t.push_back(whole(
+      {"seed", "--seed", {}, "", "", "Seed of the search (and of bp's weights)", {}},
+      [](auto& o) -> auto& { return o.train.tune.optimizer.run.seed; }));
+  t.push_back(number(
+      {"c_min", "--c-min", {}, "", "> 0", "Smallest C searched", {}},
+      [](auto& o) -> auto& { return o.train.tune.space.c_min; }));
+  t.push_back(number(
+      {"c_max", "--c-max", {}, "", "> {c_min}", "Largest C searched", {}},
+      [](auto& o) -> auto& { return o.train.tune.space.c_max; }));
+  t.push_back(number(
+      {"sigma_min",
+       "--sigma-min",
+       {},
+       "",
+       "> 0",
+       "Smallest σ searched, in standardised feature units",
+       {}},
+      [](auto& o) -> auto& { return o.train.tune.space.sigma_min; }));
+  t.push_back(number(
+      {"sigma_max", "--sigma-max", {}, "", "> {sigma_min}", "Largest σ searched", {}},
+      [](auto& o) -> auto& { return o.train.tune.space.sigma_max; }));
+  t.push_back(number(
+      {"epsilon",
+       "--epsilon",
+       {},
+       "",
+       "≥ 0",
+       "ε of the SVR's tube, in standardised drift units, when it is not searched",
+       {}},
+      [](auto& o) -> auto& { return o.train.tune.space.epsilon; }));
+  t.push_back(on_off(
+      {"search_epsilon",
+       "--search-epsilon",
+       {},
+       "",
+       "",
+       "Also search ε, in [{epsilon_min}, {epsilon_max}]",
+       {}},
+      [](auto& o) -> auto& { return o.train.tune.space.search_epsilon; }));
+  t.push_back(number(
+      {"epsilon_min",
+       "--epsilon-min",
+       {},
+       "",
+       "> 0",
+       "Smallest ε searched with {search_epsilon}",
+       {}},
+      [](auto& o) -> auto& { return o.train.tune.space.epsilon_min; }));
+  t.push_back(number(
+      {"epsilon_max",
+       "--epsilon-max",
+       {},
+       "",
+       "> {epsilon_min}",
+       "Largest ε searched with {search_epsilon}",
+       {}},
+      [](auto& o) -> auto& { return o.train.tune.space.epsilon_max; }));
+  t.push_back(
+      {{"auto_box",
+        "--auto-box",
+        OptionType::on_off,
+        "",
+        "",
+        fmt::format("When the best C, σ or ε lies on an edge of its box, widen the box a "
+                    "decade there and search again (at most {} times); train warns of "
+                    "such edges either way",
+                    TrainOptions::kAutoBoxRounds),
+        {}},
+       [](const O& o) { return std::string(o.train.auto_box_rounds > 0 ? "true" : "false"); },
+       [](O& o, const std::string& text) {
+         const OptionSpec spec{"auto_box", "", OptionType::on_off, "", "", "", {}};
+         o.train.auto_box_rounds =
+             parse_on_off_option(spec, text) ? TrainOptions::kAutoBoxRounds : 0;
+       }});
+  t.push_back(on_off(
+      {"racing",
+       "--no-racing",
+       {},
+       "",
+       "",
+       "Stop a search's candidate once its held-out errors on the folds fitted so "
+       "far exceed the best candidate's: the same best among the candidates "
+       "visited in about half the fits; turned off, every fold of every candidate "
+       "is fitted (docs/tuning.md)",
+       {}},
+      [](auto& o) -> auto& { return o.train.tune.racing; }));
+  t.push_back(number(
+      {"cache_mb",
+       "--cache-mb",
+       {},
+       "MB",
+       "≥ 0",
+       "Kernel-row cache of each SVR fit (one fit per thread): less memory, slower "
+       "fits",
+       {}},
+      [](auto& o) -> auto& { return o.train.tune.cache_mb; }));
+  t.push_back(whole(
+      {"hidden", "--hidden", {}, "", "1 … 1000", "bp: hidden tanh units", {}},
+      [](auto& o) -> auto& { return o.train.mlp.hidden; }));
+  t.push_back(whole(
+      {"max_degree", "--max-degree", {}, "", "1 … 6", "poly: highest degree tried", {"degree"}},
+      [](auto& o) -> auto& { return o.train.poly_max_degree; }));
+  t.push_back(whole(
+      {"gp_points",
+       "--gp-points",
+       {},
+       "",
+       "10 … 4000",
+       "gp: training rows the Gaussian process keeps, evenly spaced; its time grows "
+       "as the cube, its C header's work per sample linearly",
+       {}},
+      [](auto& o) -> auto& { return o.train.gp.max_points; }));
+  t.push_back({{"gp_fit",
+                "--gp-fit",
+                OptionType::choice,
+                "",
+                gp_selection_names(),
+                "gp: how the hyperparameters are chosen: cv, the length scale and the noise "
+                "ratio by the search over the folds of {cv}, as the SVR's C and σ ({population}, "
+                "{iterations} and {seed} as above); likelihood, all of them by the marginal "
+                "likelihood, which favours short length scales on start-up data (docs/gp.md)",
+                {}},
+               [](const O& o) { return std::string(to_string(o.train.gp.selection)); },
+               [](O& o, const std::string& text) {
+                 o.train.gp.selection = parse_gp_selection(text, "gp_fit");
+               }});
+  t.push_back({{"gp_kernel",
+                "--gp-kernel",
+                OptionType::choice,
+                "",
+                "rbf, ard",
+                "gp: rbf, one length scale for all features, or ard, one per feature (with "
+                "{gp_fit} likelihood)",
+                {}},
+               [](const O& o) { return std::string(o.train.gp.ard ? "ard" : "rbf"); },
+               [](O& o, const std::string& text) {
+                 if (text != "rbf" && text != "ard")
+                   throw OptionError("gp_kernel", fmt::format("'{}' is not rbf or ard", text));
+                 o.train.gp.ard = text == "ard";
+               }});
+  return t;
+}
+
+}  // namespace
+
+const OptionTable<CampaignTrainOptions>& train_option_table() {
+  static const OptionTable<CampaignTrainOptions> table = make_table();
+  return table;
+}
+
+}  // namespace fogdrift

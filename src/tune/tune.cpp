@@ -1,0 +1,476 @@
+#include "fogdrift/tune/tune.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <array>
+#include <chrono>
+#include <cmath>
+#include <functional>
+#include <limits>
+#include <map>
+#include <memory>
+#include <mutex>
+#include <numeric>
+#include <set>
+
+#include "fogdrift/base/enum_names.hpp"
+#include "fogdrift/base/error.hpp"
+#include "fogdrift/base/thread_pool.hpp"
+
+namespace fogdrift::tune {
+
+namespace {
+
+constexpr std::array<EnumName<Fitness>, 2> kFitnessNames = {
+    {{Fitness::cv, "cv"}, {Fitness::train, "train"}}};
+
+}  // namespace
+
+std::string to_string(Fitness fitness) {
+  return std::string(name_in(kFitnessNames, fitness));
+}
+
+Fitness parse_fitness(const std::string& text, const std::string& option) {
+  return parse_in(kFitnessNames, text, option, "a fitness");
+}
+
+std::string fitness_names() {
+  return names_in(kFitnessNames);
+}
+
+void validate(const TuneOptions& options) {
+  const SearchSpace& s = options.space;
+  auto range = [](double lo, double hi, const char* lo_name, const char* hi_name) {
+    if (!(lo > 0 && std::isfinite(lo)))
+      throw OptionError(lo_name, fmt::format("{} must be finite and > 0", lo));
+    if (!(hi > lo && std::isfinite(hi)))
+      throw OptionError(hi_name,
+                        fmt::format("{} must be finite and above {} = {}", hi, lo_name, lo));
+  };
+  range(s.c_min, s.c_max, "c_min", "c_max");
+  range(s.sigma_min, s.sigma_max, "sigma_min", "sigma_max");
+  if (s.search_epsilon)
+    range(s.epsilon_min, s.epsilon_max, "epsilon_min", "epsilon_max");
+  else if (!(s.epsilon >= 0 && std::isfinite(s.epsilon)))
+    throw OptionError("epsilon", fmt::format("{} must be finite and ≥ 0", s.epsilon));
+  if (!(options.tolerance > 0 && std::isfinite(options.tolerance)))
+    throw OptionError("tolerance", fmt::format("{} must be finite and > 0", options.tolerance));
+  if (!(options.cache_mb >= 0 && std::isfinite(options.cache_mb)))
+    throw OptionError("cache_mb", fmt::format("{} must be finite and ≥ 0", options.cache_mb));
+  if ((options.cv.scheme == CvScheme::recording || options.cv.scheme == CvScheme::temperature) &&
+      options.cv.folds < 2)
+    throw OptionError("folds", fmt::format("{} is below 2", options.cv.folds));
+  switch (options.optimizer.algorithm) {
+    case opt::Algorithm::ssa:
+      opt::validate(options.optimizer.run, 5);
+      opt::validate(options.optimizer.ssa);
+      break;
+    case opt::Algorithm::pso:
+      opt::validate(options.optimizer.run, 2);
+      opt::validate(options.optimizer.pso);
+      break;
+    case opt::Algorithm::gwo:
+      opt::validate(options.optimizer.run, 3);
+      opt::validate(options.optimizer.gwo);
+      break;
+  }
+}
+
+svr::Params params_at(std::span<const double> point, const TuneOptions& options) {
+  svr::Params p;
+  p.c = std::pow(10.0, point[0]);
+  p.kernel = svr::Kernel::rbf_sigma(std::pow(10.0, point[1]));
+  p.epsilon = options.space.search_epsilon ? std::pow(10.0, point[2]) : options.space.epsilon;
+  p.tolerance = options.tolerance;
+  p.cache_mb = options.cache_mb;
+  return p;
+}
+
+namespace {
+
+// The loss of SVR candidates over the folds (or the training data), with the memo and the warm
+// starts described in the header.
+class SvrObjective {
+ public:
+  using ToParams = std::function<svr::Params(std::span<const double>)>;
+
+  SvrObjective(const Dataset& data, const TuneOptions& options, ToParams to_params)
+      : options_(options), to_params_(std::move(to_params)) {
+    auto add = [this](ScaledSplit s) {
+      std::vector<std::size_t> rows(s.test.rows);
+      std::iota(rows.begin(), rows.end(), 0);
+      folds_.push_back({std::make_unique<svr::TrainingSet>(std::move(s.train)),
+                        std::move(s.test),
+                        std::move(rows),
+                        {}});
+    };
+    if (options.fitness == Fitness::cv) {
+      for (const Fold& f : grouped_folds(data, options.cv)) {
+        add(scale_split(data, f.train_rows, f.test_rows));
+        fold_names_.push_back(f.name);
+      }
+    } else {
+      std::vector<std::size_t> all(data.rows);
+      std::iota(all.begin(), all.end(), 0);
+      add(scale_split(data, all, all));
+    }
+    for (const FoldState& f : folds_) test_rows_ += f.test.rows;
+    // Every thread may run a fit of the largest fold at once: checked once, here, so that a
+    // search too large for this machine fails before its first batch.
+    const auto largest = std::max_element(folds_.begin(), folds_.end(), [](auto& a, auto& b) {
+      return a.set->size() < b.set->size();
+    });
+    svr::Params p;
+    p.cache_mb = options.cache_mb;
+    svr::require_fit_memory(*largest->set, p, options.pool ? options.pool->size() : 1);
+  }
+
+  const std::vector<std::string>& fold_names() const { return fold_names_; }
+
+  void evaluate(std::span<const double> points, std::span<double> fitness, std::size_t dims) {
+    const std::size_t n = fitness.size(), folds = folds_.size();
+    // New distinct candidates of this batch, in order of first appearance.
+    std::vector<std::vector<double>> fresh;
+    std::vector<std::size_t> slot(n);
+    std::map<std::vector<double>, std::size_t> in_batch;
+    for (std::size_t i = 0; i < n; ++i) {
+      std::vector<double> key(points.begin() + static_cast<std::ptrdiff_t>(i * dims),
+                              points.begin() + static_cast<std::ptrdiff_t>((i + 1) * dims));
+      if (memo_.contains(key)) {
+        ++repeats_;
+        slot[i] = SIZE_MAX;
+        continue;
+      }
+      auto [it, inserted] = in_batch.try_emplace(key, fresh.size());
+      if (inserted)
+        fresh.push_back(key);
+      else
+        ++repeats_;
+      slot[i] = it->second;
+    }
+
+    // One task per (candidate, fold); warm starts only from earlier batches. Tasks are handed
+    // out longest first (LPT), the length guessed from the nearest solved candidate's fit time,
+    // so that both threads finish a stage together; the order never changes a result.
+    const std::size_t tasks = fresh.size() * folds;
+    std::vector<double> sse(tasks, 0.0), seconds(tasks, 0.0), guess(tasks, 0.0);
+    std::vector<std::shared_ptr<const svr::DualSolution>> duals(tasks);
+    std::vector<char> warm(tasks, 0), ran(tasks, 0);
+    for (std::size_t t = 0; t < tasks; ++t)
+      guess[t] = guessed_seconds(folds_[t % folds], fresh[t / folds]);
+    auto task = [&](std::size_t t) {
+      const std::size_t c = t / folds, f = t % folds;
+      FoldState& fold = folds_[f];
+      const svr::Params params = to_params_(fresh[c]);
+      const svr::DualSolution* start = nullptr;
+      if (options_.warm_start) start = warm_start_for(fold, fresh[c]);
+      const svr::WorkspacePool::Lease workspace = workspaces_.borrow();
+      svr::FitResult fit = svr::fit(*fold.set, params, start, workspace.get());
+      warm[t] = start != nullptr;
+      // Scored with one vectorised kernel row per held-out row, in float as the solver's rows
+      // (svr::path_squared_errors): a scalar prediction per support vector was 40 % of a search.
+      sse[t] = svr::path_squared_errors(*fold.set, std::span<const svr::FitResult>(&fit, 1),
+                                        fold.test, fold.test_rows)[0];
+      seconds[t] = fit.summary.seconds;
+      duals[t] = std::make_shared<const svr::DualSolution>(std::move(fit.dual));
+      ran[t] = 1;
+    };
+    auto run = [&](std::vector<std::size_t> stage) {
+      std::stable_sort(stage.begin(), stage.end(),
+                       [&](std::size_t a, std::size_t b) { return guess[a] > guess[b]; });
+      auto one = [&](std::size_t k) { task(stage[k]); };
+      if (options_.pool)
+        options_.pool->parallel_for(stage.size(), one);
+      else
+        for (std::size_t k = 0; k < stage.size(); ++k) one(k);
+    };
+
+    // Racing (header): once a complete candidate is known, the folds run in stages, the fold
+    // where the best candidate errs most first, and a candidate whose squared errors so far
+    // already exceed the best's total leaves the race. Before that, one stage holds every fold.
+    const double stop_above = options_.racing && folds > 1 && std::isfinite(best_loss_)
+                                  ? best_loss_ * best_loss_ * static_cast<double>(test_rows_)
+                                  : INFINITY;
+    std::vector<double> partial(fresh.size(), 0.0);
+    std::vector<char> alive(fresh.size(), 1);
+    if (!std::isfinite(stop_above)) {
+      std::vector<std::size_t> all(tasks);
+      std::iota(all.begin(), all.end(), 0);
+      run(std::move(all));
+    } else {
+      const std::vector<std::size_t> order = fold_order();
+      for (std::size_t stage = 0; stage < folds; ++stage) {
+        const std::size_t f = order[stage];
+        std::vector<std::size_t> these;
+        for (std::size_t c = 0; c < fresh.size(); ++c)
+          if (alive[c]) these.push_back(c * folds + f);
+        run(these);
+        for (std::size_t c = 0; c < fresh.size(); ++c) {
+          if (!alive[c]) continue;
+          partial[c] += sse[c * folds + f];
+          if (stage + 1 < folds && partial[c] > stop_above) alive[c] = 0;
+        }
+      }
+    }
+
+    std::vector<double> loss(fresh.size());
+    for (std::size_t c = 0; c < fresh.size(); ++c) {
+      double s = 0;
+      bool complete = true;
+      for (std::size_t f = 0; f < folds; ++f) {
+        const std::size_t t = c * folds + f;
+        if (!ran[t]) {
+          complete = false;
+          continue;
+        }
+        s += sse[t];
+        fit_seconds_ += seconds[t];
+        warm_fits_ += warm[t] ? 1 : 0;
+        ++fits_;
+      }
+      // A candidate out of the race: its squared errors so far, scaled to all folds as the best
+      // candidate's errors spread over them; above the best loss, since they alone exceed it.
+      double scale = 1;
+      if (!complete) {
+        double all = 0, run_part = 0;
+        for (std::size_t f = 0; f < folds; ++f) {
+          all += best_fold_sse_[f];
+          if (ran[c * folds + f]) run_part += best_fold_sse_[f];
+        }
+        if (run_part > 0) scale = all / run_part;
+      }
+      loss[c] = std::sqrt(s * scale / static_cast<double>(test_rows_));
+      memo_.emplace(fresh[c], loss[c]);
+      history_.push_back({to_params_(fresh[c]), loss[c], complete});
+      if (!complete) ++raced_;
+    }
+    // The best complete candidate so far bounds the next batches' races.
+    for (std::size_t c = 0; c < fresh.size(); ++c) {
+      if (!alive[c] || !(loss[c] < best_loss_)) continue;
+      best_loss_ = loss[c];
+      best_fold_sse_.assign(sse.begin() + static_cast<std::ptrdiff_t>(c * folds),
+                            sse.begin() + static_cast<std::ptrdiff_t>((c + 1) * folds));
+    }
+    // Keep the most recent solutions of each fold as warm starts for later batches.
+    for (std::size_t f = 0; f < folds; ++f) {
+      auto& kept = folds_[f].solved;
+      std::size_t solved_here = 0;
+      for (std::size_t c = 0; c < fresh.size(); ++c) {
+        if (!ran[c * folds + f]) continue;
+        kept.push_back({fresh[c], duals[c * folds + f], seconds[c * folds + f]});
+        ++solved_here;
+      }
+      const std::size_t keep = std::max<std::size_t>(2 * solved_here, 8);
+      if (kept.size() > keep)
+        kept.erase(kept.begin(), kept.end() - static_cast<std::ptrdiff_t>(keep));
+    }
+    for (std::size_t i = 0; i < n; ++i) {
+      if (slot[i] == SIZE_MAX) {
+        std::vector<double> key(points.begin() + static_cast<std::ptrdiff_t>(i * dims),
+                                points.begin() + static_cast<std::ptrdiff_t>((i + 1) * dims));
+        fitness[i] = memo_.at(key);
+      } else {
+        fitness[i] = loss[slot[i]];
+      }
+    }
+    candidates_ += fresh.size();
+  }
+
+  std::size_t candidates_ = 0, repeats_ = 0, fits_ = 0, warm_fits_ = 0, raced_ = 0;
+  std::vector<Candidate> history_;
+  double fit_seconds_ = 0;
+
+ private:
+  struct Solved {
+    std::vector<double> point;
+    std::shared_ptr<const svr::DualSolution> dual;
+    double seconds;
+  };
+  struct FoldState {
+    std::unique_ptr<svr::TrainingSet> set;
+    svr::Data test;
+    std::vector<std::size_t> test_rows;  // 0 … test.rows − 1
+    std::vector<Solved> solved;          // read concurrently during a batch, changed only between
+  };
+
+  // The solved candidate nearest to `point` in log coordinates (ties: the latest), optionally
+  // only among those with the same kernel (σ).
+  static const Solved* nearest(const FoldState& fold, const std::vector<double>& point,
+                               bool same_kernel) {
+    const Solved* best = nullptr;
+    double best_d = INFINITY;
+    for (const Solved& s : fold.solved) {
+      if (same_kernel && s.point[1] != point[1]) continue;
+      double d = 0;
+      for (std::size_t j = 0; j < point.size(); ++j)
+        d += (s.point[j] - point[j]) * (s.point[j] - point[j]);
+      if (d <= best_d) best_d = d, best = &s;
+    }
+    return best;
+  }
+
+  // The warm start of a fit (docs/tuning.md, "Speed"): the nearest solved candidate with the same
+  // kernel, whose gradient is rescaled rather than rebuilt; else the nearest of all when it lies
+  // within a tenth of a decade in both C and σ. Rebuilding the gradient for another σ costs about
+  // one pass over the kernel, which only a near solution's saved iterations repay: from any
+  // candidate it made a search slower, from a near one it halves the fits on the C = 1000 edge.
+  static constexpr double kNearLog10 = 0.1;
+  static const svr::DualSolution* warm_start_for(const FoldState& fold,
+                                                 const std::vector<double>& point) {
+    if (const Solved* s = nearest(fold, point, true)) return s->dual.get();
+    const Solved* s = nearest(fold, point, false);
+    if (s == nullptr || std::fabs(s->point[0] - point[0]) > kNearLog10 ||
+        std::fabs(s->point[1] - point[1]) > kNearLog10)
+      return nullptr;
+    return s->dual.get();
+  }
+
+  static double guessed_seconds(const FoldState& fold, const std::vector<double>& point) {
+    const Solved* s = nearest(fold, point, false);
+    return s ? s->seconds : INFINITY;
+  }
+
+  // The folds by the best candidate's squared error on them, largest first (ties: in order):
+  // the fold most likely to take a poor candidate past the bound runs first.
+  std::vector<std::size_t> fold_order() const {
+    std::vector<std::size_t> order(folds_.size());
+    std::iota(order.begin(), order.end(), 0);
+    std::stable_sort(order.begin(), order.end(), [this](std::size_t a, std::size_t b) {
+      return best_fold_sse_[a] > best_fold_sse_[b];
+    });
+    return order;
+  }
+
+  const TuneOptions& options_;
+  ToParams to_params_;
+  std::vector<FoldState> folds_;
+  std::size_t test_rows_ = 0;          // held-out rows over all folds
+  double best_loss_ = INFINITY;        // of the complete candidates of earlier batches
+  std::vector<double> best_fold_sse_;  // its squared error on each fold
+  // One workspace per fit running at once, kept for the whole search: each fit reuses the
+  // memory of an earlier one instead of new pages.
+  svr::WorkspacePool workspaces_;
+  std::vector<std::string> fold_names_;
+  std::map<std::vector<double>, double> memo_;
+};
+
+}  // namespace
+
+TuneSummary tune_svr(const Dataset& data, const TuneOptions& options) {
+  validate(options);
+  const auto start = std::chrono::steady_clock::now();
+  SvrObjective objective(data, options,
+                         [&options](std::span<const double> x) { return params_at(x, options); });
+  const SearchSpace& s = options.space;
+  opt::Problem problem;
+  problem.lower = {std::log10(s.c_min), std::log10(s.sigma_min)};
+  problem.upper = {std::log10(s.c_max), std::log10(s.sigma_max)};
+  if (s.search_epsilon) {
+    problem.lower.push_back(std::log10(s.epsilon_min));
+    problem.upper.push_back(std::log10(s.epsilon_max));
+  }
+  const std::size_t dims = problem.lower.size();
+  problem.evaluate = [&objective, dims](std::span<const double> x, std::span<double> f) {
+    objective.evaluate(x, f, dims);
+  };
+
+  TuneSummary out;
+  out.optimizer = opt::minimize(problem, options.optimizer);
+  out.best = params_at(out.optimizer.best_point, options);
+  out.best_fitness = out.optimizer.best_fitness;
+  out.folds = objective.fold_names();
+  out.candidates = objective.candidates_;
+  out.repeats = objective.repeats_;
+  out.fits = objective.fits_;
+  out.warm_fits = objective.warm_fits_;
+  out.raced = objective.raced_;
+  out.fit_seconds = objective.fit_seconds_;
+  out.history = std::move(objective.history_);
+  out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return out;
+}
+
+double svr_loss(const Dataset& data, const svr::Params& params, const TuneOptions& options) {
+  svr::validate(params);
+  SvrObjective objective(data, options, [&params](std::span<const double>) { return params; });
+  const double point = 0;
+  double loss = 0;
+  objective.evaluate(std::span<const double>(&point, 1), std::span<double>(&loss, 1), 1);
+  return loss;
+}
+
+}  // namespace fogdrift::tune
+
+namespace fogdrift::tune {
+
+namespace {
+
+/// A searched parameter: its name, its bounds in SearchSpace, the limits a widened box keeps
+/// within, and its value in a candidate.
+struct Axis {
+  const char* name;
+  double SearchSpace::*low;
+  double SearchSpace::*high;
+  double floor, ceiling;
+  double (*get)(const svr::Params&);
+};
+
+const std::array<Axis, 3> kAxes = {{
+    {"C", &SearchSpace::c_min, &SearchSpace::c_max, 1e-6, 1e8,
+     [](const svr::Params& p) { return p.c; }},
+    {"sigma", &SearchSpace::sigma_min, &SearchSpace::sigma_max, 1e-4, 1e4,
+     [](const svr::Params& p) { return p.kernel.sigma(); }},
+    {"epsilon", &SearchSpace::epsilon_min, &SearchSpace::epsilon_max, 1e-6, 10.0,
+     [](const svr::Params& p) { return p.epsilon; }},
+}};
+
+}  // namespace
+
+std::vector<BoxEdge> box_edges(const TuneSummary& summary, const SearchSpace& space) {
+  std::vector<BoxEdge> edges;
+  for (const Axis& a : kAxes) {
+    if (a.name == std::string_view("epsilon") && !space.search_epsilon) continue;
+    const double lo = std::log10(space.*a.low), hi = std::log10(space.*a.high), span = hi - lo;
+    const double best = std::log10(a.get(summary.best));
+    for (const bool upper : {false, true}) {
+      const double edge = upper ? hi : lo;
+      if (std::fabs(best - edge) > 0.02 * span) continue;
+      // The best fitness at least `inset` (log10) further inside than the edge.
+      const double inset = std::min(1.0, 0.25 * span);
+      double inside = std::numeric_limits<double>::infinity();
+      for (const Candidate& c : summary.history) {
+        if (!c.complete) continue;  // an estimate only
+        const double x = std::log10(a.get(c.params));
+        if ((upper ? edge - x : x - edge) >= inset) inside = std::min(inside, c.loss);
+      }
+      BoxEdge e;
+      e.parameter = a.name;
+      e.upper = upper;
+      e.value = a.get(summary.best);
+      e.low = space.*a.low;
+      e.high = space.*a.high;
+      e.improvement = std::isfinite(inside) && inside > 0
+                          ? std::max(0.0, (inside - summary.best_fitness) / inside)
+                          : 0.0;
+      edges.push_back(e);
+    }
+  }
+  return edges;
+}
+
+SearchSpace widened(const SearchSpace& space, const std::vector<BoxEdge>& edges) {
+  SearchSpace w = space;
+  for (const BoxEdge& e : edges) {
+    for (const Axis& a : kAxes) {
+      if (e.parameter != a.name) continue;
+      if (e.upper)
+        w.*a.high = std::min(a.ceiling, w.*a.high * 10.0);
+      else
+        w.*a.low = std::max(a.floor, w.*a.low / 10.0);
+    }
+  }
+  return w;
+}
+
+}  // namespace fogdrift::tune

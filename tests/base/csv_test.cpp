@@ -1,0 +1,140 @@
+#include "fogdrift/base/csv.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "fogdrift/base/error.hpp"
+#include "fogdrift/base/random.hpp"
+
+namespace fogdrift::csv {
+namespace {
+
+TEST(CsvParse, QuotedFieldsCrlfAndByteOrderMark) {
+  const Table t = parse(
+      "\xEF\xBB\xBFtime_s,\"Rate X [rad/s], filtered\",note\r\n1,2,\"a \"\"b\"\"\"\r\n"
+      "2,3,plain\r\n\r\n",
+      "x.csv");
+  ASSERT_EQ(t.header.size(), 3u);
+  EXPECT_EQ(t.header[0], "time_s");  // the BOM is not part of the first name
+  EXPECT_EQ(t.header[1], "Rate X [rad/s], filtered");
+  ASSERT_EQ(t.rows.size(), 2u);
+  EXPECT_EQ(t.rows[0][2], "a \"b\"");
+  EXPECT_EQ(t.row_line[1], 3u);
+}
+
+TEST(CsvParse, SemicolonDelimiter) {
+  const Table t = parse("a;b\n1,5;2\n", "x.csv", {';'});
+  ASSERT_EQ(t.rows.size(), 1u);
+  EXPECT_EQ(t.rows[0][0], "1,5");
+}
+
+TEST(CsvParse, TrailingDelimiterMakesAnEmptyField) {
+  EXPECT_THROW(parse("a,b\n1,2,\n", "x.csv"), InputError);
+}
+
+TEST(CsvParse, DropEmptyRemovesASpreadsheetsPaddingWithANote) {
+  // A chamber sheet as a spreadsheet exports it: trailing nameless empty columns, a nameless
+  // empty column between two named ones, and rows of empty cells at the end.
+  const std::string text =
+      "\xEF\xBB\xBFTime,T1 (F),,T2 (C),,\n15:40,70.1,,21.0,,\n15:45,70.3,,21.1,,\n,,,,,\n , ,,,,\n";
+  EXPECT_THROW(parse(text, "sheet.csv"), InputError);  // strict by default
+  ReadOptions tolerant;
+  tolerant.drop_empty = true;
+  const Table t = parse(text, "sheet.csv", tolerant);
+  ASSERT_EQ(t.header, (std::vector<std::string>{"Time", "T1 (F)", "T2 (C)"}));
+  ASSERT_EQ(t.rows.size(), 2u);
+  EXPECT_EQ(t.rows[1], (std::vector<std::string>{"15:45", "70.3", "21.1"}));
+  EXPECT_EQ(t.row_line[1], 3u);
+  ASSERT_EQ(t.notes.size(), 2u);
+  EXPECT_EQ(t.notes[0], "dropped 3 empty column(s) with no name (column 3, 5, 6)");
+  EXPECT_EQ(t.notes[1], "dropped 2 row(s) with every field empty");
+}
+
+TEST(CsvParse, DropEmptyKeepsANamelessColumnThatHoldsAValueAnError) {
+  ReadOptions tolerant;
+  tolerant.drop_empty = true;
+  try {
+    parse("Time,,T1\n1,,5\n2,oops,6\n", "sheet.csv", tolerant);
+    FAIL() << "a nameless column with a value must be an error";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.line(), 3u);
+    EXPECT_EQ(e.column(), 2u);
+    EXPECT_NE(std::string(e.what()).find("no name in the header"), std::string::npos);
+  }
+  // A row of blanks in the middle is dropped too; nothing else changes.
+  const Table t = parse("a,b\n1,2\n,\n3,4\n", "x.csv", tolerant);
+  EXPECT_EQ(t.rows.size(), 2u);
+  EXPECT_EQ(t.row_line[1], 4u);
+}
+
+TEST(ParseNumber, AcceptsDecimalForms) {
+  EXPECT_EQ(*parse_number("1.5"), 1.5);
+  EXPECT_EQ(*parse_number(" -2e-3 "), -2e-3);
+  EXPECT_EQ(*parse_number("+4"), 4.0);
+  EXPECT_EQ(*parse_number(".5"), 0.5);
+  EXPECT_EQ(*parse_number("1,25", true), 1.25);
+}
+
+TEST(ParseNumber, RejectsNonFiniteAndText) {
+  for (const char* bad : {"", " ", "nan", "NaN", "inf", "-Infinity", "1e999", "abc", "1.2.3",
+                          "0x10", "1,5", "--1", "+", "-"}) {
+    EXPECT_FALSE(parse_number(bad).has_value()) << "'" << bad << "'";
+  }
+  EXPECT_FALSE(parse_number("1.5", true).has_value());  // a '.' with decimal commas is ambiguous
+}
+
+TEST(FormatNumber, ShortestTextReadsBackExactly) {
+  Rng rng(42);
+  for (int i = 0; i < 20000; ++i) {
+    const double scale = std::pow(10.0, rng.uniform(-30.0, 30.0));
+    const double x = rng.normal() * scale;
+    const std::string text = format_number(x);
+    const auto back = parse_number(text);
+    ASSERT_TRUE(back.has_value()) << text;
+    ASSERT_EQ(*back, x) << text;
+  }
+  EXPECT_EQ(format_number(0.1), "0.1");
+  EXPECT_EQ(format_number(-39.73), "-39.73");
+  EXPECT_EQ(format_number(1800.0), "1800");
+}
+
+TEST(Quote, OnlyWhenNeeded) {
+  EXPECT_EQ(quote("plain"), "plain");
+  EXPECT_EQ(quote("a,b"), "\"a,b\"");
+  EXPECT_EQ(quote("say \"hi\""), "\"say \"\"hi\"\"\"");
+  EXPECT_EQ(quote(" edge"), "\" edge\"");
+}
+
+// Found by attack (issue 36, "reader leniency"): a 10 MB number was echoed whole in its error.
+TEST(Excerpt, ShowsAFieldWholeUpTo40CharactersElseItsStartAndLength) {
+  EXPECT_EQ(excerpt("12.5x"), "12.5x");
+  EXPECT_EQ(excerpt(std::string(40, '7')), std::string(40, '7'));
+  EXPECT_EQ(excerpt(std::string(10'000'000, '9')), std::string(40, '9') + "…(10000000 characters)");
+}
+
+// Found by attack (issue 36, "stream input"): stream echoed the CR of CRLF lines into its output,
+// read a CR-only file as one line and refused a byte-order mark. Its lines are those read() sees.
+TEST(LineReader, EndsLinesAtLfCrlfOrCrAndDropsTheByteOrderMark) {
+  const std::string bom = "\xEF\xBB\xBF";
+  for (const std::string& text :
+       {bom + "a,b\n1,2\n\n3,4", bom + "a,b\r\n1,2\r\n\r\n3,4\r\n", bom + "a,b\r1,2\r\r3,4\r"}) {
+    std::istringstream in(text);
+    LineReader lines(in);
+    std::vector<std::string> got;
+    std::string line;
+    while (lines.next(line)) got.push_back(line);
+    EXPECT_EQ(got, (std::vector<std::string>{"a,b", "1,2", "", "3,4"})) << text;
+  }
+  EXPECT_EQ(parse(bom + "a,b\r\n1,2\r\n", "t.csv").header, (std::vector<std::string>{"a", "b"}));
+  std::istringstream empty("");
+  std::string line;
+  EXPECT_FALSE(LineReader(empty).next(line));
+}
+
+}  // namespace
+}  // namespace fogdrift::csv

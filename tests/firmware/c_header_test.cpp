@@ -1,0 +1,82 @@
+// The C99 header export (c_header.hpp): compiled with the C compiler in a small program, whose
+// predictions must be the library's, for every registered regressor.
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <sstream>
+
+#include "fogdrift/base/error.hpp"
+#include "fogdrift/firmware/c_header.hpp"
+#include "fogdrift/model/model.hpp"
+#include "fogdrift/tune/train.hpp"
+#include "synthetic_dataset.hpp"
+#include "test_util.hpp"
+
+namespace fogdrift {
+namespace {
+
+constexpr const char* kDriver = R"(#include <stdio.h>
+#include "model.h"
+int main(void) {
+  double f[FD_MODEL_N_FEATURES];
+  int k;
+  for (;;) {
+    for (k = 0; k < FD_MODEL_N_FEATURES; ++k)
+      if (scanf("%lf", &f[k]) != 1) return 0;
+    printf("%.17g\n", fd_model_predict_dph(f));
+  }
+}
+)";
+
+TEST(CHeader, CompilesAndPredictsAsTheLibrary) {
+  const Dataset d = test::synthetic();
+  for (Method method : {Method::ssa_svr, Method::bp, Method::poly, Method::gp}) {
+    TrainOptions o;
+    o.method = method;
+    o.gp.max_points = 150;
+    o.gp.max_iterations = 20;
+    o.tune.optimizer.run.population = 6;
+    o.tune.optimizer.run.iterations = 2;
+    o.tune.space.c_max = 10;
+    o.mlp.max_epochs = 200;
+    const CompensationModel model = train(d, test::kDefaultDataset, o).model;
+    test::TempDir dir;
+    test::write_file(dir / "model.h", to_c_header(model, "fd_model"));
+    test::write_file(dir / "driver.c", kDriver);
+    std::ostringstream rows;
+    rows.precision(17);
+    for (std::size_t i = 0; i < d.rows; ++i) {
+      for (double v : d.row(i)) rows << v << ' ';
+      rows << '\n';
+    }
+    std::istringstream out(test::compile_and_run_c(dir, rows.str()));
+    const std::vector<double> expected = model.predict_dph(d);
+    double worst = 0, scale = 0;
+    std::size_t n = 0;
+    for (double v; out >> v; ++n) {
+      ASSERT_LT(n, expected.size());
+      worst = std::max(worst, std::abs(v - expected[n]));
+      scale = std::max(scale, std::abs(expected[n]));
+    }
+    EXPECT_EQ(n, d.rows) << to_string(method);
+    EXPECT_LE(worst, 1e-13 * scale) << to_string(method);
+  }
+}
+
+TEST(CHeader, NamesTheFeaturesAndRejectsBadPrefixes) {
+  TrainOptions o;
+  o.method = Method::svr;
+  const CompensationModel model = train(test::synthetic(), test::kDefaultDataset, o).model;
+  const std::string h = to_c_header(model, "unit7");
+  EXPECT_NE(h.find("#define UNIT7_N_FEATURES 3"), std::string::npos);
+  EXPECT_NE(h.find("static const char* const unit7_feature_names[3] = {\"a\", \"b\", \"c\"};"),
+            std::string::npos);
+  EXPECT_NE(h.find("static inline unit7_real unit7_predict_dph("), std::string::npos);
+  EXPECT_EQ(h.find("malloc"), std::string::npos);
+  EXPECT_THROW(to_c_header(model, "7unit"), OptionError);
+  EXPECT_THROW(to_c_header(model, "my-model"), OptionError);
+  EXPECT_THROW(to_c_header(model, ""), OptionError);
+}
+
+}  // namespace
+}  // namespace fogdrift
