@@ -19,7 +19,8 @@ std::string keyword_text(const OptionSpec& spec, const pybind11::handle& value,
                          const std::string& function);
 
 /// One dict per option, in order: keyword, type (to_string(OptionType)), default (as text),
-/// unit, range, doc (other options named by keyword), flag.
+/// unit, doc (option_help's: with the unit and the values allowed, other options named by
+/// keyword), flag.
 pybind11::list describe_options(const std::vector<OptionSpec>& specs,
                                 const std::vector<std::string>& defaults);
 

@@ -21,6 +21,7 @@
 #include "bindings.hpp"
 #include "fogdrift/base/error.hpp"
 #include "fogdrift/base/thread_pool.hpp"
+#include "fogdrift/svr/grid_search.hpp"
 #include "fogdrift/svr/svr.hpp"
 
 namespace py = pybind11;
@@ -202,13 +203,10 @@ py::list fit_path(const Array& x, const Array& y, const std::optional<Array>& we
   return out;
 }
 
-// A grid search's fits: for each fold and γ, one warm-started path over C (ascending) on the
-// fold's training rows, each model scored by its sum of squared errors on the fold's test
-// rows. (fold, γ) pairs run in parallel, each with a workspace; results do not depend on the
-// thread count. Returns SSE[γ][C][fold].
-// Every (gamma, C, fold) by warm-started C paths: the sum of squared errors over each fold's test
-// rows, or with `predict_rows` (one index array per fold) the predictions at those rows, a list of
-// (gamma, C, rows) arrays, one per fold (fogdrift.SVRGridSearchCV scores them with any scorer).
+// Every (gamma, C, fold) of a grid (svr/grid_search.hpp): the sum of squared errors over each
+// fold's test rows, or with `predict_rows` (one index array per fold) the predictions at those
+// rows, a list of (gamma, C, rows) arrays, one per fold (fogdrift.SVRGridSearchCV scores them
+// with any scorer).
 py::object search(const Array& x, const Array& y, const std::optional<Array>& weight,
                   const std::vector<py::array_t<std::int64_t>>& train_rows,
                   const std::vector<py::array_t<std::int64_t>>& test_rows,
@@ -219,8 +217,9 @@ py::object search(const Array& x, const Array& y, const std::optional<Array>& we
   check_c_values(c_values);
   if (gammas.empty() || train_rows.empty() || train_rows.size() != test_rows.size())
     throw std::invalid_argument("search: needs values of gamma, and train and test folds");
+  if (predict_rows && predict_rows->size() != train_rows.size())
+    throw std::invalid_argument("search: predict_rows needs one index array per fold");
   const svr::Data all = to_data(x, y, weight);
-  const std::size_t folds = train_rows.size(), ng = gammas.size(), nc = c_values.size();
   auto indices = [&](const py::array_t<std::int64_t>& rows) {
     std::vector<std::size_t> out;
     const auto r = rows.unchecked<1>();
@@ -231,66 +230,36 @@ py::object search(const Array& x, const Array& y, const std::optional<Array>& we
     }
     return out;
   };
-  if (predict_rows && predict_rows->size() != folds)
-    throw std::invalid_argument("search: predict_rows needs one index array per fold");
-  std::vector<std::vector<std::size_t>> train(folds), test(folds), at(folds);
-  for (std::size_t f = 0; f < folds; ++f) {
-    train[f] = indices(train_rows[f]);
-    test[f] = indices(test_rows[f]);
-    if (predict_rows) at[f] = indices((*predict_rows)[f]);
+  std::vector<svr::GridFold> folds(train_rows.size());
+  for (std::size_t f = 0; f < folds.size(); ++f) {
+    folds[f].train = indices(train_rows[f]);
+    folds[f].test = indices(test_rows[f]);
+    if (predict_rows) folds[f].predict = indices((*predict_rows)[f]);
   }
-  // C in ascending order along each path (warm starts go from small C to large).
-  std::vector<std::size_t> by_c(nc);
-  std::iota(by_c.begin(), by_c.end(), std::size_t{0});
-  std::stable_sort(by_c.begin(), by_c.end(),
-                   [&](std::size_t a, std::size_t b) { return c_values[a] < c_values[b]; });
-  std::vector<double> ascending(nc);
-  for (std::size_t k = 0; k < nc; ++k) ascending[k] = c_values[by_c[k]];
-
-  std::vector<double> sse(ng * nc * folds, 0.0);
-  std::vector<std::vector<double>> predicted(folds);  // per fold: gamma × C × rows
-  for (std::size_t f = 0; f < folds; ++f) predicted[f].resize(ng * nc * at[f].size());
+  svr::GridSearchResult r;
   {
     py::gil_scoped_release release;
-    std::vector<std::unique_ptr<svr::TrainingSet>> sets(folds);
-    std::vector<std::vector<svr::Params>> params(folds);
-    for (std::size_t f = 0; f < folds; ++f) {
-      sets[f] = std::make_unique<svr::TrainingSet>(all.subset(train[f]));
-      for (const Gamma& g : gammas)
-        params[f].push_back(to_params(kernel, gamma_of(g, sets[f]->data()), ascending.front(),
-                                      epsilon, tol, cache_mb, max_iter, shrinking, solver));
-    }
     ThreadPool pool(n_jobs < 0 ? 0u : static_cast<unsigned>(n_jobs));
-    svr::WorkspacePool& spaces = workspaces();
-    pool.parallel_for(folds * ng, [&](std::size_t task) {
-      const std::size_t f = task / ng, gi = task % ng;
-      const svr::WorkspacePool::Lease workspace = spaces.borrow();
-      const auto path = svr::fit_c_path(*sets[f], params[f][gi], ascending, workspace.get());
-      if (predict_rows) {
-        const std::vector<double> p = svr::path_predictions(*sets[f], path, all, at[f]);
-        const std::size_t n = at[f].size();
-        for (std::size_t r = 0; r < n; ++r)
-          for (std::size_t k = 0; k < nc; ++k)
-            predicted[f][(gi * nc + by_c[k]) * n + r] = p[r * nc + k];
-        return;
-      }
-      const std::vector<double> errors = svr::path_squared_errors(*sets[f], path, all, test[f]);
-      for (std::size_t k = 0; k < nc; ++k) sse[(gi * nc + by_c[k]) * folds + f] = errors[k];
-    });
+    r = svr::grid_search(
+        all, folds, gammas.size(),
+        [&](const svr::Data& train, std::size_t k) {  // errors in scikit-learn's names
+          return to_params(kernel, gamma_of(gammas[k], train), c_values.front(), epsilon, tol,
+                           cache_mb, max_iter, shrinking, solver);
+        },
+        c_values, predict_rows.has_value(), pool, workspaces());
   }
+  const auto ng = static_cast<py::ssize_t>(r.kernels), nc = static_cast<py::ssize_t>(r.c_values);
   if (predict_rows) {
     py::list out;
-    for (std::size_t f = 0; f < folds; ++f) {
-      py::array_t<double> a({static_cast<py::ssize_t>(ng), static_cast<py::ssize_t>(nc),
-                             static_cast<py::ssize_t>(at[f].size())});
-      std::copy(predicted[f].begin(), predicted[f].end(), a.mutable_data());
+    for (std::size_t f = 0; f < folds.size(); ++f) {
+      py::array_t<double> a({ng, nc, static_cast<py::ssize_t>(folds[f].predict.size())});
+      std::copy(r.predictions[f].begin(), r.predictions[f].end(), a.mutable_data());
       out.append(a);
     }
     return out;
   }
-  py::array_t<double> out({static_cast<py::ssize_t>(ng), static_cast<py::ssize_t>(nc),
-                           static_cast<py::ssize_t>(folds)});
-  std::copy(sse.begin(), sse.end(), out.mutable_data());
+  py::array_t<double> out({ng, nc, static_cast<py::ssize_t>(r.folds)});
+  std::copy(r.sse.begin(), r.sse.end(), out.mutable_data());
   return std::move(out);
 }
 
