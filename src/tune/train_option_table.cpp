@@ -81,8 +81,9 @@ OptionTable<O> make_table() {
         search_names(),
         "How the regressor's hyperparameters are searched, over the folds of {cv} with "
         "{population} and {iterations}: ssa (sparrow search), pso (particle swarm), gwo "
-        "(grey wolf); none; auto, the method's own (ssa for ssa-svr and gp's cv fit, none "
-        "for svr, bp and poly). {method} svr with {search} ssa is ssa-svr",
+        "(grey wolf); none; auto, the method's own: ssa for ssa-svr and gp's cv fit, pso "
+        "for pso-svr, gwo for gwo-svr, none for svr, bp and poly. {method} svr with {search} "
+        "ssa is ssa-svr",
         {}},
        [](const O& o) { return std::string(to_string(o.train.search)); },
        [](O& o, const std::string& text) { o.train.search = parse_search(text, "search"); }});
