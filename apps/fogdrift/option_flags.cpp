@@ -69,10 +69,4 @@ OptionError OptionFlags::named(const OptionError& e) const {
   return OptionError(flag_for(e.option(), flag_table_), in_option_words(e.message(), specs_, true));
 }
 
-bool OptionFlags::was_given(const std::string& keyword) const {
-  for (std::size_t i = 0; i < specs_.size(); ++i)
-    if (specs_[i].keyword == keyword) return options_[i]->count() > 0;
-  return false;
-}
-
 }  // namespace fogdrift::app

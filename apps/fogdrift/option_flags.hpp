@@ -27,9 +27,6 @@ class OptionFlags {
   /// (keyword, text) of each option given on the command line, in the table's order.
   std::vector<std::pair<std::string, std::string>> given() const;
 
-  /// Whether the option `keyword` was given.
-  bool was_given(const std::string& keyword) const;
-
   /// The library's fields (each option's keyword and OptionSpec::fields) and their flags, for
   /// as_flag.
   const FlagTable& flag_table() const { return flag_table_; }

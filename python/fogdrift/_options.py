@@ -24,9 +24,9 @@ def _value(option):
     return text
 
 
-def with_options(function, options, first="campaign"):
+def with_options(function, options, first="campaign", command="fogdrift train"):
     """`function` with a signature (`first`, then every option, keyword-only) and a docstring
-    listing each option as the descriptions give it."""
+    listing each option as the descriptions give it, with the flag of `command` that sets it."""
     @functools.wraps(function)
     def call(*args, **kwargs):
         return function(*args, **kwargs)
@@ -37,7 +37,7 @@ def with_options(function, options, first="campaign"):
     call.__signature__ = inspect.Signature(parameters)
     lines = [function.__doc__.strip().split("\n")[-1], "", "Keywords:"]
     for o in options:
-        flag = f" (fogdrift train {o['flag']})" if o["flag"] else ""
+        flag = f" ({command} {o['flag']})" if o["flag"] else ""
         lines.append(f"    {o['keyword']} = {_value(o)!r}{flag}: {o['doc']}")
     call.__doc__ = "\n".join(lines)
     return call
