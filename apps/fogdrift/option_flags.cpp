@@ -65,8 +65,12 @@ std::vector<std::pair<std::string, std::string>> OptionFlags::given() const {
   return out;
 }
 
+std::string OptionFlags::words(const std::string& text) const {
+  return in_option_words(text, specs_, true);
+}
+
 OptionError OptionFlags::named(const OptionError& e) const {
-  return OptionError(flag_for(e.option(), flag_table_), in_option_words(e.message(), specs_, true));
+  return OptionError(flag_for(e.option(), flag_table_), words(e.message()));
 }
 
 }  // namespace fogdrift::app

@@ -31,8 +31,10 @@ class OptionFlags {
   /// as_flag.
   const FlagTable& flag_table() const { return flag_table_; }
 
-  /// `e` named by the flag that sets its field, the options its message names ({keyword},
-  /// option_table.hpp) by their flags.
+  /// `text` with the options it names as {keyword} (option_table.hpp) named by their flags.
+  std::string words(const std::string& text) const;
+
+  /// `e` named by the flag that sets its field, its message in words().
   OptionError named(const OptionError& e) const;
 
   /// Sets every option given in `options`; an OptionError is named().

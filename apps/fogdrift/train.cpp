@@ -35,10 +35,9 @@ struct TrainArgs {
 };
 
 /// How sure train is, its advice in flags.
-std::vector<std::string> held_out_warnings(const HeldOutReport& h) {
-  static const std::vector<OptionSpec> specs = specs_of(train_option_table());
+std::vector<std::string> held_out_warnings(const TrainArgs& a, const HeldOutReport& h) {
   std::vector<std::string> out;
-  for (const auto& w : h.warnings) out.push_back(in_option_words(w, specs, true));
+  for (const auto& w : h.warnings) out.push_back(a.flags->words(w));
   return out;
 }
 
@@ -124,13 +123,13 @@ nlohmann::ordered_json summary_json(const TrainArgs& a, const CampaignTrainResul
                        {"expected_share", h.expected_share},
                        {"expected_startup_share", h.expected_startup_share},
                        {"baselines", base},
-                       {"warnings", held_out_warnings(h)}};
+                       {"warnings", held_out_warnings(a, h)}};
     } else {
       j["held_out"] = {{"missing", s.held_out_missing}};
     }
     nlohmann::ordered_json warnings = data.warnings;
     if (s.held_out)
-      for (const auto& w : held_out_warnings(*s.held_out)) warnings.push_back(w);
+      for (const auto& w : held_out_warnings(a, *s.held_out)) warnings.push_back(w);
     j["warnings"] = warnings;
     j["block_s"] = dataset.preprocessing.block.block_s;
     j["rate_window_s"] = dataset.preprocessing.rates.window_s;
@@ -184,7 +183,8 @@ void print_summary(const TrainArgs& a, const CampaignTrainResult& trained,
     }
     for (const auto& n : notes) std::cout << "  note: " << n << "\n";
     if (s.held_out)
-      for (const auto& w : held_out_warnings(*s.held_out)) std::cout << "  warning: " << w << "\n";
+      for (const auto& w : held_out_warnings(a, *s.held_out))
+        std::cout << "  warning: " << w << "\n";
     for (const auto& n : edge_notes) std::cout << "  warning: " << n << "\n";
     for (const auto& w : data.warnings) std::cout << "  warning: " << w << "\n";
   }
@@ -198,11 +198,13 @@ void run(TrainArgs& a) {
   options.tune.pool = &pool;
 
   const bool show_progress = !a.quiet && !a.json && stderr_is_terminal();
-  // The method as trained (svr with --search ssa is ssa-svr); a contradiction is train's error.
-  std::string label = to_string(options.method);
+  // The method as trained (svr with --search ssa is ssa-svr); a method and a search that
+  // contradict are refused here, before the campaign is read.
+  std::string label;
   try {
     label = to_string(resolved(options).method);
-  } catch (const OptionError&) {
+  } catch (const OptionError& e) {
+    throw a.flags->named(e);
   }
   const auto start = std::chrono::steady_clock::now();
   if (show_progress) {

@@ -322,6 +322,8 @@ check "train with causal rates" run 0 "$fd" train "$work/small" --method poly --
 check "causal rates in the model" grep -q '"causality": "causal"' "$work/causal.json"
 check "bad differentiator" run 1 "$fd" train "$work/small" --differentiator future -o "$work/x.json"
 check "differentiator message" err_has "option --differentiator: 'future' is not a differentiator"
+check "a search that contradicts the method, before any campaign is read" run 1 "$fd" train "$work/no-such-campaign" --method ssa-svr --search pso -o "$work/x.json"
+check "search message" err_has "option --search: 'pso' contradicts --method ssa-svr, which is svr searched by ssa; give --method svr with --search pso"
 check "bad rate degree" run 1 "$fd" train "$work/small" --rate-degree 5 -o "$work/x.json"
 check "rate degree message" err_has "option --rate-degree: 5 is outside 1 … 4"
 check "causal rates fit a line by default" grep -q '"poly_order": 1' "$work/causal.json"
