@@ -27,61 +27,74 @@ namespace py = pybind11;
 namespace fogdrift::python {
 namespace {
 
-// The keywords only Python has: how the call runs and what it returns, not what the model is.
-// `progress` is described here and read by hand (a callable has no text).
-const std::vector<OptionSpec>& python_only() {
-  static const std::vector<OptionSpec> specs = {
-      {"threads",
-       "",
-       OptionType::whole,
-       "",
-       "",
-       "Threads (0: one per core); results do not depend on it",
-       {}},
-      {"target",
-       "",
-       OptionType::text,
-       "",
-       "",
-       "The column to compensate, gyro_dph or another gyro axis the recordings carry "
-       "(gyro_y_dph, ...), an accelerometer (accel_x_g, accel_NAME_g) or a scale-factor channel "
-       "(sf_NAME_ppm), each less its reference in the manifest (docs/logs.md, \"Other "
-       "targets\"); save_models writes the models of every axis as one file, as `fogdrift train "
-       "--targets` does",
-       {}},
-      {"progress",
-       "",
-       OptionType::text,
-       "",
-       "",
-       "Called after each iteration of a search with a dict (iteration, iterations, "
-       "evaluations, best_rmse, best_point); returning False stops the search",
-       {}},
-      {"validate_only",
-       "",
-       OptionType::on_off,
-       "",
-       "",
-       "Check the options and return None without reading the campaign (train_fleet does, "
-       "once, before any unit runs)",
-       {}}};
-  return specs;
+// The keywords only Python has: how the call runs and what it returns, not what the model is,
+// each with its default. `progress` is described here and read by hand (a callable has no text).
+struct PythonKeyword {
+  OptionSpec spec;
+  std::string default_text;
+};
+
+const std::vector<PythonKeyword>& python_only() {
+  const DatasetOptions dataset = DatasetOptions();  // the default target
+  static const std::vector<PythonKeyword> keywords = {
+      {{"threads",
+        "",
+        OptionType::whole,
+        "",
+        "",
+        "Threads (0: one per core); results do not depend on it",
+        {}},
+       "0"},
+      {{"target",
+        "",
+        OptionType::text,
+        "",
+        "",
+        "The column to compensate, gyro_dph or another gyro axis the recordings carry "
+        "(gyro_y_dph, ...), an accelerometer (accel_x_g, accel_NAME_g) or a scale-factor "
+        "channel (sf_NAME_ppm), each less its reference in the manifest (docs/logs.md, \"Other "
+        "targets\"); save_models writes the models of every axis as one file, as `fogdrift "
+        "train --targets` does",
+        {}},
+       dataset.target_column},
+      {{"progress",
+        "",
+        OptionType::text,
+        "",
+        "",
+        "Called after each iteration of a search with a dict (iteration, iterations, "
+        "evaluations, best_rmse, best_point); returning False stops the search",
+        {}},
+       "None"},
+      {{"validate_only",
+        "",
+        OptionType::on_off,
+        "",
+        "",
+        "Check the options and return None without reading the campaign (train_fleet does, "
+        "once, before any unit runs)",
+        {}},
+       "false"}};
+  return keywords;
 }
 
-const std::vector<std::string> kPythonOnlyDefaults = {"0", "gyro_dph", "None", "false"};
+/// The Python-only keyword named `keyword`, or nullptr.
+const OptionSpec* python_only_spec(std::string_view keyword) {
+  for (const PythonKeyword& k : python_only())
+    if (k.spec.keyword == keyword) return &k.spec;
+  return nullptr;
+}
 
 py::object train(const py::object& campaign, const py::kwargs& kwargs) {
   const OptionTable<CampaignTrainOptions>& table = train_option_table();
   const std::vector<OptionSpec> specs = specs_of(table);
   for (const auto& [key, value] : kwargs) {
     const auto k = key.cast<std::string>();
-    const bool known =
-        find_option(table, k) || std::any_of(python_only().begin(), python_only().end(),
-                                             [&](const OptionSpec& s) { return s.keyword == k; });
+    const bool known = find_option(table, k) || python_only_spec(k);
     if (!known) {
       std::string all;
       for (const auto& s : specs) all += (all.empty() ? "" : ", ") + s.keyword;
-      for (const auto& s : python_only()) all += ", " + s.keyword;
+      for (const PythonKeyword& p : python_only()) all += ", " + p.spec.keyword;
       throw py::type_error(fmt::format(
           "train() got an unexpected keyword argument '{}'; its keywords are campaign, {}", k,
           all));
@@ -97,14 +110,16 @@ py::object train(const py::object& campaign, const py::kwargs& kwargs) {
     for (const auto& option : table)
       if (given(option.spec.keyword)) option.set(o, text_of(option.spec));
   });
-  const auto& extra = python_only();
-  const std::string target = given("target") ? text_of(extra[1]) : kPythonOnlyDefaults[1];
-  target_of(target, "target");
-  o.dataset.target_column = target;
+  if (given("target")) o.dataset.target_column = text_of(*python_only_spec("target"));
+  target_of(o.dataset.target_column, "target");
   std::uint64_t threads = 0;
-  if (given("threads")) threads = parse_whole_option(extra[0], text_of(extra[0]));
+  if (given("threads")) {
+    const OptionSpec& spec = *python_only_spec("threads");
+    threads = parse_whole_option(spec, text_of(spec));
+  }
+  const OptionSpec& validate_spec = *python_only_spec("validate_only");
   const bool validate_only =
-      given("validate_only") && parse_on_off_option(extra[3], text_of(extra[3]));
+      given("validate_only") && parse_on_off_option(validate_spec, text_of(validate_spec));
   py::object progress = py::none();
   if (given("progress")) progress = kwargs["progress"];
   if (!progress.is_none() && !PyCallable_Check(progress.ptr()))
@@ -292,7 +307,13 @@ void bind_train(py::module_& m) {
       [] {
         py::list out =
             describe_options(specs_of(train_option_table()), defaults_of(train_option_table()));
-        py::list extra = describe_options(python_only(), kPythonOnlyDefaults);
+        std::vector<OptionSpec> specs;
+        std::vector<std::string> defaults;
+        for (const PythonKeyword& k : python_only()) {
+          specs.push_back(k.spec);
+          defaults.push_back(k.default_text);
+        }
+        py::list extra = describe_options(specs, defaults);
         for (const auto& d : extra) out.append(d);
         return out;
       },
