@@ -116,15 +116,6 @@ svr::Params to_params(const std::string& kernel, double gamma, double c, double 
   return p;
 }
 
-// Every value of C of a path or a grid, checked before the first fit (fit_c_path would find a
-// bad one only when it reaches it).
-void check_c_values(const std::vector<double>& c_values) {
-  if (c_values.empty()) throw OptionError("C", "needs at least one value");
-  for (const double c : c_values)
-    if (!(std::isfinite(c) && c > 0))
-      throw OptionError("C", fmt::format("every value must be a finite number > 0 (got {})", c));
-}
-
 // A fit as the Python estimator stores it: the support vectors' indices into the training rows,
 // their coefficients α⁺ − α⁻ and rows, ρ, the γ used, and the solver's summary.
 py::dict to_dict(const svr::FitResult& r, const svr::Data& data, double gamma) {
@@ -185,7 +176,7 @@ py::list fit_path(const Array& x, const Array& y, const std::optional<Array>& we
                   const std::string& kernel, const Gamma& gamma, double epsilon, double tol,
                   double cache_mb, std::int64_t max_iter, bool shrinking,
                   const std::string& solver) {
-  check_c_values(c_values);
+  svr::validate_c_values(c_values);
   svr::Data data = to_data(x, y, weight, rows);
   const double g = gamma_of(gamma, data);
   const svr::Params p =
@@ -214,7 +205,6 @@ py::object search(const Array& x, const Array& y, const std::optional<Array>& we
                   const std::string& kernel, double epsilon, double tol, double cache_mb,
                   std::int64_t max_iter, bool shrinking, const std::string& solver, int n_jobs,
                   const std::optional<std::vector<py::array_t<std::int64_t>>>& predict_rows) {
-  check_c_values(c_values);
   if (gammas.empty() || train_rows.empty() || train_rows.size() != test_rows.size())
     throw std::invalid_argument("search: needs values of gamma, and train and test folds");
   if (predict_rows && predict_rows->size() != train_rows.size())
@@ -260,7 +250,7 @@ py::object search(const Array& x, const Array& y, const std::optional<Array>& we
   }
   py::array_t<double> out({ng, nc, static_cast<py::ssize_t>(r.folds)});
   std::copy(r.sse.begin(), r.sse.end(), out.mutable_data());
-  return std::move(out);
+  return out;
 }
 
 py::array_t<double> predict(const Array& vectors, const Array& coef, double rho,

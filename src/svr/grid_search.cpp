@@ -1,10 +1,7 @@
 // A grid search over folds by warm-started C paths (grid_search.hpp).
 #include "fogdrift/svr/grid_search.hpp"
 
-#include <fmt/format.h>
-
 #include <algorithm>
-#include <cmath>
 #include <memory>
 #include <numeric>
 
@@ -17,10 +14,7 @@ GridSearchResult grid_search(
     const Data& data, std::span<const GridFold> folds, std::size_t kernels,
     const std::function<Params(const Data& training_rows, std::size_t kernel)>& params_of,
     std::span<const double> c_values, bool predict, ThreadPool& pool, WorkspacePool& workspaces) {
-  if (c_values.empty()) throw OptionError("C", "needs at least one value");
-  for (const double c : c_values)  // all of them now: a path would find a bad one only there
-    if (!(std::isfinite(c) && c > 0))
-      throw OptionError("C", fmt::format("every value must be a finite number > 0 (got {})", c));
+  validate_c_values(c_values);
   if (kernels == 0 || folds.empty())
     throw OptionError("folds", "a grid search needs a kernel and a fold");
   for (const GridFold& f : folds)

@@ -298,6 +298,13 @@ std::vector<FitResult> fit_batch(const TrainingSet& set, std::span<const Params>
   return out;
 }
 
+void validate_c_values(std::span<const double> c_values, const std::string& name) {
+  if (c_values.empty()) throw OptionError(name, "needs at least one value");
+  for (const double c : c_values)
+    if (!(std::isfinite(c) && c > 0))
+      throw OptionError(name, fmt::format("every value must be a finite number > 0 (got {})", c));
+}
+
 std::vector<FitResult> fit_c_path(const TrainingSet& set, const Params& base,
                                   std::span<const double> c_values, Workspace* workspace) {
   validate(base);

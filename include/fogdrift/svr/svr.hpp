@@ -117,6 +117,11 @@ std::vector<FitResult> fit_batch(const TrainingSet& set, std::span<const Params>
 std::vector<FitResult> fit_c_path(const TrainingSet& set, const Params& base,
                                   std::span<const double> c_values, Workspace* workspace = nullptr);
 
+/// The values of C of a path or a grid, all checked before the first fit (a path would find a
+/// bad one only when it reaches it): OptionError(name) when there are none or one is not a
+/// finite number > 0.
+void validate_c_values(std::span<const double> c_values, const std::string& name = "C");
+
 /// Σ (f_k(x) − y)² over `rows` of `data` for each fit k of `path` (fit_c_path's result on `set`:
 /// one kernel, models differing in their coefficients), as a cross-validation scores a path.
 /// RBF: each kernel value between a row and a training sample is computed once for every model,
