@@ -37,9 +37,13 @@ std::string thermometers_read(const CompensationModel& model) {
 
 /// The compensator's code with its names fds_ and FDS_ given the header's prefix: every
 /// identifier that starts with them, in code and comments alike.
+constexpr std::string_view kCodeStarts = "/* fogdrift: the header's code starts here. */\n";
+static_assert(kCompensatorC.find(kCodeStarts) != std::string_view::npos,
+              "src/firmware/compensator.h lost the line its embedded code starts after");
+
 std::string renamed_compensator(const std::string& prefix, const std::string& upper) {
-  const std::string_view marker = "/* fogdrift: the header's code starts here. */\n";
-  const std::string_view code = kCompensatorC.substr(kCompensatorC.find(marker) + marker.size());
+  const std::string_view code =
+      kCompensatorC.substr(kCompensatorC.find(kCodeStarts) + kCodeStarts.size());
   const auto identifier = [](char c) {
     return std::isalnum(static_cast<unsigned char>(c)) || c == '_';
   };
