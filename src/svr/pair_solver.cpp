@@ -31,6 +31,7 @@
 #include <span>
 #include <vector>
 
+#include "svr/free_set_step.hpp"
 #include "svr/loops.hpp"
 #include "svr/smo.hpp"
 #include "svr/workspace_state.hpp"
@@ -55,6 +56,7 @@ class PairLayout {
         epsilon_(epsilon),
         tolerance_(options.tolerance),
         conjugate_(options.conjugate),
+        newton_(options.newton),
         workspace_(q.workspace().state()),
         order_(take_order(q, options)),
         index_(order_->index),
@@ -84,6 +86,7 @@ class PairLayout {
   // Starts from a previous solution of the same data scaled to this C (warm_alpha), as the LIBSVM
   // layout does.
   void warm_start(const DualSolution& w, const Data& data, bool same_kernel) {
+    warm_ = true;
     for (std::size_t k = 0; k < n_; ++k) {  // position k holds sample index_[k]
       const auto sample = static_cast<std::size_t>(index_[k]);
       const double cap_prev = w.c * data.weight_of(sample);
@@ -235,8 +238,79 @@ class PairLayout {
     return a_[k] * ((f_[k] - z_[k]) + 2 * epsilon_) + b_[k] * ((z_[k] - f_[k]) + 2 * epsilon_);
   }
 
+  // After a shrinking round, `iterations` SMO steps since the last one: a Newton step on the free
+  // samples (free_set_step.hpp; docs/svr.md, "Newton steps on the free set", has the
+  // measurements behind these rules), once the SMO steps have made as many iterations as there
+  // are samples (the fits that converge sooner, at small C, need none) or at once after a warm
+  // start (its free set is near the final one), and while the Newton steps' work, counted at
+  // kNewtonWorkWeight of a sample pass per operation, and the kernel rows they read stay below
+  // the SMO steps' work (iterations × active samples).
+  void between_rounds(std::size_t active, std::int64_t iterations) {
+    if (!newton_) return;
+    smo_work_ += static_cast<double>(iterations) * static_cast<double>(active);
+    free_.clear();
+    for (std::size_t k = 0; k < active; ++k) {
+      const bool a_free = a_[k] > 0 && a_[k] < cap_[k];
+      const bool b_free = b_[k] > 0 && b_[k] < cap_[k];
+      if ((a_free && b_[k] == 0) || (b_free && a_[k] == 0)) free_.push_back(k);
+    }
+    const std::size_t m = free_.size();
+    const double rows_work = static_cast<double>(m) * static_cast<double>(active);
+    total_iterations_ += iterations;
+    if (m < 2 || m > kMaxNewtonFree ||
+        (!warm_ && total_iterations_ < static_cast<std::int64_t>(n_)) ||
+        kNewtonWorkWeight * (newton_work_ + free_set_step_work(m, 0)) + rows_work > smo_work_)
+      return;
+    Eigen::MatrixXd kff(m, m);
+    Eigen::VectorXd r(m), lo(m), hi(m);
+    for (std::size_t i = 0; i < m; ++i) {
+      const std::size_t k = free_[i];
+      const float* row = rows_.row(index_[k], active);
+      for (std::size_t j = 0; j < m; ++j) kff(i, j) = row[free_[j]];
+      kff(i, i) = qd_[k];
+      // In β = α⁺ − α⁻: a free α⁺ has gradient f + ε and may change by [−α⁺, C − α⁺]; a free α⁻
+      // has gradient f − ε and β may change by [α⁻ − C, α⁻].
+      const bool plus = a_[k] > 0;
+      r[i] = plus ? f_[k] + epsilon_ : f_[k] - epsilon_;
+      lo[i] = plus ? -a_[k] : b_[k] - cap_[k];
+      hi[i] = plus ? cap_[k] - a_[k] : b_[k];
+    }
+    kff = (0.5 * (kff + kff.transpose())).eval();  // rows are computed one by one, in floats
+    const FreeSetStep step = free_set_step(kff, r, lo, hi, m);
+    newton_work_ += free_set_step_work(m, step.removals);
+    smo_work_ -= rows_work;
+    if (!step.moved) return;
+    for (std::size_t i = 0; i < m; ++i) {
+      const std::size_t k = free_[i];
+      const double beta = a_[k] - b_[k];
+      const bool plus = a_[k] > 0;
+      double& alpha = plus ? a_[k] : b_[k];
+      const double y = plus ? 1.0 : -1.0;
+      switch (step.ends[i]) {  // lower: β at lo, which is α⁺ = 0 or α⁻ = C
+        case FreeSetEnd::lower:
+          place(alpha, plus ? 0.0 : cap_[k], y, k);
+          break;
+        case FreeSetEnd::upper:
+          place(alpha, plus ? cap_[k] : 0.0, y, k);
+          break;
+        case FreeSetEnd::free:
+          place(alpha,
+                std::clamp(alpha + y * step.delta[static_cast<Eigen::Index>(i)], 0.0, cap_[k]), y,
+                k);
+          break;
+      }
+      refresh(k);
+      const double moved = (a_[k] - b_[k]) - beta;
+      if (moved != 0) loops_.add_row(f_.data(), rows_.row(index_[k], active), moved, 0, active);
+    }
+    forget_direction();
+    up_current_ = false;
+    ++newton_steps_;
+  }
+
   bool gradient_reused() const { return gradient_reused_; }
   std::int64_t conjugate_steps() const { return conjugate_steps_; }
+  std::int64_t newton_steps() const { return newton_steps_; }
   std::int64_t rows_computed() const { return rows_.rows_computed() - rows_before_; }
 
  private:
@@ -244,6 +318,7 @@ class PairLayout {
   std::size_t n_;
   double c_, epsilon_, tolerance_;
   bool conjugate_;
+  bool newton_;
   bool gradient_reused_ = false;
   Selection up_next_;        // select_up over the active samples, from the last step
   bool up_current_ = false;  // up_next_ is current: no swap or gradient rebuild since
@@ -274,6 +349,16 @@ class PairLayout {
   std::span<std::uint8_t> in_support_;
   std::vector<std::size_t> support_;
   std::int64_t conjugate_steps_ = 0;
+  // Newton steps on the free samples (between_rounds): the free samples of the last round, the
+  // work spent on SMO steps (sample passes) and on Newton steps (operations), and the SMO
+  // iterations so far.
+  static constexpr std::size_t kMaxNewtonFree = 1500;  // an 18 MB kernel block
+  static constexpr double kNewtonWorkWeight = 0.1;
+  std::vector<std::size_t> free_;
+  double smo_work_ = 0, newton_work_ = 0;
+  std::int64_t total_iterations_ = 0;
+  bool warm_ = false;  // started from an earlier solution (warm_start)
+  std::int64_t newton_steps_ = 0;
 
   // The order and rows an earlier fit on this cache left, or the identity order with no rows.
   std::unique_ptr<SampleOrder> take_order(KernelCache& q, const SolverOptions& options) {
@@ -414,9 +499,15 @@ class PairLayout {
   // true when that needed row k.
   bool move(double& alpha, double delta, double y, std::size_t k) {
     if (delta == 0) return false;
+    return place(alpha, std::clamp(alpha + delta, 0.0, cap_[k]), y, k);
+  }
+
+  // Sets one variable of sample k (sign y) to `value` in [0, C_k], keeping Ḡ current; true when
+  // that needed row k.
+  bool place(double& alpha, double value, double y, std::size_t k) {
     const double c_k = cap_[k];
     const bool upper = alpha >= c_k;
-    alpha = std::clamp(alpha + delta, 0.0, c_k);
+    alpha = value;
     if (upper == (alpha >= c_k)) return false;
     loops_.add_row(gbar_.data(), rows_.row(index_[k], n_), (upper ? -c_k : c_k) * y, 0, n_);
     return true;
@@ -458,6 +549,7 @@ SolverSummary solve_pairs(KernelCache& q, std::span<const double> target, double
   summary.kernel_rows = layout.rows_computed();
   summary.gradient_reused = layout.gradient_reused();
   summary.conjugate_steps = layout.conjugate_steps();
+  summary.newton_steps = layout.newton_steps();
   return summary;
 }
 

@@ -176,6 +176,9 @@ class Smo {
           shrink();
           layout_.reordered();
         }
+        if constexpr (requires { layout_.between_rounds(active_, iter); })
+          layout_.between_rounds(active_, iter - last_round_);
+        last_round_ = iter;
       }
       if (!layout_.select(active_, ws)) {
         // Optimal on the active set: check again on all of it before stopping.
@@ -210,7 +213,8 @@ class Smo {
   double tolerance_;
   bool shrinking_;
   std::int64_t max_iterations_;
-  std::size_t active_;  // units [0, active_) are not shrunk
+  std::size_t active_;           // units [0, active_) are not shrunk
+  std::int64_t last_round_ = 0;  // the iteration of the last shrinking round
   bool unshrunk_ = false;
 
   void unshrink() {

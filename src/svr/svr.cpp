@@ -81,6 +81,7 @@ FitResult fit_with(const TrainingSet& set, KernelCache& cache, const Params& par
   options.solver_order_cache_mb = params.cache_mb * (1 - computed_share);
   options.libsvm_path = params.libsvm_path;
   options.conjugate = params.conjugate;
+  options.newton = params.newton;
   const SolverSummary s =
       solve_epsilon_svr(cache, set.data().y, params.c, params.epsilon, options, dual, warm);
   const double seconds =

@@ -18,7 +18,10 @@
 //    objective agrees with LIBSVM's to about the tolerance (2e-5 relative or better on the
 //    benchmark data) and at a tight tolerance its predictions are LIBSVM's. It also takes
 //    conjugate steps (SolverOptions::conjugate): the working pair's direction is made
-//    Q-conjugate to the last one, which halves the iterations at large C.
+//    Q-conjugate to the last one, which halves the iterations at large C. And after a
+//    shrinking round it may solve the free samples' small quadratic directly, the others held
+//    at their bounds (SolverOptions::newton; docs/svr.md, "Newton steps on the free set"): at
+//    C = 1000 a thirtieth of the iterations.
 //  * SolverOptions::libsvm_path selects the solver that follows LIBSVM step for step over the 2l
 //    variables: on the same data it visits the same working sets, so its model, iteration count
 //    and support vectors are LIBSVM's to rounding. `fogdrift svr train --solver libsvm` uses it,
@@ -65,6 +68,11 @@ struct SolverOptions {
   /// inside the box. Same working pairs and stopping rule, about half the iterations at large C.
   /// false: the ordinary two-variable step always.
   bool conjugate = true;
+  /// Pair solver only: after a shrinking round, a Newton step on the free samples with the
+  /// others held at their bounds (docs/svr.md, "Newton steps on the free set"), when the SMO
+  /// steps since the last one have done as much work. Same stopping rule; at large C a tenth of
+  /// the iterations or fewer. false: SMO steps only.
+  bool newton = true;
 };
 
 enum class SolverStatus { optimal, iteration_limit };
@@ -81,6 +89,7 @@ struct SolverSummary {
   bool warm_started = false;
   bool gradient_reused = false;      ///< warm start reused the previous gradient (same kernel)
   std::int64_t conjugate_steps = 0;  ///< iterations that stepped along a conjugate direction
+  std::int64_t newton_steps = 0;     ///< Newton steps on the free samples (SolverOptions::newton)
   double seconds = 0;
 };
 

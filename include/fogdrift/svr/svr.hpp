@@ -43,6 +43,7 @@ struct Params {
   std::int64_t max_iterations = 0;  ///< 0: LIBSVM's max(10⁷, 200·l)
   bool libsvm_path = false;  ///< SolverOptions::libsvm_path: LIBSVM's working sets one for one
   bool conjugate = true;     ///< SolverOptions::conjugate: the pair solver's conjugate steps
+  bool newton = true;        ///< SolverOptions::newton: the pair solver's free-set Newton steps
 };
 
 /// Names to use for each parameter in error messages (the CLI passes its flags).
