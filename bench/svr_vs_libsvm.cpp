@@ -1,7 +1,7 @@
 // fogdrift's ε-SVR engine against LIBSVM, in one process on the same data (issue: SVR engine).
 //
 //   svr_vs_libsvm [--sizes 2000,6000] [--repeats 3] [--sweep-n 6000] [--no-sweep] [--no-threads]
-//                 [--libsvm-path] [--no-conjugate]
+//                 [--libsvm-path] [--no-conjugate] [--no-newton]
 //   svr_vs_libsvm --write-data N FILE   (the data as a LIBSVM file, for whole commands)
 //
 // Data: tests/svr/datasets.hpp startup_like(N), d = 9, standardised features and target.
@@ -66,11 +66,13 @@ LibsvmFit libsvm_fit(LibsvmData& data, double c, double gamma) {
 
 bool g_libsvm_path = false;  // --libsvm-path: fogdrift's solver that follows LIBSVM's path
 bool g_conjugate = true;     // --no-conjugate: the pair solver without conjugate steps
+bool g_newton = true;        // --no-newton: the pair solver without free-set Newton steps
 
 fogdrift::svr::Params params_for(double c, double sigma) {
   fogdrift::svr::Params p;
   p.libsvm_path = g_libsvm_path;
   p.conjugate = g_conjugate;
+  p.newton = g_newton;
   p.kernel = fogdrift::svr::Kernel::rbf_sigma(sigma);
   p.c = c;
   p.epsilon = 0.1;
@@ -111,6 +113,8 @@ int main(int argc, char** argv) {
       g_libsvm_path = true;
     else if (a == "--no-conjugate")
       g_conjugate = false;
+    else if (a == "--no-newton")
+      g_newton = false;
     else if (a == "--write-data" && i + 2 < argc) {
       // The bench's data as a LIBSVM file, for whole-command timings
       // (bench/svr_command_vs_svm_train.sh).
@@ -118,10 +122,11 @@ int main(int argc, char** argv) {
       fogdrift::svr::write_libsvm_data(fogdrift::svr::testing::startup_like(n), argv[++i]);
       return 0;
     } else {
-      std::fprintf(stderr,
-                   "usage: %s [--sizes N,N] [--repeats R] [--sweep-n N] [--no-sweep] "
-                   "[--no-threads] [--libsvm-path] [--no-conjugate] | --write-data N FILE\n",
-                   argv[0]);
+      std::fprintf(
+          stderr,
+          "usage: %s [--sizes N,N] [--repeats R] [--sweep-n N] [--no-sweep] "
+          "[--no-threads] [--libsvm-path] [--no-conjugate] [--no-newton] | --write-data N FILE\n",
+          argv[0]);
       return 2;
     }
   }

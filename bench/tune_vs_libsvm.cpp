@@ -1,6 +1,7 @@
 // A paper-sized hyperparameter search (SSA, population 20, 50 iterations, `train`'s defaults:
 // features T,dT,grad,dT@300, three folds of whole initial temperatures) with fogdrift's tuner,
-// with racing (the default) and with every fold of every candidate fitted, against the same
+// with racing (the default), with every fold of every candidate fitted, and with racing but
+// without the SVR solver's Newton steps (docs/svr.md), against the same
 // search made the usual way: every fold of every candidate fitted cold by LIBSVM, one at a time
 // (what a mealpy + scikit-learn / LIBSVM script does, which never stops a candidate early).
 //
@@ -63,6 +64,8 @@ int main(int argc, char** argv) {
   options.pool = &pool;
   tune::TuneOptions every_fold = options;
   every_fold.racing = false;
+  tune::TuneOptions no_newton = options;  // the search before the solver's Newton steps
+  no_newton.newton = false;
 
   auto search = [&](const tune::TuneOptions& o, const char* name, std::vector<double>& walls) {
     tune::TuneSummary out;
@@ -77,9 +80,10 @@ int main(int argc, char** argv) {
   };
   // Interleaved run by run would share the noise better, but each search's runs are the same
   // search, so their spread is the machine's.
-  std::vector<double> walls, full_walls;
+  std::vector<double> walls, full_walls, plain_walls;
   const tune::TuneSummary raced = search(options, "racing", walls);
   const tune::TuneSummary s = search(every_fold, "every fold", full_walls);
+  const tune::TuneSummary plain = search(no_newton, "racing, no Newton steps", plain_walls);
 
   // The same folds, fitted cold by each engine on a sample of complete candidates.
   bench::FoldPair folds(data, options.cv);
@@ -120,6 +124,11 @@ int main(int argc, char** argv) {
   print_walls("fogdrift search, racing", wall, walls);
   print_walls("fogdrift search, every fold", full_wall, full_walls);
   std::printf("| ratio every fold / racing | %.2f× |\n", full_wall / wall);
+  print_walls("fogdrift search, racing, no Newton steps", median(plain_walls), plain_walls);
+  std::printf(
+      "| best, racing, no Newton steps | C = %.4g, σ = %.4g, CV RMSE %.5f (standardised) |\n",
+      plain.best.c, plain.best.kernel.sigma(), plain.best_fitness);
+  std::printf("| ratio no Newton steps / racing | %.2f× |\n", median(plain_walls) / wall);
   std::printf("| fogdrift fit + predict, cold, 1 thread, mean of %zu sampled fits | %.1f ms |\n",
               sample * folds.folds(), 1e3 * per_fit_ours);
   std::printf("| LIBSVM fit + predict, cold, 1 thread, same fits | %.1f ms |\n", 1e3 * per_fit_lib);

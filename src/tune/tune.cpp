@@ -84,6 +84,7 @@ svr::Params params_at(std::span<const double> point, const TuneOptions& options)
   p.epsilon = options.space.search_epsilon ? std::pow(10.0, point[2]) : options.space.epsilon;
   p.tolerance = options.tolerance;
   p.cache_mb = options.cache_mb;
+  p.newton = options.newton;
   return p;
 }
 

@@ -78,6 +78,7 @@ struct TuneOptions {
   double cache_mb = 64;             ///< kernel-row cache of each concurrent fit, MB
   bool warm_start = true;           ///< warm-start fits from the nearest solved candidate
   bool racing = true;               ///< stop candidates that cannot beat the best (header)
+  bool newton = true;               ///< svr::Params::newton of every fit (docs/svr.md)
   ThreadPool* pool = nullptr;       ///< fits a population in parallel when given
 };
 
