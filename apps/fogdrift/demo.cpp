@@ -14,7 +14,7 @@ void add_demo(CLI::App& app) {
       "demo",
       "The main job: `fogdrift paper` with 2 seeds instead of 5, a search of population 10 ×\n"
       "10 iterations instead of 20, and without the leave-one-temperature-out and fitness\n"
-      "studies: about two minutes on two cores (docs/paper.md, \"The demo\"). Prints the\n"
+      "studies: about a minute on two cores (docs/paper.md, \"The demo\"). Prints the\n"
       "paper's Tables 1-3 beside fogdrift's, the goals and the start-up conditions table, and\n"
       "writes report.md, paper.json and the figures into ./fogdrift-demo/ (replaced on every\n"
       "run). Every option of `fogdrift paper --help` applies: --iterations 20 for paper's search.");

@@ -217,7 +217,7 @@ void add_paper(CLI::App& app) {
       "mean ± SD beside the paper's numbers. The first seed also runs a leave-one-temperature-\n"
       "out study and the training-loss against cross-validation fitness. With --out, writes\n"
       "report.md, paper.json and the figures as PNG (gnuplot) and JSON.\n"
-      "Defaults take about 7 minutes on 2 cores. Examples:\n"
+      "Defaults take about 5 minutes on 2 cores. Examples:\n"
       "  fogdrift paper --out paper\n"
       "  fogdrift paper --seeds 10 --population 20 --iterations 50 --json > paper.json\n"
       "  fogdrift paper --fitness train --approach soaked --seeds 3");
