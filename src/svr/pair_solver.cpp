@@ -351,10 +351,10 @@ class PairLayout {
   std::int64_t conjugate_steps_ = 0;
   // Newton steps on the free samples (between_rounds): the free samples of the last round, the
   // work spent on SMO steps (sample passes) and on Newton steps (operations), and the SMO
-  // iterations so far.
-  // Larger free sets are left to the SMO steps: on svr_vs_libsvm's data (N = 6000, ε = 0.1)
-  // blocks of 540-1,500 free samples made fits 1.5-2.3 times slower (1.5-1.6 with the removals
-  // held to the budget); the paper's blocks are 150-400 (docs/svr.md).
+  // iterations so far. Larger free sets than kMaxNewtonFree are left to the SMO steps: on
+  // svr_vs_libsvm's data (N = 6000, ε = 0.1) blocks of 540-1,500 free samples made fits
+  // 1.5-2.3 times slower (1.5-1.6 with the removals held to the budget); the paper's blocks are
+  // 150-400 (docs/svr.md).
   static constexpr std::size_t kMaxNewtonFree = 400;
   static constexpr double kNewtonWorkWeight = 0.1;
   std::vector<std::size_t> free_;

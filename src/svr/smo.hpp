@@ -21,6 +21,11 @@
 //   void add_rho_terms(std::size_t k, RhoBounds& bounds) const;
 //   double objective_term(std::size_t k) const;    // Σ α(G + p) over the unit's variables
 //
+// and, optionally, what to do after each shrinking round, told the SMO iterations since the
+// last one (the pair layout's Newton steps):
+//
+//   void between_rounds(std::size_t active, std::int64_t iterations);
+//
 // Internal header: not installed.
 #pragma once
 

@@ -20,8 +20,8 @@
 //    conjugate steps (SolverOptions::conjugate): the working pair's direction is made
 //    Q-conjugate to the last one, which halves the iterations at large C. And after a
 //    shrinking round it may solve the free samples' small quadratic directly, the others held
-//    at their bounds (SolverOptions::newton; docs/svr.md, "Newton steps on the free set"): at
-//    C = 1000 a thirtieth of the iterations.
+//    at their bounds (SolverOptions::newton; docs/svr.md, "Newton steps on the free set"): on
+//    the paper's C = 1000 fits down to a thirtieth of the iterations.
 //  * SolverOptions::libsvm_path selects the solver that follows LIBSVM step for step over the 2l
 //    variables: on the same data it visits the same working sets, so its model, iteration count
 //    and support vectors are LIBSVM's to rounding. `fogdrift svr train --solver libsvm` uses it,
@@ -70,8 +70,8 @@ struct SolverOptions {
   bool conjugate = true;
   /// Pair solver only: after a shrinking round, a Newton step on the free samples with the
   /// others held at their bounds (docs/svr.md, "Newton steps on the free set"), when the SMO
-  /// steps since the last one have done as much work. Same stopping rule; at large C a tenth of
-  /// the iterations or fewer. false: SMO steps only.
+  /// steps since the last one have done as much work. Same stopping rule; on the C = 1000 fits
+  /// of the paper's searches a twelfth to a thirtieth of the iterations. false: SMO steps only.
   bool newton = true;
 };
 
