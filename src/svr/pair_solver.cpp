@@ -248,6 +248,8 @@ class PairLayout {
   void between_rounds(std::size_t active, std::int64_t iterations) {
     if (!newton_) return;
     smo_work_ += static_cast<double>(iterations) * static_cast<double>(active);
+    total_iterations_ += iterations;
+    if (!warm_ && total_iterations_ < static_cast<std::int64_t>(n_)) return;
     free_.clear();
     for (std::size_t k = 0; k < active; ++k) {
       const bool a_free = a_[k] > 0 && a_[k] < cap_[k];
@@ -256,9 +258,7 @@ class PairLayout {
     }
     const std::size_t m = free_.size();
     const double rows_work = static_cast<double>(m) * static_cast<double>(active);
-    total_iterations_ += iterations;
     if (m < 2 || m > kMaxNewtonFree ||
-        (!warm_ && total_iterations_ < static_cast<std::int64_t>(n_)) ||
         kNewtonWorkWeight * (newton_work_ + free_set_step_work(m, 0)) + rows_work > smo_work_)
       return;
     Eigen::MatrixXd kff(m, m);
