@@ -107,7 +107,7 @@ int main(int argc, char** argv) try {
     const Dataset train =
         build_dataset(recording_inputs(cal.campaign, cal.recordings, Role::train), dataset);
     TrainOptions to;
-    to.method = Method::gp;
+    to.method = parse_method("gp");
     to.gp.max_points = points;
     to.tune.optimizer.run.population = population;
     to.tune.optimizer.run.iterations = iterations;

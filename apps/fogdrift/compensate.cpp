@@ -46,7 +46,7 @@ nlohmann::ordered_json axis_json(const CompensateArgs& a, const Axis& x) {
   const std::string& column = x.model->dataset.target_column;
   const std::string kind = column.substr(0, column.find('_'));
   const std::string_view unit = target_of(column).unit();
-  j["method"] = to_string(x.model->provenance.method);
+  j["method"] = x.model->provenance.method;
   j["samples"] = drift.size();
   j[fmt::format("{}_std_{}", kind, unit)] = x.metrics.std_before_dph;
   j[fmt::format("{}_comp_std_{}", kind, unit)] = x.metrics.std_after_dph;
@@ -115,7 +115,7 @@ void run(const CompensateArgs& a) {
     nlohmann::ordered_json j;
     j["model"] = a.model;
     if (axes.size() == 1) {
-      j["method"] = to_string(axes[0].model->provenance.method);
+      j["method"] = axes[0].model->provenance.method;
       j["input"] = a.input;
       j["output"] = a.output;
       const nlohmann::ordered_json axis = axis_json(a, axes[0]);
@@ -144,7 +144,7 @@ void run(const CompensateArgs& a) {
           "  {}{}\n",
           a.input, drift.size(),
           axes.size() > 1 || target.column != "gyro_dph" ? " of " + target.column : std::string(),
-          a.model, to_string(x.model->provenance.method), target.format(drift.front()),
+          a.model, x.model->provenance.method, target.format(drift.front()),
           target.format(drift.back()), target.symbol(), target.what(),
           target.format(x.metrics.std_before_dph), target.symbol(),
           target.format(x.metrics.std_after_dph), target.symbol(), x.novelty.line(),

@@ -75,7 +75,7 @@ void run(const ExportArgs& given, const CLI::App& cmd) {
     std::cout << fmt::format(
         "wrote {}: {}_predict_{}(features[{}]) for {} ({}), C99 in {}, no heap\n", a.output,
         a.prefix, target_of(model.dataset.target_column).unit(), model.inputs(), a.model,
-        to_string(model.provenance.method), a.precision);
+        model.provenance.method, a.precision);
     const std::size_t block = a.stream_rate_hz > 0
                                   ? decimation_factor(model.dataset.preprocessing,
                                                       1.0 / a.stream_rate_hz, "--stream-rate-hz")

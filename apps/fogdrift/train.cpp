@@ -74,33 +74,7 @@ nlohmann::ordered_json summary_json(const TrainArgs& a, const CampaignTrainResul
     j["training_rows"] = s.rows;
     j["recordings"] = data.groups.size();
     j["features"] = data.feature_names;
-    if (s.method == Method::ssa_svr || s.method == Method::pso_svr || s.method == Method::gwo_svr) {
-      const auto& t = s.tuning;
-      j["search"] = {{"optimizer", opt::to_string(t.optimizer.algorithm)},
-                     {"population", a.options.train.tune.optimizer.run.population},
-                     {"iterations", t.optimizer.iterations},
-                     {"evaluations", t.optimizer.evaluations},
-                     {"candidates", t.candidates},
-                     {"repeats", t.repeats},
-                     {"fits", t.fits},
-                     {"raced", t.raced},
-                     {"initial_best_rmse", t.optimizer.initial_best_fitness},
-                     {"seconds", t.seconds}};
-      nlohmann::ordered_json log = nlohmann::ordered_json::array();
-      for (const auto& r : t.optimizer.log) log.push_back(r.best_fitness);
-      j["search"]["best_rmse_per_iteration"] = log;
-    }
-    if (s.method == Method::bp)
-      j["bp"] = {{"epochs", s.mlp.epochs},
-                 {"best_epoch", s.mlp.best_epoch},
-                 {"early_stopped", s.mlp.status == MlpStatus::early_stopped},
-                 {"train_rmse", s.mlp.train_rmse}};
-    if (s.method == Method::poly) j["poly_cv_rmse_by_degree"] = s.poly_cv_rmse;
-    if (s.method == Method::gp)
-      j["gp"] = {{"points", s.gp.points},         {"log_likelihood", s.gp.log_likelihood},
-                 {"iterations", s.gp.iterations}, {"evaluations", s.gp.evaluations},
-                 {"fold_fits", s.gp.fold_fits},   {"raced", s.gp.raced},
-                 {"converged", s.gp.converged}};
+    for (const auto& [key, value] : s.record.items()) j[key] = value;  // the trainer's own
     j["notes"] = notes;
     nlohmann::ordered_json edges = nlohmann::ordered_json::array();
     for (const auto& e : s.box_edges)
@@ -286,31 +260,30 @@ void add_train(CLI::App& app) {
       "train",
       "Train a compensation model on the calibration recordings whose role is \"train\" and write\n"
       "it as JSON (features, scalers, regressor, provenance with SHA-256 of every data file).\n\n"
-      "Methods (paper Table 2):\n"
-      "  ssa-svr  ε-SVR, C and σ tuned by sparrow search (Xue & Shen 2020)   [default]\n"
-      "  pso-svr  the same tuned by particle swarm;  gwo-svr  by grey wolf\n"
-      "  svr      untuned: LIBSVM's defaults C = 1, γ = 1/features, ε = 0.1\n"
-      "  bp       one-hidden-layer tanh network, Adam, early stopping on held-out recordings\n"
-      "  poly     polynomial in the features, degree chosen by cross-validation\n"
-      "  gp       Gaussian process, squared-exponential kernel, its length scale and noise\n"
-      "           chosen by the same search and folds, on --gp-points rows (docs/gp.md)\n"
-      "A method is a regressor and a search: --method svr --search pso is pso-svr, and\n"
-      "--method gp --search gwo searches the Gaussian process's length scale and noise by\n"
-      "grey wolf.\n"
-      "Fitness of a candidate (C, σ): 'cv' (default) is the RMSE over grouped folds that never\n"
-      "split a recording: with --cv auto, three folds of whole calibration temperatures (a model\n"
-      "scored where it was not trained, as a start-up at a new temperature asks), or with fewer\n"
-      "than three temperatures, leave one repetition out; 'train' is the paper's training RMSE,\n"
-      "which favours over-fitting. C and σ are searched in log10 space, ε is 0.05 "
-      "(docs/tuning.md).\n"
-      "The model records the region of feature space it was trained on; compensate, stream,\n"
-      "evaluate, northfind and export-c reduce its correction outside it (docs/field.md).\n"
-      "Calibrate under the start-up conditions the instrument will meet: docs/field.md gives the\n"
-      "protocol (fogdrift simulate calibration --approach calibration,soaked,warm,ramping).\n"
-      "Examples:\n"
-      "  fogdrift simulate calibration --out cal && fogdrift train cal -o model.json\n"
-      "  fogdrift train cal --method pso-svr --population 30 --iterations 40 --seed 2 -o pso.json\n"
-      "  fogdrift train cal --method bp --hidden 12 -o bp.json --json");
+      "Methods: " +
+          method_names() +
+          " (--method below says what each is).\n"
+          "A method is a regressor and a search: --method svr --search pso is pso-svr.\n"
+          "Fitness of a candidate (C, σ): 'cv' (default) is the RMSE over grouped folds that "
+          "never\n"
+          "split a recording: with --cv auto, three folds of whole calibration temperatures (a "
+          "model\n"
+          "scored where it was not trained, as a start-up at a new temperature asks), or with "
+          "fewer\n"
+          "than three temperatures, leave one repetition out; 'train' is the paper's training "
+          "RMSE,\n"
+          "which favours over-fitting. C and σ are searched in log10 space, ε is 0.05 "
+          "(docs/tuning.md).\n"
+          "The model records the region of feature space it was trained on; compensate, stream,\n"
+          "evaluate, northfind and export-c reduce its correction outside it (docs/field.md).\n"
+          "Calibrate under the start-up conditions the instrument will meet: docs/field.md gives "
+          "the\n"
+          "protocol (fogdrift simulate calibration --approach calibration,soaked,warm,ramping).\n"
+          "Examples:\n"
+          "  fogdrift simulate calibration --out cal && fogdrift train cal -o model.json\n"
+          "  fogdrift train cal --method pso-svr --population 30 --iterations 40 --seed 2 -o "
+          "pso.json\n"
+          "  fogdrift train cal --method bp --hidden 12 -o bp.json --json");
   cmd->add_option("campaign", args->campaign, "Campaign folder (or its campaign.json)")->required();
   cmd->add_option("-o,--output", args->output, "Model file to write (JSON, atomically)")
       ->required();

@@ -187,26 +187,9 @@ py::object train(const py::object& campaign, const py::kwargs& kwargs) {
   summary["rate_window_s"] = r->dataset.preprocessing.rates.window_s;
   summary["rate_degree"] = r->dataset.preprocessing.rates.poly_order;
   // The method's own record, under `fogdrift train --json`'s keys.
-  if (s.method == Method::bp) {
-    py::dict bp;
-    bp["epochs"] = s.mlp.epochs;
-    bp["best_epoch"] = s.mlp.best_epoch;
-    bp["early_stopped"] = s.mlp.status == MlpStatus::early_stopped;
-    bp["train_rmse"] = s.mlp.train_rmse;
-    summary["bp"] = bp;
-  }
-  if (s.method == Method::poly) summary["poly_cv_rmse_by_degree"] = s.poly_cv_rmse;
-  if (s.method == Method::gp) {
-    py::dict gp;
-    gp["points"] = s.gp.points;
-    gp["log_likelihood"] = s.gp.log_likelihood;
-    gp["iterations"] = s.gp.iterations;
-    gp["evaluations"] = s.gp.evaluations;
-    gp["fold_fits"] = s.gp.fold_fits;
-    gp["raced"] = s.gp.raced;
-    gp["converged"] = s.gp.converged;
-    summary["gp"] = gp;
-  }
+  const py::object loads = py::module_::import("json").attr("loads");
+  for (const auto& [key, value] : s.record.items()) summary[py::str(key)] = loads(value.dump());
+  if (!s.record.contains("search")) summary["search"] = py::none();  // a method with no search
   py::list notes;
   for (const auto& n : r->notes) notes.append(py::make_tuple(keyword_of(n.field), n.text));
   summary["notes"] = notes;
@@ -257,22 +240,6 @@ py::object train(const py::object& campaign, const py::kwargs& kwargs) {
     boxes.append(d);
   }
   summary["boxes_searched"] = boxes;
-  if (s.method == Method::ssa_svr || s.method == Method::pso_svr || s.method == Method::gwo_svr) {
-    const auto& tr = s.tuning;
-    py::dict search;
-    search["optimizer"] = opt::to_string(tr.optimizer.algorithm);
-    search["population"] = t.tune.optimizer.run.population;
-    search["iterations"] = tr.optimizer.iterations;
-    search["evaluations"] = tr.optimizer.evaluations;
-    search["candidates"] = tr.candidates;
-    search["fits"] = tr.fits;
-    search["raced"] = tr.raced;
-    search["initial_best_rmse"] = tr.optimizer.initial_best_fitness;
-    search["seconds"] = tr.seconds;
-    summary["search"] = search;
-  } else {
-    summary["search"] = py::none();
-  }
   // The box-edge warning the command line prints, in this function's keywords, as a warning.
   for (const std::string& w :
        box_edge_warnings(s, t.auto_box_rounds > 0, [&](const std::string& field) {

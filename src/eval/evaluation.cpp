@@ -65,7 +65,7 @@ Evaluation evaluate(const CompensationModel& model, const std::vector<RecordingI
                     "feature spec gives for this data ({})",
                     fmt::join(model.feature_names, ","), fmt::join(data.feature_names, ",")));
   Evaluation e;
-  e.method = std::string(to_string(model.provenance.method));
+  e.method = model.provenance.method;
   e.target = model.dataset.target_column;
   e.guarded = options.guarded;
   const bool gyro = target_of(e.target).kind == TargetKind::gyro;

@@ -51,7 +51,7 @@ CampaignFindings find_north_in(const Campaign& campaign, const std::vector<Recor
   const std::string manifest = (campaign.dir / "campaign.json").string();
   CampaignFindings out;
   out.guarded = guarded;
-  if (model != nullptr) out.method = std::string(to_string(model->provenance.method));
+  if (model != nullptr) out.method = std::string(model->provenance.method);
   for (std::size_t i = 0; i < campaign.recordings.size(); ++i) {
     const CampaignEntry& e = campaign.recordings[i];
     if (e.scenario == Scenario::calibration) continue;

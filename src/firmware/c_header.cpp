@@ -41,7 +41,7 @@ std::string to_c_header(const CompensationModel& model, const std::string& prefi
       " * drift_@UNIT@ = {prefix}_predict_@UNIT@(features); @READING_COMP@ = @READING@ - "
       "drift_@UNIT@.\n"
       " * Features, in order (units in the names):\n",
-      fmt::arg("prefix", prefix), fmt::arg("method", to_string(p.method)),
+      fmt::arg("prefix", prefix), fmt::arg("method", p.method),
       fmt::arg("version", p.fogdrift_version), fmt::arg("spec", model.dataset.features.to_string()),
       fmt::arg("rows", p.training_rows));
   for (std::size_t k = 0; k < d; ++k) h += fmt::format(" *   [{}] {}\n", k, model.feature_names[k]);

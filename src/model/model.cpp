@@ -11,7 +11,6 @@
 #include "base/json_number.hpp"
 #include "fogdrift/base/atomic_file.hpp"
 #include "fogdrift/base/csv.hpp"
-#include "fogdrift/base/enum_names.hpp"
 #include "fogdrift/base/error.hpp"
 #include "fogdrift/base/sha256.hpp"
 #include "fogdrift/base/text_file.hpp"
@@ -21,30 +20,6 @@
 namespace fogdrift {
 
 using ojson = nlohmann::ordered_json;
-
-namespace {
-
-constexpr std::array<EnumName<Method>, 7> kMethodNames = {{{Method::ssa_svr, "ssa-svr"},
-                                                           {Method::pso_svr, "pso-svr"},
-                                                           {Method::gwo_svr, "gwo-svr"},
-                                                           {Method::svr, "svr"},
-                                                           {Method::bp, "bp"},
-                                                           {Method::poly, "poly"},
-                                                           {Method::gp, "gp"}}};
-
-}  // namespace
-
-std::string to_string(Method method) {
-  return std::string(name_in(kMethodNames, method));
-}
-
-Method parse_method(const std::string& text, const std::string& option) {
-  return parse_in(kMethodNames, text, option, "a method");
-}
-
-std::string method_names() {
-  return names_in(kMethodNames);
-}
 
 namespace {
 
@@ -231,7 +206,7 @@ std::string to_json(const CompensationModel& m) {
   for (const auto& [k, v] : p.hyperparameters) hyper[k] = v;
   ojson files = ojson::array();
   for (const auto& f : p.files) files.push_back({{"path", f.path}, {"sha256", f.sha256}});
-  j["provenance"] = {{"method", to_string(p.method)},
+  j["provenance"] = {{"method", p.method},
                      {"fitness", p.fitness},
                      {"fitness_rmse", p.fitness_value},
                      {"cv", p.cv},
@@ -358,7 +333,8 @@ CompensationModel compensation_model_from_json(const std::string& text, const st
     }
     where = "provenance";
     const ojson& p = doc.at("provenance");
-    m.provenance.method = parse_method(p.at("method").get<std::string>());
+    m.provenance.method = p.at("method").get<std::string>();
+    if (m.provenance.method.empty()) fail("provenance.method", "must name the method");
     m.provenance.fitness = p.at("fitness").get<std::string>();
     m.provenance.fitness_value = p.at("fitness_rmse").get<double>();
     m.provenance.cv = p.at("cv").get<std::string>();

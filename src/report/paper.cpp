@@ -29,9 +29,12 @@ double seconds_since(Clock::time_point start) {
   return std::chrono::duration<double>(Clock::now() - start).count();
 }
 
-// The methods whose hyperparameters a search chooses: PSO-, GWO- and SSA-SVR, and the GP.
+// The methods whose hyperparameters a search chooses (PSO-, GWO- and SSA-SVR, the GP), as
+// their trainers resolve them with default options.
 bool is_searched(Method method) {
-  return method != Method::svr && method != Method::bp && method != Method::poly;
+  TrainOptions to;
+  to.method = method;
+  return is_optimizer(resolved(to).method.search);
 }
 
 // Table 2 of a model on test rows: per recording, pooled (eval/metrics.hpp).

@@ -64,12 +64,7 @@ OptionTable<O> make_table() {
         OptionType::choice,
         "",
         method_names(),
-        "The regressor: svr an ε-SVR, with LIBSVM's defaults (C = 1, γ = 1/features, "
-        "ε = 0.1) unless {search} names a search; ssa-svr, pso-svr, gwo-svr an ε-SVR "
-        "with C and σ tuned by sparrow search, particle swarm or grey wolf (svr with that "
-        "{search}); bp a one-hidden-layer tanh network, early-stopped on held-out "
-        "recordings; poly a polynomial of the degree cross-validation picks; gp a "
-        "Gaussian process (docs/gp.md)",
+        "The regressor and how it is trained: " + method_docs(),
         {}},
        [](const O& o) { return to_string(o.train.method); },
        [](O& o, const std::string& text) { o.train.method = parse_method(text, "method"); }});
@@ -81,9 +76,8 @@ OptionTable<O> make_table() {
         search_names(),
         "How the regressor's hyperparameters are searched, over the folds of {cv} with "
         "{population} and {iterations}: ssa (sparrow search), pso (particle swarm), gwo "
-        "(grey wolf); none; auto, the method's own: ssa for ssa-svr and gp's cv fit, pso "
-        "for pso-svr, gwo for gwo-svr, none for svr, bp and poly. {method} svr with {search} "
-        "ssa is ssa-svr",
+        "(grey wolf); none; auto, the method's own (ssa for ssa-svr, none for svr; {method} "
+        "says each one's). {method} svr with {search} ssa is ssa-svr",
         {}},
        [](const O& o) { return std::string(to_string(o.train.search)); },
        [](O& o, const std::string& text) { o.train.search = parse_search(text, "search"); }});

@@ -235,7 +235,8 @@ check "train help teaches" run 0 "$fd" train --help
 # Found by attack (issue 36, "memory limits"): the memory advice named a kernel cache train had
 # no option for.
 check "train has the kernel cache the memory advice names" out_has "--cache-mb"
-check "train help lists methods" out_has "ssa-svr  ε-SVR, C and σ tuned by sparrow search"
+check "train help lists methods" out_has "ssa-svr an ε-SVR with C and σ tuned by sparrow search"
+check "train help lists every registered method" out_has "Methods: ssa-svr, pso-svr, gwo-svr, svr, bp, poly, gp"
 check "a negative kernel cache" run 1 "$fd" train "$work/small" --cache-mb -1 -o "$work/x.json"
 check "kernel cache message" err_has "option --cache-mb: -1 must be finite and ≥ 0"
 check "train ssa-svr" run 0 "$fd" train "$work/small" --population 5 --iterations 2 --c-max 10 \

@@ -162,7 +162,7 @@ TEST(Paper, AnotherMethodIsARowOfEveryTable) {
   o.causal = false;
   o.methods = {Method::bp, Method::ssa_svr};  // the two the report needs: a short run
   const PaperResult paper = run_paper(o);
-  o.methods.push_back(Method::gp);
+  o.methods.push_back(Method{"gp"});
   const PaperResult r = run_paper(o);
   // The paper's rows are the same with the row added.
   for (const MethodRun& m : paper.seeds[0].methods) {
@@ -170,7 +170,7 @@ TEST(Paper, AnotherMethodIsARowOfEveryTable) {
     EXPECT_EQ(r.seeds[0].method(m.method).rmse_deg, m.rmse_deg);
   }
   ASSERT_EQ(r.seeds[0].methods.size(), 3u);
-  const MethodRun& gp = r.seeds[0].method(Method::gp);
+  const MethodRun& gp = r.seeds[0].method(Method{"gp"});
   EXPECT_LT(gp.table2.std_after_dph, r.seeds[0].denoised_std_dph);
   EXPECT_EQ(gp.rmse_deg.size(), 2u);
   EXPECT_EQ(gp.start_up_rmse_deg.size(), o.start_ups.size());

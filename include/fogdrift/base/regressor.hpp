@@ -1,5 +1,5 @@
 // One shape for every regressor a compensation model can hold (docs/architecture.md,
-// "Modelling"). A regressor is a value type R with
+// "Adding a regressor"). A regressor is a value type R with
 //   R::kType                     its name in model files ("svr", "mlp", "poly", "gp")
 //   r.predict(x)                 ŷ for one row of standardised features, no allocation
 //   input_count(r)               how many features it takes

@@ -25,21 +25,14 @@
 
 namespace fogdrift {
 
-/// The paper's methods (Table 2), the classical baseline, and a Gaussian process (gp.hpp).
-enum class Method { ssa_svr, pso_svr, gwo_svr, svr, bp, poly, gp };
-/// "ssa-svr", "pso-svr", "gwo-svr", "svr", "bp", "poly", "gp".
-std::string to_string(Method method);
-Method parse_method(const std::string& text, const std::string& option = "method");
-/// "ssa-svr, pso-svr, gwo-svr, svr, bp, poly, gp": the names parse_method takes.
-std::string method_names();
-
 struct SourceFile {
   std::string path;    ///< as the campaign manifest names it
   std::string sha256;  ///< lowercase hex
 };
 
 struct Provenance {
-  Method method = Method::ssa_svr;
+  /// The method's name as train gives it ("ssa-svr", "gp"; tune/method.hpp).
+  std::string method;
   std::string fitness;       ///< "cv", "train", "validation" (BP's early-stopping set)
   double fitness_value = 0;  ///< RMSE on the standardised target
   std::string cv;            ///< fold description, e.g. "repetition (3 folds)"

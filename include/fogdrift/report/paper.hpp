@@ -26,6 +26,7 @@
 #include "fogdrift/report/figure.hpp"
 #include "fogdrift/sim/instrument.hpp"
 #include "fogdrift/sim/scenarios.hpp"
+#include "fogdrift/tune/method.hpp"
 #include "fogdrift/tune/tune.hpp"
 
 namespace fogdrift::report {

@@ -1,21 +1,12 @@
-// Training a compensation model by any of the paper's methods (docs/method.md §2, §3):
-//   ssa-svr, pso-svr, gwo-svr  ε-SVR with C and σ tuned by that optimizer (tune.hpp), then
-//                              refitted on all training rows;
-//   svr                        LIBSVM's defaults on standardised data: C = 1, γ = 1/features,
-//                              ε = 0.1;
-//   bp                         one-hidden-layer tanh network (mlp.hpp), early-stopped on the
-//                              held-out recordings of the last grouped fold; not refitted, so
-//                              unless repetition or recording folds are asked for it holds out
-//                              a third of the recordings dealt across temperatures and
-//                              repetitions, which keeps every temperature and start-up
-//                              condition in training;
-//   poly                       polynomial in the features, degree 1 … max chosen by grouped CV;
-//   gp                         Gaussian process, hyperparameters by marginal likelihood on at
-//                              most gp.max_points evenly spaced rows (gp.hpp).
-// Every method reports a fitness on the standardised target: the tuner's (cv or train) for the
-// SVRs, the validation RMSE for BP, the CV RMSE of the chosen degree for the polynomial, and for
-// the GP the CV RMSE of its hyperparameters refitted on each fold.
+// Training a compensation model (docs/method.md §2, §3): the method's trainer (trainer.hpp,
+// the registry in trainers.hpp) fits its regressor and reports a fitness on the standardised
+// target; what every method shares is here: method and search made one, the scalers of all
+// training rows, the novelty guard over them, the held-out report and the provenance. The
+// regressor-specific options (the SVR's search box, the network's, the degree, the GP's) are
+// fields of TrainOptions, each read only by its trainer.
 #pragma once
+
+#include <nlohmann/json.hpp>
 
 #include <optional>
 
@@ -23,29 +14,15 @@
 #include "fogdrift/model/mlp.hpp"
 #include "fogdrift/model/model.hpp"
 #include "fogdrift/tune/held_out.hpp"
+#include "fogdrift/tune/method.hpp"
 #include "fogdrift/tune/tune.hpp"
 
 namespace fogdrift {
 
-/// How a regressor's hyperparameters are searched (train --search): a method is a regressor and
-/// a search, and ssa-svr is svr searched by ssa.
-enum class Search {
-  own,   ///< the method's own: ssa for ssa-svr and gp, pso for pso-svr, gwo for gwo-svr, none else
-  none,  ///< none: svr with LIBSVM's defaults; bp, poly and gp's likelihood fit their own way
-  ssa,   ///< sparrow search over the grouped folds (opt/ssa.hpp)
-  pso,   ///< particle swarm
-  gwo,   ///< grey wolf
-};
-/// "auto", "none", "ssa", "pso", "gwo".
-std::string_view to_string(Search search);
-Search parse_search(std::string_view text, std::string_view option = "search");
-/// "auto, none, ssa, pso, gwo".
-std::string search_names();
-
 struct TrainOptions {
   Method method = Method::ssa_svr;
-  /// With method svr, ssa/pso/gwo make it ssa-svr/pso-svr/gwo-svr (resolved()); with gp's cv
-  /// fit, the optimizer of its search; own: the method's own.
+  /// A search for a method whose name implies none (svr with pso is pso-svr, gp's cv fit with
+  /// gwo searches by gwo); own: the method's own (resolved()).
   Search search = Search::own;
   tune::TuneOptions tune;           ///< fitness, folds, search box, optimizer budget, seed, pool
   MlpOptions mlp;                   ///< BP settings; its seed is set from tune.optimizer.run.seed
@@ -66,18 +43,19 @@ struct TrainOptions {
 };
 
 struct TrainSummary {
-  Method method = Method::ssa_svr;
-  std::string fitness;       ///< "cv", "train" or "validation"
-  double fitness_value = 0;  ///< RMSE on the standardised target
+  Method method = Method::ssa_svr;  ///< resolved(): the search it ran is its own
+  std::string fitness;              ///< "cv", "train" or "validation"
+  double fitness_value = 0;         ///< RMSE on the standardised target
   std::vector<std::pair<std::string, double>> hyperparameters;
   tune::TuneSummary tuning;  ///< SVR methods with a search (the last, with auto-box)
   /// Tuned SVRs: the boxes searched, in order (more than one with auto-box), and the edges the
   /// last search's best lies on.
   std::vector<tune::SearchSpace> boxes;
   std::vector<tune::BoxEdge> box_edges;
-  MlpSummary mlp;                    ///< bp
-  std::vector<double> poly_cv_rmse;  ///< poly: CV RMSE of degree 1, 2, …
-  GpSummary gp;                      ///< gp: the likelihood search
+  /// The trainer's own record, under `fogdrift train --json`'s keys: "search" for a searched
+  /// SVR, "bp" (epochs, best_epoch, early_stopped, train_rmse), "poly_cv_rmse_by_degree",
+  /// "gp" (points, log_likelihood, iterations, evaluations, fold_fits, raced, converged).
+  nlohmann::ordered_json record = nlohmann::ordered_json::object();
   /// How sure train is (held_out.hpp): the model's held-out RMSE beside the baselines' on the
   /// same folds, and the share it is expected to remove. SVRs searched on the training loss are
   /// scored on the grouped folds for it (one more fit per fold); absent, with the reason in
@@ -93,15 +71,16 @@ struct TrainResult {
   TrainSummary summary;
 };
 
-/// The options with method and search made one: svr with a search is that search's SVR method,
-/// gp's optimizer is the search's, and search is then own. Throws OptionError("search") for a
-/// method and a search that contradict (pso-svr with ssa) or a method with no such search (bp
-/// with pso, svr-less none for gp's cv fit).
+/// The options with method and search made one: the method's search is the one its name implies
+/// or `search` asks for, as its trainer resolves it (trainer.hpp); search is then own, and the
+/// optimizer is the search's. Throws OptionError("search") for a method and a search that
+/// contradict (pso-svr with ssa) or a trainer with no use for the search (bp with pso, none for
+/// gp's cv fit), and OptionError("method") for a trainer not registered.
 TrainOptions resolved(const TrainOptions& options);
 
-/// Checks what can be checked without data: the search's box, budget and folds for a tuned SVR,
-/// the network's for bp, the degree for poly. Throws OptionError naming the field (train_fleet
-/// checks a line's options once before any unit runs).
+/// Checks what can be checked without data, by the method's trainer: the search's box, budget
+/// and folds for a tuned SVR, the network's for bp, the degree for poly. Throws OptionError naming
+/// the field (train_fleet checks a line's options once before any unit runs).
 void validate(const TrainOptions& options);
 
 /// Trains on every row of `data`, built with `dataset` (recorded in the model).

@@ -1,0 +1,23 @@
+// The classical baseline's trainer (trainer.hpp): a polynomial in the features (poly.hpp) of
+// degree 1 … TrainOptions::poly_max_degree, the degree chosen by the RMSE over the grouped folds
+// and the polynomial refitted on every training row. Its fitness is that RMSE.
+#pragma once
+
+#include <array>
+
+#include "fogdrift/tune/trainer.hpp"
+
+namespace fogdrift {
+
+struct PolyTrainer {
+  static constexpr std::string_view kName = "poly";
+  static constexpr std::array<MethodName, 1> kMethods = {{
+      {"poly", Search::own, "a polynomial of the degree cross-validation picks"},
+  }};
+  /// own and none; any other is refused: cross-validation picks its degree.
+  static Search search(Search requested, const TrainOptions& options);
+  static void validate(const TrainOptions& options);  ///< the degree, 1 … 6
+  static Trained train(const TrainContext& context);
+};
+
+}  // namespace fogdrift

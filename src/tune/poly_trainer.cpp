@@ -1,0 +1,69 @@
+#include "fogdrift/tune/poly_trainer.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+
+#include "fogdrift/base/error.hpp"
+
+namespace fogdrift {
+
+Search PolyTrainer::search(Search requested, const TrainOptions&) {
+  if (requested != Search::own && requested != Search::none)
+    throw OptionError("search",
+                      "poly has no search: cross-validation picks its degree (auto or none)");
+  return Search::own;
+}
+
+void PolyTrainer::validate(const TrainOptions& options) {
+  if (options.poly_max_degree < 1 || options.poly_max_degree > 6)
+    throw OptionError("degree", fmt::format("{} is outside 1 … 6", options.poly_max_degree));
+}
+
+Trained PolyTrainer::train(const TrainContext& c) {
+  Trained out;
+  TrainSummary& s = out.summary;
+  const auto folds = tune::grouped_folds(c.data, c.options.tune.cv);
+  std::vector<tune::ScaledSplit> splits;
+  for (const auto& f : folds)
+    splits.push_back(tune::scale_split(c.data, f.train_rows, f.test_rows));
+  // Degrees with more terms than a fold has training rows cannot be fitted: the search stops
+  // below them.
+  std::size_t min_rows = c.data.rows;
+  for (const auto& sp : splits) min_rows = std::min(min_rows, sp.train.rows);
+  std::vector<double> cv_rmse;  // of degree 1, 2, …
+  std::size_t best = 1;
+  for (std::size_t degree = 1; degree <= c.options.poly_max_degree; ++degree) {
+    if (degree > 1 && monomials(c.data.cols(), degree).size() / c.data.cols() > min_rows) break;
+    double sse = 0;
+    std::size_t n = 0;
+    for (const auto& sp : splits) {
+      const Poly poly = fit_poly(sp.train, degree);
+      for (std::size_t r = 0; r < sp.test.rows; ++r) {
+        const double e = poly.predict(sp.test.row(r)) - sp.test.y[r];
+        sse += e * e;
+      }
+      n += sp.test.rows;
+    }
+    cv_rmse.push_back(std::sqrt(sse / static_cast<double>(n)));
+    if (cv_rmse.back() < cv_rmse[best - 1]) best = degree;
+  }
+  out.regressor = fit_poly(c.full.train, best);
+  s.fitness = "cv";
+  s.fitness_value = cv_rmse[best - 1];
+  out.cv = describe_folds(folds);
+  out.held_folds = folds;
+  out.held_description = out.cv;
+  out.held_predict = [best](const tune::ScaledSplit& split, std::size_t) {
+    const Poly poly = fit_poly(split.train, best);
+    std::vector<double> predicted(split.test.rows);
+    for (std::size_t r = 0; r < split.test.rows; ++r)
+      predicted[r] = poly.predict(split.test.row(r));
+    return predicted;
+  };
+  s.hyperparameters = {{"degree", static_cast<double>(best)}};
+  s.record["poly_cv_rmse_by_degree"] = cv_rmse;
+  return out;
+}
+
+}  // namespace fogdrift
