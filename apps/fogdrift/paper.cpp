@@ -25,9 +25,10 @@ void add_paper_options(CLI::App* cmd, PaperArgs& a) {
       ->capture_default_str();
   cmd->add_option("--methods", a.methods,
                   "Methods of Tables 2-3 and the start-up conditions table, in order, "
-                  "comma-separated: the paper's, and poly or gp after them (gp: a Gaussian "
-                  "process tuned by the same search and folds, docs/gp.md); bp and ssa-svr are "
-                  "always needed")
+                  "comma-separated, of " +
+                      method_names() +
+                      " (train --help says what each is): the paper's, and any other after "
+                      "them; bp and ssa-svr are always needed")
       ->capture_default_str();
   cmd->add_option("--first-seed", a.first_seed, "Seeds are first, first + 1, …")
       ->capture_default_str();
