@@ -22,6 +22,8 @@ std::string type_name(const OptionSpec& spec) {
       return "NAME";
     case OptionType::names:
       return "NAME,...";
+    case OptionType::numbers:
+      return spec.unit.empty() ? "NUMBER,..." : spec.unit + ",...";
     case OptionType::text:
     case OptionType::on_off:
       break;

@@ -1,4 +1,5 @@
-"""fogdrift.train's signature and docstring, from the one description of each option.
+"""fogdrift.train's signature and docstring, and fogdrift.simulate's docstring, from the one
+description of each option.
 
 The compiled ``train`` takes its options as keywords and checks each against the description
 fogdrift's library keeps of it (docs/options.md), the same one ``fogdrift train``'s flags come
@@ -21,6 +22,8 @@ def _value(option):
         return int(text)
     if kind in ("number", "seconds or auto") and text != "auto":
         return float(text)
+    if kind == "numbers":
+        return [float(v) for v in text.split(",")]
     return text
 
 
@@ -36,8 +39,14 @@ def with_options(function, options, first="campaign", command="fogdrift train"):
                                      default=_value(o)) for o in options]
     call.__signature__ = inspect.Signature(parameters)
     lines = [function.__doc__.strip().split("\n")[-1], "", "Keywords:"]
+    call.__doc__ = "\n".join(lines + keyword_lines(options, command))
+    return call
+
+
+def keyword_lines(options, command):
+    """One docstring line per option: its keyword, default, the flag of `command` and its doc."""
+    lines = []
     for o in options:
         flag = f" ({command} {o['flag']})" if o["flag"] else ""
         lines.append(f"    {o['keyword']} = {_value(o)!r}{flag}: {o['doc']}")
-    call.__doc__ = "\n".join(lines)
-    return call
+    return lines

@@ -48,6 +48,8 @@ std::string_view python_what(OptionType type) {
       return "a str";
     case OptionType::names:
       return "a str or a list of str";
+    case OptionType::numbers:
+      return "a list of numbers or a str";
     case OptionType::on_off:
       return "a bool";
   }
@@ -88,6 +90,19 @@ std::string keyword_text(const OptionSpec& spec, const py::handle& value,
           if (all_text) joined += (joined.empty() ? "" : ",") + item.cast<std::string>();
         }
         if (all_text) return joined;
+      }
+      break;
+    case OptionType::numbers:
+      if (text) return value.cast<std::string>();
+      if (py::isinstance<py::list>(value) || py::isinstance<py::tuple>(value) ||
+          py::isinstance(value, py::module_::import("numpy").attr("ndarray"))) {
+        std::string joined;
+        bool all_numbers = true;
+        for (const py::handle item : value) {
+          all_numbers = all_numbers && is_number(item);
+          if (all_numbers) joined += (joined.empty() ? "" : ",") + number_text(item);
+        }
+        if (all_numbers) return joined;
       }
       break;
     case OptionType::on_off:

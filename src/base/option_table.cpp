@@ -26,6 +26,8 @@ std::string_view to_string(OptionType type) {
       return "text";
     case OptionType::names:
       return "names";
+    case OptionType::numbers:
+      return "numbers";
     case OptionType::on_off:
       return "on/off";
   }
@@ -117,6 +119,23 @@ std::optional<std::uint64_t> parse_whole_or_auto_option(const OptionSpec& spec,
   return static_cast<std::uint64_t>(*v);
 }
 
+std::vector<double> parse_numbers_option(const OptionSpec& spec, const std::string& text) {
+  std::vector<double> values;
+  std::size_t from = 0;
+  for (;;) {
+    const std::size_t comma = text.find(',', from);
+    const std::string item = text.substr(from, comma == std::string::npos ? comma : comma - from);
+    const auto v = csv::parse_number(item);
+    if (!v)
+      throw OptionError(spec.keyword, fmt::format("'{}' in '{}' is not a finite number (give a "
+                                                  "comma-separated list such as -40,-30,25)",
+                                                  item, text));
+    values.push_back(*v);
+    if (comma == std::string::npos) return values;
+    from = comma + 1;
+  }
+}
+
 bool parse_on_off_option(const OptionSpec& spec, const std::string& text) {
   static constexpr std::string_view kOn[] = {"true", "1", "yes", "on"};
   static constexpr std::string_view kOff[] = {"false", "0", "no", "off"};
@@ -127,6 +146,12 @@ bool parse_on_off_option(const OptionSpec& spec, const std::string& text) {
 
 std::string option_number_text(double value) {
   return fmt::format("{}", value);
+}
+
+std::string option_numbers_text(const std::vector<double>& values) {
+  std::string out;
+  for (const double v : values) out += (out.empty() ? "" : ",") + option_number_text(v);
+  return out;
 }
 
 }  // namespace fogdrift

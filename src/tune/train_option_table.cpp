@@ -14,48 +14,6 @@ namespace {
 
 using O = CampaignTrainOptions;
 
-/// A whole-number option on the field `get(o)` returns.
-template <class Get>
-Option<O> whole(OptionSpec spec, Get get) {
-  spec.type = OptionType::whole;
-  return {spec, [get](const O& o) { return std::to_string(get(o)); },
-          [get, spec](O& o, const std::string& text) {
-            using T = std::remove_cvref_t<decltype(get(o))>;
-            get(o) = static_cast<T>(parse_whole_option(spec, text));
-          }};
-}
-
-/// A real-number option on the field `get(o)` returns.
-template <class Get>
-Option<O> number(OptionSpec spec, Get get) {
-  spec.type = OptionType::number;
-  return {spec, [get](const O& o) { return option_number_text(get(o)); },
-          [get, spec](O& o, const std::string& text) { get(o) = parse_number_option(spec, text); }};
-}
-
-/// An on/off option on the bool field `get(o)` returns.
-template <class Get>
-Option<O> on_off(OptionSpec spec, Get get) {
-  spec.type = OptionType::on_off;
-  return {spec, [get](const O& o) { return std::string(get(o) ? "true" : "false"); },
-          [get, spec](O& o, const std::string& text) { get(o) = parse_on_off_option(spec, text); }};
-}
-
-/// An optional number of seconds, unset meaning "auto".
-template <class Get>
-Option<O> seconds_or_auto(OptionSpec spec, Get get) {
-  spec.type = OptionType::seconds_or_auto;
-  spec.unit = "s";
-  return {spec,
-          [get](const O& o) {
-            const auto& v = get(o);
-            return v ? option_number_text(*v) : std::string("auto");
-          },
-          [get, spec](O& o, const std::string& text) {
-            get(o) = parse_seconds_or_auto_option(spec, text);
-          }};
-}
-
 OptionTable<O> make_table() {
   OptionTable<O> t;
   t.push_back(
@@ -109,7 +67,7 @@ OptionTable<O> make_table() {
                [](O& o, const std::string& text) {
                  o.train.tune.cv.scheme = tune::parse_cv_scheme(text, "cv");
                }});
-  t.push_back(whole(
+  t.push_back(whole_option<O>(
       {"folds", "--folds", {}, "", "≥ 2", "k of {cv} recording or temperature", {}},
       [](auto& o) -> auto& { return o.train.tune.cv.folds; }));
   t.push_back({{"thermometers",
@@ -164,7 +122,7 @@ OptionTable<O> make_table() {
                  o.dataset.preprocessing.rates.causality =
                      signal::parse_causality(text, "differentiator");
                }});
-  t.push_back(seconds_or_auto(
+  t.push_back(seconds_or_auto_option<O>(
       {"block_s",
        "--block-s",
        {},
@@ -174,7 +132,7 @@ OptionTable<O> make_table() {
        "for a log that 10 s does not divide (one sample for logs slower than 0.1 Hz)",
        {}},
       [](auto& o) -> auto& { return o.block_s; }));
-  t.push_back(seconds_or_auto(
+  t.push_back(seconds_or_auto_option<O>(
       {"rate_window_s",
        "--rate-window-s",
        {},
@@ -204,7 +162,7 @@ OptionTable<O> make_table() {
                    throw OptionError("rate_degree", fmt::format("{} is outside 1 … 4", *v));
                  o.rate_degree = v ? std::optional<int>(static_cast<int>(*v)) : std::nullopt;
                }});
-  t.push_back(on_off(
+  t.push_back(on_off_option<O>(
       {"denoise",
        "--no-denoise",
        {},
@@ -214,7 +172,7 @@ OptionTable<O> make_table() {
        "too short to denoise or already smooth (a log of burst means)",
        {}},
       [](auto& o) -> auto& { return o.dataset.denoise_target; }));
-  t.push_back(whole(
+  t.push_back(whole_option<O>(
       {"population",
        "--population",
        {},
@@ -223,7 +181,7 @@ OptionTable<O> make_table() {
        "Individuals of the search's optimizer",
        {}},
       [](auto& o) -> auto& { return o.train.tune.optimizer.run.population; }));
-  t.push_back(whole(
+  t.push_back(whole_option<O>(
       {"iterations",
        "--iterations",
        {},
@@ -232,16 +190,16 @@ OptionTable<O> make_table() {
        "Iterations of the search after its initial population",
        {}},
       [](auto& o) -> auto& { return o.train.tune.optimizer.run.iterations; }));
-  t.push_back(whole(
+  t.push_back(whole_option<O>(
       {"seed", "--seed", {}, "", "", "Seed of the search (and of bp's weights)", {}},
       [](auto& o) -> auto& { return o.train.tune.optimizer.run.seed; }));
-  t.push_back(number(
+  t.push_back(number_option<O>(
       {"c_min", "--c-min", {}, "", "> 0", "Smallest C searched", {}},
       [](auto& o) -> auto& { return o.train.tune.space.c_min; }));
-  t.push_back(number(
+  t.push_back(number_option<O>(
       {"c_max", "--c-max", {}, "", "> {c_min}", "Largest C searched", {}},
       [](auto& o) -> auto& { return o.train.tune.space.c_max; }));
-  t.push_back(number(
+  t.push_back(number_option<O>(
       {"sigma_min",
        "--sigma-min",
        {},
@@ -250,10 +208,10 @@ OptionTable<O> make_table() {
        "Smallest σ searched, in standardised feature units",
        {}},
       [](auto& o) -> auto& { return o.train.tune.space.sigma_min; }));
-  t.push_back(number(
+  t.push_back(number_option<O>(
       {"sigma_max", "--sigma-max", {}, "", "> {sigma_min}", "Largest σ searched", {}},
       [](auto& o) -> auto& { return o.train.tune.space.sigma_max; }));
-  t.push_back(number(
+  t.push_back(number_option<O>(
       {"epsilon",
        "--epsilon",
        {},
@@ -262,7 +220,7 @@ OptionTable<O> make_table() {
        "ε of the SVR's tube, in standardised drift units, when it is not searched",
        {}},
       [](auto& o) -> auto& { return o.train.tune.space.epsilon; }));
-  t.push_back(on_off(
+  t.push_back(on_off_option<O>(
       {"search_epsilon",
        "--search-epsilon",
        {},
@@ -271,7 +229,7 @@ OptionTable<O> make_table() {
        "Also search ε, in [{epsilon_min}, {epsilon_max}]",
        {}},
       [](auto& o) -> auto& { return o.train.tune.space.search_epsilon; }));
-  t.push_back(number(
+  t.push_back(number_option<O>(
       {"epsilon_min",
        "--epsilon-min",
        {},
@@ -280,7 +238,7 @@ OptionTable<O> make_table() {
        "Smallest ε searched with {search_epsilon}",
        {}},
       [](auto& o) -> auto& { return o.train.tune.space.epsilon_min; }));
-  t.push_back(number(
+  t.push_back(number_option<O>(
       {"epsilon_max",
        "--epsilon-max",
        {},
@@ -306,7 +264,7 @@ OptionTable<O> make_table() {
          o.train.auto_box_rounds =
              parse_on_off_option(spec, text) ? TrainOptions::kAutoBoxRounds : 0;
        }});
-  t.push_back(on_off(
+  t.push_back(on_off_option<O>(
       {"racing",
        "--no-racing",
        {},
@@ -318,7 +276,7 @@ OptionTable<O> make_table() {
        "is fitted (docs/tuning.md)",
        {}},
       [](auto& o) -> auto& { return o.train.tune.racing; }));
-  t.push_back(number(
+  t.push_back(number_option<O>(
       {"cache_mb",
        "--cache-mb",
        {},
@@ -328,13 +286,13 @@ OptionTable<O> make_table() {
        "fits",
        {}},
       [](auto& o) -> auto& { return o.train.tune.cache_mb; }));
-  t.push_back(whole(
+  t.push_back(whole_option<O>(
       {"hidden", "--hidden", {}, "", "1 … 1000", "bp: hidden tanh units", {}},
       [](auto& o) -> auto& { return o.train.mlp.hidden; }));
-  t.push_back(whole(
+  t.push_back(whole_option<O>(
       {"max_degree", "--max-degree", {}, "", "1 … 6", "poly: highest degree tried", {"degree"}},
       [](auto& o) -> auto& { return o.train.poly_max_degree; }));
-  t.push_back(whole(
+  t.push_back(whole_option<O>(
       {"gp_points",
        "--gp-points",
        {},

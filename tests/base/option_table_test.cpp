@@ -43,6 +43,23 @@ TEST(OptionTable, Numbers) {
     EXPECT_EQ(keyword_of_error([&] { parse_number_option(s, bad); }), "c_max") << bad;
 }
 
+TEST(OptionTable, ListsOfNumbers) {
+  const OptionSpec spec{"temps_degc", "--temps", OptionType::numbers, "°C", "", "", {}};
+  EXPECT_EQ(parse_numbers_option(spec, "-40,-30.5,25"), (std::vector<double>{-40, -30.5, 25}));
+  EXPECT_EQ(parse_numbers_option(spec, "7"), (std::vector<double>{7}));
+  for (const char* bad : {"", "1,,2", "1,2,", "-40,warm", "nan", "1e999"}) {
+    try {
+      parse_numbers_option(spec, bad);
+      ADD_FAILURE() << bad;
+    } catch (const OptionError& e) {
+      EXPECT_EQ(e.option(), "temps_degc") << bad;
+    }
+  }
+  const std::vector<double> values{-40, 0.1, 1e-7, 60};
+  EXPECT_EQ(parse_numbers_option(spec, option_numbers_text(values)), values);
+  EXPECT_EQ(option_numbers_text(values), "-40,0.1,1e-07,60");
+}
+
 TEST(OptionTable, AutoOrAValue) {
   const OptionSpec s = spec("block_s", "--block-s", OptionType::seconds_or_auto);
   EXPECT_FALSE(parse_seconds_or_auto_option(s, "auto").has_value());

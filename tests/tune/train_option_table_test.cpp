@@ -33,6 +33,8 @@ std::string another_value(const Option<O>& option, const std::string& current) {
       return current == "true" ? "false" : "true";
     case OptionType::names:
       return "fog,acc1";
+    case OptionType::numbers:
+      return current == "1,2" ? "3" : "1,2";
     case OptionType::text:
       return "T,dT";
     case OptionType::choice: {

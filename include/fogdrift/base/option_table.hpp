@@ -17,6 +17,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <type_traits>
 #include <vector>
 
 #include "fogdrift/base/error.hpp"
@@ -32,11 +33,13 @@ enum class OptionType {
   choice,           ///< one of a few names (OptionSpec::range lists them); Python str
   text,             ///< free text with a grammar of its own (OptionSpec::doc); Python str
   names,            ///< comma-separated names; Python str or a list of str
+  numbers,          ///< comma-separated finite numbers; Python a list of numbers or a str
   on_off,           ///< a switch; Python bool. On the command line a flag that turns it on, or,
                     ///< for a switch on by default, a flag --no-NAME that turns it off
 };
 
-/// "whole", "number", "seconds or auto", "whole or auto", "choice", "text", "names", "on/off".
+/// "whole", "number", "seconds or auto", "whole or auto", "choice", "text", "names", "numbers",
+/// "on/off".
 std::string_view to_string(OptionType type);
 
 /// How an option is described to its users.
@@ -78,10 +81,10 @@ std::vector<OptionSpec> specs_of(const OptionTable<O>& table) {
   return specs;
 }
 
-/// Each option's value in a default-constructed `O`: the defaults users see.
+/// Each option's value in `defaults` (a default-constructed `O` unless given): the defaults
+/// users see.
 template <class O>
-std::vector<std::string> defaults_of(const OptionTable<O>& table) {
-  const O defaults = O();
+std::vector<std::string> defaults_of(const OptionTable<O>& table, const O& defaults = O()) {
   std::vector<std::string> texts;
   for (const auto& o : table) texts.push_back(o.text_of(defaults));
   return texts;
@@ -133,10 +136,68 @@ double parse_number_option(const OptionSpec& spec, const std::string& text);
 std::optional<double> parse_seconds_or_auto_option(const OptionSpec& spec, const std::string& text);
 std::optional<std::uint64_t> parse_whole_or_auto_option(const OptionSpec& spec,
                                                         const std::string& text);
+/// "-40,-30,25": one or more finite numbers, comma-separated.
+std::vector<double> parse_numbers_option(const OptionSpec& spec, const std::string& text);
 /// "true" or "false" (also 1/0, yes/no, on/off).
 bool parse_on_off_option(const OptionSpec& spec, const std::string& text);
 
 /// A number as an option's text: the shortest that reads back to the same double.
 std::string option_number_text(double value);
+/// Numbers as an option's text, comma-separated, each as option_number_text.
+std::string option_numbers_text(const std::vector<double>& values);
+
+// Options of each type on a field of `O`: `get(o)` returns a reference to the field, and the
+// option reads, writes and parses it as its type says.
+
+/// A whole-number option (any integer field).
+template <class O, class Get>
+Option<O> whole_option(OptionSpec spec, Get get) {
+  spec.type = OptionType::whole;
+  return {spec, [get](const O& o) { return std::to_string(get(o)); },
+          [get, spec](O& o, const std::string& text) {
+            using T = std::remove_cvref_t<decltype(get(o))>;
+            get(o) = static_cast<T>(parse_whole_option(spec, text));
+          }};
+}
+
+/// A real-number option.
+template <class O, class Get>
+Option<O> number_option(OptionSpec spec, Get get) {
+  spec.type = OptionType::number;
+  return {spec, [get](const O& o) { return option_number_text(get(o)); },
+          [get, spec](O& o, const std::string& text) { get(o) = parse_number_option(spec, text); }};
+}
+
+/// A list of numbers (a std::vector<double> field).
+template <class O, class Get>
+Option<O> numbers_option(OptionSpec spec, Get get) {
+  spec.type = OptionType::numbers;
+  return {
+      spec, [get](const O& o) { return option_numbers_text(get(o)); },
+      [get, spec](O& o, const std::string& text) { get(o) = parse_numbers_option(spec, text); }};
+}
+
+/// An on/off option on a bool field.
+template <class O, class Get>
+Option<O> on_off_option(OptionSpec spec, Get get) {
+  spec.type = OptionType::on_off;
+  return {spec, [get](const O& o) { return std::string(get(o) ? "true" : "false"); },
+          [get, spec](O& o, const std::string& text) { get(o) = parse_on_off_option(spec, text); }};
+}
+
+/// An optional number of seconds, unset meaning "auto".
+template <class O, class Get>
+Option<O> seconds_or_auto_option(OptionSpec spec, Get get) {
+  spec.type = OptionType::seconds_or_auto;
+  spec.unit = "s";
+  return {spec,
+          [get](const O& o) {
+            const auto& v = get(o);
+            return v ? option_number_text(*v) : std::string("auto");
+          },
+          [get, spec](O& o, const std::string& text) {
+            get(o) = parse_seconds_or_auto_option(spec, text);
+          }};
+}
 
 }  // namespace fogdrift
