@@ -1,9 +1,11 @@
 #!/usr/bin/env python3
-"""Writes (or checks) the table of training options in docs/options.md.
+"""Writes (or checks) the tables of options in docs/options.md.
 
-The table is what `fogdrift options` prints: the one description fogdrift keeps of each option
-of `fogdrift train` and Python's fogdrift.train (src/tune/train_option_table.cpp). This script puts
-it between the page's two marker lines, so that the page cannot fall behind the code.
+Each table is what `fogdrift options COMMAND` prints: the one description fogdrift keeps of each
+option of `fogdrift train` and Python's fogdrift.train (src/tune/train_option_table.cpp), and of
+`fogdrift simulate`'s protocols and Python's fogdrift.simulate
+(src/sim/scenario_option_table.cpp). This script puts each between its two marker lines on the
+page, so that the page cannot fall behind the code.
 
 Usage:
     python3 scripts/options_doc.py FOGDRIFT            # rewrite the table (FOGDRIFT: the tool)
@@ -14,25 +16,32 @@ import subprocess
 import sys
 
 PAGE = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "docs", "options.md")
-BEGIN = "<!-- train options: begin (scripts/options_doc.py writes this table) -->"
-END = "<!-- train options: end -->"
+COMMANDS = ("train", "simulate-calibration", "simulate-northfind", "simulate-stable")
+
+
+def markers(command):
+    return (f"<!-- {command} options: begin (scripts/options_doc.py writes this table) -->",
+            f"<!-- {command} options: end -->")
 
 
 def main(argv):
     if len(argv) not in (2, 3) or (len(argv) == 3 and argv[2] != "--check"):
         sys.exit(__doc__)
-    table = subprocess.run([argv[1], "options"], check=True, capture_output=True,
-                           text=True).stdout
     with open(PAGE, encoding="utf-8") as f:
         page = f.read()
-    if BEGIN not in page or END not in page:
-        sys.exit(f"{PAGE}: the marker lines {BEGIN!r} and {END!r} are missing")
-    head, rest = page.split(BEGIN, 1)
-    _, tail = rest.split(END, 1)
-    wanted = head + BEGIN + "\n" + table + END + tail
+    wanted = page
+    for command in COMMANDS:
+        table = subprocess.run([argv[1], "options", command], check=True, capture_output=True,
+                               text=True).stdout
+        begin, end = markers(command)
+        if begin not in wanted or end not in wanted:
+            sys.exit(f"{PAGE}: the marker lines {begin!r} and {end!r} are missing")
+        head, rest = wanted.split(begin, 1)
+        _, tail = rest.split(end, 1)
+        wanted = head + begin + "\n" + table + end + tail
     if len(argv) == 3:
         if wanted != page:
-            sys.exit(f"{PAGE}: its table differs from `fogdrift options`; run "
+            sys.exit(f"{PAGE}: a table differs from `fogdrift options`; run "
                      f"python3 scripts/options_doc.py {argv[1]}")
         return
     with open(PAGE + ".tmp", "w", encoding="utf-8") as f:

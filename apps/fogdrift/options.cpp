@@ -1,33 +1,67 @@
-// fogdrift options: the options of `fogdrift train` and Python's fogdrift.train, as the one
-// description of each gives them (train_option_table.hpp, docs/options.md).
+// fogdrift options: the options of `fogdrift train` and `fogdrift simulate`'s protocols, and of
+// their Python functions, as the one description of each gives them (train_option_table.hpp,
+// scenario_option_table.hpp, docs/options.md).
 #include <fmt/format.h>
 
 #include <iostream>
 #include <nlohmann/json.hpp>
 
 #include "commands.hpp"
+#include "fogdrift/base/error.hpp"
+#include "fogdrift/sim/scenario_option_table.hpp"
 #include "fogdrift/tune/train_option_table.hpp"
 
 namespace fogdrift::app {
 
+constexpr const char* kCommands =
+    "train, simulate-calibration, simulate-northfind, simulate-stable";
+
+namespace {
+
+/// A table's descriptions and defaults as `fogdrift options` prints them.
+struct Described {
+  std::vector<OptionSpec> specs;
+  std::vector<std::string> defaults;
+};
+
+template <class O>
+Described described(const OptionTable<O>& table, const O& defaults = O()) {
+  return {specs_of(table), defaults_of(table, defaults)};
+}
+
+/// The commands whose options are described once, by name.
+Described of_command(const std::string& command) {
+  if (command == "train") return described(train_option_table());
+  if (command == "simulate-calibration") return described(sim::calibration_option_table());
+  if (command == "simulate-northfind") return described(sim::northfind_option_table());
+  if (command == "simulate-stable")
+    return described(sim::northfind_option_table(), sim::stable_defaults());
+  throw OptionError("COMMAND", fmt::format("'{}' is not one of {}", command, kCommands));
+}
+
+}  // namespace
+
 void add_options(CLI::App& app) {
   auto* cmd = app.add_subcommand(
       "options",
-      "Print the options of 'fogdrift train' and of Python's fogdrift.train: each one's Python\n"
-      "keyword, flag, type, unit, default, allowed values and description, from the one\n"
-      "description fogdrift keeps of it. The table in docs/options.md is this output\n"
-      "(scripts/options_doc.py writes it there).\n"
+      "Print the options of a command as the one description fogdrift keeps of each gives them:\n"
+      "each one's Python keyword, flag, type, unit, default, allowed values and description.\n"
+      "COMMAND is train ('fogdrift train', Python's fogdrift.train; the default) or\n"
+      "simulate-calibration, simulate-northfind, simulate-stable ('fogdrift simulate\n"
+      "calibration', ..., Python's fogdrift.simulate). The tables in docs/options.md are this\n"
+      "output (scripts/options_doc.py writes them there).\n"
       "Example:\n"
       "  fogdrift options --json | python3 -c 'import json,sys; print(len(json.load(sys.stdin)))'");
+  auto command = std::make_shared<std::string>("train");
+  cmd->add_option("COMMAND", *command, std::string("Whose options: ") + kCommands)
+      ->capture_default_str();
   auto json = std::make_shared<bool>(false);
   cmd->add_flag("--json", *json,
                 "Print a JSON array instead of Markdown, one object per option: keyword, flag, "
                 "type, unit, default, allowed, doc (other options named by keyword) and help "
                 "(as --help shows it, other options named by flag)");
-  cmd->callback([json] {
-    const auto& table = train_option_table();
-    const std::vector<OptionSpec> specs = specs_of(table);
-    const std::vector<std::string> defaults = defaults_of(table);
+  cmd->callback([command, json] {
+    const auto [specs, defaults] = of_command(*command);
     if (!*json) {
       std::cout << options_markdown(specs, defaults);
       return;

@@ -9,69 +9,33 @@
 #include "commands.hpp"
 #include "fogdrift/base/atomic_file.hpp"
 #include "fogdrift/base/error.hpp"
+#include "fogdrift/base/option_table.hpp"
 #include "fogdrift/sim/instrument.hpp"
 #include "fogdrift/sim/population.hpp"
+#include "fogdrift/sim/scenario_option_table.hpp"
 #include "fogdrift/sim/scenarios.hpp"
+#include "option_flags.hpp"
 
 namespace fogdrift::app {
 namespace {
-
-// The simulator's fields and the flags that set them (the three subcommands share their names).
-const FlagTable kSimulateFlags = [] {
-  FlagTable t = {{"output_rate_hz", "--rate-hz"},
-                 {"calibration.repetitions", "--repetitions"},
-                 {"calibration.test_repetitions", "--test-repetitions"},
-                 {"calibration.approaches", "--approach"}};
-  for (const char* scenario : {"calibration", "northfind", "stable"}) {
-    const std::string s = scenario;
-    t[s + ".temps_degc"] = "--temps";
-    t[s + ".output_rate_hz"] = "--rate-hz";
-    t[s + ".latitude_deg"] = "--latitude";
-    t[s + ".warm_off_s"] = "--warm-off-s";
-    t[s + ".ramp_degc_per_min"] = "--ramp-degc-per-min";
-    t[s + ".findings"] = "--findings";
-    t[s + ".position_s"] = "--position-s";
-    t[s + ".warmup_s"] = "--warmup-s";
-    t[s + ".soak_s"] = "--soak-s";
-  }
-  return t;
-}();
 
 struct SimulateArgs {
   std::string out;
   std::uint64_t seed = 1;
   std::string instrument_file;
-  double rate_hz = 1.0;
-  double latitude_deg = 30.0;
-  std::string temps;
   bool force = false;
-  int repetitions = 4;
-  int test_repetitions = 1;
-  int findings = 0;
-  double position_s = 90.0;
-  double warmup_s = 7200.0;
-  std::string approach = "calibration";
-  double soak_s = 1200.0;
-  double ramp_degc_per_min = 1.0;
-  double warm_off_s = 600.0;
   int count = 20;
 };
-
-/// What northfind and stable share: temperatures, findings, timing, seed and site.
-void set_findings(sim::NorthfindOptions& o, const SimulateArgs& a) {
-  if (!a.temps.empty()) o.temps_degc = parse_number_list(a.temps, "--temps");
-  if (a.findings != 0) o.findings = a.findings;
-  o.position_s = a.position_s;
-  o.seed = a.seed;
-  o.output_rate_hz = a.rate_hz;
-  o.latitude_deg = a.latitude_deg;
-}
 
 sim::Instrument load_instrument(const std::string& file) {
   if (file.empty()) return sim::Instrument{};
   return sim::instrument_from_json(read_text_file(file), file);
 }
 
+void finish(const SimulateArgs& a, const sim::SimulatedCampaign& campaign,
+            std::chrono::steady_clock::time_point start, std::string_view scenario);
+
+/// What every protocol's front end decides itself: where, which seed, which instrument.
 void add_common(CLI::App* cmd, SimulateArgs& a) {
   cmd->add_option("--out,-o", a.out, "Campaign folder to create (must not exist or be empty)")
       ->required();
@@ -80,20 +44,30 @@ void add_common(CLI::App* cmd, SimulateArgs& a) {
   cmd->add_option("--instrument", a.instrument_file,
                   "Instrument parameters (JSON); omitted ones keep their defaults. "
                   "'fogdrift simulate --print-instrument' prints them all");
-  cmd->add_option("--rate-hz", a.rate_hz, "Logger output rate, Hz")->capture_default_str();
-  cmd->add_option("--latitude", a.latitude_deg, "Site latitude, degrees")->capture_default_str();
   cmd->add_flag("--force", a.force, "Replace --out if it exists (only after success)");
 }
 
-// The options of the start-up approaches other than the paper's own.
-void add_start_up(CLI::App* cmd, SimulateArgs& a) {
-  cmd->add_option("--warm-off-s", a.warm_off_s,
-                  "Power-off before a warm restart (--approach warm), s")
-      ->capture_default_str();
-  cmd->add_option("--ramp-degc-per-min", a.ramp_degc_per_min,
-                  "Chamber ramp for --approach ramping (from 10 °C below, starting at power-on) "
-                  "and sweep (between temperatures), °C/min")
-      ->capture_default_str();
+/// The protocol's options as flags (scenario_option_table.hpp), shown with `defaults`.
+template <class O>
+std::shared_ptr<OptionFlags> add_protocol(CLI::App* cmd, const OptionTable<O>& table,
+                                          const O& defaults) {
+  return std::make_shared<OptionFlags>(cmd, specs_of(table), defaults_of(table, defaults));
+}
+
+/// Simulates `scenario` with the options given over `defaults` and writes the campaign.
+template <class O, class Simulate>
+void run_protocol(const SimulateArgs& a, const OptionFlags& flags, const OptionTable<O>& table,
+                  O options, const std::string& scenario, Simulate simulate) {
+  const auto start = std::chrono::steady_clock::now();
+  flags.apply(table, options);
+  options.seed = a.seed;
+  sim::SimulatedCampaign campaign;
+  try {
+    campaign = simulate(load_instrument(a.instrument_file), options);
+  } catch (const OptionError& e) {
+    throw flags.named(e);
+  }
+  finish(a, campaign, start, scenario);
 }
 
 constexpr const char* kApproachHelp =
@@ -161,31 +135,11 @@ void add_simulate(CLI::App& app) {
           "  fogdrift simulate calibration --out cal --repetitions 4 "
           "--approach calibration,soaked,warm,ramping");
   add_common(cal, *args);
-  add_start_up(cal, *args);
-  cal->add_option("--approach", args->approach,
-                  "Start-up approach of each repetition, comma-separated, cycling")
-      ->capture_default_str();
-  cal->add_option("--temps", args->temps, "Chamber temperatures, °C, comma-separated")
-      ->default_str("-40,-30,...,60");
-  cal->add_option("--repetitions", args->repetitions, "Temperature sweeps")->capture_default_str();
-  cal->add_option("--test-repetitions", args->test_repetitions, "The last N sweeps get role 'test'")
-      ->capture_default_str();
-  cal->callback([args] {
-    with_flags(kSimulateFlags, [&] {
-      const auto start = std::chrono::steady_clock::now();
-      sim::CalibrationOptions o;
-      if (!args->temps.empty()) o.temps_degc = parse_number_list(args->temps, "--temps");
-      o.repetitions = args->repetitions;
-      o.test_repetitions = args->test_repetitions;
-      o.seed = args->seed;
-      o.output_rate_hz = args->rate_hz;
-      o.latitude_deg = args->latitude_deg;
-      o.approaches = sim::approaches_from_string(args->approach, "--approach");
-      o.warm_off_s = args->warm_off_s;
-      o.ramp_degc_per_min = args->ramp_degc_per_min;
-      finish(*args, sim::simulate_calibration(load_instrument(args->instrument_file), o), start,
-             "calibration");
-    });
+  const auto cal_flags =
+      add_protocol(cal, sim::calibration_option_table(), sim::CalibrationOptions{});
+  cal->callback([args, cal_flags] {
+    run_protocol(*args, *cal_flags, sim::calibration_option_table(), sim::CalibrationOptions{},
+                 "calibration", sim::simulate_calibration);
   });
 
   auto* nf = cmd->add_subcommand(
@@ -197,28 +151,10 @@ void add_simulate(CLI::App& app) {
           kApproachHelp +
           "  sweep        the temperatures in the given order as one chamber sweep (ramp, soak)");
   add_common(nf, *args);
-  add_start_up(nf, *args);
-  nf->add_option("--temps", args->temps, "Initial temperatures, °C, comma-separated")
-      ->default_str("-32,-16,-5,17,28,43,54");
-  nf->add_option("--findings", args->findings, "Findings per recording")->default_str("5");
-  nf->add_option("--position-s", args->position_s, "Seconds per position, rotation included")
-      ->capture_default_str();
-  nf->add_option("--approach", args->approach, "calibration, soaked, warm, ramping or sweep")
-      ->capture_default_str();
-  nf->add_option("--soak-s", args->soak_s, "Unpowered soak before power-on, s")
-      ->capture_default_str();
-  nf->callback([args] {
-    with_flags(kSimulateFlags, [&] {
-      const auto start = std::chrono::steady_clock::now();
-      sim::NorthfindOptions o;
-      set_findings(o, *args);
-      o.approach = sim::approach_from_string(args->approach, "--approach");
-      o.soak_s = args->soak_s;
-      o.ramp_degc_per_min = args->ramp_degc_per_min;
-      o.warm_off_s = args->warm_off_s;
-      finish(*args, sim::simulate_northfind(load_instrument(args->instrument_file), o), start,
-             "northfind");
-    });
+  const auto nf_flags = add_protocol(nf, sim::northfind_option_table(), sim::NorthfindOptions{});
+  nf->callback([args, nf_flags] {
+    run_protocol(*args, *nf_flags, sim::northfind_option_table(), sim::NorthfindOptions{},
+                 "northfind", sim::simulate_northfind);
   });
 
   auto* st = cmd->add_subcommand(
@@ -226,21 +162,10 @@ void add_simulate(CLI::App& app) {
       "The stable-stage reference: four-position findings after a long powered warm-up at room "
       "temperature.");
   add_common(st, *args);
-  st->add_option("--temps", args->temps, "Temperatures, °C, comma-separated")->default_str("25");
-  st->add_option("--findings", args->findings, "Findings per recording")->default_str("20");
-  st->add_option("--warmup-s", args->warmup_s, "Powered warm-up before recording, s")
-      ->capture_default_str();
-  st->add_option("--position-s", args->position_s, "Seconds per position, rotation included")
-      ->capture_default_str();
-  st->callback([args] {
-    with_flags(kSimulateFlags, [&] {
-      const auto start = std::chrono::steady_clock::now();
-      sim::NorthfindOptions o = sim::stable_defaults();
-      set_findings(o, *args);
-      o.warmup_s = args->warmup_s;
-      finish(*args, sim::simulate_stable(load_instrument(args->instrument_file), o), start,
-             "stable");
-    });
+  const auto st_flags = add_protocol(st, sim::northfind_option_table(), sim::stable_defaults());
+  st->callback([args, st_flags] {
+    run_protocol(*args, *st_flags, sim::northfind_option_table(), sim::stable_defaults(), "stable",
+                 sim::simulate_stable);
   });
 
   auto* pop = cmd->add_subcommand(

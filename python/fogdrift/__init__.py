@@ -24,10 +24,10 @@ The package wraps fogdrift's C++ library (docs/python.md):
 """
 from ._fogdrift import (Model, StreamingCompensator, __version__, allan_deviation, denoise,
                         evaluate, features, find_north, noise_terms, northfind, read_recording,
-                        release_memory, save_models, simulate, train, train_options,
-                        write_recording)
+                        release_memory, save_models, simulate, simulate_options, train,
+                        train_options, write_recording)
 from ._keywords import method_naming_keywords, naming_keywords
-from ._options import with_options
+from ._options import keyword_lines, with_options
 from .fleet import train_fleet
 from .search import SVRGridSearchCV
 from .svr import SVR
@@ -41,6 +41,10 @@ from .svr import SVR
 # train checks its keywords against the library's descriptions of them (docs/options.md); its
 # signature and docstring come from the same descriptions (_options.py).
 train = with_options(train, train_options())
+simulate.__doc__ += "".join(
+    f"\n\nKeywords of {scenario}:\n" + "\n".join(
+        keyword_lines(simulate_options(scenario), f"fogdrift simulate {scenario}"))
+    for scenario in ("calibration", "northfind", "stable"))
 for _method in ("__init__", "update", "run"):
     method_naming_keywords(StreamingCompensator, _method)
 for _method in ("predict", "compensate", "save", "to_json"):
@@ -52,5 +56,5 @@ del _method
 __all__ = ["Model", "SVR", "SVRGridSearchCV", "StreamingCompensator", "allan_deviation",
            "denoise", "evaluate", "features", "find_north", "noise_terms", "northfind",
            "read_recording", "release_memory", "save_models", "simulate", "train", "train_fleet",
-           "train_options",
+           "simulate_options", "train_options",
            "write_recording", "__version__"]

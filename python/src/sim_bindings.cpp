@@ -1,13 +1,12 @@
 // fogdrift.simulate: the built-in north-finding-system simulator and its protocols, as
 // `fogdrift simulate` runs them, with the options under the library's field names
 // (sim/scenarios.hpp, docs/python.md).
+#include <fmt/format.h>
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 #include <pybind11/stl/filesystem.h>
 
 #include <filesystem>
-#include <functional>
-#include <map>
 #include <optional>
 #include <string>
 
@@ -16,88 +15,41 @@
 #include "fogdrift/base/error.hpp"
 #include "fogdrift/base/text_file.hpp"
 #include "fogdrift/sim/instrument.hpp"
+#include "fogdrift/sim/scenario_option_table.hpp"
 #include "fogdrift/sim/scenarios.hpp"
+#include "option_keywords.hpp"
 
 namespace py = pybind11;
 
 namespace fogdrift::python {
 namespace {
 
-// Setters of one scenario's options by field name.
+/// Sets the options given as keywords from the scenario's table (scenario_option_table.hpp),
+/// in the table's order; a keyword it does not have is a TypeError listing those it has.
 template <typename Options>
-using Fields = std::map<std::string, std::function<void(Options&, const py::handle&)>>;
-
-template <typename Options, typename T>
-std::function<void(Options&, const py::handle&)> set(T Options::*field) {
-  return [field](Options& o, const py::handle& v) { o.*field = v.cast<T>(); };
-}
-
-const Fields<sim::CalibrationOptions>& calibration_fields() {
-  using O = sim::CalibrationOptions;
-  static const Fields<O> f = {
-      {"temps_degc", set(&O::temps_degc)},
-      {"repetitions", set(&O::repetitions)},
-      {"test_repetitions", set(&O::test_repetitions)},
-      {"soak_s", set(&O::soak_s)},
-      {"powered_s", set(&O::powered_s)},
-      {"ramp_s", set(&O::ramp_s)},
-      {"chamber_setpoint_sd_degc", set(&O::chamber_setpoint_sd_degc)},
-      {"azimuth_deg", set(&O::azimuth_deg)},
-      {"latitude_deg", set(&O::latitude_deg)},
-      {"output_rate_hz", set(&O::output_rate_hz)},
-      {"approaches",
-       [](O& o, const py::handle& v) {
-         o.approaches.clear();
-         if (py::isinstance<py::str>(v))
-           o.approaches = sim::approaches_from_string(v.cast<std::string>(), "approaches");
-         else
-           for (const py::handle a : v)
-             o.approaches.push_back(sim::approach_from_string(a.cast<std::string>(), "approaches"));
-       }},
-      {"warm_off_s", set(&O::warm_off_s)},
-      {"ramp_degc_per_min", set(&O::ramp_degc_per_min)},
-  };
-  return f;
-}
-
-const Fields<sim::NorthfindOptions>& northfind_fields() {
-  using O = sim::NorthfindOptions;
-  static const Fields<O> f = {
-      {"temps_degc", set(&O::temps_degc)},
-      {"findings", set(&O::findings)},
-      {"position_s", set(&O::position_s)},
-      {"warmup_s", set(&O::warmup_s)},
-      {"approach",
-       [](O& o, const py::handle& v) {
-         o.approach = sim::approach_from_string(v.cast<std::string>(), "approach");
-       }},
-      {"soak_s", set(&O::soak_s)},
-      {"ramp_degc_per_min", set(&O::ramp_degc_per_min)},
-      {"warm_off_s", set(&O::warm_off_s)},
-      {"latitude_deg", set(&O::latitude_deg)},
-      {"output_rate_hz", set(&O::output_rate_hz)},
-  };
-  return f;
-}
-
-template <typename Options>
-void apply(Options& o, const Fields<Options>& fields, const py::kwargs& options,
+void apply(Options& o, const OptionTable<Options>& table, const py::kwargs& options,
            const std::string& scenario) {
   for (const auto& [key, value] : options) {
     const auto name = key.template cast<std::string>();
-    const auto it = fields.find(name);
-    if (it == fields.end()) {
-      std::string known;
-      for (const auto& [n, f] : fields) known += (known.empty() ? "" : ", ") + n;
-      throw OptionError(name,
-                        "is not an option of the " + scenario + " simulation (" + known + ")");
-    }
-    try {
-      it->second(o, value);
-    } catch (const py::cast_error&) {
-      throw OptionError(
-          name, "has the wrong type (" + py::str(py::type::of(value)).cast<std::string>() + ")");
-    }
+    if (find_option(table, name)) continue;
+    std::string known;
+    for (const auto& option : table) known += (known.empty() ? "" : ", ") + option.spec.keyword;
+    throw py::type_error(fmt::format(
+        "simulate() got an unexpected keyword argument '{}'; the {} simulation's options are {}",
+        name, scenario, known));
+  }
+  for (const auto& option : table)
+    if (options.contains(option.spec.keyword.c_str()))
+      option.set(o, keyword_text(option.spec, options[option.spec.keyword.c_str()], "simulate"));
+}
+
+/// The library's error named by the keyword of the option that sets its field.
+template <typename Options, typename F>
+auto named_by(const OptionTable<Options>& table, F&& f) {
+  try {
+    return f();
+  } catch (const OptionError& e) {
+    throw OptionError(option_word(specs_of(table), e.option(), false), e.message());
   }
 }
 
@@ -118,18 +70,23 @@ py::dict simulate(const std::string& scenario, const std::optional<std::filesyst
   const sim::Instrument unit = instrument_of(instrument);
   sim::SimulatedCampaign c;
   if (scenario == "calibration") {
+    const auto& table = sim::calibration_option_table();
     sim::CalibrationOptions o;
-    apply(o, calibration_fields(), options, scenario);
+    named_by(table, [&] { apply(o, table, options, scenario); });
     o.seed = seed;
     py::gil_scoped_release release;
-    c = sim::simulate_calibration(unit, o);
+    c = named_by(table, [&] { return sim::simulate_calibration(unit, o); });
   } else if (scenario == "northfind" || scenario == "stable") {
+    const auto& table = sim::northfind_option_table();
     sim::NorthfindOptions o =
         scenario == "stable" ? sim::stable_defaults() : sim::NorthfindOptions{};
-    apply(o, northfind_fields(), options, scenario);
+    named_by(table, [&] { apply(o, table, options, scenario); });
     o.seed = seed;
     py::gil_scoped_release release;
-    c = scenario == "stable" ? sim::simulate_stable(unit, o) : sim::simulate_northfind(unit, o);
+    c = named_by(table, [&] {
+      return scenario == "stable" ? sim::simulate_stable(unit, o)
+                                  : sim::simulate_northfind(unit, o);
+    });
   } else {
     throw OptionError("scenario",
                       "must be 'calibration', 'northfind' or 'stable' (got '" + scenario + "')");
@@ -148,17 +105,33 @@ py::dict simulate(const std::string& scenario, const std::optional<std::filesyst
 }  // namespace
 
 void bind_sim(py::module_& m) {
+  m.def(
+      "simulate_options",
+      [](const std::string& scenario) {
+        if (scenario == "calibration") {
+          const auto& t = sim::calibration_option_table();
+          return describe_options(specs_of(t), defaults_of(t));
+        }
+        if (scenario == "northfind" || scenario == "stable") {
+          const auto& t = sim::northfind_option_table();
+          return describe_options(specs_of(t),
+                                  defaults_of(t, scenario == "stable" ? sim::stable_defaults()
+                                                                      : sim::NorthfindOptions{}));
+        }
+        throw OptionError(
+            "scenario", "must be 'calibration', 'northfind' or 'stable' (got '" + scenario + "')");
+      },
+      py::arg("scenario") = "calibration",
+      "The options of fogdrift.simulate(scenario), one dict each (keyword, type, default, unit, "
+      "doc, flag), from the one description fogdrift keeps of them (docs/options.md).");
   m.def("simulate", &simulate, py::arg("scenario") = "calibration", py::kw_only(),
         py::arg("out") = py::none(), py::arg("seed") = 1, py::arg("instrument") = py::none(),
         py::arg("replace") = false,
         "Simulates a north-finding system in a thermal chamber (docs/simulator.md), as "
         "`fogdrift simulate SCENARIO` does: scenario 'calibration' (paper §4.1), 'northfind' "
-        "(§4.2) or 'stable'. Further keywords are the scenario's options under the library's "
-        "names: calibration: temps_degc, repetitions, test_repetitions, soak_s, powered_s, "
-        "ramp_s, chamber_setpoint_sd_degc, azimuth_deg, latitude_deg, output_rate_hz, "
-        "approaches, warm_off_s, ramp_degc_per_min; northfind and stable: temps_degc, findings, "
-        "position_s, warmup_s, approach, soak_s, ramp_degc_per_min, warm_off_s, latitude_deg, "
-        "output_rate_hz. instrument: a dict of parameters or a JSON file "
+        "(§4.2) or 'stable'. Further keywords are the scenario's options, as "
+        "fogdrift.simulate_options(scenario) describes them (docs/options.md). instrument: a dict "
+        "of parameters or a JSON file "
         "(`fogdrift simulate --print-instrument`). With out=, also writes the campaign folder "
         "(replace=True replaces it). Returns the manifest as a dict (as campaign.json) with "
         "'data': one dict of column arrays per recording, in the manifest's order.");

@@ -1,6 +1,6 @@
-"""The three faces of fogdrift train's options agree: the command line's flags, the Python
-keywords and docs/options.md all come from one description of each option (docs/options.md),
-and this checks that what each shows a user is that description."""
+"""The three faces of fogdrift train's and fogdrift simulate's options agree: the command line's
+flags, the Python keywords and docs/options.md all come from one description of each option
+(docs/options.md), and this checks that what each shows a user is that description."""
 import inspect
 import json
 import os
@@ -49,8 +49,15 @@ def test_python_has_every_option_with_its_default(described):
     assert list(signature) == ["campaign"] + [o["keyword"] for o in fogdrift.train_options()]
 
 
+def rows_of(command):
+    """The docs table of `command`'s options, between its marker lines."""
+    text = DOCS.read_text()
+    table = text.split(f"<!-- {command} options: begin")[1].split(f"<!-- {command} options: end")[0]
+    return [line for line in table.splitlines() if line.startswith("| `")]
+
+
 def test_the_docs_table_is_the_description(described):
-    rows = [line for line in DOCS.read_text().splitlines() if line.startswith("| `")]
+    rows = rows_of("train")
     assert [re.match(r"\| `(\w+)`", r).group(1) for r in rows] == [o["keyword"] for o in described]
     for row, o in zip(rows, described):
         cells = [c.strip() for c in re.split(r"(?<!\\)\|", row)[1:-1]]
@@ -86,3 +93,49 @@ def test_an_error_names_the_option_in_each_front_ends_words(tmp_path):
     done = subprocess.run([cli, "train", str(tmp_path / "cal"), "-o", str(tmp_path / "m.json"),
                            "--method", "ssa-svr", "--search", "pso"], capture_output=True, text=True)
     assert "give --method svr with --search pso" in done.stderr, done.stderr
+
+
+@pytest.mark.parametrize("scenario", ["calibration", "northfind", "stable"])
+def test_simulate_has_one_description_in_every_face(cli, scenario):
+    described = json.loads(cli("options", f"simulate-{scenario}", "--json"))
+    # Python's description is the command line's.
+    python = fogdrift.simulate_options(scenario)
+    assert [(o["keyword"], o["flag"], o["default"]) for o in python] == \
+        [(o["keyword"], o["flag"], o["default"]) for o in described]
+    # --help shows each flag with its default and its help text.
+    help_text = re.sub(r"\s+", " ", cli("simulate", scenario, "--help"))
+    for o in described:
+        assert re.search(re.escape(o["flag"]) + r" \S+=" + re.escape(o["default"]) + " ",
+                         help_text), o["flag"]
+        assert re.sub(r"\s+", " ", o["help"]) in help_text, o["flag"]
+        assert o["doc"][:40] in fogdrift.simulate.__doc__, o["keyword"]
+    # docs/options.md's table.
+    rows = rows_of(f"simulate-{scenario}")
+    assert [re.match(r"\| `(\w+)`", r).group(1) for r in rows] == [o["keyword"] for o in described]
+    for row, o in zip(rows, described):
+        cells = [c.strip() for c in re.split(r"(?<!\\)\|", row)[1:-1]]
+        assert cells[1] == f"`{o['flag']}`" and cells[4] == f"`{o['default']}`"
+
+
+def test_simulate_names_an_error_in_each_front_ends_words(tmp_path):
+    cli = os.environ.get("FOGDRIFT_CLI", "build/apps/fogdrift/fogdrift")
+    for scenario, keyword, flag, value, rule in [
+            ("calibration", "temps_degc", "--temps", [-20, 120], "120 °C is outside"),
+            ("calibration", "test_repetitions", "--test-repetitions", 7, "7 is outside"),
+            ("northfind", "position_s", "--position-s", 5.0, "5 s is outside"),
+            ("stable", "output_rate_hz", "--rate-hz", 0, "0 is outside")]:
+        with pytest.raises(ValueError, match=f"option {keyword}: {rule}"):
+            fogdrift.simulate(scenario, **{keyword: value})
+        text = ",".join(map(str, value)) if isinstance(value, list) else str(value)
+        done = subprocess.run([cli, "simulate", scenario, "--out", str(tmp_path / "x"), flag,
+                               text], capture_output=True, text=True)
+        assert done.returncode == 1 and f"option {flag}: {rule}" in done.stderr, done.stderr
+        assert not (tmp_path / "x").exists()
+    # The same options give the same campaign from either front end.
+    subprocess.run([cli, "simulate", "northfind", "--out", str(tmp_path / "cli"), "--temps",
+                    "-5,30", "--findings", "1", "--approach", "warm", "--seed", "4"], check=True,
+                   capture_output=True)
+    fogdrift.simulate("northfind", out=tmp_path / "py", temps_degc=[-5, 30], findings=1,
+                      approach="warm", seed=4)
+    for f in sorted((tmp_path / "cli").iterdir()):
+        assert f.read_bytes() == (tmp_path / "py" / f.name).read_bytes(), f.name

@@ -51,14 +51,26 @@ def test_simulate_options_are_the_librarys_and_checked():
     assert "table_deg" in nf["data"][0]
     for kwargs, message in [
             (dict(scenario="storm"), "option scenario: must be 'calibration'"),
-            (dict(repetitions=0), "calibration.repetitions"),
-            (dict(temps_degc=[20], speed=2), "option speed: is not an option of the calibration"),
-            (dict(temps_degc="warm"), "option temps_degc: has the wrong type"),
+            (dict(repetitions=0), "option repetitions: 0 is outside"),
+            (dict(temps_degc="warm"), "option temps_degc: 'warm' in 'warm' is not a finite"),
+            (dict(temps_degc=[200]), "option temps_degc: 200 °C is outside"),
             (dict(approaches="sunny"), "option approaches"),
+            (dict(scenario="stable", findings=0), "option findings: 0 is outside"),
             (dict(instrument={"fog": {"bias_dph": "x"}}), "instrument"),
             (dict(instrument="/nonexistent/unit.json"), "unit.json: cannot open"),
     ]:
         with pytest.raises(ValueError, match=message):
+            fogdrift.simulate(**kwargs)
+    # A keyword the scenario does not have, or a value of a type the option does not take.
+    for kwargs, message in [
+            (dict(temps_degc=[20], speed=2), "unexpected keyword argument 'speed'; the "
+                                             "calibration simulation's options are temps_degc"),
+            (dict(scenario="northfind", repetitions=2), "unexpected keyword argument"),
+            (dict(temps_degc={"a": 1}), "temps_degc must be a list of numbers or a str"),
+            (dict(temps_degc=["20"]), "temps_degc must be a list of numbers or a str"),
+            (dict(findings=2.5, scenario="northfind"), "findings must be an int"),
+    ]:
+        with pytest.raises(TypeError, match=message):
             fogdrift.simulate(**kwargs)
 
 
