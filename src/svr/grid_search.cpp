@@ -7,6 +7,7 @@
 
 #include "fogdrift/base/error.hpp"
 #include "fogdrift/base/thread_pool.hpp"
+#include "fogdrift/svr/fold_paths.hpp"
 
 namespace fogdrift::svr {
 
@@ -41,28 +42,35 @@ GridSearchResult grid_search(
   } else {
     out.sse.assign(kernels * nc * nf, 0.0);
   }
+  // One path task per (fold, kernel), the whole C axis (fold_paths.hpp).
   std::vector<std::unique_ptr<TrainingSet>> sets(nf);
-  std::vector<std::vector<Params>> params(nf);
+  std::vector<ScoringFold> scoring(nf);
+  std::vector<PathTask> tasks;
   for (std::size_t f = 0; f < nf; ++f) {
     sets[f] = std::make_unique<TrainingSet>(data.subset(folds[f].train));
-    for (std::size_t k = 0; k < kernels; ++k) params[f].push_back(params_of(sets[f]->data(), k));
-  }
-  pool.parallel_for(nf * kernels, [&](std::size_t task) {
-    const std::size_t f = task / kernels, k = task % kernels;
-    const WorkspacePool::Lease workspace = workspaces.borrow();
-    const std::vector<FitResult> path =
-        fit_c_path(*sets[f], params[f][k], ascending, workspace.get());
-    if (predict) {
-      const std::vector<double> p = path_predictions(*sets[f], path, data, folds[f].predict);
-      const std::size_t n = folds[f].predict.size();
-      for (std::size_t r = 0; r < n; ++r)
-        for (std::size_t c = 0; c < nc; ++c)
-          out.predictions[f][(k * nc + by_c[c]) * n + r] = p[r * nc + c];
-      return;
+    scoring[f] = {sets[f].get(), &data, folds[f].test, folds[f].predict};
+    for (std::size_t k = 0; k < kernels; ++k) {
+      PathTask& t = tasks.emplace_back();
+      t.fold = f;
+      t.params = params_of(sets[f]->data(), k);
+      t.c_values = ascending;
+      t.predict = predict;
     }
-    const std::vector<double> errors = path_squared_errors(*sets[f], path, data, folds[f].test);
-    for (std::size_t c = 0; c < nc; ++c) out.sse[(k * nc + by_c[c]) * nf + f] = errors[c];
-  });
+  }
+  const std::vector<PathScores> scores = run_paths(scoring, tasks, &pool, workspaces);
+  for (std::size_t f = 0; f < nf; ++f) {
+    for (std::size_t k = 0; k < kernels; ++k) {
+      const PathScores& path = scores[f * kernels + k];
+      if (predict) {
+        const std::size_t n = folds[f].predict.size();
+        for (std::size_t r = 0; r < n; ++r)
+          for (std::size_t c = 0; c < nc; ++c)
+            out.predictions[f][(k * nc + by_c[c]) * n + r] = path.predictions[r * nc + c];
+      } else {
+        for (std::size_t c = 0; c < nc; ++c) out.sse[(k * nc + by_c[c]) * nf + f] = path.sse[c];
+      }
+    }
+  }
   return out;
 }
 

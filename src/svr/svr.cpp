@@ -307,7 +307,8 @@ void validate_c_values(std::span<const double> c_values, const std::string& name
 }
 
 std::vector<FitResult> fit_c_path(const TrainingSet& set, const Params& base,
-                                  std::span<const double> c_values, Workspace* workspace) {
+                                  std::span<const double> c_values, Workspace* workspace,
+                                  const DualSolution* warm) {
   validate(base);
   require_fit_memory(set, base, 1);
   std::vector<FitResult> out;
@@ -320,7 +321,7 @@ std::vector<FitResult> fit_c_path(const TrainingSet& set, const Params& base,
     Params p = base;
     p.c = c;
     validate(p);
-    out.push_back(fit_with(set, cache, p, share, out.empty() ? nullptr : &out.back().dual));
+    out.push_back(fit_with(set, cache, p, share, out.empty() ? warm : &out.back().dual));
   }
   return out;
 }

@@ -17,6 +17,7 @@
 #include "fogdrift/base/enum_names.hpp"
 #include "fogdrift/base/error.hpp"
 #include "fogdrift/base/thread_pool.hpp"
+#include "fogdrift/svr/fold_paths.hpp"
 
 namespace fogdrift::tune {
 
@@ -116,7 +117,10 @@ class SvrObjective {
       std::iota(all.begin(), all.end(), 0);
       add(scale_split(data, all, all));
     }
-    for (const FoldState& f : folds_) test_rows_ += f.test.rows;
+    for (const FoldState& f : folds_) {
+      test_rows_ += f.test.rows;
+      scoring_.push_back({f.set.get(), &f.test, f.test_rows, {}});
+    }
     // Every thread may run a fit of the largest fold at once: checked once, here, so that a
     // search too large for this machine fails before its first batch.
     const auto largest = std::max_element(folds_.begin(), folds_.end(), [](auto& a, auto& b) {
@@ -151,40 +155,36 @@ class SvrObjective {
       slot[i] = it->second;
     }
 
-    // One task per (candidate, fold); warm starts only from earlier batches. Tasks are handed
-    // out longest first (LPT), the length guessed from the nearest solved candidate's fit time,
-    // so that both threads finish a stage together; the order never changes a result.
+    // One path task of one C per (candidate, fold) on the engine every search runs on
+    // (fold_paths.hpp); warm starts only from earlier batches. Tasks are handed out longest
+    // first (LPT), the length guessed from the nearest solved candidate's fit time, so that both
+    // threads finish a stage together; the order never changes a result.
     const std::size_t tasks = fresh.size() * folds;
-    std::vector<double> sse(tasks, 0.0), seconds(tasks, 0.0), guess(tasks, 0.0);
+    std::vector<double> sse(tasks, 0.0), seconds(tasks, 0.0);
     std::vector<std::shared_ptr<const svr::DualSolution>> duals(tasks);
     std::vector<char> warm(tasks, 0), ran(tasks, 0);
-    for (std::size_t t = 0; t < tasks; ++t)
-      guess[t] = guessed_seconds(folds_[t % folds], fresh[t / folds]);
-    auto task = [&](std::size_t t) {
-      const std::size_t c = t / folds, f = t % folds;
-      FoldState& fold = folds_[f];
-      const svr::Params params = to_params_(fresh[c]);
-      const svr::DualSolution* start = nullptr;
-      if (options_.warm_start) start = warm_start_for(fold, fresh[c]);
-      const svr::WorkspacePool::Lease workspace = workspaces_.borrow();
-      svr::FitResult fit = svr::fit(*fold.set, params, start, workspace.get());
-      warm[t] = start != nullptr;
-      // Scored with one vectorised kernel row per held-out row, in float as the solver's rows
-      // (svr::path_squared_errors): a scalar prediction per support vector was 40 % of a search.
-      sse[t] = svr::path_squared_errors(*fold.set, std::span<const svr::FitResult>(&fit, 1),
-                                        fold.test, fold.test_rows)[0];
-      seconds[t] = fit.summary.seconds;
-      duals[t] = std::make_shared<const svr::DualSolution>(std::move(fit.dual));
-      ran[t] = 1;
-    };
-    auto run = [&](std::vector<std::size_t> stage) {
-      std::stable_sort(stage.begin(), stage.end(),
-                       [&](std::size_t a, std::size_t b) { return guess[a] > guess[b]; });
-      auto one = [&](std::size_t k) { task(stage[k]); };
-      if (options_.pool)
-        options_.pool->parallel_for(stage.size(), one);
-      else
-        for (std::size_t k = 0; k < stage.size(); ++k) one(k);
+    auto run = [&](const std::vector<std::size_t>& stage) {
+      std::vector<svr::PathTask> paths(stage.size());
+      for (std::size_t k = 0; k < stage.size(); ++k) {
+        const std::size_t t = stage[k], c = t / folds, f = t % folds;
+        svr::PathTask& p = paths[k];
+        p.fold = f;
+        p.params = to_params_(fresh[c]);
+        p.c_values = {p.params.c};
+        if (options_.warm_start) p.warm = warm_start_for(folds_[f], fresh[c]);
+        p.keep_duals = true;
+        p.guess_seconds = guessed_seconds(folds_[f], fresh[c]);
+        warm[t] = p.warm != nullptr;
+      }
+      const std::vector<svr::PathScores> scores =
+          svr::run_paths(scoring_, paths, options_.pool, workspaces_);
+      for (std::size_t k = 0; k < stage.size(); ++k) {
+        const std::size_t t = stage[k];
+        sse[t] = scores[k].sse[0];
+        seconds[t] = scores[k].seconds[0];
+        duals[t] = scores[k].duals[0];
+        ran[t] = 1;
+      }
     };
 
     // Racing (header): once a complete candidate is known, the folds run in stages, the fold
@@ -198,7 +198,7 @@ class SvrObjective {
     if (!std::isfinite(stop_above)) {
       std::vector<std::size_t> all(tasks);
       std::iota(all.begin(), all.end(), 0);
-      run(std::move(all));
+      run(all);
     } else {
       const std::vector<std::size_t> order = fold_order();
       for (std::size_t stage = 0; stage < folds; ++stage) {
@@ -346,9 +346,10 @@ class SvrObjective {
   const TuneOptions& options_;
   ToParams to_params_;
   std::vector<FoldState> folds_;
-  std::size_t test_rows_ = 0;          // held-out rows over all folds
-  double best_loss_ = INFINITY;        // of the complete candidates of earlier batches
-  std::vector<double> best_fold_sse_;  // its squared error on each fold
+  std::vector<svr::ScoringFold> scoring_;  // folds_ as the engine sees them
+  std::size_t test_rows_ = 0;              // held-out rows over all folds
+  double best_loss_ = INFINITY;            // of the complete candidates of earlier batches
+  std::vector<double> best_fold_sse_;      // its squared error on each fold
   // One workspace per fit running at once, kept for the whole search: each fit reuses the
   // memory of an earlier one instead of new pages.
   svr::WorkspacePool workspaces_;

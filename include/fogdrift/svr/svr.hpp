@@ -113,10 +113,12 @@ std::vector<FitResult> fit_batch(const TrainingSet& set, std::span<const Params>
                                  ThreadPool& pool);
 
 /// Fits `base` at each C of `c_values` in the order given, each warm-started from the previous
-/// one, sharing one kernel cache and one workspace: `workspace` when given (as for fit), or one
-/// of the path's own. Results in the order of `c_values`.
+/// one (the first from `warm`, when given), sharing one kernel cache and one workspace:
+/// `workspace` when given (as for fit), or one of the path's own. Results in the order of
+/// `c_values`.
 std::vector<FitResult> fit_c_path(const TrainingSet& set, const Params& base,
-                                  std::span<const double> c_values, Workspace* workspace = nullptr);
+                                  std::span<const double> c_values, Workspace* workspace = nullptr,
+                                  const DualSolution* warm = nullptr);
 
 /// The values of C of a path or a grid, all checked before the first fit (a path would find a
 /// bad one only when it reaches it): OptionError(name) when there are none or one is not a

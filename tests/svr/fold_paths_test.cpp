@@ -1,0 +1,122 @@
+// The engine every search runs on (fold_paths.hpp): a path task is the fits fit_c_path makes,
+// scored as path_squared_errors scores them; a one-C task warm-started from a solution is that
+// warm-started fit; predictions add up to the errors; and neither the order of the tasks nor the
+// thread count changes a number.
+#include "fogdrift/svr/fold_paths.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numeric>
+#include <random>
+
+#include "fogdrift/base/thread_pool.hpp"
+
+namespace fogdrift::svr {
+namespace {
+
+Data wavy_data(std::size_t n) {
+  std::mt19937_64 rng(5);
+  std::normal_distribution<double> noise(0.0, 0.05);
+  Data d;
+  d.rows = n;
+  d.cols = 2;
+  for (std::size_t i = 0; i < n; ++i) {
+    const double a = std::sin(0.07 * i), b = std::cos(0.023 * i);
+    d.x.insert(d.x.end(), {a, b});
+    d.y.push_back(a * b + std::sin(3 * a) + noise(rng));
+  }
+  return d;
+}
+
+struct EvenOddFolds {
+  Data all;
+  std::vector<std::unique_ptr<TrainingSet>> sets;
+  std::vector<std::vector<std::size_t>> held;
+  std::vector<ScoringFold> scoring;
+};
+
+/// Two folds: even rows train, odd rows are held out, and the other way round.
+EvenOddFolds even_odd_folds(std::size_t n) {
+  EvenOddFolds f{wavy_data(n), {}, {}, {}};
+  for (std::size_t k = 0; k < 2; ++k) {
+    std::vector<std::size_t> train, held;
+    for (std::size_t i = 0; i < n; ++i) (i % 2 == k ? train : held).push_back(i);
+    f.sets.push_back(std::make_unique<TrainingSet>(f.all.subset(train)));
+    f.held.push_back(held);
+  }
+  for (std::size_t k = 0; k < 2; ++k)
+    f.scoring.push_back({f.sets[k].get(), &f.all, f.held[k], f.held[k]});
+  return f;
+}
+
+Params rbf_params(double gamma) {
+  Params p;
+  p.kernel = Kernel::rbf_gamma(gamma);
+  p.epsilon = 0.05;
+  p.tolerance = 1e-5;
+  return p;
+}
+
+TEST(FoldPaths, ATaskIsItsPathScoredAndAWarmStartIsKept) {
+  const EvenOddFolds f = even_odd_folds(200);
+  const std::vector<double> cs = {0.3, 3.0, 30.0};
+  std::vector<PathTask> tasks(2);
+  tasks[0].fold = 1;
+  tasks[0].params = rbf_params(1.5);
+  tasks[0].c_values = cs;
+  tasks[0].keep_duals = true;
+  WorkspacePool spaces;
+  const std::vector<PathScores> first = run_paths(f.scoring, {tasks.data(), 1}, nullptr, spaces);
+  const std::vector<FitResult> path = fit_c_path(*f.sets[1], rbf_params(1.5), cs);
+  EXPECT_EQ(first[0].sse, path_squared_errors(*f.sets[1], path, f.all, f.held[1]));
+  ASSERT_EQ(first[0].duals.size(), cs.size());
+  EXPECT_EQ(first[0].seconds.size(), cs.size());
+
+  // One C from the path's last solution is fit() from it.
+  tasks[1].fold = 1;
+  tasks[1].params = rbf_params(1.5);
+  tasks[1].params.c = 60.0;
+  tasks[1].c_values = {60.0};
+  tasks[1].warm = first[0].duals.back().get();
+  const std::vector<PathScores> second = run_paths(f.scoring, {&tasks[1], 1}, nullptr, spaces);
+  const FitResult warm = fit(*f.sets[1], tasks[1].params, first[0].duals.back().get());
+  EXPECT_EQ(second[0].sse, path_squared_errors(*f.sets[1], {&warm, 1}, f.all, f.held[1]));
+  EXPECT_TRUE(second[0].duals.empty());  // not asked for
+}
+
+TEST(FoldPaths, PredictionsAddUpAndNothingDependsOnOrderOrThreads) {
+  const EvenOddFolds f = even_odd_folds(180);
+  std::vector<PathTask> tasks;
+  for (std::size_t fold = 0; fold < 2; ++fold)
+    for (const double gamma : {0.5, 2.0, 8.0}) {
+      PathTask& t = tasks.emplace_back();
+      t.fold = fold;
+      t.params = rbf_params(gamma);
+      t.c_values = {0.1, 1.0, 10.0};
+      t.guess_seconds = gamma;  // handed out in another order than given
+    }
+  WorkspacePool spaces;
+  const std::vector<PathScores> serial = run_paths(f.scoring, tasks, nullptr, spaces);
+  ThreadPool pool(3);
+  const std::vector<PathScores> parallel = run_paths(f.scoring, tasks, &pool, spaces);
+  std::vector<PathTask> predicting = tasks;
+  for (PathTask& t : predicting) t.predict = true;
+  const std::vector<PathScores> predicted = run_paths(f.scoring, predicting, &pool, spaces);
+  for (std::size_t k = 0; k < tasks.size(); ++k) {
+    EXPECT_EQ(serial[k].sse, parallel[k].sse) << k;
+    const std::vector<std::size_t>& rows = f.held[tasks[k].fold];
+    ASSERT_EQ(predicted[k].predictions.size(), rows.size() * 3);
+    for (std::size_t c = 0; c < 3; ++c) {
+      double sse = 0;
+      for (std::size_t r = 0; r < rows.size(); ++r) {
+        const double e = predicted[k].predictions[r * 3 + c] - f.all.y[rows[r]];
+        sse += e * e;
+      }
+      EXPECT_NEAR(sse, serial[k].sse[c], 1e-9 * serial[k].sse[c]) << k << " " << c;
+    }
+  }
+}
+
+}  // namespace
+}  // namespace fogdrift::svr
