@@ -4,7 +4,9 @@
 Each table is what `fogdrift options COMMAND` prints: the one description fogdrift keeps of each
 option of `fogdrift train` and Python's fogdrift.train (src/tune/train_option_table.cpp), and of
 `fogdrift simulate`'s protocols and Python's fogdrift.simulate
-(src/sim/scenario_option_table.cpp). This script puts each between its two marker lines on the
+(src/sim/scenario_option_table.cpp), and of the streaming fault policy of `fogdrift stream`,
+`fogdrift export-c` and Python's StreamingCompensator (src/model/fault_option_table.cpp). This
+script puts each between its two marker lines on the
 page, so that the page cannot fall behind the code.
 
 Usage:
@@ -16,7 +18,7 @@ import subprocess
 import sys
 
 PAGE = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "docs", "options.md")
-COMMANDS = ("train", "simulate-calibration", "simulate-northfind", "simulate-stable")
+COMMANDS = ("train", "simulate-calibration", "simulate-northfind", "simulate-stable", "stream")
 
 
 def markers(command):

@@ -27,7 +27,8 @@ struct ExportArgs {
   double stream_rate_hz = 0;
   std::string precision = "double";
   bool quiet = false;
-  FaultPolicy faults;
+  std::shared_ptr<OptionFlags> fault_flags;  ///< the fault policy's (fault_options.hpp)
+  FaultPolicy faults;                        ///< as run: fitted to the model, then the flags
 };
 
 // The temperature arguments of PREFIX_update, as the summary names them: temp_fog, temp_acc1,
@@ -38,13 +39,12 @@ std::string temperature_arguments(const ModelSet& set) {
   return fmt::format("{}", fmt::join(names, ", "));
 }
 
-void run(const ExportArgs& given, const CLI::App& cmd) {
-  ExportArgs a = given;  // fault timings not given come from the model
+void run(const ExportArgs& given) {
+  ExportArgs a = given;
   // One axis (--target, or a model of one), or every axis of a model set in one header.
   const ModelSet set = axes_to_run(load_model_set(a.model, a.load), a.target);
   const CompensationModel& model = set.models.front();
-  fault_timings_from_model(cmd, model, a.faults);
-  with_flags(fault_flags(), [&] { validate(a.faults); });
+  a.faults = fault_policy(*a.fault_flags, model);
   if (!(a.stream_rate_hz >= 0) || a.stream_rate_hz > 10000)
     throw OptionError("--stream-rate-hz", fmt::format("{} is outside [0, 10000] Hz (0: no "
                                                       "streaming part)",
@@ -143,8 +143,8 @@ void add_export_c(CLI::App& app) {
       ->check(CLI::IsMember({"double", "float"}))
       ->capture_default_str();
   cmd->add_flag("-q,--quiet", args->quiet, "Print nothing on success");
-  add_fault_options(cmd, args->faults);
-  cmd->callback([args, cmd] { with_model_settings(args->model, [&] { run(*args, *cmd); }); });
+  args->fault_flags = add_fault_options(cmd);
+  cmd->callback([args] { with_model_settings(args->model, [&] { run(*args); }); });
 }
 
 }  // namespace fogdrift::app

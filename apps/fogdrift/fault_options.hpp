@@ -1,25 +1,23 @@
 // The streaming fault policy's flags (FaultPolicy, stream_faults.hpp), shared by `stream` and
-// `export-c`, which both run the policy: one place binds them to the struct's fields.
+// `export-c`, which both run the policy: made from its one description (fault_option_table.hpp).
 #pragma once
 
-#include <CLI/CLI.hpp>
+#include <memory>
 
-#include "cli_util.hpp"
 #include "fogdrift/model/model.hpp"
 #include "fogdrift/model/stream_faults.hpp"
+#include "option_flags.hpp"
 
 namespace fogdrift::app {
 
-/// Adds --temp-min-degc, --temp-max-degc, --gyro-limit-dph, --bridge-s, --hold-s, --stuck-s and
-/// --stuck-delta-degc to `cmd`, bound to `policy`'s fields (defaults shown from the struct).
-void add_fault_options(CLI::App* cmd, FaultPolicy& policy);
+/// Adds the fault policy's flags to `cmd` (--temp-min-degc, …, --temp-jump-degc), in the group
+/// "Sensor faults".
+std::shared_ptr<OptionFlags> add_fault_options(CLI::App* cmd);
 
-/// The timings the user did not give (--bridge-s, --hold-s, --stuck-s) from the model's interval
-/// and rate window (fault_policy_for), for a model that records its interval.
-void fault_timings_from_model(const CLI::App& cmd, const CompensationModel& model,
-                              FaultPolicy& policy);
-
-/// faults.* field → flag, for with_flags().
-const FlagTable& fault_flags();
+/// The policy to run `model` with: the timings the user did not give (--bridge-s, --hold-s,
+/// --stuck-s) fitted to the model's interval and rate window (fault_policy_for) when the model
+/// records its interval, the defaults otherwise, then the flags given. Checked; errors name the
+/// flag.
+FaultPolicy fault_policy(const OptionFlags& flags, const CompensationModel& model);
 
 }  // namespace fogdrift::app

@@ -34,7 +34,7 @@ std::string type_name(const OptionSpec& spec) {
 }  // namespace
 
 OptionFlags::OptionFlags(CLI::App* cmd, std::vector<OptionSpec> specs,
-                         std::vector<std::string> defaults)
+                         std::vector<std::string> defaults, const std::string& group)
     : specs_(std::move(specs)), defaults_(std::move(defaults)) {
   for (std::size_t i = 0; i < specs_.size(); ++i) {
     const OptionSpec& s = specs_[i];
@@ -50,6 +50,7 @@ OptionFlags::OptionFlags(CLI::App* cmd, std::vector<OptionSpec> specs,
                              ->type_name(type_name(s))
                              ->default_str(defaults_[i]));
     }
+    if (!group.empty()) options_.back()->group(group);
     flag_table_[s.keyword] = s.flag;
     for (const std::string& field : s.fields) flag_table_[field] = s.flag;
   }

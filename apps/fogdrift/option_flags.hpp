@@ -21,8 +21,10 @@ namespace fogdrift::app {
 class OptionFlags {
  public:
   /// Adds a flag to `cmd` for each option: an on/off option off by default is a flag that turns
-  /// it on; one on by default a flag (its OptionSpec::flag, --no-NAME) that turns it off.
-  OptionFlags(CLI::App* cmd, std::vector<OptionSpec> specs, std::vector<std::string> defaults);
+  /// it on; one on by default a flag (its OptionSpec::flag, --no-NAME) that turns it off. With a
+  /// `group`, --help lists the flags under that heading.
+  OptionFlags(CLI::App* cmd, std::vector<OptionSpec> specs, std::vector<std::string> defaults,
+              const std::string& group = "");
 
   /// (keyword, text) of each option given on the command line, in the table's order.
   std::vector<std::pair<std::string, std::string>> given() const;

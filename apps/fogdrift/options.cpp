@@ -8,13 +8,14 @@
 
 #include "commands.hpp"
 #include "fogdrift/base/error.hpp"
+#include "fogdrift/model/fault_option_table.hpp"
 #include "fogdrift/sim/scenario_option_table.hpp"
 #include "fogdrift/tune/train_option_table.hpp"
 
 namespace fogdrift::app {
 
 constexpr const char* kCommands =
-    "train, simulate-calibration, simulate-northfind, simulate-stable";
+    "train, simulate-calibration, simulate-northfind, simulate-stable, stream";
 
 namespace {
 
@@ -36,6 +37,7 @@ Described of_command(const std::string& command) {
   if (command == "simulate-northfind") return described(sim::northfind_option_table());
   if (command == "simulate-stable")
     return described(sim::northfind_option_table(), sim::stable_defaults());
+  if (command == "stream") return described(fault_option_table());
   throw OptionError("COMMAND", fmt::format("'{}' is not one of {}", command, kCommands));
 }
 
@@ -48,7 +50,9 @@ void add_options(CLI::App& app) {
       "each one's Python keyword, flag, type, unit, default, allowed values and description.\n"
       "COMMAND is train ('fogdrift train', Python's fogdrift.train; the default) or\n"
       "simulate-calibration, simulate-northfind, simulate-stable ('fogdrift simulate\n"
-      "calibration', ..., Python's fogdrift.simulate). The tables in docs/options.md are this\n"
+      "calibration', ..., Python's fogdrift.simulate) or stream (the fault policy of 'fogdrift\n"
+      "stream' and 'fogdrift export-c', Python's StreamingCompensator). The tables in\n"
+      "docs/options.md are this\n"
       "output (scripts/options_doc.py writes them there).\n"
       "Example:\n"
       "  fogdrift options --json | python3 -c 'import json,sys; print(len(json.load(sys.stdin)))'");

@@ -36,7 +36,8 @@ struct StreamArgs {
   double rate_hz = 0;
   bool no_guard = false;
   bool strict = false;
-  FaultPolicy faults;
+  std::shared_ptr<OptionFlags> fault_flags;  ///< the fault policy's (fault_options.hpp)
+  FaultPolicy faults;                        ///< as run: fitted to the model, then the flags
 };
 
 std::vector<std::string> split(const std::string& line) {
@@ -73,15 +74,14 @@ void stop_at_fault(const std::string& name, std::size_t line_no, std::uint32_t f
       fmt::format("is a faulty sample ({}); --strict stops at the first", fault::describe(flags)));
 }
 
-void run(const StreamArgs& given, const CLI::App& cmd) {
-  StreamArgs a = given;  // fault timings not given come from the model
+void run(const StreamArgs& given) {
+  StreamArgs a = given;
   if (!(a.rate_hz > 0) || a.rate_hz > 10000)
     throw OptionError("--rate-hz", fmt::format("{} is outside (0, 10000] Hz", a.rate_hz));
   // Every axis of the model (model_set.hpp), or the one --target names.
   const ModelSet set = axes_to_run(load_model_set(a.model, a.load), a.target);
   const CompensationModel& first = set.models.front();
-  fault_timings_from_model(cmd, first, a.faults);
-  with_flags(fault_flags(), [&] { validate(a.faults); });
+  a.faults = fault_policy(*a.fault_flags, first);
   // Streamed, a model trained on centred rates sees causal ones, noisier than those it learned:
   // a tuned SVR's drift then departs from its batch drift by about the drift's own STD
   // (docs/compensation.md). The stream still runs; the user is told, as export-c tells.
@@ -282,8 +282,8 @@ void add_stream(CLI::App& app) {
   cmd->add_flag("--strict", args->strict,
                 "Stop at the first faulty sample or torn line, naming its line and column, instead "
                 "of compensating through it");
-  add_fault_options(cmd, args->faults);
-  cmd->callback([args, cmd] { with_model_settings(args->model, [&] { run(*args, *cmd); }); });
+  args->fault_flags = add_fault_options(cmd);
+  cmd->callback([args] { with_model_settings(args->model, [&] { run(*args); }); });
 }
 
 }  // namespace fogdrift::app

@@ -24,10 +24,10 @@ The package wraps fogdrift's C++ library (docs/python.md):
 """
 from ._fogdrift import (Model, StreamingCompensator, __version__, allan_deviation, denoise,
                         evaluate, features, find_north, noise_terms, northfind, read_recording,
-                        release_memory, save_models, simulate, simulate_options, train,
-                        train_options, write_recording)
+                        release_memory, save_models, simulate, simulate_options,
+                        stream_options, train, train_options, write_recording)
 from ._keywords import method_naming_keywords, naming_keywords
-from ._options import keyword_lines, with_options
+from ._options import keyword_lines, with_keywords, with_options
 from .fleet import train_fleet
 from .search import SVRGridSearchCV
 from .svr import SVR
@@ -47,6 +47,14 @@ simulate.__doc__ += "".join(
     for scenario in ("calibration", "northfind", "stable"))
 for _method in ("__init__", "update", "run"):
     method_naming_keywords(StreamingCompensator, _method)
+# Its signature and docstring show the fault policy's keywords from their one description.
+StreamingCompensator.__init__ = with_keywords(StreamingCompensator.__init__,
+                                              ["self", "model", "dt_s"],
+                                              [dict(keyword="guarded", default="true",
+                                                    type="on/off", flag="--no-guard",
+                                                    doc="Reduce the correction where the inputs "
+                                                        "are novel to the model")]
+                                              + stream_options(), "fogdrift stream")
 for _method in ("predict", "compensate", "save", "to_json"):
     method_naming_keywords(Model, _method)
 Model.load = staticmethod(naming_keywords(Model.load, "Model.load"))
@@ -56,5 +64,5 @@ del _method
 __all__ = ["Model", "SVR", "SVRGridSearchCV", "StreamingCompensator", "allan_deviation",
            "denoise", "evaluate", "features", "find_north", "noise_terms", "northfind",
            "read_recording", "release_memory", "save_models", "simulate", "train", "train_fleet",
-           "simulate_options", "train_options",
+           "simulate_options", "stream_options", "train_options",
            "write_recording", "__version__"]

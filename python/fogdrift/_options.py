@@ -43,6 +43,24 @@ def with_options(function, options, first="campaign", command="fogdrift train"):
     return call
 
 
+def with_keywords(function, positional, options, command):
+    """`function` with a signature (`positional`, then every option, keyword-only) and its
+    docstring followed by a line per option: for a function whose compiled form takes
+    ``**kwargs`` and checks each against the descriptions."""
+    @functools.wraps(function)
+    def call(*args, **kwargs):
+        return function(*args, **kwargs)
+
+    parameters = [inspect.Parameter(p, inspect.Parameter.POSITIONAL_OR_KEYWORD)
+                  for p in positional]
+    parameters += [inspect.Parameter(o["keyword"], inspect.Parameter.KEYWORD_ONLY,
+                                     default=_value(o)) for o in options]
+    call.__signature__ = inspect.Signature(parameters)
+    doc = (function.__doc__ or "").strip().split("\n")[-1]
+    call.__doc__ = "\n".join([doc, "", "Keywords:"] + keyword_lines(options, command))
+    return call
+
+
 def keyword_lines(options, command):
     """One docstring line per option: its keyword, default, the flag of `command` and its doc."""
     lines = []

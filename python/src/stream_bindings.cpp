@@ -18,13 +18,22 @@
 #include "convert.hpp"
 #include "fogdrift/base/error.hpp"
 #include "fogdrift/model/compensator.hpp"
+#include "fogdrift/model/fault_option_table.hpp"
+#include "option_keywords.hpp"
 
 namespace py = pybind11;
 
 namespace fogdrift::python {
 namespace {
 
-const FaultPolicy kFaults;
+const OptionSpec kGuarded{"guarded",
+                          "",
+                          OptionType::on_off,
+                          "",
+                          "",
+                          "Reduce the correction where the inputs are novel to the model "
+                          "(`fogdrift stream --no-guard` turns it off)",
+                          {}};
 
 // The compensator with what it needs to check its samples: which thermometers the model reads.
 struct Stream {
@@ -54,22 +63,37 @@ struct Stream {
   }
 };
 
-std::unique_ptr<Stream> make_stream(const CompensationModel& model, double dt_s, bool guarded,
-                                    double temp_min_degc, double temp_max_degc,
-                                    double gyro_limit_dph, double bridge_s, double hold_s,
-                                    double stuck_s, double stuck_delta_degc,
-                                    double temp_jump_degc) {
+// The fault policy's keywords come from its one description (fault_option_table.hpp), as
+// `fogdrift stream`'s flags do; `guarded` is the class's own.
+std::unique_ptr<Stream> make_stream(const CompensationModel& model, double dt_s,
+                                    const py::kwargs& kwargs) {
   if (!(dt_s > 0) || !std::isfinite(dt_s))
     throw OptionError("dt_s", "must be a finite number of seconds > 0");
+  const auto& table = fault_option_table();
+  const std::vector<OptionSpec> specs = specs_of(table);
   StreamOptions o;
-  o.guarded = guarded;
-  o.faults = {temp_min_degc, temp_max_degc, gyro_limit_dph,   bridge_s,
-              hold_s,        stuck_s,       stuck_delta_degc, temp_jump_degc};
+  o.faults = fault_policy_of(model);  // timings fitted to the model, as `fogdrift stream` runs it
+  for (const auto& [key, value] : kwargs) {
+    const auto name = key.cast<std::string>();
+    if (name == "guarded") {
+      o.guarded =
+          parse_on_off_option(kGuarded, keyword_text(kGuarded, value, "StreamingCompensator()"));
+      continue;
+    }
+    const Option<FaultPolicy>* option = find_option(table, name);
+    if (option == nullptr) {
+      std::string all = "model, dt_s, guarded";
+      for (const auto& spec : specs) all += ", " + spec.keyword;
+      throw py::type_error(fmt::format(
+          "StreamingCompensator() got an unexpected keyword argument '{}'; its keywords are {}",
+          name, all));
+    }
+    option->set(o.faults, keyword_text(option->spec, value, "StreamingCompensator()"));
+  }
   try {
     validate(o.faults);
   } catch (const OptionError& e) {  // "faults.bridge_s" is the keyword bridge_s here
-    const std::string& field = e.option();
-    throw OptionError(field.starts_with("faults.") ? field.substr(7) : field, e.message());
+    throw OptionError(option_word(specs, e.option(), false), e.message());
   }
   // Streamed, a model trained on centred rates sees causal ones, noisier than those it learned:
   // a tuned SVR's drift then departs from its batch drift by about the drift's own STD
@@ -201,21 +225,27 @@ py::dict run(Stream& s, const py::object& recording) {
 }  // namespace
 
 void bind_stream(py::module_& m) {
+  m.def(
+      "stream_options",
+      [] {
+        const auto& t = fault_option_table();
+        return describe_options(specs_of(t), defaults_of(t));
+      },
+      "The fault-policy keywords of StreamingCompensator, one dict each (keyword, type, default, "
+      "unit, doc, flag), from the one description `fogdrift stream`'s flags come from "
+      "(docs/options.md). The defaults of bridge_s, hold_s and stuck_s are a model's unless it "
+      "records its sample interval, when they are fitted to it.");
   py::class_<Stream>(m, "StreamingCompensator",
                      "A Model run one sample at a time, causally, as the instrument's processor "
                      "runs it (`fogdrift stream`): rates from the causal differentiator, the "
                      "novelty guard, and the fault policy (docs/field.md) that keeps the output "
                      "finite through bad samples, flagging each.")
-      .def(py::init(&make_stream), py::arg("model"), py::arg("dt_s"), py::kw_only(),
-           py::arg("guarded") = true, py::arg("temp_min_degc") = kFaults.temp_min_degc,
-           py::arg("temp_max_degc") = kFaults.temp_max_degc,
-           py::arg("gyro_limit_dph") = kFaults.gyro_limit_dph,
-           py::arg("bridge_s") = kFaults.bridge_s, py::arg("hold_s") = kFaults.hold_s,
-           py::arg("stuck_s") = kFaults.stuck_s,
-           py::arg("stuck_delta_degc") = kFaults.stuck_delta_degc,
-           py::arg("temp_jump_degc") = kFaults.temp_jump_degc, py::keep_alive<1, 2>(),
-           "dt_s: the logger's fixed sample interval, s. The fault policy's limits are "
-           "`fogdrift stream`'s flags under their field names.")
+      .def(py::init(&make_stream), py::arg("model"), py::arg("dt_s"), py::keep_alive<1, 2>(),
+           "dt_s: the logger's fixed sample interval, s. guarded: reduce the correction where "
+           "the inputs are novel (default True). The fault policy's options are `fogdrift "
+           "stream`'s, under their keywords (fogdrift.stream_options(), docs/options.md); the "
+           "timings not given (bridge_s, hold_s, stuck_s) are fitted to the model, as `fogdrift "
+           "stream` fits them.")
       .def("update", &update, py::arg("time_s"), py::arg("gyro_dph"), py::arg("temp_fog_degc"),
            py::arg("temp_acc1_degc") = py::none(), py::arg("temp_acc2_degc") = py::none(),
            "One sample in, (drift_dph, gyro_comp_dph, fault_flags) out; a NaN reading is a "

@@ -139,3 +139,20 @@ def test_simulate_names_an_error_in_each_front_ends_words(tmp_path):
                       approach="warm", seed=4)
     for f in sorted((tmp_path / "cli").iterdir()):
         assert f.read_bytes() == (tmp_path / "py" / f.name).read_bytes(), f.name
+
+
+def test_the_fault_policy_has_one_description_in_every_face(cli):
+    described = json.loads(cli("options", "stream", "--json"))
+    assert [(o["keyword"], o["flag"], o["default"]) for o in fogdrift.stream_options()] == \
+        [(o["keyword"], o["flag"], o["default"]) for o in described]
+    signature = inspect.signature(fogdrift.StreamingCompensator.__init__).parameters
+    assert list(signature) == ["self", "model", "dt_s", "guarded"] + \
+        [o["keyword"] for o in described]
+    for command in ("stream", "export-c"):
+        help_text = re.sub(r"\s+", " ", cli(command, "--help"))
+        for o in described:
+            assert re.search(re.escape(o["flag"]) + r" \S+=" + re.escape(o["default"]) + " ",
+                             help_text), (command, o["flag"])
+            assert re.sub(r"\s+", " ", o["help"]) in help_text, (command, o["flag"])
+    rows = rows_of("stream")
+    assert [re.match(r"\| `(\w+)`", r).group(1) for r in rows] == [o["keyword"] for o in described]

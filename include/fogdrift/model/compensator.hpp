@@ -43,6 +43,12 @@ struct Sample {
   std::span<const double> further_degc = {};
 };
 
+/// The fault policy a model runs with unless told otherwise: the bridge, hold and stuck timings
+/// fitted to the model's sample interval and rate window (fault_policy_for), for a model file
+/// that records its interval; the defaults otherwise. `fogdrift stream`, `export-c` and Python's
+/// StreamingCompensator start from it and set what the user gives.
+FaultPolicy fault_policy_of(const CompensationModel& model);
+
 struct StreamOptions {
   /// Reduce the correction where the inputs are novel to the model (guard.hpp); ignored for a
   /// model without a guard.

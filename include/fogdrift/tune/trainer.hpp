@@ -2,7 +2,7 @@
 // trainer is a type T with
 //   T::kName                    its name, the method's when it has no search ("svr", "gp")
 //   T::kMethods                 the method names it answers to, each with the search it implies
-//                               and what it is (method.hpp); the first is its own name
+//                               and what it is (method.hpp); one of them implies Search::own
 //   T::search(requested, o)     the search it runs for `requested`: own made its own, or
 //                               OptionError("search") for one it has no use for
 //   T::validate(o)              what can be checked of its options without data: OptionError
