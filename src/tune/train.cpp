@@ -14,26 +14,6 @@
 
 namespace fogdrift {
 
-opt::Algorithm optimizer_of(Search s) {
-  return s == Search::pso ? opt::Algorithm::pso
-                          : (s == Search::gwo ? opt::Algorithm::gwo : opt::Algorithm::ssa);
-}
-
-std::string describe_folds(std::span<const tune::Fold> folds) {
-  const std::string& first = folds.front().name;
-  const char* kind = first.starts_with("repetition")     ? "leave one repetition out"
-                     : first.starts_with("temperatures") ? "whole initial temperatures"
-                                                         : "whole recordings";
-  return fmt::format("{} ({} folds)", kind, folds.size());
-}
-
-const TrainerEntry& trainer(std::string_view name, std::string_view option) {
-  for (const TrainerEntry& t : kTrainers)
-    if (t.name == name) return t;
-  throw OptionError(std::string(option),
-                    fmt::format("'{}' is not a method ({})", name, method_names()));
-}
-
 TrainOptions resolved(const TrainOptions& options) {
   TrainOptions r = options;
   const Method& m = options.method;
