@@ -32,9 +32,6 @@ sim::Instrument load_instrument(const std::string& file) {
   return sim::instrument_from_json(read_text_file(file), file);
 }
 
-void finish(const SimulateArgs& a, const sim::SimulatedCampaign& campaign,
-            std::chrono::steady_clock::time_point start, std::string_view scenario);
-
 /// What every protocol's front end decides itself: where, which seed, which instrument.
 void add_common(CLI::App* cmd, SimulateArgs& a) {
   cmd->add_option("--out,-o", a.out, "Campaign folder to create (must not exist or be empty)")
@@ -54,7 +51,7 @@ std::shared_ptr<OptionFlags> add_protocol(CLI::App* cmd, const OptionTable<O>& t
   return std::make_shared<OptionFlags>(cmd, specs_of(table), defaults_of(table, defaults));
 }
 
-/// Simulates `scenario` with the options given over `defaults` and writes the campaign.
+/// Simulates `scenario` with the options given over `options` and writes the campaign.
 template <class O, class Simulate>
 void run_protocol(const SimulateArgs& a, const OptionFlags& flags, const OptionTable<O>& table,
                   O options, const std::string& scenario, Simulate simulate) {
@@ -67,7 +64,11 @@ void run_protocol(const SimulateArgs& a, const OptionFlags& flags, const OptionT
   } catch (const OptionError& e) {
     throw flags.named(e);
   }
-  finish(a, campaign, start, scenario);
+  sim::write_campaign(a.out, campaign, a.force);
+  const double elapsed =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  std::cout << fmt::format("wrote {} {} recordings and campaign.json to {} (seed {}, {:.1f} s)\n",
+                           campaign.recordings.size(), scenario, a.out, a.seed, elapsed);
 }
 
 constexpr const char* kApproachHelp =
@@ -77,15 +78,6 @@ constexpr const char* kApproachHelp =
     "  warm         soaked, powered 30 min, off --warm-off-s, on again (a power cut)\n"
     "  ramping      from equilibrium 10 °C below, the air ramps up at --ramp-degc-per-min\n"
     "               from power-on (a chamber still ramping, an enclosure warming in the sun)\n";
-
-void finish(const SimulateArgs& a, const sim::SimulatedCampaign& campaign,
-            std::chrono::steady_clock::time_point start, std::string_view scenario) {
-  sim::write_campaign(a.out, campaign, a.force);
-  const double elapsed =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  std::cout << fmt::format("wrote {} {} recordings and campaign.json to {} (seed {}, {:.1f} s)\n",
-                           campaign.recordings.size(), scenario, a.out, a.seed, elapsed);
-}
 
 }  // namespace
 

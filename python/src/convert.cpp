@@ -105,14 +105,13 @@ Recording to_recording(const py::object& columns, const std::string& source, boo
   return r;
 }
 
-std::string keyword_of(const std::string& field) {
+const std::vector<OptionSpec>& train_specs() {
   static const std::vector<OptionSpec> specs = specs_of(train_option_table());
-  return option_word(specs, field, false);
+  return specs;
 }
 
-std::string in_keywords_text(const std::string& text) {
-  static const std::vector<OptionSpec> specs = specs_of(train_option_table());
-  return in_option_words(text, specs, false);
+std::string keyword_of(const std::string& field) {
+  return option_word(train_specs(), field, false);
 }
 
 std::optional<double> seconds_or_auto(const py::object& value, const char* name) {

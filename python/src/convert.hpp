@@ -7,9 +7,11 @@
 
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "fogdrift/base/error.hpp"
+#include "fogdrift/base/option_table.hpp"
 #include "fogdrift/io/campaign.hpp"
 #include "fogdrift/io/recording.hpp"
 
@@ -37,23 +39,31 @@ pybind11::dict to_dict(const Recording& recording);
 Recording to_recording(const pybind11::object& columns, const std::string& source,
                        bool keep_others = false);
 
+/// The descriptions of fogdrift.train's options (train_option_table.hpp).
+const std::vector<OptionSpec>& train_specs();
+
 /// The Python keyword of a library field: the keyword of the option of fogdrift.train that sets
-/// it (train_option_table.hpp: max_degree for degree, rate_window_s for window_s, rate_degree
-/// for poly_order), else the field's own name.
+/// it (max_degree for degree, rate_window_s for window_s, rate_degree for poly_order), else the
+/// field's own name.
 std::string keyword_of(const std::string& field);
 
-/// `text` with the options it names as {keyword} (option_table.hpp) in this module's keywords.
-std::string in_keywords_text(const std::string& text);
-
-/// f(), with an OptionError it throws naming the keyword of its field (keyword_of), and the
-/// options its message names in keywords.
+/// f(), with an OptionError it throws named in the words of the options `specs` describes: its
+/// field by the keyword of the option that sets it (option_word), and the options its message
+/// names as {keyword} by their keywords.
 template <class F>
-auto in_keywords(F&& f) {
+auto in_keywords_of(const std::vector<OptionSpec>& specs, F&& f) {
   try {
     return f();
   } catch (const OptionError& e) {
-    throw OptionError(keyword_of(e.option()), in_keywords_text(e.message()));
+    throw OptionError(option_word(specs, e.option(), false),
+                      in_option_words(e.message(), specs, false));
   }
+}
+
+/// in_keywords_of fogdrift.train's options.
+template <class F>
+auto in_keywords(F&& f) {
+  return in_keywords_of(train_specs(), std::forward<F>(f));
 }
 
 /// None for "auto", else a number of seconds > 0; OptionError naming `name` otherwise.

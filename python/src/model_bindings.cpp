@@ -77,8 +77,8 @@ void bind_model(py::module_& m) {
             save(self, path);
           },
           py::arg("path"), "Writes the model file atomically.")
-      .def_property_readonly(
-          "method", [](const CompensationModel& self) { return self.provenance.method; })
+      .def_property_readonly("method",
+                             [](const CompensationModel& self) { return self.provenance.method; })
       .def_property_readonly(
           "target", [](const CompensationModel& self) { return self.dataset.target_column; },
           "The column the model compensates: gyro_dph, another gyro axis (gyro_NAME_dph), an "
@@ -150,9 +150,8 @@ void bind_model(py::module_& m) {
                         return compensation_model_from_json(text, "(pickle)", {false});
                       }))
       .def("__repr__", [](const CompensationModel& self) {
-        return "<fogdrift.Model " + self.provenance.method + ", " +
-               std::to_string(self.inputs()) + " features, " +
-               std::to_string(self.provenance.training_rows) + " training rows>";
+        return "<fogdrift.Model " + self.provenance.method + ", " + std::to_string(self.inputs()) +
+               " features, " + std::to_string(self.provenance.training_rows) + " training rows>";
       });
 }
 

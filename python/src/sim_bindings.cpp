@@ -43,16 +43,6 @@ void apply(Options& o, const OptionTable<Options>& table, const py::kwargs& opti
       option.set(o, keyword_text(option.spec, options[option.spec.keyword.c_str()], "simulate"));
 }
 
-/// The library's error named by the keyword of the option that sets its field.
-template <typename Options, typename F>
-auto named_by(const OptionTable<Options>& table, F&& f) {
-  try {
-    return f();
-  } catch (const OptionError& e) {
-    throw OptionError(option_word(specs_of(table), e.option(), false), e.message());
-  }
-}
-
 // None: the default instrument; a dict: its fields (the rest default); else a JSON file's path.
 sim::Instrument instrument_of(const py::object& instrument) {
   if (instrument.is_none()) return {};
@@ -72,18 +62,18 @@ py::dict simulate(const std::string& scenario, const std::optional<std::filesyst
   if (scenario == "calibration") {
     const auto& table = sim::calibration_option_table();
     sim::CalibrationOptions o;
-    named_by(table, [&] { apply(o, table, options, scenario); });
+    in_keywords_of(specs_of(table), [&] { apply(o, table, options, scenario); });
     o.seed = seed;
     py::gil_scoped_release release;
-    c = named_by(table, [&] { return sim::simulate_calibration(unit, o); });
+    c = in_keywords_of(specs_of(table), [&] { return sim::simulate_calibration(unit, o); });
   } else if (scenario == "northfind" || scenario == "stable") {
     const auto& table = sim::northfind_option_table();
     sim::NorthfindOptions o =
         scenario == "stable" ? sim::stable_defaults() : sim::NorthfindOptions{};
-    named_by(table, [&] { apply(o, table, options, scenario); });
+    in_keywords_of(specs_of(table), [&] { apply(o, table, options, scenario); });
     o.seed = seed;
     py::gil_scoped_release release;
-    c = named_by(table, [&] {
+    c = in_keywords_of(specs_of(table), [&] {
       return scenario == "stable" ? sim::simulate_stable(unit, o)
                                   : sim::simulate_northfind(unit, o);
     });

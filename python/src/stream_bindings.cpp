@@ -90,11 +90,8 @@ std::unique_ptr<Stream> make_stream(const CompensationModel& model, double dt_s,
     }
     option->set(o.faults, keyword_text(option->spec, value, "StreamingCompensator()"));
   }
-  try {
-    validate(o.faults);
-  } catch (const OptionError& e) {  // "faults.bridge_s" is the keyword bridge_s here
-    throw OptionError(option_word(specs, e.option(), false), e.message());
-  }
+  // "faults.bridge_s" is the keyword bridge_s here.
+  in_keywords_of(specs, [&] { validate(o.faults); });
   // Streamed, a model trained on centred rates sees causal ones, noisier than those it learned:
   // a tuned SVR's drift then departs from its batch drift by about the drift's own STD
   // (docs/python.md, step 6).

@@ -187,8 +187,7 @@ py::object train(const py::object& campaign, const py::kwargs& kwargs) {
   summary["rate_window_s"] = r->dataset.preprocessing.rates.window_s;
   summary["rate_degree"] = r->dataset.preprocessing.rates.poly_order;
   // The method's own record, under `fogdrift train --json`'s keys.
-  const py::object loads = py::module_::import("json").attr("loads");
-  for (const auto& [key, value] : s.record.items()) summary[py::str(key)] = loads(value.dump());
+  for (const auto& [key, value] : s.record.items()) summary[py::str(key)] = from_json(value.dump());
   if (!s.record.contains("search")) summary["search"] = py::none();  // a method with no search
   py::list notes;
   for (const auto& n : r->notes) notes.append(py::make_tuple(keyword_of(n.field), n.text));

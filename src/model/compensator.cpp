@@ -9,10 +9,9 @@ namespace fogdrift {
 FaultPolicy fault_policy_of(const CompensationModel& model) {
   const FeatureOptions& f = model.dataset.preprocessing;
   if (f.sample_interval_s == 0) return {};  // a model file that does not record it
-  return fault_policy_for(
-      f.sample_interval_s,
-      static_cast<double>(signal::window_samples(f.rates, f.sample_interval_s)) *
-          f.sample_interval_s);
+  return fault_policy_for(f.sample_interval_s, static_cast<double>(signal::window_samples(
+                                                   f.rates, f.sample_interval_s)) *
+                                                   f.sample_interval_s);
 }
 
 StreamingCompensator::StreamingCompensator(const CompensationModel& model, double dt_s,

@@ -35,6 +35,12 @@ check "northfind inspect" run 0 "$fd" inspect "$work/nf"
 check "stable" run 0 "$fd" simulate stable --out "$work/st" --findings 3
 check "bad temps list" run 1 "$fd" simulate northfind --out "$work/x" --temps -32,warm
 check "bad temps message" err_has "option --temps: 'warm'"
+check "stable's own defaults in help" run 0 "$fd" simulate stable --help
+check "stable's defaults shown" out_has "--findings UINT=20"
+check "options of a command fogdrift does not describe" run 1 "$fd" options simulate-storm
+check "options names the commands it describes" err_has "'simulate-storm' is not one of train, simulate-calibration"
+check "options of stream" run 0 "$fd" options stream --json
+check "stream's options listed" out_has '"keyword": "bridge_s"'
 
 # --- instrument files -----------------------------------------------------------------------
 check "print instrument" run 0 "$fd" simulate --print-instrument

@@ -281,8 +281,15 @@ def test_the_stream_is_the_command_lines_stream(campaign, cli, tmp_path):
         s.update(51.0, 0.0, 20.0)
     with pytest.raises(ValueError, match="option bridge_s"):
         fogdrift.StreamingCompensator(m, 1.0, bridge_s=-1)
+    with pytest.raises(ValueError, match="option hold_s: 1 s must be finite and no shorter"):
+        fogdrift.StreamingCompensator(m, 1.0, hold_s=1)
     with pytest.raises(ValueError, match="option dt_s"):
         fogdrift.StreamingCompensator(m, 0.0)
+    for kwargs, message in [(dict(bridge_ms=5), "unexpected keyword argument 'bridge_ms'"),
+                            (dict(bridge_s="5"), "bridge_s must be a number, not str"),
+                            (dict(guarded="yes"), "guarded must be a bool, not str")]:
+        with pytest.raises(TypeError, match=message):
+            fogdrift.StreamingCompensator(m, 1.0, **kwargs)
 
 
 def test_a_causal_model_streams_its_batch_drift_without_a_warning(campaign, recwarn):

@@ -1,6 +1,6 @@
-// A grid search's fits over folds the caller gives (docs/svr.md, "Searches on folds"): for each fold
-// and kernel, one warm-started path over C in ascending order on the fold's training rows, every
-// model of it scored on the fold's test rows by its sum of squared errors, or its predictions
+// A grid search's fits over folds the caller gives (docs/svr.md, "Searches on folds"): for each
+// fold and kernel, one warm-started path over C in ascending order on the fold's training rows,
+// every model of it scored on the fold's test rows by its sum of squared errors, or its predictions
 // at rows the caller names (for any other scorer). The (fold, kernel) paths are path tasks of
 // the engine every search runs on (fold_paths.hpp), in parallel, each with a workspace from the
 // caller's pool; results do not depend on the thread count.
