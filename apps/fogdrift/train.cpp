@@ -173,9 +173,10 @@ void run(TrainArgs& a) {
 
   const bool show_progress = !a.quiet && !a.json && stderr_is_terminal();
   // The method as trained (svr with --search ssa is ssa-svr); a method and a search that
-  // contradict are refused here, before the campaign is read.
+  // contradict, and any other impossible option, are refused here, before the campaign is read.
   std::string label;
   try {
+    validate(options);
     label = to_string(resolved(options).method);
   } catch (const OptionError& e) {
     throw a.flags->named(e);

@@ -83,6 +83,7 @@ CampaignTrainResult train_inputs(const std::vector<RecordingInput>& inputs,
 }  // namespace
 
 CampaignTrainResult train_campaign(const Campaign& campaign, const CampaignTrainOptions& options) {
+  validate(options.train);  // an impossible option is refused before the recordings are read
   const std::string manifest = (campaign.dir / "campaign.json").string();
   CampaignTrainResult out =
       train_inputs(read_inputs(campaign, Role::train, Scenario::calibration), manifest, options);
@@ -96,6 +97,7 @@ CampaignTrainResult train_campaign(const Campaign& campaign, const CampaignTrain
 CampaignTrainResult train_campaign(const Campaign& campaign,
                                    const std::vector<Recording>& recordings,
                                    const CampaignTrainOptions& options) {
+  validate(options.train);
   const std::vector<RecordingInput> inputs = recording_inputs(campaign, recordings, Role::train);
   if (inputs.empty())
     throw InputError("campaign", 0, 0, "no calibration recordings with role train in the campaign");
