@@ -15,9 +15,19 @@ if [ "${1:-}" = "--sanitize" ]; then
     -DCMAKE_C_FLAGS_RELWITHDEBINFO="-Og -g1 -DNDEBUG"
   export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1
   export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
+  # The paper's experiment run again at its scale adds no code path the pass has not checked: the
+  # Release pass runs these; here they would take a third of the pass (measured: 273 of 1109 s
+  # of tests). Paper.RunsEveryMethodOnEverySeedAndReportsIt and cli_kill's small paper keep
+  # report/ and `fogdrift paper` under the sanitizers; the SVR engine's other tests keep it.
+  skip='^(cli_paper|Paper\.AnotherMethodIsARowOfEveryTable|Paper\.SameSeedSameResultWhateverTheThreads|SvrVsLibsvm\.AgreesOnFiveDataSetsOverAGridOfCSigmaAndEpsilon)$'
 else
   build="$root/build"
   bash "$root/scripts/build.sh" "$build"
+  skip=''
 fi
 cd "$build"
-ctest --output-on-failure --parallel "$(nproc)"
+if [ -n "$skip" ]; then
+  ctest --output-on-failure --parallel "$(nproc)" --exclude-regex "$skip"
+else
+  ctest --output-on-failure --parallel "$(nproc)"
+fi

@@ -14,7 +14,10 @@ check "campaign" run 0 "$fd" simulate calibration --out "$work/cal" --seed 1 --t
 train=(train "$work/cal" --population 10 --iterations 15 -q)
 check "reference model" run 0 "$fd" "${train[@]}" -o "$work/ref.json"
 check "reference compensation" run 0 "$fd" compensate "$work/ref.json" "$work/cal/cal_r3_40C.csv" -o "$work/ref.csv" -q
-tiny=(paper --seeds 1 --cal-temps 0,40 --folds 2 --nf-temps 10,30 --findings 2 --population 5 --iterations 2)
+# The smallest paper that writes every kind of output (report, JSON, figures): two methods, no
+# studies, no start-up conditions table.
+tiny=(paper --seeds 1 --cal-temps 0,40 --folds 2 --nf-temps 10,30 --findings 2 --population 5 --iterations 2
+  --methods bp,ssa-svr --no-studies --start-ups none)
 check "reference paper" run 0 "$fd" "${tiny[@]}" --out "$work/ref_paper"
 ls "$work/ref_paper" >"$work/ref_paper.list"
 
