@@ -5,9 +5,11 @@ Each table is what `fogdrift options COMMAND` prints: the one description fogdri
 option of `fogdrift train` and Python's fogdrift.train (src/tune/train_option_table.cpp), and of
 `fogdrift simulate`'s protocols and Python's fogdrift.simulate
 (src/sim/scenario_option_table.cpp), and of the streaming fault policy of `fogdrift stream`,
-`fogdrift export-c` and Python's StreamingCompensator (src/model/fault_option_table.cpp). This
-script puts each between its two marker lines on the
-page, so that the page cannot fall behind the code.
+`fogdrift export-c` and Python's StreamingCompensator (src/model/fault_option_table.cpp), and of
+`fogdrift denoise` and Python's fogdrift.denoise (src/signal/denoise_option_table.cpp), and of
+`fogdrift paper` and `fogdrift demo` (src/report/paper_option_table.cpp). This
+script puts each between its two marker lines on the page, so that the page cannot fall behind
+the code.
 
 Usage:
     python3 scripts/options_doc.py FOGDRIFT            # rewrite the table (FOGDRIFT: the tool)
@@ -18,7 +20,8 @@ import subprocess
 import sys
 
 PAGE = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "docs", "options.md")
-COMMANDS = ("train", "simulate-calibration", "simulate-northfind", "simulate-stable", "stream")
+COMMANDS = ("train", "simulate-calibration", "simulate-northfind", "simulate-stable", "stream",
+            "denoise", "paper")
 
 
 def markers(command):

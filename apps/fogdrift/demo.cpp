@@ -19,9 +19,9 @@ void add_demo(CLI::App& app) {
       "writes report.md, paper.json and the figures into ./fogdrift-demo/ (replaced on every\n"
       "run). Every option of `fogdrift paper --help` applies: --iterations 20 for paper's search.");
   auto a = std::make_shared<PaperArgs>();
-  a->seeds = 2;
-  a->iterations = 10;
-  a->no_studies = true;
+  a->defaults.seeds = 2;
+  a->defaults.iterations = 10;
+  a->defaults.studies = false;
   a->out = "fogdrift-demo";
   a->force = true;
   add_paper_options(cmd, *a);

@@ -2,17 +2,17 @@
 // 1).
 #include <fmt/format.h>
 
-#include <charconv>
 #include <iostream>
 #include <memory>
 #include <nlohmann/json.hpp>
-#include <optional>
 
 #include "commands.hpp"
 #include "fogdrift/base/atomic_file.hpp"
 #include "fogdrift/base/csv.hpp"
 #include "fogdrift/base/error.hpp"
 #include "fogdrift/signal/denoise.hpp"
+#include "fogdrift/signal/denoise_option_table.hpp"
+#include "option_flags.hpp"
 
 namespace fogdrift::app {
 namespace {
@@ -21,33 +21,14 @@ struct DenoiseArgs {
   std::string input;
   std::string output;
   std::string column = "gyro_dph";
-  std::string wavelet;
-  std::string level = "max";
-  std::string threshold;
-  std::string mode;
-  std::string extension;
   bool json = false;
   bool quiet = false;
+  std::shared_ptr<OptionFlags> flags;  // the denoising options (denoise_option_table.hpp)
 };
-
-std::optional<int> parse_level(const std::string& text) {
-  if (text == "max") return std::nullopt;
-  int value = 0;
-  const auto* end = text.data() + text.size();
-  const auto [ptr, ec] = std::from_chars(text.data(), end, value);
-  if (ec != std::errc() || ptr != end) {
-    throw OptionError("--level", "'" + text + "' is not a whole number or 'max'");
-  }
-  return value;
-}
 
 void run(const DenoiseArgs& a) {
   signal::DenoiseOptions options;
-  options.wavelet = a.wavelet;
-  options.level = parse_level(a.level);
-  options.threshold = signal::parse_threshold_rule(a.threshold, "--threshold");
-  options.shrinkage = signal::parse_shrinkage(a.mode, "--mode");
-  options.extension = signal::parse_extension(a.extension, "--extension");
+  a.flags->apply(signal::denoise_option_table(), options);
 
   csv::Table table = csv::read(a.input);
   const auto col = table.find(a.column);
@@ -71,12 +52,10 @@ void run(const DenoiseArgs& a) {
   try {
     result = signal::denoise(x, options);
   } catch (const OptionError& e) {
-    // Name the option as the user typed it, and the file whose length made it impossible.
-    std::string message = e.what();
-    const std::string prefix = "option " + e.option() + ": ";
-    if (message.rfind(prefix, 0) == 0) message.erase(0, prefix.size());
-    throw OptionError("--" + e.option(),
-                      fmt::format("{} ({}, column {})", message, table.file, a.column));
+    // Named by its flag, with the file whose length made it impossible.
+    const OptionError named = a.flags->named(e);
+    throw OptionError(named.option(),
+                      fmt::format("{} ({}, column {})", named.message(), table.file, a.column));
   }
 
   std::string text;
@@ -131,12 +110,7 @@ void run(const DenoiseArgs& a) {
 }  // namespace
 
 void add_denoise(CLI::App& app) {
-  const signal::DenoiseOptions defaults;
   auto args = std::make_shared<DenoiseArgs>();
-  args->wavelet = defaults.wavelet;
-  args->threshold = std::string(signal::to_string(defaults.threshold));
-  args->mode = std::string(signal::to_string(defaults.shrinkage));
-  args->extension = std::string(signal::to_string(defaults.extension));
   auto* cmd = app.add_subcommand(
       "denoise",
       "Wavelet-denoise one column of a CSV file (a recording's gyro_dph by default) and write the\n"
@@ -158,17 +132,8 @@ void add_denoise(CLI::App& app) {
   cmd->add_option("-o,--output", args->output, "Output CSV (written atomically; may be INPUT)")
       ->required();
   cmd->add_option("--column", args->column, "Column to denoise")->capture_default_str();
-  cmd->add_option("--wavelet", args->wavelet, "haar, db1..db20, sym2..sym20, coif1..coif5")
-      ->capture_default_str();
-  cmd->add_option("--level", args->level,
-                  "Decomposition levels, 1 .. floor(log2(N / (F - 1))), or 'max'")
-      ->capture_default_str();
-  cmd->add_option("--threshold", args->threshold, "universal | level | sure | bayes")
-      ->capture_default_str();
-  cmd->add_option("--mode", args->mode, "Shrinkage: soft | hard")->capture_default_str();
-  cmd->add_option("--extension", args->extension,
-                  "Signal extension: symmetric | periodization | zero | periodic")
-      ->capture_default_str();
+  const auto& table = signal::denoise_option_table();
+  args->flags = std::make_shared<OptionFlags>(cmd, specs_of(table), defaults_of(table));
   cmd->add_flag("--json", args->json, "Print the thresholds per band as JSON");
   cmd->add_flag("-q,--quiet", args->quiet, "Print nothing on success");
   cmd->callback([args] { run(*args); });

@@ -31,6 +31,16 @@ std::string type_name(const OptionSpec& spec) {
   return "TEXT";
 }
 
+/// The flag that changes an on/off option from its default `on`: --no-NAME turns it off, --NAME
+/// on, whichever way its description spells the flag (demo's studies are off by default, paper's
+/// on).
+std::string switch_flag(const OptionSpec& spec, bool on) {
+  const bool negated = spec.flag.rfind("--no-", 0) == 0;
+  if (on && !negated) return "--no-" + spec.flag.substr(2);
+  if (!on && negated) return "--" + spec.flag.substr(5);
+  return spec.flag;
+}
+
 }  // namespace
 
 OptionFlags::OptionFlags(CLI::App* cmd, std::vector<OptionSpec> specs,
@@ -40,10 +50,12 @@ OptionFlags::OptionFlags(CLI::App* cmd, std::vector<OptionSpec> specs,
     const OptionSpec& s = specs_[i];
     const std::string help = option_help(s, specs_, true);
     texts_.push_back(std::make_unique<std::string>(defaults_[i]));
+    std::string flag = s.flag;
     if (s.type == OptionType::on_off) {
       const bool on = defaults_[i] == "true";
+      flag = switch_flag(s, on);
       options_.push_back(cmd->add_flag(
-          s.flag,
+          flag,
           on ? fmt::format("Turns {} off, which is on by default. {}", s.keyword, help) : help));
     } else {
       options_.push_back(cmd->add_option(s.flag, *texts_.back(), help)
@@ -51,8 +63,8 @@ OptionFlags::OptionFlags(CLI::App* cmd, std::vector<OptionSpec> specs,
                              ->default_str(defaults_[i]));
     }
     if (!group.empty()) options_.back()->group(group);
-    flag_table_[s.keyword] = s.flag;
-    for (const std::string& field : s.fields) flag_table_[field] = s.flag;
+    flag_table_[s.keyword] = flag;
+    for (const std::string& field : s.fields) flag_table_[field] = flag;
   }
 }
 

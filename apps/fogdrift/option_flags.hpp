@@ -20,8 +20,9 @@ namespace fogdrift::app {
 
 class OptionFlags {
  public:
-  /// Adds a flag to `cmd` for each option: an on/off option off by default is a flag that turns
-  /// it on; one on by default a flag (its OptionSpec::flag, --no-NAME) that turns it off. With a
+  /// Adds a flag to `cmd` for each option: an on/off option off by default is a flag --NAME that
+  /// turns it on; one on by default a flag --no-NAME that turns it off, whichever way
+  /// OptionSpec::flag spells it: the default decides (demo's studies are off, paper's on). With a
   /// `group`, --help lists the flags under that heading.
   OptionFlags(CLI::App* cmd, std::vector<OptionSpec> specs, std::vector<std::string> defaults,
               const std::string& group = "");

@@ -1,6 +1,6 @@
-// fogdrift options: the options of `fogdrift train` and `fogdrift simulate`'s protocols, and of
-// their Python functions, as the one description of each gives them (train_option_table.hpp,
-// scenario_option_table.hpp, docs/options.md).
+// fogdrift options: the options of the commands whose options are described once (`fogdrift
+// train`, `simulate`'s protocols, `stream`'s fault policy, `denoise`, `paper`) and of their Python
+// functions, as that one description gives them (option_table.hpp, docs/options.md).
 #include <fmt/format.h>
 
 #include <iostream>
@@ -9,13 +9,15 @@
 #include "commands.hpp"
 #include "fogdrift/base/error.hpp"
 #include "fogdrift/model/fault_option_table.hpp"
+#include "fogdrift/report/paper_option_table.hpp"
+#include "fogdrift/signal/denoise_option_table.hpp"
 #include "fogdrift/sim/scenario_option_table.hpp"
 #include "fogdrift/tune/train_option_table.hpp"
 
 namespace fogdrift::app {
 
 constexpr const char* kCommands =
-    "train, simulate-calibration, simulate-northfind, simulate-stable, stream";
+    "train, simulate-calibration, simulate-northfind, simulate-stable, stream, denoise, paper";
 
 namespace {
 
@@ -38,6 +40,8 @@ Described of_command(const std::string& command) {
   if (command == "simulate-stable")
     return described(sim::northfind_option_table(), sim::stable_defaults());
   if (command == "stream") return described(fault_option_table());
+  if (command == "denoise") return described(signal::denoise_option_table());
+  if (command == "paper") return described(report::paper_option_table());
   throw OptionError("COMMAND", fmt::format("'{}' is not one of {}", command, kCommands));
 }
 
@@ -51,9 +55,10 @@ void add_options(CLI::App& app) {
       "COMMAND is train ('fogdrift train', Python's fogdrift.train; the default) or\n"
       "simulate-calibration, simulate-northfind, simulate-stable ('fogdrift simulate\n"
       "calibration', ..., Python's fogdrift.simulate) or stream (the fault policy of 'fogdrift\n"
-      "stream' and 'fogdrift export-c', Python's StreamingCompensator). The tables in\n"
-      "docs/options.md are this\n"
-      "output (scripts/options_doc.py writes them there).\n"
+      "stream' and 'fogdrift export-c', Python's StreamingCompensator) or denoise ('fogdrift\n"
+      "denoise', Python's fogdrift.denoise) or paper ('fogdrift paper' and, with its own\n"
+      "defaults, 'fogdrift demo'). The tables in docs/options.md are this output\n"
+      "(scripts/options_doc.py writes them there).\n"
       "Example:\n"
       "  fogdrift options --json | python3 -c 'import json,sys; print(len(json.load(sys.stdin)))'");
   auto command = std::make_shared<std::string>("train");

@@ -11,8 +11,10 @@
 #include "commands.hpp"
 #include "fogdrift/base/atomic_file.hpp"
 #include "fogdrift/base/error.hpp"
+#include "fogdrift/report/paper_option_table.hpp"
 #include "fogdrift/report/paper_report.hpp"
 #include "fogdrift/sim/instrument.hpp"
+#include "option_flags.hpp"
 
 namespace fogdrift::app {
 
@@ -21,58 +23,8 @@ void add_paper_options(CLI::App* cmd, PaperArgs& a) {
                   "Folder for report.md, paper.json and the figures (PNG and JSON); written "
                   "atomically, an existing folder only with --force");
   cmd->add_flag("--force", a.force, "Replace an existing --out folder");
-  cmd->add_option("--seeds", a.seeds, "Independent repetitions of the whole experiment")
-      ->capture_default_str();
-  cmd->add_option("--methods", a.methods,
-                  "Methods of Tables 2-3 and the start-up conditions table, in order, "
-                  "comma-separated, of " +
-                      method_names() +
-                      " (train --help says what each is): the paper's, and any other after "
-                      "them; bp and ssa-svr are always needed")
-      ->capture_default_str();
-  cmd->add_option("--first-seed", a.first_seed, "Seeds are first, first + 1, …")
-      ->capture_default_str();
-  cmd->add_option("--population", a.population, "Optimizer population of the tuned SVRs")
-      ->capture_default_str();
-  cmd->add_option("--iterations", a.iterations, "Optimizer iterations of the tuned SVRs")
-      ->capture_default_str();
-  cmd->add_option("--fitness", a.fitness, "cv (grouped cross-validation) or train (the paper's)")
-      ->capture_default_str();
-  cmd->add_option("--cv", a.cv,
-                  "Folds of the cv fitness: auto or repetition (leave one training repetition "
-                  "out), recording (k folds of whole recordings) or temperature (k folds of whole "
-                  "calibration temperatures, scoring a model where it was not trained)")
-      ->capture_default_str();
-  cmd->add_option("--folds", a.folds, "k for --cv recording or temperature")->capture_default_str();
-  cmd->add_option("--epsilon", a.epsilon, "ε of the tuned SVRs (standardised target)")
-      ->capture_default_str();
-  cmd->add_flag("--search-epsilon", a.search_epsilon,
-                "The tuned SVRs also search ε in [0.001, 1] (the paper tunes C and σ only)");
-  cmd->add_option("--approach", a.approach,
-                  "How the Table 3 north-finding start-ups begin: calibration, soaked, warm, "
-                  "ramping or sweep (fogdrift simulate northfind --help)")
-      ->capture_default_str();
-  cmd->add_option("--cal-approaches", a.cal_approaches,
-                  "How each calibration repetition's start-ups begin, cycling (fogdrift simulate "
-                  "calibration --help): the protocol docs/field.md recommends; the paper's own is "
-                  "--cal-approaches calibration --repetitions 4")
-      ->capture_default_str();
-  cmd->add_option("--repetitions", a.repetitions,
-                  "Calibration repetitions; the last one is the test repetition")
-      ->capture_default_str();
-  cmd->add_option("--start-ups", a.start_ups,
-                  "Approaches of the start-up conditions table, comma-separated, or none")
-      ->capture_default_str();
-  cmd->add_option("--cal-temps", a.cal_temps,
-                  "Calibration chamber temperatures, °C, comma-separated")
-      ->default_str("-40,-30,…,60");
-  cmd->add_option("--nf-temps", a.nf_temps,
-                  "North-finding initial temperatures, °C, comma-separated")
-      ->default_str("-32,-16,-5,17,28,43,54");
-  cmd->add_option("--findings", a.findings, "North-findings per initial temperature")
-      ->capture_default_str();
-  cmd->add_flag("--no-studies", a.no_studies,
-                "Skip the leave-one-temperature-out and fitness studies");
+  const auto& table = report::paper_option_table();
+  a.options = std::make_shared<OptionFlags>(cmd, specs_of(table), defaults_of(table, a.defaults));
   cmd->add_option("--instrument", a.instrument_file,
                   "Instrument parameters (JSON); default built in");
   cmd->add_option("--threads", a.threads, "Threads (0: one per core); results do not depend on it")
@@ -83,71 +35,23 @@ void add_paper_options(CLI::App* cmd, PaperArgs& a) {
 
 namespace {
 
-// The experiment's fields and the flags of paper (and demo) that set them.
-const FlagTable kPaperFlags = {{"seeds", "--seeds"},
-                               {"methods", "--methods"},
-                               {"population", "--population"},
-                               {"iterations", "--iterations"},
-                               {"epsilon", "--epsilon"},
-                               {"cv.folds", "--folds"},
-                               {"cv.scheme", "--cv"},
-                               {"calibration.temps_degc", "--cal-temps"},
-                               {"calibration.repetitions", "--repetitions"},
-                               {"calibration.approaches", "--cal-approaches"},
-                               {"northfind.temps_degc", "--nf-temps"},
-                               {"northfind.findings", "--findings"}};
-
-void run_paper_unnamed(const PaperArgs& a);
+void run_paper_unnamed(const PaperArgs& a, report::PaperOptions o);
 
 }  // namespace
 
-const report::PaperOptions& paper_defaults() {
-  static const report::PaperOptions defaults;
-  return defaults;
-}
-
-std::string method_list(const std::vector<Method>& methods) {
-  std::vector<std::string> names;
-  for (const Method m : methods) names.push_back(to_string(m));
-  return fmt::format("{}", fmt::join(names, ","));
-}
-
-std::string approach_list(const std::vector<sim::Approach>& approaches) {
-  std::vector<std::string_view> names;
-  for (sim::Approach a : approaches) names.push_back(sim::to_string(a));
-  return fmt::format("{}", fmt::join(names, ","));
-}
-
 void run_paper_command(const PaperArgs& a) {
-  with_flags(kPaperFlags, [&] { run_paper_unnamed(a); });
+  report::PaperOptions o = a.defaults;
+  a.options->apply(report::paper_option_table(), o);
+  try {
+    run_paper_unnamed(a, std::move(o));
+  } catch (const OptionError& e) {
+    throw a.options->named(e);
+  }
 }
 
 namespace {
 
-void run_paper_unnamed(const PaperArgs& a) {
-  report::PaperOptions o;
-  o.seeds = a.seeds;
-  o.methods.clear();
-  for (const std::string& m : split_list(a.methods))
-    o.methods.push_back(parse_method(m, "--methods"));
-  o.first_seed = a.first_seed;
-  o.population = a.population;
-  o.iterations = a.iterations;
-  o.fitness = tune::parse_fitness(a.fitness, "--fitness");
-  o.cv.scheme = tune::parse_cv_scheme(a.cv, "--cv");
-  o.cv.folds = a.folds;
-  o.northfind.approach = sim::approach_from_string(a.approach, "--approach");
-  o.calibration.approaches = sim::approaches_from_string(a.cal_approaches, "--cal-approaches");
-  o.calibration.repetitions = a.repetitions;
-  o.start_ups = a.start_ups == "none" ? std::vector<sim::Approach>{}
-                                      : sim::approaches_from_string(a.start_ups, "--start-ups");
-  o.studies = !a.no_studies;
-  o.epsilon = a.epsilon;
-  o.search_epsilon = a.search_epsilon;
-  if (!a.cal_temps.empty())
-    o.calibration.temps_degc = parse_number_list(a.cal_temps, "--cal-temps");
-  if (!a.nf_temps.empty()) o.northfind.temps_degc = parse_number_list(a.nf_temps, "--nf-temps");
-  o.northfind.findings = a.findings;
+void run_paper_unnamed(const PaperArgs& a, report::PaperOptions o) {
   if (!a.instrument_file.empty())
     o.instrument = sim::instrument_from_json(read_text_file(a.instrument_file), a.instrument_file);
   if (!a.out.empty()) {

@@ -23,7 +23,7 @@ The package wraps fogdrift's C++ library (docs/python.md):
   process (about ``cache_size`` per thread that fits); this gives it back and returns the bytes.
 """
 from ._fogdrift import (Model, StreamingCompensator, __version__, allan_deviation, denoise,
-                        evaluate, features, find_north, noise_terms, northfind, read_recording,
+                        denoise_options, evaluate, features, find_north, noise_terms, northfind, read_recording,
                         release_memory, save_models, simulate, simulate_options,
                         stream_options, train, train_options, write_recording)
 from ._keywords import method_naming_keywords, naming_keywords
@@ -45,6 +45,11 @@ simulate.__doc__ += "".join(
     f"\n\nKeywords of {scenario}:\n" + "\n".join(
         keyword_lines(simulate_options(scenario), f"fogdrift simulate {scenario}"))
     for scenario in ("calibration", "northfind", "stable"))
+denoise = with_keywords(denoise, ["data"],
+                        [dict(keyword="summary", default="false", type="on/off", flag="--json",
+                              doc="Also return the level, the noise sigma and each band's "
+                                  "threshold and coefficients kept")]
+                        + denoise_options(), "fogdrift denoise")
 for _method in ("__init__", "update", "run"):
     method_naming_keywords(StreamingCompensator, _method)
 # Its signature and docstring show the fault policy's keywords from their one description.
@@ -64,5 +69,5 @@ del _method
 __all__ = ["Model", "SVR", "SVRGridSearchCV", "StreamingCompensator", "allan_deviation",
            "denoise", "evaluate", "features", "find_north", "noise_terms", "northfind",
            "read_recording", "release_memory", "save_models", "simulate", "train", "train_fleet",
-           "simulate_options", "stream_options", "train_options",
+           "denoise_options", "simulate_options", "stream_options", "train_options",
            "write_recording", "__version__"]

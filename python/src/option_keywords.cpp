@@ -40,9 +40,9 @@ std::string_view python_what(OptionType type) {
     case OptionType::number:
       return "a number";
     case OptionType::seconds_or_auto:
-      return "'auto' or a number of seconds";
+      return "'auto' (or None) or a number of seconds";
     case OptionType::whole_or_auto:
-      return "'auto' or an int";
+      return "'auto' (or None) or an int";
     case OptionType::choice:
     case OptionType::text:
       return "a str";
@@ -61,6 +61,10 @@ std::string_view python_what(OptionType type) {
 std::string keyword_text(const OptionSpec& spec, const py::handle& value,
                          const std::string& function) {
   const bool text = py::isinstance<py::str>(value);
+  // None is Python's word for "let the library choose" (pywt.wavedec's level=None).
+  if (value.is_none() &&
+      (spec.type == OptionType::seconds_or_auto || spec.type == OptionType::whole_or_auto))
+    return "auto";
   switch (spec.type) {
     case OptionType::whole:
       if (is_whole(value)) return whole_text(value);

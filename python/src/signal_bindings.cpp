@@ -13,6 +13,8 @@
 #include "fogdrift/model/features.hpp"
 #include "fogdrift/model/model.hpp"
 #include "fogdrift/signal/denoise.hpp"
+#include "fogdrift/signal/denoise_option_table.hpp"
+#include "option_keywords.hpp"
 
 namespace py = pybind11;
 
@@ -28,16 +30,10 @@ Array one_dimensional(const py::object& values, const char* name) {
   return a;
 }
 
-py::object denoise(const py::object& data, const std::string& wavelet,
-                   const std::optional<int> level, const std::string& threshold,
-                   const std::string& mode, const std::string& extension, bool summary) {
+py::object denoise(const py::object& data, bool summary, const py::kwargs& options) {
   const Array x = one_dimensional(data, "data");
   signal::DenoiseOptions o;
-  o.wavelet = wavelet;
-  o.level = level;
-  o.threshold = signal::parse_threshold_rule(threshold, "threshold");
-  o.shrinkage = signal::parse_shrinkage(mode, "mode");
-  o.extension = signal::parse_extension(extension, "extension");
+  apply_keywords(signal::denoise_option_table(), o, options, "denoise", {"data", "summary"});
   signal::DenoiseResult r;
   {
     py::gil_scoped_release release;
@@ -110,16 +106,19 @@ py::dict features(const py::object& recording, const std::optional<std::string>&
 }  // namespace
 
 void bind_signal(py::module_& m) {
-  m.def("denoise", &denoise, py::arg("data"), py::kw_only(), py::arg("wavelet") = "sym4",
-        py::arg("level") = py::none(), py::arg("threshold") = "bayes", py::arg("mode") = "soft",
-        py::arg("extension") = "symmetric", py::arg("summary") = false,
-        "Wavelet-denoises a 1-D signal (docs/signal.md): the same result as `fogdrift denoise`. "
-        "wavelet: 'haar', 'db1'..'db20', 'sym2'..'sym20', 'coif1'..'coif5' (PyWavelets' "
-        "filters); level: None for the largest useful; threshold: 'universal', 'level', 'sure' "
-        "or 'bayes'; mode: 'soft' or 'hard' shrinkage (pywt.threshold's mode); extension: "
-        "'symmetric', 'periodization', 'zero' or 'periodic' (pywt.wavedec's mode). Returns the "
-        "denoised float64 array, or with summary=True (array, dict) with the level, the noise "
-        "sigma and each band's threshold and coefficients kept.");
+  m.def(
+      "denoise_options",
+      [] {
+        const auto& table = signal::denoise_option_table();
+        return describe_options(specs_of(table), defaults_of(table));
+      },
+      "The options of fogdrift.denoise, one dict each (keyword, type, default, unit, doc, flag): "
+      "the same descriptions `fogdrift denoise`'s flags come from (docs/options.md).");
+  m.def("denoise", &denoise, py::arg("data"), py::kw_only(), py::arg("summary") = false,
+        "Wavelet-denoises a 1-D signal (docs/signal.md): the same result as `fogdrift denoise`, "
+        "with its options as keywords (fogdrift.denoise_options()). Returns the denoised float64 "
+        "array, or with summary=True (array, dict) with the level, the noise sigma and each "
+        "band's threshold and coefficients kept.");
   m.def("features", &features, py::arg("recording"), py::arg("spec") = py::none(), py::kw_only(),
         py::arg("model") = nullptr, py::arg("differentiator") = "centred",
         py::arg("rate_window_s") = "auto", py::arg("block_s") = "auto",

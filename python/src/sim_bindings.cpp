@@ -24,25 +24,6 @@ namespace py = pybind11;
 namespace fogdrift::python {
 namespace {
 
-/// Sets the options given as keywords from the scenario's table (scenario_option_table.hpp),
-/// in the table's order; a keyword it does not have is a TypeError listing those it has.
-template <typename Options>
-void apply(Options& o, const OptionTable<Options>& table, const py::kwargs& options,
-           const std::string& scenario) {
-  for (const auto& [key, value] : options) {
-    const auto name = key.template cast<std::string>();
-    if (find_option(table, name)) continue;
-    std::string known;
-    for (const auto& option : table) known += (known.empty() ? "" : ", ") + option.spec.keyword;
-    throw py::type_error(fmt::format(
-        "simulate() got an unexpected keyword argument '{}'; the {} simulation's options are {}",
-        name, scenario, known));
-  }
-  for (const auto& option : table)
-    if (options.contains(option.spec.keyword.c_str()))
-      option.set(o, keyword_text(option.spec, options[option.spec.keyword.c_str()], "simulate"));
-}
-
 // None: the default instrument; a dict: its fields (the rest default); else a JSON file's path.
 sim::Instrument instrument_of(const py::object& instrument) {
   if (instrument.is_none()) return {};
@@ -62,7 +43,10 @@ py::dict simulate(const std::string& scenario, const std::optional<std::filesyst
   if (scenario == "calibration") {
     const auto& table = sim::calibration_option_table();
     sim::CalibrationOptions o;
-    in_keywords_of(specs_of(table), [&] { apply(o, table, options, scenario); });
+    in_keywords_of(specs_of(table), [&] {
+      apply_keywords(table, o, options, "simulate", {},
+                     "the " + scenario + " simulation's options");
+    });
     o.seed = seed;
     py::gil_scoped_release release;
     c = in_keywords_of(specs_of(table), [&] { return sim::simulate_calibration(unit, o); });
@@ -70,7 +54,10 @@ py::dict simulate(const std::string& scenario, const std::optional<std::filesyst
     const auto& table = sim::northfind_option_table();
     sim::NorthfindOptions o =
         scenario == "stable" ? sim::stable_defaults() : sim::NorthfindOptions{};
-    in_keywords_of(specs_of(table), [&] { apply(o, table, options, scenario); });
+    in_keywords_of(specs_of(table), [&] {
+      apply_keywords(table, o, options, "simulate", {},
+                     "the " + scenario + " simulation's options");
+    });
     o.seed = seed;
     py::gil_scoped_release release;
     c = in_keywords_of(specs_of(table), [&] {

@@ -77,7 +77,7 @@ std::unique_ptr<Stream> make_stream(const CompensationModel& model, double dt_s,
     const auto name = key.cast<std::string>();
     if (name == "guarded") {
       o.guarded =
-          parse_on_off_option(kGuarded, keyword_text(kGuarded, value, "StreamingCompensator()"));
+          parse_on_off_option(kGuarded, keyword_text(kGuarded, value, "StreamingCompensator"));
       continue;
     }
     const Option<FaultPolicy>* option = find_option(table, name);
@@ -88,7 +88,7 @@ std::unique_ptr<Stream> make_stream(const CompensationModel& model, double dt_s,
           "StreamingCompensator() got an unexpected keyword argument '{}'; its keywords are {}",
           name, all));
     }
-    option->set(o.faults, keyword_text(option->spec, value, "StreamingCompensator()"));
+    option->set(o.faults, keyword_text(option->spec, value, "StreamingCompensator"));
   }
   // "faults.bridge_s" is the keyword bridge_s here.
   in_keywords_of(specs, [&] { validate(o.faults); });

@@ -353,7 +353,7 @@ void validate(const PaperOptions& o) {
   };
   if (o.cv.scheme == tune::CvScheme::temperature)
     folds_of(static_cast<std::size_t>(temps), "calibration temperatures",
-             ", or --cv repetition to leave one repetition out");
+             ", or {cv} repetition to leave one repetition out");
   if (o.cv.scheme == tune::CvScheme::recording)
     folds_of(static_cast<std::size_t>(temps * train_reps), "training recordings", "");
   if (o.cv.scheme == tune::CvScheme::repetition && train_reps < 2)

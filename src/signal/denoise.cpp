@@ -39,6 +39,14 @@ Shrinkage parse_shrinkage(std::string_view text, std::string_view option) {
   return parse_in(kShrinkageNames, text, option, "a shrinkage mode");
 }
 
+std::string threshold_rule_names() {
+  return names_in(kThresholdRuleNames);
+}
+
+std::string shrinkage_names() {
+  return names_in(kShrinkageNames);
+}
+
 void validate(const DenoiseOptions& options, std::size_t n_samples) {
   const Wavelet w = wavelet(options.wavelet);  // throws for an unknown name
   const int max_level = dwt_max_level(n_samples, w.filter_length());

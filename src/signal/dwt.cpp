@@ -62,6 +62,10 @@ Extension parse_extension(std::string_view text, std::string_view option) {
   return parse_in(kExtensionNames, text, option, "an extension mode");
 }
 
+std::string extension_names() {
+  return names_in(kExtensionNames);
+}
+
 std::size_t dwt_coeff_length(std::size_t input_length, int filter_length, Extension extension) {
   if (extension == Extension::periodization) return (input_length + 1) / 2;
   return (input_length + static_cast<std::size_t>(filter_length) - 1) / 2;

@@ -21,14 +21,6 @@ std::vector<std::string> in(std::initializer_list<const char*> scenarios,
 const std::initializer_list<const char*> kCalibration = {"calibration"};
 const std::initializer_list<const char*> kFindings = {"northfind", "stable"};
 
-std::string approach_names(bool with_sweep) {
-  std::string out;
-  for (const Approach a : kApproaches)
-    if (with_sweep || a != Approach::sweep)
-      out += (out.empty() ? "" : ", ") + std::string(to_string(a));
-  return out;
-}
-
 /// The temperatures of a protocol, each a recording.
 template <class O>
 Option<O> temps_option(const char* doc, std::initializer_list<const char*> scenarios) {
@@ -105,12 +97,7 @@ OptionTable<CalibrationOptions> make_calibration() {
                 "How each repetition's start-ups begin: repetition r takes the r-th, cycling "
                 "(docs/simulator.md)",
                 in(kCalibration, "approaches")},
-               [](const O& o) {
-                 std::string out;
-                 for (const Approach a : o.approaches)
-                   out += (out.empty() ? "" : ",") + std::string(to_string(a));
-                 return out;
-               },
+               [](const O& o) { return approaches_to_string(o.approaches); },
                [](O& o, const std::string& text) {
                  o.approaches = approaches_from_string(text, "approaches");
                }});

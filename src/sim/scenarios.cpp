@@ -187,6 +187,20 @@ std::vector<Approach> approaches_from_string(std::string_view list, const std::s
   return out;
 }
 
+std::string approaches_to_string(const std::vector<Approach>& approaches) {
+  std::string out;
+  for (const Approach a : approaches) out += (out.empty() ? "" : ",") + std::string(to_string(a));
+  return out;
+}
+
+std::string approach_names(bool with_sweep) {
+  std::string out;
+  for (const Approach a : kApproaches)
+    if (with_sweep || a != Approach::sweep)
+      out += (out.empty() ? "" : ", ") + std::string(to_string(a));
+  return out;
+}
+
 CalibrationOptions field_calibration() {
   CalibrationOptions o;
   o.approaches = {Approach::calibration, Approach::soaked, Approach::warm, Approach::ramping};

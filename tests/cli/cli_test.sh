@@ -98,6 +98,7 @@ rec="$work/cal/cal_r1_m10C.csv"
 check "denoise help explains the rules" run 0 "$fd" denoise --help
 check "denoise help lists bayes" out_has "sigma^2 / sigma_signal (BayesShrink)"
 check "denoise with defaults" run 0 "$fd" denoise "$rec" -o "$work/den.csv"
+cp "$work/den.csv" "$work/den.csv.default"
 check "denoise summary" out_has "denoised gyro_dph (1800 samples) with sym4"
 cut -d, -f1,3- "$rec" >"$work/rest_in.txt"
 cut -d, -f1,3- "$work/den.csv" >"$work/rest_out.txt"
@@ -149,7 +150,13 @@ check "no output on error" test ! -e "$work/x.csv"
 check "denoise level too high" run 1 "$fd" denoise "$rec" -o "$work/x.csv" --level 12
 check "level message" err_has "option --level: 12 is too high for 1800 samples with sym4: the maximum is 8"
 check "denoise bad level text" run 1 "$fd" denoise "$rec" -o "$work/x.csv" --level deep
-check "bad level message" err_has "option --level: 'deep' is not a whole number or 'max'"
+check "bad level message" err_has "option --level: 'deep' is neither auto nor a whole number"
+check "denoise level max" run 0 "$fd" denoise "$rec" -o "$work/den_max.csv" --level max -q
+check "level max is the default" cmp -s "$work/den.csv.default" "$work/den_max.csv"
+check "denoise level auto" run 0 "$fd" denoise "$rec" -o "$work/den_auto.csv" --level auto -q
+check "level auto is the default" cmp -s "$work/den.csv.default" "$work/den_auto.csv"
+check "denoise's options described once" run 0 "$fd" options denoise
+check "denoise's table lists the rules" out_has "| \`threshold\` | \`--threshold\` | choice |  | \`bayes\` | universal, level, sure, bayes |"
 check "denoise bad wavelet" run 1 "$fd" denoise "$rec" -o "$work/x.csv" --wavelet db42
 check "bad wavelet message" err_has "option --wavelet: 'db42' is not a known wavelet"
 check "denoise bad mode" run 1 "$fd" denoise "$rec" -o "$work/x.csv" --mode medium

@@ -250,8 +250,8 @@ def test_train_rejects_a_block_that_is_not_a_positive_number(trained):
                          ("two", "'two' is neither auto nor a whole number")]:
         with pytest.raises(ValueError, match="option rate_degree: " + message):
             fogdrift.train(d / "cal", method="svr", rate_degree=bad)
-    with pytest.raises(TypeError, match=r"train\(\): rate_degree must be 'auto' or an int, not "
-                                        r"float \(1.5\)"):
+    with pytest.raises(TypeError, match=r"train\(\): rate_degree must be 'auto' \(or None\) or an "
+                                        r"int, not float \(1.5\)"):
         fogdrift.train(d / "cal", method="svr", rate_degree=1.5)
 
 
@@ -294,7 +294,7 @@ def test_a_wrong_type_is_a_type_error_naming_the_keyword(trained):
             (lambda: fogdrift.train(d / "cal", method=2),
              r"train\(\): method must be a str, not int"),
             (lambda: fogdrift.train(d / "cal", block_s=[10]),
-             r"train\(\): block_s must be 'auto' or a number of seconds, not list"),
+             r"train\(\): block_s must be 'auto' \(or None\) or a number of seconds, not list"),
             (lambda: fogdrift.train(d / "cal", population=True),
              r"train\(\): population must be an int, not bool"),
             (lambda: fogdrift.train(d / "cal", threads=1.5),
@@ -305,8 +305,8 @@ def test_a_wrong_type_is_a_type_error_naming_the_keyword(trained):
              r"train\(\): progress must be callable or None, not int"),
             (lambda: fogdrift.simulate("calibration", seed="1"),
              r"simulate\(\): seed must be an int, not str"),
-            (lambda: fogdrift.denoise(np.ones(64), level="x"),
-             r"denoise\(\): level must be an int or None, not str"),
+            (lambda: fogdrift.denoise(np.ones(64), level=1.5),
+             r"denoise\(\): level must be 'auto' \(or None\) or an int, not float \(1.5\)"),
             (lambda: fogdrift.Model.load(3), r"Model.load\(\): path must be a path, not int"),
             (lambda: m.predict(recording, guarded="no"),
              r"Model.predict\(\): guarded must be a bool, not str"),

@@ -1,6 +1,7 @@
-"""The three faces of fogdrift train's and fogdrift simulate's options agree: the command line's
-flags, the Python keywords and docs/options.md all come from one description of each option
-(docs/options.md), and this checks that what each shows a user is that description."""
+"""The three faces of the options described once (train, simulate, the streaming fault policy,
+denoise) agree: the command line's flags, the Python keywords and docs/options.md all come from
+one description of each option (docs/options.md), and this checks that what each shows a user is
+that description."""
 import inspect
 import json
 import os
@@ -8,6 +9,7 @@ import pathlib
 import re
 import subprocess
 
+import numpy as np
 import pytest
 
 import fogdrift
@@ -156,3 +158,45 @@ def test_the_fault_policy_has_one_description_in_every_face(cli):
             assert re.sub(r"\s+", " ", o["help"]) in help_text, (command, o["flag"])
     rows = rows_of("stream")
     assert [re.match(r"\| `(\w+)`", r).group(1) for r in rows] == [o["keyword"] for o in described]
+
+
+def test_denoise_has_one_description_in_every_face(cli, tmp_path):
+    described = json.loads(cli("options", "denoise", "--json"))
+    assert [(o["keyword"], o["flag"], o["default"]) for o in fogdrift.denoise_options()] == \
+        [(o["keyword"], o["flag"], o["default"]) for o in described]
+    signature = inspect.signature(fogdrift.denoise).parameters
+    assert list(signature) == ["data", "summary"] + [o["keyword"] for o in described]
+    help_text = re.sub(r"\s+", " ", cli("denoise", "--help"))
+    for o in described:
+        assert re.search(re.escape(o["flag"]) + r" \S+=" + re.escape(o["default"]) + " ",
+                         help_text), o["flag"]
+        assert re.sub(r"\s+", " ", o["help"]) in help_text, o["flag"]
+        assert o["doc"][:40] in fogdrift.denoise.__doc__, o["keyword"]
+    rows = rows_of("denoise")
+    assert [re.match(r"\| `(\w+)`", r).group(1) for r in rows] == [o["keyword"] for o in described]
+    # The same options give the same signal from either front end; level None, "auto" and the
+    # command line's "max" are one level.
+    t = np.arange(2048) * 1.0
+    x = np.sin(t / 50.0) + 0.1 * np.random.default_rng(3).standard_normal(t.size)
+    (tmp_path / "x.csv").write_text("time_s,gyro_dph\n" + "".join(
+        f"{a!r},{b!r}\n" for a, b in zip(t, x)))
+    for flags, keywords in [([], {}), (["--level", "max"], dict(level=None)),
+                            (["--level", "auto", "--threshold", "sure", "--mode", "hard"],
+                             dict(level="auto", threshold="sure", mode="hard")),
+                            (["--wavelet", "db4", "--level", "5", "--extension", "periodization"],
+                             dict(wavelet="db4", level=5, extension="periodization"))]:
+        cli("denoise", tmp_path / "x.csv", "-o", tmp_path / "y.csv", "-q", *flags)
+        got = np.loadtxt(tmp_path / "y.csv", delimiter=",", skiprows=1)[:, 1]
+        np.testing.assert_array_equal(got, fogdrift.denoise(x, **keywords))
+    # An error names the option in each front end's words.
+    with pytest.raises(ValueError, match="option level: 12 is too high for 2048 samples"):
+        fogdrift.denoise(x, level=12)
+    done = subprocess.run([os.environ.get("FOGDRIFT_CLI", "build/apps/fogdrift/fogdrift"),
+                           "denoise", str(tmp_path / "x.csv"), "-o", str(tmp_path / "z.csv"),
+                           "--level", "12"], capture_output=True, text=True)
+    assert done.returncode == 1 and "option --level: 12 is too high for 2048" in done.stderr
+    with pytest.raises(ValueError, match="option threshold: 'median' is not a threshold rule"):
+        fogdrift.denoise(x, threshold="median")
+    with pytest.raises(TypeError, match=r"denoise\(\) got an unexpected keyword argument 'levels'; "
+                                        r"its keywords are data, summary, wavelet, level"):
+        fogdrift.denoise(x, levels=3)

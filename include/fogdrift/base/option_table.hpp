@@ -185,6 +185,16 @@ Option<O> on_off_option(OptionSpec spec, Get get) {
           [get, spec](O& o, const std::string& text) { get(o) = parse_on_off_option(spec, text); }};
 }
 
+/// One of a few names: `name(value)` is a value's name, `parse(text, keyword)` the value named
+/// (an OptionError naming the keyword for any other text); spec.range lists the names.
+template <class O, class Get, class Name, class Parse>
+Option<O> choice_option(OptionSpec spec, Get get, Name name, Parse parse) {
+  spec.type = OptionType::choice;
+  return {
+      spec, [get, name](const O& o) { return std::string(name(get(o))); },
+      [get, parse, spec](O& o, const std::string& text) { get(o) = parse(text, spec.keyword); }};
+}
+
 /// An optional number of seconds, unset meaning "auto".
 template <class O, class Get>
 Option<O> seconds_or_auto_option(OptionSpec spec, Get get) {

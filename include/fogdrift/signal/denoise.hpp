@@ -34,6 +34,9 @@ std::string_view to_string(Shrinkage shrinkage);
 /// Parse the names above; throw OptionError(option, ...) listing the valid names.
 ThresholdRule parse_threshold_rule(std::string_view text, std::string_view option = "threshold");
 Shrinkage parse_shrinkage(std::string_view text, std::string_view option = "mode");
+/// "universal, level, sure, bayes" and "soft, hard".
+std::string threshold_rule_names();
+std::string shrinkage_names();
 
 /// The defaults were chosen by measurement on simulated start-up recordings (docs/signal.md,
 /// bench/denoise_study.cpp): of 170 settings, sym4 with BayesShrink and soft shrinkage at the

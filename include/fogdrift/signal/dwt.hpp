@@ -12,6 +12,7 @@
 
 #include <optional>
 #include <span>
+#include <string>
 #include <string_view>
 #include <vector>
 
@@ -30,6 +31,8 @@ enum class Extension {
 std::string_view to_string(Extension extension);
 /// Parses "symmetric", "periodization", "zero" or "periodic"; throws OptionError(option, ...).
 Extension parse_extension(std::string_view text, std::string_view option = "extension");
+/// "symmetric, periodization, zero, periodic".
+std::string extension_names();
 
 /// Length of cA (and cD) for a signal of `input_length` samples.
 std::size_t dwt_coeff_length(std::size_t input_length, int filter_length, Extension extension);

@@ -69,6 +69,11 @@ std::string_view to_string(Approach approach);
 Approach approach_from_string(std::string_view name, const std::string& option);
 /// A comma-separated list of approaches ("calibration,soaked,warm"); errors name `option`.
 std::vector<Approach> approaches_from_string(std::string_view list, const std::string& option);
+/// The list approaches_from_string reads back: "calibration,soaked,warm".
+std::string approaches_to_string(const std::vector<Approach>& approaches);
+/// Every approach's name, "calibration, soaked, …", without sweep unless `with_sweep`
+/// (calibration has no sweep).
+std::string approach_names(bool with_sweep);
 /// The calibration protocol docs/field.md recommends: the paper's chamber cycles, with the
 /// start-ups of repetitions 1–4 begun as calibration, soaked, warm and ramping, and a fifth
 /// repetition (the chamber's protocol again) to test on.
