@@ -6,7 +6,9 @@ option of `fogdrift train` and Python's fogdrift.train (src/tune/train_option_ta
 `fogdrift simulate`'s protocols and Python's fogdrift.simulate
 (src/sim/scenario_option_table.cpp), and of the streaming fault policy of `fogdrift stream`,
 `fogdrift export-c` and Python's StreamingCompensator (src/model/fault_option_table.cpp), and of
-`fogdrift denoise` and Python's fogdrift.denoise (src/signal/denoise_option_table.cpp), and of
+`fogdrift denoise` and Python's fogdrift.denoise (src/signal/denoise_option_table.cpp), of
+`fogdrift evaluate` and `fogdrift northfind` and their Python functions
+(src/eval/eval_option_table.cpp), and of
 `fogdrift paper` and `fogdrift demo` (src/report/paper_option_table.cpp). This
 script puts each between its two marker lines on the page, so that the page cannot fall behind
 the code.
@@ -21,7 +23,7 @@ import sys
 
 PAGE = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "docs", "options.md")
 COMMANDS = ("train", "simulate-calibration", "simulate-northfind", "simulate-stable", "stream",
-            "denoise", "paper")
+            "denoise", "evaluate", "northfind", "paper")
 
 
 def markers(command):

@@ -13,10 +13,12 @@
 #include "cli_util.hpp"
 #include "commands.hpp"
 #include "fogdrift/base/error.hpp"
+#include "fogdrift/eval/eval_option_table.hpp"
 #include "fogdrift/eval/evaluation.hpp"
 #include "fogdrift/io/campaign.hpp"
 #include "fogdrift/model/model.hpp"
 #include "fogdrift/model/model_set.hpp"
+#include "option_flags.hpp"
 
 namespace fogdrift::app {
 namespace {
@@ -26,8 +28,7 @@ struct EvaluateArgs {
   std::string model;
   std::vector<std::string> inputs;
   bool json = false;
-  bool allan = false;
-  bool no_guard = false;
+  std::shared_ptr<OptionFlags> flags;  // the evaluation's options (eval_option_table.hpp)
   std::optional<double> input_rate_dph;
   std::vector<std::string> references;
 };
@@ -45,15 +46,15 @@ bool is_campaign(const std::string& path) {
   return std::filesystem::is_directory(path) || path.ends_with(".json");
 }
 
-void print_evaluation(const EvaluateArgs& a, const CompensationModel& model,
-                      const eval::Evaluation& e, const std::string& source,
-                      const std::string& heading);
+void print_evaluation(const CompensationModel& model, const eval::Evaluation& e,
+                      const std::string& source, const std::string& heading, bool allan);
 void print_field_figures(const eval::Evaluation& e);
 void print_allan(const std::vector<eval::RecordingEvaluation>& per);
 
 void run(const EvaluateArgs& a) {
   const ModelSet set = load_model_set(a.model, a.load);
-  const eval::EvaluationOptions options{.guarded = !a.no_guard, .allan = a.allan};
+  eval::EvaluationOptions options;
+  a.flags->apply(eval::evaluation_option_table(), options);
   std::optional<Campaign> campaign;
   std::vector<RecordingInput> inputs;
   std::string source;
@@ -92,8 +93,9 @@ void run(const EvaluateArgs& a) {
     if (a.json) {
       axes.push_back(eval::to_json(e, a.model, source));
     } else {
-      print_evaluation(a, model, e, source,
-                       set.models.size() > 1 || target != "gyro_dph" ? target + ": " : "");
+      print_evaluation(model, e, source,
+                       set.models.size() > 1 || target != "gyro_dph" ? target + ": " : "",
+                       options.allan);
     }
   }
   if (a.json && axes.size() == 1) {
@@ -115,9 +117,8 @@ void run(const EvaluateArgs& a) {
   }
 }
 
-void print_evaluation(const EvaluateArgs& a, const CompensationModel& model,
-                      const eval::Evaluation& e, const std::string& source,
-                      const std::string& heading) {
+void print_evaluation(const CompensationModel& model, const eval::Evaluation& e,
+                      const std::string& source, const std::string& heading, bool allan) {
   const eval::CompensationMetrics& all = e.overall;
   const auto& per = e.recordings;
   const Target target = target_of(e.target);
@@ -154,14 +155,14 @@ void print_evaluation(const EvaluateArgs& a, const CompensationModel& model,
         all.std_before_dph, e.method, all.std_after_dph, all.mae_dph);
   if (target.kind == TargetKind::gyro) {
     print_field_figures(e);
-    if (a.allan) print_allan(per);
+    if (allan) print_allan(per);
   } else {
     // A four-position finding and the Allan terms printed are a gyro's; they would not apply.
     std::cout << fmt::format(
         "\n(no north-finding figures: a four-position finding reads gyros, "
         "and {} is {} {})\n",
         e.target, target.kind == TargetKind::accelerometer ? "an" : "a", target.what());
-    if (a.allan)
+    if (allan)
       std::cout << fmt::format("(no Allan terms: --allan gives a gyro's, and {} is not one)\n",
                                e.target);
   }
@@ -268,12 +269,8 @@ void add_evaluate(CLI::App& app) {
                   "its unit (accel_x_g=0, sf_fog_ppm=0; docs/logs.md, \"Other targets\"), as "
                   "fogdrift campaign --reference gives it");
   cmd->add_flag("--json", args->json, "Print the metrics as JSON");
-  cmd->add_flag("--no-guard", args->no_guard,
-                "Apply the model's full correction even where its inputs are novel");
-  cmd->add_flag("--allan", args->allan,
-                "Also the overlapping Allan deviation of every recording's output before and "
-                "after compensation: angle random walk, bias instability, rate random walk (a "
-                "gyro's terms; an accelerometer or scale-factor target gets none)");
+  const auto& table = eval::evaluation_option_table();
+  args->flags = std::make_shared<OptionFlags>(cmd, specs_of(table), defaults_of(table));
   cmd->callback([args] { with_model_settings(args->model, [&] { run(*args); }); });
 }
 

@@ -10,11 +10,13 @@
 #include "cli_util.hpp"
 #include "commands.hpp"
 #include "fogdrift/base/error.hpp"
+#include "fogdrift/eval/eval_option_table.hpp"
 #include "fogdrift/eval/findings.hpp"
 #include "fogdrift/eval/northfind.hpp"
 #include "fogdrift/io/campaign.hpp"
 #include "fogdrift/model/model.hpp"
 #include "fogdrift/model/model_set.hpp"
+#include "option_flags.hpp"
 
 namespace fogdrift::app {
 namespace {
@@ -24,7 +26,7 @@ struct NorthfindArgs {
   std::string campaign;
   std::string model;
   bool json = false;
-  bool no_guard = false;
+  std::shared_ptr<OptionFlags> flags;  // the finding's options (eval_option_table.hpp)
 };
 
 double wrap360(double deg) {
@@ -33,6 +35,13 @@ double wrap360(double deg) {
 }
 
 void run(const NorthfindArgs& a) {
+  eval::FindingOptions options;
+  a.flags->apply(eval::finding_option_table(), options);
+  try {
+    eval::validate(options.segmentation);
+  } catch (const OptionError& e) {
+    throw a.flags->named(e);
+  }
   const Campaign campaign = read_campaign(a.campaign);
   std::optional<CompensationModel> model;
   if (!a.model.empty()) {
@@ -44,8 +53,7 @@ void run(const NorthfindArgs& a) {
                                              "FOG axis",
                                              a.model, model->dataset.target_column));
   }
-  const eval::CampaignFindings f =
-      eval::find_north(campaign, model ? &*model : nullptr, !a.no_guard);
+  const eval::CampaignFindings f = eval::find_north(campaign, model ? &*model : nullptr, options);
   if (a.json) {
     std::cout << eval::to_json(f, a.campaign, a.model) << "\n";
     return;
@@ -91,7 +99,7 @@ void run(const NorthfindArgs& a) {
             f.method, 100 * f.share_removed());
     }
   }
-  if (model && a.no_guard) std::cout << "  (guard off: the model's full correction everywhere)\n";
+  if (model && !f.guarded) std::cout << "  (guard off: the model's full correction everywhere)\n";
   if (!f.stable_error_deg.empty())
     std::cout << fmt::format("\n  stable stage ({} findings): RMSE {:.4f}° (paper: 0.012°)\n",
                              f.stable_error_deg.size(), eval::rms(f.stable_error_deg));
@@ -116,8 +124,8 @@ void add_northfind(CLI::App& app) {
   cmd->add_option("--model", args->model, "Compensation model written by `fogdrift train`");
   add_model_load_flags(cmd, &args->load);
   cmd->add_flag("--json", args->json, "Print the findings and Table 3 as JSON");
-  cmd->add_flag("--no-guard", args->no_guard,
-                "Apply the model's full correction even where its inputs are novel");
+  const auto& table = eval::finding_option_table();
+  args->flags = std::make_shared<OptionFlags>(cmd, specs_of(table), defaults_of(table));
   cmd->callback([args] { with_model_settings(args->model, [&] { run(*args); }); });
 }
 

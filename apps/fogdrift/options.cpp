@@ -1,5 +1,6 @@
 // fogdrift options: the options of the commands whose options are described once (`fogdrift
-// train`, `simulate`'s protocols, `stream`'s fault policy, `denoise`, `paper`) and of their Python
+// train`, `simulate`'s protocols, `stream`'s fault policy, `denoise`, `evaluate`, `northfind`,
+// `paper`) and of their Python
 // functions, as that one description gives them (option_table.hpp, docs/options.md).
 #include <fmt/format.h>
 
@@ -8,6 +9,7 @@
 
 #include "commands.hpp"
 #include "fogdrift/base/error.hpp"
+#include "fogdrift/eval/eval_option_table.hpp"
 #include "fogdrift/model/fault_option_table.hpp"
 #include "fogdrift/report/paper_option_table.hpp"
 #include "fogdrift/signal/denoise_option_table.hpp"
@@ -17,7 +19,8 @@
 namespace fogdrift::app {
 
 constexpr const char* kCommands =
-    "train, simulate-calibration, simulate-northfind, simulate-stable, stream, denoise, paper";
+    "train, simulate-calibration, simulate-northfind, simulate-stable, stream, denoise, evaluate, "
+    "northfind, paper";
 
 namespace {
 
@@ -41,6 +44,8 @@ Described of_command(const std::string& command) {
     return described(sim::northfind_option_table(), sim::stable_defaults());
   if (command == "stream") return described(fault_option_table());
   if (command == "denoise") return described(signal::denoise_option_table());
+  if (command == "evaluate") return described(eval::evaluation_option_table());
+  if (command == "northfind") return described(eval::finding_option_table());
   if (command == "paper") return described(report::paper_option_table());
   throw OptionError("COMMAND", fmt::format("'{}' is not one of {}", command, kCommands));
 }
@@ -56,7 +61,8 @@ void add_options(CLI::App& app) {
       "simulate-calibration, simulate-northfind, simulate-stable ('fogdrift simulate\n"
       "calibration', ..., Python's fogdrift.simulate) or stream (the fault policy of 'fogdrift\n"
       "stream' and 'fogdrift export-c', Python's StreamingCompensator) or denoise ('fogdrift\n"
-      "denoise', Python's fogdrift.denoise) or paper ('fogdrift paper' and, with its own\n"
+      "denoise', Python's fogdrift.denoise) or evaluate or northfind (the commands and their\n"
+      "Python functions, find_north too) or paper ('fogdrift paper' and, with its own\n"
       "defaults, 'fogdrift demo'). The tables in docs/options.md are this output\n"
       "(scripts/options_doc.py writes them there).\n"
       "Example:\n"

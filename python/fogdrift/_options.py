@@ -1,5 +1,6 @@
-"""fogdrift.train's signature and docstring, and fogdrift.simulate's docstring, from the one
-description of each option.
+"""The signatures and docstrings of fogdrift's functions (train, denoise, evaluate, northfind,
+find_north, StreamingCompensator) and fogdrift.simulate's docstring, from the one description of
+each option.
 
 The compiled ``train`` takes its options as keywords and checks each against the description
 fogdrift's library keeps of it (docs/options.md), the same one ``fogdrift train``'s flags come
@@ -24,6 +25,8 @@ def _value(option):
         return float(text)
     if kind == "numbers":
         return [float(v) for v in text.split(",")]
+    if kind == "mapping":
+        return {}
     return text
 
 
@@ -46,12 +49,19 @@ def with_options(function, options, first="campaign", command="fogdrift train"):
 def with_keywords(function, positional, options, command):
     """`function` with a signature (`positional`, then every option, keyword-only) and its
     docstring followed by a line per option: for a function whose compiled form takes
-    ``**kwargs`` and checks each against the descriptions."""
-    @functools.wraps(function)
-    def call(*args, **kwargs):
-        return function(*args, **kwargs)
+    ``**kwargs`` and checks each against the descriptions. A positional argument is a name, or
+    (name, default) for one that may be left out. A Python function (a wrapper of _keywords.py)
+    is given them itself, so that no frame comes between the caller and a warning it raises."""
+    if inspect.isfunction(function):
+        call = function
+    else:
+        @functools.wraps(function)
+        def call(*args, **kwargs):
+            return function(*args, **kwargs)
 
-    parameters = [inspect.Parameter(p, inspect.Parameter.POSITIONAL_OR_KEYWORD)
+    parameters = [inspect.Parameter(p[0], inspect.Parameter.POSITIONAL_OR_KEYWORD, default=p[1])
+                  if isinstance(p, tuple) else
+                  inspect.Parameter(p, inspect.Parameter.POSITIONAL_OR_KEYWORD)
                   for p in positional]
     parameters += [inspect.Parameter(o["keyword"], inspect.Parameter.KEYWORD_ONLY,
                                      default=_value(o)) for o in options]

@@ -18,11 +18,13 @@
 #include "convert.hpp"
 #include "fogdrift/base/error.hpp"
 #include "fogdrift/eval/allan.hpp"
+#include "fogdrift/eval/eval_option_table.hpp"
 #include "fogdrift/eval/evaluation.hpp"
 #include "fogdrift/eval/findings.hpp"
 #include "fogdrift/eval/northfind.hpp"
 #include "fogdrift/io/campaign.hpp"
 #include "fogdrift/io/target.hpp"
+#include "option_keywords.hpp"
 
 namespace py = pybind11;
 
@@ -42,10 +44,12 @@ bool is_campaign(const py::object& o) {
   return std::filesystem::is_directory(p) || p.extension() == ".json";
 }
 
-py::object evaluate(const CompensationModel& model, const py::object& data, bool guarded,
-                    bool allan, std::optional<double> input_rate_dph,
-                    const std::map<std::string, double>& references) {
-  const eval::EvaluationOptions options{.guarded = guarded, .allan = allan};
+py::object evaluate(const CompensationModel& model, const py::object& data,
+                    std::optional<double> input_rate_dph,
+                    const std::map<std::string, double>& references, const py::kwargs& kwargs) {
+  eval::EvaluationOptions options;
+  apply_keywords(eval::evaluation_option_table(), options, kwargs, "evaluate",
+                 {"model", "data", "input_rate_dph", "references"});
   for (const auto& [column, value] : references) check_reference(column, value, "references");
   eval::Evaluation e;
   std::string source;
@@ -116,7 +120,9 @@ py::object evaluate(const CompensationModel& model, const py::object& data, bool
 }
 
 py::object northfind(const py::object& campaign_path, const CompensationModel* model,
-                     bool guarded) {
+                     const py::kwargs& kwargs) {
+  eval::FindingOptions options;
+  apply_keywords(eval::finding_option_table(), options, kwargs, "northfind", {"campaign", "model"});
   eval::CampaignFindings f;
   std::string label;
   if (is_held_campaign(campaign_path)) {
@@ -124,7 +130,7 @@ py::object northfind(const py::object& campaign_path, const CompensationModel* m
     const HeldCampaign held = held_campaign(campaign_path);
     label = "campaign";
     py::gil_scoped_release release;
-    f = eval::find_north(held.campaign, held.recordings, model, guarded);
+    f = eval::find_north(held.campaign, held.recordings, model, options);
   } else {
     if (!is_campaign(campaign_path))
       throw OptionError("campaign",
@@ -133,7 +139,7 @@ py::object northfind(const py::object& campaign_path, const CompensationModel* m
     const Campaign campaign = read_campaign(campaign_path.cast<std::filesystem::path>());
     label = campaign.dir.string();
     py::gil_scoped_release release;
-    f = eval::find_north(campaign, model, guarded);
+    f = eval::find_north(campaign, model, options);
   }
   py::dict out = from_json(eval::to_json(f, label, "model")).cast<py::dict>();
   if (out.contains("model")) out.attr("pop")("model");
@@ -143,8 +149,12 @@ py::object northfind(const py::object& campaign_path, const CompensationModel* m
 // Every four-position finding of one recording: the field's case, a unit on its turntable with
 // no manifest and no truth.
 py::list find_north(const py::object& recording, double latitude_deg,
-                    const CompensationModel* model, bool guarded, double tolerance_deg,
-                    double settle_s, double min_dwell_s) {
+                    const CompensationModel* model, const py::kwargs& kwargs) {
+  eval::FindingOptions o;
+  apply_keywords(eval::finding_option_table(), o, kwargs, "find_north",
+                 {"recording", "latitude_deg", "model"});
+  eval::validate(o.segmentation);
+  const bool guarded = o.guarded;
   if (!(latitude_deg >= -90 && latitude_deg <= 90))
     throw OptionError("latitude_deg", "must be within [-90, 90]");
   const Recording r = to_recording(recording, "(recording)");
@@ -152,7 +162,7 @@ py::list find_north(const py::object& recording, double latitude_deg,
     throw InputError(r.source.empty() ? "(recording)" : r.source, 0, 0,
                      "four-position north-finding needs the columns table_deg, accel_x_g and "
                      "accel_y_g");
-  const eval::SegmentationOptions options{tolerance_deg, settle_s, min_dwell_s};
+  const eval::SegmentationOptions& options = o.segmentation;
   std::vector<eval::FourPositionReadings> findings;
   std::vector<eval::FourPositionSolution> solutions;
   {
@@ -225,8 +235,25 @@ py::dict noise_terms(const py::object& rate, double dt_s) {
 }  // namespace
 
 void bind_eval(py::module_& m) {
+  m.def(
+      "evaluate_options",
+      [] {
+        const auto& t = eval::evaluation_option_table();
+        return describe_options(specs_of(t), defaults_of(t));
+      },
+      "The options of fogdrift.evaluate, one dict each (keyword, type, default, unit, doc, flag): "
+      "the descriptions `fogdrift evaluate`'s flags come from (docs/options.md).");
+  m.def(
+      "northfind_options",
+      [] {
+        const auto& t = eval::finding_option_table();
+        return describe_options(specs_of(t), defaults_of(t));
+      },
+      "The options of fogdrift.northfind and fogdrift.find_north, one dict each (keyword, type, "
+      "default, unit, doc, flag): the descriptions `fogdrift northfind`'s flags come from "
+      "(docs/options.md).");
   m.def("evaluate", &evaluate, py::arg("model"), py::arg("data"), py::kw_only(),
-        py::arg("guarded") = true, py::arg("allan") = false, py::arg("input_rate_dph") = py::none(),
+        py::arg("input_rate_dph") = py::none(),
         py::arg("references") = std::map<std::string, double>{},
         "The paper's Table 2 view of a Model on test data, as `fogdrift evaluate --json` prints "
         "it: data is a campaign folder (its recordings with role 'test'), a recording (a path or "
@@ -240,19 +267,14 @@ void bind_eval(py::module_& m) {
         "after, start-up residual, opposite-position difference, all °/h, or the target's unit "
         "as the keys say; novelty shares; with "
         "allan=True the Allan noise terms raw and compensated), 'guard', 'warnings'.");
-  m.def("northfind", &northfind, py::arg("campaign"), py::arg("model") = nullptr, py::kw_only(),
-        py::arg("guarded") = true,
+  m.def("northfind", &northfind, py::arg("campaign"), py::arg("model") = nullptr,
         "Four-position north-finding on a campaign's northfind and stable recordings, raw and "
         "with the model's drift subtracted (paper Table 3), as `fogdrift northfind --json` "
         "prints it: a dict with each recording's per-finding azimuth errors (°) and 'table3' "
         "(RMSE per initial temperature; on simulated recordings the floor with the true drift "
         "subtracted and the share of the removable error removed).");
-  const eval::SegmentationOptions segmentation;
   m.def("find_north", &find_north, py::arg("recording"), py::arg("latitude_deg"),
-        py::arg("model") = nullptr, py::kw_only(), py::arg("guarded") = true,
-        py::arg("tolerance_deg") = segmentation.tolerance_deg,
-        py::arg("settle_s") = segmentation.settle_s,
-        py::arg("min_dwell_s") = segmentation.min_dwell_s,
+        py::arg("model") = nullptr,
         "Every four-position finding of one recording (a path or a mapping of columns with "
         "table_deg, accel_x_g and accel_y_g), raw or with the model's drift subtracted: a list "
         "of dicts with azimuth_deg (of the FOG axis at table 0°, [0, 360)), pitch_deg, "

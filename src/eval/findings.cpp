@@ -47,7 +47,10 @@ namespace {
 
 // find_north on the recordings given (in memory), or read from the campaign's folder.
 CampaignFindings find_north_in(const Campaign& campaign, const std::vector<Recording>* held,
-                               const CompensationModel* model, bool guarded) {
+                               const CompensationModel* model, const FindingOptions& options) {
+  validate(options.segmentation);
+  const bool guarded = options.guarded;
+  const SegmentationOptions& segmentation = options.segmentation;
   const std::string manifest = (campaign.dir / "campaign.json").string();
   CampaignFindings out;
   out.guarded = guarded;
@@ -62,13 +65,13 @@ CampaignFindings find_north_in(const Campaign& campaign, const std::vector<Recor
     const Recording rec = held ? (*held)[i] : read_recording(campaign.path_of(e));
     const double truth = *e.true_azimuth_deg;
     RecordingFindings r{e.file, e.scenario, e.initial_temp_degc, truth, {}, {}, {}};
-    r.raw_error_deg = northfind_errors_deg(rec, latitude, truth);
+    r.raw_error_deg = northfind_errors_deg(rec, latitude, truth, segmentation);
     if (rec.has_column("drift_true_dph"))
-      r.floor_error_deg =
-          northfind_errors_deg(rec, rec.numeric_column("drift_true_dph"), latitude, truth);
+      r.floor_error_deg = northfind_errors_deg(rec, rec.numeric_column("drift_true_dph"), latitude,
+                                               truth, segmentation);
     if (model != nullptr)
-      r.compensated_error_deg =
-          northfind_errors_deg(rec, model->predict_dph(rec, guarded), latitude, truth);
+      r.compensated_error_deg = northfind_errors_deg(rec, model->predict_dph(rec, guarded),
+                                                     latitude, truth, segmentation);
     out.recordings.push_back(std::move(r));
   }
   if (out.recordings.empty())
@@ -103,16 +106,16 @@ CampaignFindings find_north_in(const Campaign& campaign, const std::vector<Recor
 }  // namespace
 
 CampaignFindings find_north(const Campaign& campaign, const CompensationModel* model,
-                            bool guarded) {
-  return find_north_in(campaign, nullptr, model, guarded);
+                            const FindingOptions& options) {
+  return find_north_in(campaign, nullptr, model, options);
 }
 
 CampaignFindings find_north(const Campaign& campaign, const std::vector<Recording>& recordings,
-                            const CompensationModel* model, bool guarded) {
+                            const CompensationModel* model, const FindingOptions& options) {
   if (recordings.size() != campaign.recordings.size())
     throw OptionError("recordings", fmt::format("{} recordings for a manifest of {}",
                                                 recordings.size(), campaign.recordings.size()));
-  return find_north_in(campaign, &recordings, model, guarded);
+  return find_north_in(campaign, &recordings, model, options);
 }
 
 std::string to_json(const CampaignFindings& f, const std::string& campaign_label,

@@ -47,9 +47,22 @@ FourPositionSolution solve_four_position(const FourPositionReadings& r, double l
   return s;
 }
 
+void validate(const SegmentationOptions& o) {
+  if (!(o.tolerance_deg > 0 && o.tolerance_deg < 45))
+    throw OptionError("tolerance_deg",
+                      fmt::format("{} ° is outside (0, 45): a sample must be near one position "
+                                  "at most",
+                                  o.tolerance_deg));
+  if (!(o.settle_s >= 0) || !std::isfinite(o.settle_s))
+    throw OptionError("settle_s", fmt::format("{} s must be finite and ≥ 0", o.settle_s));
+  if (!(o.min_dwell_s > 0) || !std::isfinite(o.min_dwell_s))
+    throw OptionError("min_dwell_s", fmt::format("{} s must be finite and > 0", o.min_dwell_s));
+}
+
 std::vector<FourPositionReadings> segment_findings(const Recording& rec,
                                                    const SegmentationOptions& o,
                                                    const std::vector<double>* gyro_dph) {
+  validate(o);
   const std::string file = rec.source.empty() ? "<recording>" : rec.source;
   for (const char* name : {"table_deg", "accel_x_g", "accel_y_g"}) {
     if (!rec.has_column(name)) {

@@ -619,6 +619,14 @@ check "northfind share removed" run 0 "$fd" northfind "$work/nf2" --model "$work
 check "northfind names the share" out_has "of the removable error"
 check "northfind on a calibration campaign" run 1 "$fd" northfind "$work/small"
 check "northfind calibration message" err_has "no northfind or stable recordings"
+check "northfind with a wider tolerance" run 0 "$fd" northfind --json "$work/nf2" --tolerance-deg 0.5 --settle-s 4
+check "the findings" out_has '"raw_rmse_deg"'
+check "northfind impossible tolerance" run 1 "$fd" northfind "$work/nf2" --tolerance-deg 50
+check "tolerance message" err_has "option --tolerance-deg: 50 ° is outside (0, 45)"
+check "northfind impossible dwell" run 1 "$fd" northfind "$work/nf2" --min-dwell-s 0
+check "dwell message" err_has "option --min-dwell-s: 0 s must be finite and > 0"
+check "northfind's options described once" run 0 "$fd" options northfind --json
+check "northfind's table has the guard" out_has '"flag": "--no-guard"'
 
 echo "cli: $passed passed, $failed failed"
 [ "$failed" -eq 0 ]

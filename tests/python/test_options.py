@@ -22,17 +22,22 @@ def described(cli):
     return json.loads(cli("options", "--json"))
 
 
-def test_the_command_line_has_every_option_with_its_default(cli, described):
-    help_text = re.sub(r"\s+", " ", cli("train", "--help"))
+def assert_help_shows(help_text, described, where=""):
+    """--help shows each option's flag with its type name and default (CLI11 writes
+    "--c-max NUMBER=1000"; an on/off flag stands alone) and its help text, other options named
+    by flag."""
+    help_text = re.sub(r"\s+", " ", help_text)
     for o in described:
         if o["type"] == "on/off":
-            assert f" {o['flag']} " in help_text, o["flag"]
+            assert f" {o['flag']} " in help_text, (where, o["flag"])
         else:
-            # CLI11 writes "--c-max NUMBER=1000": the flag, its type name and the default.
             assert re.search(re.escape(o["flag"]) + r" \S+=" + re.escape(o["default"]) + " ",
-                             help_text), o["flag"]
-        # The help text, other options named by flag.
-        assert re.sub(r"\s+", " ", o["help"]) in help_text, o["flag"]
+                             help_text), (where, o["flag"])
+        assert re.sub(r"\s+", " ", o["help"]) in help_text, (where, o["flag"])
+
+
+def test_the_command_line_has_every_option_with_its_default(cli, described):
+    assert_help_shows(cli("train", "--help"), described)
 
 
 def test_python_has_every_option_with_its_default(described):
@@ -105,11 +110,8 @@ def test_simulate_has_one_description_in_every_face(cli, scenario):
     assert [(o["keyword"], o["flag"], o["default"]) for o in python] == \
         [(o["keyword"], o["flag"], o["default"]) for o in described]
     # --help shows each flag with its default and its help text.
-    help_text = re.sub(r"\s+", " ", cli("simulate", scenario, "--help"))
+    assert_help_shows(cli("simulate", scenario, "--help"), described)
     for o in described:
-        assert re.search(re.escape(o["flag"]) + r" \S+=" + re.escape(o["default"]) + " ",
-                         help_text), o["flag"]
-        assert re.sub(r"\s+", " ", o["help"]) in help_text, o["flag"]
         assert o["doc"][:40] in fogdrift.simulate.__doc__, o["keyword"]
     # docs/options.md's table.
     rows = rows_of(f"simulate-{scenario}")
@@ -151,11 +153,7 @@ def test_the_fault_policy_has_one_description_in_every_face(cli):
     assert list(signature) == ["self", "model", "dt_s", "guarded"] + \
         [o["keyword"] for o in described]
     for command in ("stream", "export-c"):
-        help_text = re.sub(r"\s+", " ", cli(command, "--help"))
-        for o in described:
-            assert re.search(re.escape(o["flag"]) + r" \S+=" + re.escape(o["default"]) + " ",
-                             help_text), (command, o["flag"])
-            assert re.sub(r"\s+", " ", o["help"]) in help_text, (command, o["flag"])
+        assert_help_shows(cli(command, "--help"), described, command)
     rows = rows_of("stream")
     assert [re.match(r"\| `(\w+)`", r).group(1) for r in rows] == [o["keyword"] for o in described]
 
@@ -166,11 +164,8 @@ def test_denoise_has_one_description_in_every_face(cli, tmp_path):
         [(o["keyword"], o["flag"], o["default"]) for o in described]
     signature = inspect.signature(fogdrift.denoise).parameters
     assert list(signature) == ["data", "summary"] + [o["keyword"] for o in described]
-    help_text = re.sub(r"\s+", " ", cli("denoise", "--help"))
+    assert_help_shows(cli("denoise", "--help"), described)
     for o in described:
-        assert re.search(re.escape(o["flag"]) + r" \S+=" + re.escape(o["default"]) + " ",
-                         help_text), o["flag"]
-        assert re.sub(r"\s+", " ", o["help"]) in help_text, o["flag"]
         assert o["doc"][:40] in fogdrift.denoise.__doc__, o["keyword"]
     rows = rows_of("denoise")
     assert [re.match(r"\| `(\w+)`", r).group(1) for r in rows] == [o["keyword"] for o in described]
@@ -200,3 +195,45 @@ def test_denoise_has_one_description_in_every_face(cli, tmp_path):
     with pytest.raises(TypeError, match=r"denoise\(\) got an unexpected keyword argument 'levels'; "
                                         r"its keywords are data, summary, wavelet, level"):
         fogdrift.denoise(x, levels=3)
+
+
+@pytest.mark.parametrize("command, functions", [
+    ("evaluate", {"evaluate": ["model", "data", "input_rate_dph", "references"]}),
+    ("northfind", {"northfind": ["campaign", "model"],
+                   "find_north": ["recording", "latitude_deg", "model"]})])
+def test_the_evaluations_have_one_description_in_every_face(cli, command, functions):
+    described = json.loads(cli("options", command, "--json"))
+    python = getattr(fogdrift, f"{command}_options")()
+    assert [(o["keyword"], o["flag"], o["default"]) for o in python] == \
+        [(o["keyword"], o["flag"], o["default"]) for o in described]
+    for name, own in functions.items():
+        function = getattr(fogdrift, name)
+        assert list(inspect.signature(function).parameters) == own + [o["keyword"] for o in
+                                                                      described]
+        for o in described:
+            assert o["doc"][:40] in function.__doc__, (name, o["keyword"])
+    assert_help_shows(cli(command, "--help"), described)
+    rows = rows_of(command)
+    assert [re.match(r"\| `(\w+)`", r).group(1) for r in rows] == [o["keyword"] for o in described]
+
+
+def test_northfind_names_an_error_in_each_front_ends_words(tmp_path):
+    cli = os.environ.get("FOGDRIFT_CLI", "build/apps/fogdrift/fogdrift")
+    held = fogdrift.simulate("northfind", temps_degc=[20], findings=1, out=tmp_path / "nf")
+    with pytest.raises(ValueError, match=r"option tolerance_deg: 50 ° is outside \(0, 45\)"):
+        fogdrift.northfind(held, tolerance_deg=50)
+    with pytest.raises(ValueError, match="option settle_s: -1 s must be finite"):
+        fogdrift.find_north(tmp_path / "nf" / held["recordings"][0]["file"], 30.0, settle_s=-1)
+    done = subprocess.run([cli, "northfind", str(tmp_path / "nf"), "--tolerance-deg", "50"],
+                          capture_output=True, text=True)
+    assert done.returncode == 1 and "option --tolerance-deg: 50 ° is outside (0, 45)" in \
+        done.stderr, done.stderr
+    # The same options, the same findings from either front end.
+    got = fogdrift.northfind(tmp_path / "nf", tolerance_deg=0.5, settle_s=4.0)
+    expected = json.loads(subprocess.run([cli, "northfind", str(tmp_path / "nf"), "--json",
+                                          "--tolerance-deg", "0.5", "--settle-s", "4"],
+                                         capture_output=True, text=True, check=True).stdout)
+    assert got["table3"] == expected["table3"]
+    with pytest.raises(TypeError, match=r"northfind\(\) got an unexpected keyword argument "
+                                        r"'tolerance'; its keywords are campaign, model, guarded"):
+        fogdrift.northfind(held, tolerance=0.5)

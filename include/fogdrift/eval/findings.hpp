@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "fogdrift/eval/northfind.hpp"
 #include "fogdrift/io/campaign.hpp"
 #include "fogdrift/model/model.hpp"
 
@@ -49,16 +50,23 @@ struct CampaignFindings {
   double share_removed() const;
 };
 
+/// How north is found (`fogdrift northfind`'s options, northfind_option_table.hpp).
+struct FindingOptions {
+  bool guarded = true;               ///< the model's drift reduced where its inputs are novel
+  SegmentationOptions segmentation;  ///< how the four positions are found in table_deg
+};
+
 /// Finds north on the campaign's northfind and stable recordings, subtracting `model`'s drift
 /// (guarded or not) when it is given. Throws InputError naming campaign.json when such a
-/// recording lacks its true azimuth, or when there is none.
+/// recording lacks its true azimuth, or when there is none; OptionError for impossible options.
 CampaignFindings find_north(const Campaign& campaign, const CompensationModel* model = nullptr,
-                            bool guarded = true);
+                            const FindingOptions& options = {});
 
 /// The same on a campaign held in memory (campaign_from_json): `recordings[i]` is the data of
 /// `campaign.recordings[i]`, as Python's fogdrift.simulate returns them.
 CampaignFindings find_north(const Campaign& campaign, const std::vector<Recording>& recordings,
-                            const CompensationModel* model = nullptr, bool guarded = true);
+                            const CompensationModel* model = nullptr,
+                            const FindingOptions& options = {});
 
 /// The JSON `fogdrift northfind --json` prints: "campaign" (`campaign_label`), "model"
 /// (`model_label`, with a model) and "method", "recordings", "table3", "guard", and

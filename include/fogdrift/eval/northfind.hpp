@@ -45,6 +45,10 @@ struct SegmentationOptions {
   double min_dwell_s = 10.0;    ///< positions held for less time than this are not used
 };
 
+/// Throws OptionError naming the field ("tolerance_deg", …) unless 0 < tolerance_deg < 45 (a
+/// sample is then near one position at most), settle_s ≥ 0 and min_dwell_s > 0, all finite.
+void validate(const SegmentationOptions& options);
+
 /// Splits a recording into findings: runs of samples held at 0°, 90°, 180°, 270° in that order
 /// (rotation segments and the settle time excluded). `gyro_dph`, when given, replaces the
 /// recording's gyro column (e.g. a compensated output of the same length). Throws InputError if
