@@ -37,11 +37,6 @@ double wrap360(double deg) {
 void run(const NorthfindArgs& a) {
   eval::FindingOptions options;
   a.flags->apply(eval::finding_option_table(), options);
-  try {
-    eval::validate(options.segmentation);
-  } catch (const OptionError& e) {
-    throw a.flags->named(e);
-  }
   const Campaign campaign = read_campaign(a.campaign);
   std::optional<CompensationModel> model;
   if (!a.model.empty()) {
@@ -53,7 +48,12 @@ void run(const NorthfindArgs& a) {
                                              "FOG axis",
                                              a.model, model->dataset.target_column));
   }
-  const eval::CampaignFindings f = eval::find_north(campaign, model ? &*model : nullptr, options);
+  eval::CampaignFindings f;
+  try {
+    f = eval::find_north(campaign, model ? &*model : nullptr, options);
+  } catch (const OptionError& e) {
+    throw a.flags->named(e);
+  }
   if (a.json) {
     std::cout << eval::to_json(f, a.campaign, a.model) << "\n";
     return;

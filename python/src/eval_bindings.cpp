@@ -153,7 +153,6 @@ py::list find_north(const py::object& recording, double latitude_deg,
   eval::FindingOptions o;
   apply_keywords(eval::finding_option_table(), o, kwargs, "find_north",
                  {"recording", "latitude_deg", "model"});
-  eval::validate(o.segmentation);
   const bool guarded = o.guarded;
   if (!(latitude_deg >= -90 && latitude_deg <= 90))
     throw OptionError("latitude_deg", "must be within [-90, 90]");

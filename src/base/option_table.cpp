@@ -119,21 +119,28 @@ std::optional<std::uint64_t> parse_whole_or_auto_option(const OptionSpec& spec,
   return static_cast<std::uint64_t>(*v);
 }
 
-std::vector<double> parse_numbers_option(const OptionSpec& spec, const std::string& text) {
-  std::vector<double> values;
+std::vector<std::string> option_items(std::string_view text) {
+  std::vector<std::string> items;
   std::size_t from = 0;
   for (;;) {
     const std::size_t comma = text.find(',', from);
-    const std::string item = text.substr(from, comma == std::string::npos ? comma : comma - from);
+    items.emplace_back(text.substr(from, comma == std::string_view::npos ? comma : comma - from));
+    if (comma == std::string_view::npos) return items;
+    from = comma + 1;
+  }
+}
+
+std::vector<double> parse_numbers_option(const OptionSpec& spec, const std::string& text) {
+  std::vector<double> values;
+  for (const std::string& item : option_items(text)) {
     const auto v = csv::parse_number(item);
     if (!v)
       throw OptionError(spec.keyword, fmt::format("'{}' in '{}' is not a finite number (give a "
                                                   "comma-separated list such as -40,-30,25)",
                                                   item, text));
     values.push_back(*v);
-    if (comma == std::string::npos) return values;
-    from = comma + 1;
   }
+  return values;
 }
 
 bool parse_on_off_option(const OptionSpec& spec, const std::string& text) {

@@ -25,32 +25,25 @@ OptionTable<PaperOptions> make_table() {
        "Independent repetitions of the whole experiment",
        {}},
       [](auto& o) -> auto& { return o.seeds; }));
-  t.push_back(
-      {{"methods",
-        "--methods",
-        OptionType::names,
-        "",
-        method_names(),
-        "Methods of Tables 2-3 and the start-up conditions table, in order (train --help "
-        "says what each is): the paper's, and any other after them; bp and ssa-svr are "
-        "always needed",
-        {}},
-       [](const O& o) {
-         std::string out;
-         for (const Method& m : o.methods) out += (out.empty() ? "" : ",") + to_string(m);
-         return out;
-       },
-       [](O& o, const std::string& text) {
-         o.methods.clear();
-         std::size_t from = 0;
-         for (;;) {
-           const std::size_t comma = text.find(',', from);
-           o.methods.push_back(parse_method(
-               text.substr(from, comma == std::string::npos ? comma : comma - from), "methods"));
-           if (comma == std::string::npos) break;
-           from = comma + 1;
-         }
-       }});
+  t.push_back({{"methods",
+                "--methods",
+                OptionType::names,
+                "",
+                method_names(),
+                "Methods of Tables 2-3 and the start-up conditions table, in order (train --help "
+                "says what each is): the paper's, and any other after them; bp and ssa-svr are "
+                "always needed",
+                {}},
+               [](const O& o) {
+                 std::string out;
+                 for (const Method& m : o.methods) out += (out.empty() ? "" : ",") + to_string(m);
+                 return out;
+               },
+               [](O& o, const std::string& text) {
+                 o.methods.clear();
+                 for (const std::string& name : option_items(text))
+                   o.methods.push_back(parse_method(name, "methods"));
+               }});
   t.push_back(whole_option<O>(
       {"first_seed", "--first-seed", {}, "", "", "The first seed; the next ones are one apart", {}},
       [](auto& o) -> auto& { return o.first_seed; }));

@@ -10,6 +10,7 @@
 #include "fogdrift/base/csv.hpp"
 #include "fogdrift/base/enum_names.hpp"
 #include "fogdrift/base/error.hpp"
+#include "fogdrift/base/option_table.hpp"
 #include "fogdrift/base/random.hpp"
 #include "fogdrift/base/version.hpp"
 #include "fogdrift/sim/nfs.hpp"
@@ -178,12 +179,8 @@ Approach approach_from_string(std::string_view name, const std::string& option) 
 
 std::vector<Approach> approaches_from_string(std::string_view list, const std::string& option) {
   std::vector<Approach> out;
-  std::size_t from = 0;
-  while (from <= list.size()) {
-    const std::size_t comma = std::min(list.find(',', from), list.size());
-    out.push_back(approach_from_string(list.substr(from, comma - from), option));
-    from = comma + 1;
-  }
+  for (const std::string& name : option_items(list))
+    out.push_back(approach_from_string(name, option));
   return out;
 }
 

@@ -136,6 +136,8 @@ double parse_number_option(const OptionSpec& spec, const std::string& text);
 std::optional<double> parse_seconds_or_auto_option(const OptionSpec& spec, const std::string& text);
 std::optional<std::uint64_t> parse_whole_or_auto_option(const OptionSpec& spec,
                                                         const std::string& text);
+/// The items of a comma-separated list, empty ones kept: "a,,b" is a, "", b; "" is one empty item.
+std::vector<std::string> option_items(std::string_view text);
 /// "-40,-30,25": one or more finite numbers, comma-separated.
 std::vector<double> parse_numbers_option(const OptionSpec& spec, const std::string& text);
 /// "true" or "false" (also 1/0, yes/no, on/off).
