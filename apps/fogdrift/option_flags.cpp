@@ -51,17 +51,22 @@ OptionFlags::OptionFlags(CLI::App* cmd, std::vector<OptionSpec> specs,
     const std::string help = option_help(s, specs_, true);
     texts_.push_back(std::make_unique<std::string>(defaults_[i]));
     std::string flag = s.flag;
+    CLI::Option* as_default = nullptr;
     if (s.type == OptionType::on_off) {
       const bool on = defaults_[i] == "true";
       flag = switch_flag(s, on);
       options_.push_back(cmd->add_flag(
           flag,
           on ? fmt::format("Turns {} off, which is on by default. {}", s.keyword, help) : help));
+      // The other word, which asks for the default, is accepted and not listed: a script written
+      // when the default was the other way still means what it meant.
+      as_default = cmd->add_flag(switch_flag(s, !on))->group("");
     } else {
       options_.push_back(cmd->add_option(s.flag, *texts_.back(), help)
                              ->type_name(type_name(s))
                              ->default_str(defaults_[i]));
     }
+    as_default_.push_back(as_default);
     if (!group.empty()) options_.back()->group(group);
     flag_table_[s.keyword] = flag;
     for (const std::string& field : s.fields) flag_table_[field] = flag;
@@ -71,6 +76,14 @@ OptionFlags::OptionFlags(CLI::App* cmd, std::vector<OptionSpec> specs,
 std::vector<std::pair<std::string, std::string>> OptionFlags::given() const {
   std::vector<std::pair<std::string, std::string>> out;
   for (std::size_t i = 0; i < specs_.size(); ++i) {
+    if (as_default_[i] != nullptr && as_default_[i]->count() > 0) {
+      const bool on = defaults_[i] == "true";
+      if (options_[i]->count() > 0)
+        throw OptionError(specs_[i].keyword,
+                          fmt::format("give {} or {}, not both", switch_flag(specs_[i], on),
+                                      switch_flag(specs_[i], !on)));
+      out.emplace_back(specs_[i].keyword, defaults_[i]);
+    }
     if (options_[i]->count() == 0) continue;
     if (specs_[i].type == OptionType::on_off)
       out.emplace_back(specs_[i].keyword, defaults_[i] == "true" ? "false" : "true");

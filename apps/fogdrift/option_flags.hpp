@@ -23,7 +23,8 @@ class OptionFlags {
   /// Adds a flag to `cmd` for each option: an on/off option off by default is a flag --NAME that
   /// turns it on; one on by default a flag --no-NAME that turns it off, whichever way
   /// OptionSpec::flag spells it: the default decides (demo's studies are off, paper's on). With a
-  /// `group`, --help lists the flags under that heading.
+  /// `group`, --help lists the flags under that heading. The other flag, which asks for the
+  /// default, is accepted too and not listed.
   OptionFlags(CLI::App* cmd, std::vector<OptionSpec> specs, std::vector<std::string> defaults,
               const std::string& group = "");
 
@@ -55,6 +56,7 @@ class OptionFlags {
   std::vector<std::string> defaults_;
   std::vector<std::unique_ptr<std::string>> texts_;  // stable addresses for CLI11
   std::vector<CLI::Option*> options_;
+  std::vector<CLI::Option*> as_default_;  // an on/off option's flag for its default, else null
   FlagTable flag_table_;
 };
 
