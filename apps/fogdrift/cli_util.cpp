@@ -135,7 +135,7 @@ void with_model_settings(const std::string& model_path, const std::function<void
     static const std::map<std::string, std::string> train_flag = {{"window_s", "--rate-window-s"},
                                                                   {"poly_order", "--rate-window-s"},
                                                                   {"block_s", "--block-s"},
-                                                                  {"denoise", "--no-denoise"},
+                                                                  {"denoise", "--denoise"},
                                                                   {"dt_s", "--rate-hz"}};
     const auto it = train_flag.find(e.option());
     if (it == train_flag.end() || e.option() == "dt_s") throw;

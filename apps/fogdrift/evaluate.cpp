@@ -125,12 +125,12 @@ void print_evaluation(const CompensationModel& model, const eval::Evaluation& e,
   const std::string_view unit = target.symbol();
   std::cout << fmt::format("{}{} on {}: {} rows of {} recording{}\n\n", heading, e.method, source,
                            e.rows, per.size(), per.size() == 1 ? "" : "s");
-  // Before is what the model was trained to remove: the denoised drift, or the gyro less its
-  // input as logged when the model was trained with --no-denoise.
+  // Before is what the model was trained to remove: the gyro less its input as logged (train's
+  // default), or the denoised drift for a model trained with --denoise (the paper's target).
   std::cout << (model.dataset.denoise_target
                     ? fmt::format("Before (the denoised drift) → after compensation, {}:\n", unit)
-                    : fmt::format("Before (the drift as logged, not denoised: the model was "
-                                  "trained with --no-denoise) → after compensation, {}:\n",
+                    : fmt::format("Before (the drift as logged, not denoised) → after "
+                                  "compensation, {}:\n",
                                   unit))
             << "| recording | T0 (°C) | MAE | STD |\n"
                "|---|---|---|---|\n";

@@ -89,7 +89,8 @@ TrainResult train(const Dataset& data, const DatasetOptions& dataset, const Trai
   m.guard = NoveltyGuard::fit(z, data.cols(), labels, conditions, options.guard);
   m.guard.set_warmup_inputs(m.dataset.features.rate_inputs());
   if (options.held_out && !t.held_folds.empty())
-    s.held_out = held_out_report(data, t.held_folds, t.held_predict, t.held_description);
+    s.held_out = held_out_report(data, t.held_folds, t.held_predict, t.held_description,
+                                 startup_warning_share(m.dataset.denoise_target));
   p.fitness = s.fitness;
   p.fitness_value = s.fitness_value;
   p.hyperparameters = s.hyperparameters;

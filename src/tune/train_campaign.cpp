@@ -10,6 +10,12 @@
 
 namespace fogdrift {
 
+DatasetOptions recommended_dataset() {
+  DatasetOptions o;
+  o.denoise_target = false;
+  return o;
+}
+
 namespace {
 
 // Everything but the provenance's file digests, from the training recordings; `manifest` names

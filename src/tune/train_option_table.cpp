@@ -164,12 +164,13 @@ OptionTable<O> make_table() {
                }});
   t.push_back(on_off_option<O>(
       {"denoise",
-       "--no-denoise",
+       "--denoise",
        {},
        "",
        "",
-       "Train on the wavelet-denoised gyro; turn it off for recordings "
-       "too short to denoise or already smooth (a log of burst means)",
+       "Train on the wavelet-denoised gyro (the paper's target) instead of its block means: "
+       "the denoiser smooths the first minutes of a start-up, which a north-finding needs "
+       "(docs/field.md)",
        {}},
       [](auto& o) -> auto& { return o.dataset.denoise_target; }));
   t.push_back(whole_option<O>(

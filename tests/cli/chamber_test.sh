@@ -157,7 +157,9 @@ for model_column, law in (("drift_dph", "drift_x_dph"), ("drift_y_dph", "drift_y
 raise SystemExit(0 if ok else 1)
 EOF2
 check "evaluate every axis" run 0 "$fd" evaluate m3.json camp --json
-check "an evaluation per axis" python3 -c "import json; j=json.load(open('$work/out')); assert [a['target'] for a in j['axes']] == ['gyro_dph','gyro_y_dph','gyro_z_dph']; assert all(a['overall']['mae_dph'] < 0.1 * a['overall']['mae_before_dph'] for a in j['axes'])"
+# MAE against the target the model was fitted on, the gyro as logged, whose noise stays in it:
+# 0.06 to 0.10 of the MAE before on this campaign.
+check "an evaluation per axis" python3 -c "import json; j=json.load(open('$work/out')); assert [a['target'] for a in j['axes']] == ['gyro_dph','gyro_y_dph','gyro_z_dph']; assert all(a['overall']['mae_dph'] < 0.15 * a['overall']['mae_before_dph'] for a in j['axes'])"
 check "stream every axis" run 0 "$fd" stream m3.json camp/joined_05.csv --rate-hz 0.016666666666666666
 check "every axis's columns" bash -c "head -1 '$work/out' | grep -q ',drift_dph,gyro_comp_dph,novelty,guard_weight,fault_flags,drift_y_dph,gyro_y_comp_dph,novelty_y,guard_weight_y,fault_flags_y,drift_z_dph,gyro_z_comp_dph,novelty_z,guard_weight_z,fault_flags_z$'"
 cp "$work/out" stream_all.csv
@@ -234,7 +236,7 @@ raise SystemExit(0 if ok else 1)
 EOF2
 check "evaluate every target" run 0 "$fd" evaluate mo.json campo
 check "in the accelerometer's unit" out_has "accel_x_g: ssa-svr on campo (recordings with role \"test\"): 60 rows of 1 recording"
-check "before and after in g" out_has "Before (the denoised drift) → after compensation, g:"
+check "before and after in g" out_has "Before (the drift as logged, not denoised) → after compensation, g:"
 check "no finding figures for a scale factor" out_has "(no north-finding figures: a four-position finding reads gyros, and sf_gx_ppm is a scale-factor channel)"
 check "evaluate every target as JSON" run 0 "$fd" evaluate mo.json campo --json
 check "keys in each target's unit" python3 -c "import json; j = json.load(open('$work/out')); a = j['axes']; assert [x['target'] for x in a] == ['gyro_dph', 'accel_x_g', 'accel_z_g', 'sf_gx_ppm']; assert 'mae_dph' in a[0]['overall'] and 'mae_g' in a[1]['overall'] and 'mae_ppm' in a[3]['overall']; assert a[1]['overall']['mae_g'] < 0.1 * a[1]['overall']['mae_before_g']"

@@ -156,12 +156,16 @@ check "time from the first stamp" bash -c "cut -d, -f1 '$work/dated_fd.csv' | tr
 mkdir -p "$work/short"
 for i in 1 2 3 4; do head -9 "$work/one_$i.csv" >"$work/short/s$i.csv"; done
 check "campaign of short recordings" run 0 "$fd" campaign "$work/shortc" "$work"/short/s?.csv --input-rate-dph 0
-check "too short to denoise names the flag" run 1 "$fd" train "$work/shortc" -o "$work/s.json" --method svr
-check "denoise message" err_has "option --no-denoise: "
+check "short recordings train on the gyro as logged" run 0 "$fd" train "$work/shortc" -o "$work/s.json" --method svr
+check "--no-denoise, the default, is still accepted" run 0 "$fd" train "$work/shortc" -o "$work/s.json" --method svr --no-denoise
+check "--denoise and --no-denoise together" run 1 "$fd" train "$work/shortc" -o "$work/s.json" --method svr --denoise --no-denoise
+check "both words message" err_has "option --denoise: give --denoise or --no-denoise, not both"
+check "too short to denoise names the flag" run 1 "$fd" train "$work/shortc" -o "$work/s.json" --method svr --denoise
+check "denoise message" err_has "option --denoise: "
 check "denoise message names the recording" err_has "s1_01.csv: a signal of 8 samples is too short to denoise with sym4"
-check "a model's setting the data cannot meet" run 1 "$fd" evaluate "$work/one.json" "$work/shortc"
-check "model setting message" err_has "one.json: the model's denoise (set by train --no-denoise) does not fit this data: "
-check "train --no-denoise" run 0 "$fd" train "$work/shortc" -o "$work/s.json" --method svr --no-denoise
+check "a model with the paper's target" run 0 "$fd" train "$work/one" -o "$work/one_dn.json" --method svr --denoise -q
+check "a model's setting the data cannot meet" run 1 "$fd" evaluate "$work/one_dn.json" "$work/shortc"
+check "model setting message" err_has "one_dn.json: the model's denoise (set by train --denoise) does not fit this data: "
 
 # --- impossible options name themselves -----------------------------------------------------------
 check "grid given twice" run 1 "$fd" import "$raw" -o "$work/x.csv" "${map[@]}" --rate-hz 1 --step-s 60

@@ -145,7 +145,7 @@ TEST(TrainOptionTable, LibraryFieldsHaveTheirOptionsWords) {
   EXPECT_EQ(option_word(specs, "window_s", true), "--rate-window-s");
   EXPECT_EQ(option_word(specs, "poly_order", false), "rate_degree");
   EXPECT_EQ(option_word(specs, "degree", true), "--max-degree");
-  EXPECT_EQ(option_word(specs, "denoise", true), "--no-denoise");
+  EXPECT_EQ(option_word(specs, "denoise", true), "--denoise");
   EXPECT_EQ(option_word(specs, "epsilon_min", true), "--epsilon-min");
   // What validate(TrainOptions) names is an option users have.
   for (const auto& [field, set] :

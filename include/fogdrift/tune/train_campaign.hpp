@@ -13,11 +13,18 @@
 
 namespace fogdrift {
 
+/// The dataset settings `train` starts from: DatasetOptions' (the paper's) but for the target,
+/// the gyro's block means without wavelet denoising. The denoiser's coarsest approximation
+/// smooths the first minutes of a start-up, where a four-position north-finding is most
+/// sensitive, and the model learnt that smoothed course; the SVR's own fit averages the noise
+/// (docs/field.md, "The target without denoising").
+DatasetOptions recommended_dataset();
+
 struct CampaignTrainOptions {
   TrainOptions train;
   /// Preprocessing and target settings. Its features are used as given unless auto_features;
   /// its block, rate window and degree only where block_s, rate_window_s, rate_degree say so.
-  DatasetOptions dataset;
+  DatasetOptions dataset = recommended_dataset();
   /// The recommended inputs over the thermometers every training recording has (features.hpp,
   /// recommended_feature_spec: the paper's and their rates through a lag) instead of
   /// dataset.features.
