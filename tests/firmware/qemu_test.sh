@@ -32,7 +32,7 @@ done
 # fitted to the gyro as logged, train's default): its share on these start-ups is poor (−56 %,
 # worse than raw), but a real one to compare, and its coefficients cancel to a small z, which is
 # what float must survive. Float's error grows with the support vectors summed: 1.07e-3 of the
-# drift's STD here, 1e-5 °/h, against under 1e-3 with the 174 of the denoised target.
+# drift's STD here, against under 1e-3 with the 174 of the denoised target.
 check "train svr" quiet "$fd" train "$work/cal" --method ssa-svr --population 6 --iterations 4 \
   --folds 2 --differentiator causal -q -o "$work/svr.json"
 
