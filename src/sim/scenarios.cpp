@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <nlohmann/json.hpp>
+#include <optional>
 
 #include "fogdrift/base/atomic_file.hpp"
 #include "fogdrift/base/csv.hpp"
@@ -93,17 +94,23 @@ constexpr double kStepDegc = 10.0;
 
 // The instrument at power-on for a start-up at chamber temperature t0 under an approach that
 // does not depend on the previous recording (all but sweep), and the chamber air from then on.
-// The simulator's clock reads 0 at power-on.
+// The simulator's clock reads 0 at power-on. The whole simulator is handed over, not only its
+// node temperatures: the filtered coil mean and the thermometers' lags carry the history into
+// the start-up as they do between a calibration campaign's cycles (docs/simulator.md).
 struct StartUp {
-  NodeTemps temps;
+  NfsSimulator simulator;
   AirProfile air;
 };
 
+NfsSimulator at_equilibrium(const Instrument& instrument, double degc) {
+  NodeTemps temps;
+  temps.fill(degc);
+  return NfsSimulator(instrument, temps, 0.0);
+}
+
 StartUp start_up(const Instrument& instrument, Approach approach, double t0, double soak_s,
                  double warm_off_s, double ramp_degc_per_min) {
-  StartUp out;
-  out.air = [t0](double) { return t0; };
-  out.temps.fill(t0);
+  StartUp out{at_equilibrium(instrument, t0), [t0](double) { return t0; }};
   switch (approach) {
     case Approach::soaked:
     case Approach::sweep:
@@ -111,9 +118,7 @@ StartUp start_up(const Instrument& instrument, Approach approach, double t0, dou
     case Approach::calibration: {
       // Two calibration cycles at t0 − 20 and t0 − 10 °C, then the ramp to t0 and the soak.
       constexpr double kPoweredS = 1800.0, kRampS = 600.0;
-      NodeTemps start;
-      start.fill(t0 - 2 * kStepDegc);
-      NfsSimulator chamber(instrument, start, 0.0);
+      NfsSimulator chamber = at_equilibrium(instrument, t0 - 2 * kStepDegc);
       for (int c = 2; c >= 1; --c) {
         const double here = t0 - c * kStepDegc;
         if (c == 1)
@@ -127,19 +132,17 @@ StartUp start_up(const Instrument& instrument, Approach approach, double t0, dou
         chamber.advance(kRampS, cycle, false);
       }
       chamber.advance(soak_s, out.air, false);
-      out.temps = chamber.temps_degc();
+      out.simulator = std::move(chamber);
       break;
     }
     case Approach::warm: {
       constexpr double kFirstRunS = 1800.0;
-      NfsSimulator chamber(instrument, out.temps, 0.0);
-      chamber.advance(kFirstRunS, out.air, true);
-      chamber.advance(warm_off_s, out.air, false);
-      out.temps = chamber.temps_degc();
+      out.simulator.advance(kFirstRunS, out.air, true);
+      out.simulator.advance(warm_off_s, out.air, false);
       break;
     }
     case Approach::ramping: {
-      out.temps.fill(t0 - kStepDegc);
+      out.simulator = at_equilibrium(instrument, t0 - kStepDegc);
       const double ramp_s = kStepDegc / ramp_degc_per_min * 60.0;
       out.air = [t0, ramp_s](double t) {
         return t0 - kStepDegc + std::clamp(t / ramp_s, 0.0, 1.0) * kStepDegc;
@@ -147,6 +150,7 @@ StartUp start_up(const Instrument& instrument, Approach approach, double t0, dou
       break;
     }
   }
+  out.simulator.restart_clock(0.0);
   return out;
 }
 
@@ -306,7 +310,7 @@ SimulatedCampaign simulate_calibration(const Instrument& instrument, const Calib
       if (approach != Approach::calibration) {
         StartUp s =
             start_up(instrument, approach, reached[i], o.soak_s, o.warm_off_s, o.ramp_degc_per_min);
-        nfs = NfsSimulator(instrument, s.temps, 0.0);
+        nfs = std::move(s.simulator);
         cycle_air = std::move(s.air);
       }
       RecordSetup setup;
@@ -353,7 +357,7 @@ SimulatedCampaign simulate_findings(const Instrument& instrument, const Northfin
                       fmt::format("{} s leaves less than 10 s of dwell after a {} s rotation",
                                   o.position_s, rotation_s));
   }
-  NodeTemps after_previous{};  // node temperatures when the previous recording ends
+  std::optional<NfsSimulator> after_previous;  // the instrument when the previous recording ends
   for (std::size_t i = 0; i < o.temps_degc.size(); ++i) {
     const std::uint64_t seed = derive_seed(o.seed, stream + i);
     Rng setup_rng(derive_seed(seed, 100));
@@ -387,15 +391,17 @@ SimulatedCampaign simulate_findings(const Instrument& instrument, const Northfin
       const AirProfile between = [from, t0, ramp_s](double t) {
         return ramp_s <= 0.0 ? t0 : from + std::min(1.0, t / ramp_s) * (t0 - from);
       };
-      NfsSimulator chamber(instrument, after_previous, 0.0);
+      NfsSimulator chamber = std::move(*after_previous);
+      chamber.restart_clock(0.0);
       chamber.advance(ramp_s + o.soak_s, between, false);
-      su.temps = chamber.temps_degc();
+      chamber.restart_clock(0.0);
+      su.simulator = std::move(chamber);
     }
     const AirProfile& air = su.air;
-    NfsSimulator nfs(instrument, su.temps, 0.0);
+    NfsSimulator& nfs = su.simulator;
     nfs.advance(o.warmup_s, air, true);
     Recording rec = nfs.record(setup, air, 0.0);
-    after_previous = nfs.temps_degc();
+    after_previous = std::move(nfs);
 
     CampaignEntry e;
     e.file = fmt::format("{}_{}.csv", scenario == Scenario::stable ? "stable" : "nf",

@@ -200,6 +200,35 @@ TEST(Northfind, CalibrationApproachPowersOnLikeTheCalibrationCampaign) {
   EXPECT_LT(nf_sweep.recordings[1].numeric_column("temp_fog_degc")[0], 38.0);
 }
 
+// A start-up inherits the whole instrument its history left, not only its node temperatures: with
+// a filtered-rate term (a state of its own, τ_F = 126 s), a north-finding start-up by the
+// calibration approach begins with the calibration campaign's drift. When only the nodes were
+// handed over, the filter restarted at power-on and the drift at t = 1 s was 0.04 °/h off.
+TEST(Northfind, AStartUpInheritsTheFilteredRateItsHistoryLeft) {
+  Instrument instrument;
+  instrument.fog.filtered_rate_dph_per_kps = 20.0;
+  instrument.fog.filtered_rate_tau_s = 126.0;
+  CalibrationOptions c;
+  c.chamber_setpoint_sd_degc = 0.0;
+  c.repetitions = 1;
+  c.test_repetitions = 0;
+  c.temps_degc = {0.0, 10.0, 20.0, 30.0};
+  const auto cal = simulate_calibration(instrument, c);
+  NorthfindOptions approach;
+  approach.temps_degc = {30.0};
+  approach.findings = 1;
+  const auto nf = simulate_northfind(instrument, approach);
+  ASSERT_EQ(cal.campaign.recordings[3].initial_temp_degc, 30.0);
+  const std::vector<double> cal_drift = cal.recordings[3].numeric_column("drift_true_dph");
+  const std::vector<double> nf_drift = nf.recordings[0].numeric_column("drift_true_dph");
+  // The filtered rate's share at power-on, against which the two must agree.
+  const std::vector<double> plain_cal =
+      simulate_calibration(Instrument{}, c).recordings[3].numeric_column("drift_true_dph");
+  ASSERT_GT(std::abs(cal_drift[0] - plain_cal[0]), 0.02);
+  for (std::size_t k : {0, 60, 300})
+    EXPECT_NEAR(nf_drift[k], cal_drift[k], 2e-3) << "t = " << k + 1;
+}
+
 TEST(Scenarios, ImpossibleOptionsNameTheField) {
   CalibrationOptions c;
   c.repetitions = 0;

@@ -40,6 +40,10 @@ class NfsSimulator {
   Recording record(const RecordSetup& setup, const AirProfile& air, double power_on_time_s);
 
   double time_s() const { return time_s_; }
+  /// Sets the absolute clock to `time_s` and keeps every state: the nodes, the thermometers'
+  /// lags and the filtered coil mean. A start-up's history is simulated on its own clock, then
+  /// recorded with the clock at 0 at power-on, from the state that history left.
+  void restart_clock(double time_s) { time_s_ = time_s; }
   const NodeTemps& temps_degc() const { return temps_; }
 
  private:
