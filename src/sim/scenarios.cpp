@@ -391,11 +391,10 @@ SimulatedCampaign simulate_findings(const Instrument& instrument, const Northfin
       const AirProfile between = [from, t0, ramp_s](double t) {
         return ramp_s <= 0.0 ? t0 : from + std::min(1.0, t / ramp_s) * (t0 - from);
       };
-      NfsSimulator chamber = std::move(*after_previous);
-      chamber.restart_clock(0.0);
-      chamber.advance(ramp_s + o.soak_s, between, false);
-      chamber.restart_clock(0.0);
-      su.simulator = std::move(chamber);
+      su.simulator = std::move(*after_previous);
+      su.simulator.restart_clock(0.0);
+      su.simulator.advance(ramp_s + o.soak_s, between, false);
+      su.simulator.restart_clock(0.0);
     }
     const AirProfile& air = su.air;
     NfsSimulator& nfs = su.simulator;
