@@ -72,8 +72,9 @@ void run_protocol(const SimulateArgs& a, const OptionFlags& flags, const OptionT
 }
 
 constexpr const char* kApproachHelp =
-    "  calibration  the paper's chamber protocol: ramp 10 °C in 10 min, soak 20 min; the\n"
-    "               instrument powers on some 5 °C short of the chamber's temperature\n"
+    "  calibration  the paper's chamber protocol: the calibration's cycles (ramp 10 °C in\n"
+    "               10 min, soak 20 min) up to the temperature; the instrument powers on\n"
+    "               short of the chamber's temperature (5 °C on the default instrument)\n"
     "  soaked       soaked to equilibrium (an instrument stored overnight at ambient)\n"
     "  warm         soaked, powered 30 min, off --warm-off-s, on again (a power cut)\n"
     "  ramping      from equilibrium 10 °C below, the air ramps up at --ramp-degc-per-min\n"

@@ -89,7 +89,8 @@ void check_start_up(double warm_off_s, double ramp_degc_per_min, const std::stri
   }
 }
 
-// How far below the initial temperature the calibration and ramping approaches begin, °C.
+// The calibration's step between set points, and how far below the initial temperature the
+// ramping approach begins, °C.
 constexpr double kStepDegc = 10.0;
 
 // The instrument at power-on for a start-up at chamber temperature t0 under an approach that
@@ -116,14 +117,18 @@ StartUp start_up(const Instrument& instrument, Approach approach, double t0, dou
     case Approach::sweep:
       break;
     case Approach::calibration: {
-      // Two calibration cycles at t0 − 20 and t0 − 10 °C, then the ramp to t0 and the soak.
+      // The calibration's sweep shifted to end at t0: as many cycles (soak, powered, ramp 10 °C)
+      // before it as the calibration runs before its temperature nearest t0, from equilibrium
+      // at the first, then the soak at t0. A slow instrument carries a lag into its start-up
+      // that only hours of cycles build up (docs/simulator.md).
+      const double first = CalibrationOptions{}.temps_degc.front();
+      const int cycles = std::max(0, static_cast<int>(std::lround((t0 - first) / kStepDegc)));
       constexpr double kPoweredS = 1800.0, kRampS = 600.0;
-      NfsSimulator chamber = at_equilibrium(instrument, t0 - 2 * kStepDegc);
-      for (int c = 2; c >= 1; --c) {
+      NfsSimulator chamber = at_equilibrium(instrument, t0 - cycles * kStepDegc);
+      for (int c = cycles; c >= 1; --c) {
         const double here = t0 - c * kStepDegc;
-        if (c == 1)
-          chamber.advance(
-              soak_s, [here](double) { return here; }, false);
+        chamber.advance(
+            soak_s, [here](double) { return here; }, false);
         const double power_on = chamber.time_s();
         const AirProfile cycle = [here, power_on](double t) {
           return here + std::clamp((t - power_on - kPoweredS) / kRampS, 0.0, 1.0) * kStepDegc;

@@ -29,10 +29,13 @@ enum class Approach {
   /// instrument is off while the chamber ramps to the next at ramp_degc_per_min and soaks for
   /// soak_s. The first starts soaked.
   sweep,
-  /// The calibration's protocol: from equilibrium 20 °C below, two calibration cycles 10 °C apart
-  /// (30 min powered, ramp 10 °C in 10 min, soak soak_s), so the instrument powers on as it does
-  /// in calibration, not yet at the chamber's temperature — but at a temperature calibration did
-  /// not visit. This is the paper's claim under test, and the default.
+  /// The calibration's protocol, its sweep shifted to end at the initial temperature t0: from
+  /// equilibrium at t0 − 10n °C, a cycle at t0 − 10n, …, t0 − 10 (soak soak_s, 30 min powered,
+  /// ramp 10 °C in 10 min), then the soak at t0, where n is the number of cycles the default
+  /// calibration (−40, −30, …, 60 °C) runs before its temperature nearest t0. The instrument
+  /// powers on as it does in calibration, not yet at the chamber's temperature and with the lag
+  /// the calibration's cycles leave — but at a temperature calibration did not visit. This is
+  /// the paper's claim under test, and the default.
   calibration,
   /// A warm restart: soaked at the initial temperature, powered for 30 minutes, off for
   /// warm_off_s, then powered on again — a power cut in the field.
