@@ -121,8 +121,10 @@ StartUp start_up(const Instrument& instrument, Approach approach, double t0, dou
       // before it as the calibration runs before its temperature nearest t0, from equilibrium
       // at the first, then the soak at t0. A slow instrument carries a lag into its start-up
       // that only hours of cycles build up (docs/simulator.md).
-      const double first = CalibrationOptions{}.temps_degc.front();
-      const int cycles = std::max(0, static_cast<int>(std::lround((t0 - first) / kStepDegc)));
+      const std::vector<double> calibration = CalibrationOptions{}.temps_degc;
+      const long nearest = std::lround((t0 - calibration.front()) / kStepDegc);
+      const int cycles =
+          static_cast<int>(std::clamp(nearest, 0L, static_cast<long>(calibration.size()) - 1));
       constexpr double kPoweredS = 1800.0, kRampS = 600.0;
       NfsSimulator chamber = at_equilibrium(instrument, t0 - cycles * kStepDegc);
       for (int c = cycles; c >= 1; --c) {
@@ -195,7 +197,10 @@ std::vector<Approach> approaches_from_string(std::string_view list, const std::s
 
 std::string approaches_to_string(const std::vector<Approach>& approaches) {
   std::string out;
-  for (const Approach a : approaches) out += (out.empty() ? "" : ",") + std::string(to_string(a));
+  for (const Approach a : approaches) {
+    if (!out.empty()) out += ',';
+    out += to_string(a);
+  }
   return out;
 }
 
