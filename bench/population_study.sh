@@ -12,6 +12,9 @@
 #   --population 10 --iterations 15, to fit a 2-core session: say so when quoting it).
 # Each instrument's rows also land in $POPULATION_OUT (default: a temporary folder) as JSON.
 # $POPULATION_WORK, if set, keeps the instruments, campaigns and models there for a later look.
+# $POPULATION_UNITS, if set, runs only those instruments (numbers 1..N, separated by spaces or
+# commas), replacing what an earlier run left of them in $POPULATION_WORK and $POPULATION_OUT;
+# the summary covers every instrument with a row in $POPULATION_OUT.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 fd=${1:-$root/build}/apps/fogdrift/fogdrift
@@ -34,18 +37,19 @@ out=${POPULATION_OUT:-$work/results}
 # times as much as one over 90.
 nf_temps=${POPULATION_NF_TEMPS:--38,-32,-27,-21,-16,-10,-5,1,6,12,17,23,28,34,39,45,50,56}
 mkdir -p "$out"
-"$fd" simulate population --out "$work/units" --count "$count" --seed "$seed" >/dev/null
+"$fd" simulate population --force --out "$work/units" --count "$count" --seed "$seed" >/dev/null
 
-one() { # one instrument: $1 = its number
+one() { # one instrument: $1 = its number; a failed step fails the instrument, not silently
+  set -euo pipefail
   local k=$1 unit d
   unit=$(printf 'unit_%02d' "$k")
   d="$work/$unit"
   mkdir -p "$d"
   local inst="$work/units/$unit.json" start=$SECONDS
-  "$fd" simulate calibration --out "$d/cal" --seed "$k" --repetitions 5 \
+  "$fd" simulate calibration --force --out "$d/cal" --seed "$k" --repetitions 5 \
     --approach calibration,soaked,warm,ramping --instrument "$inst" >/dev/null
   for a in calibration soaked warm ramping; do
-    "$fd" simulate northfind --out "$d/nf_$a" --seed "$k" --approach "$a" \
+    "$fd" simulate northfind --force --out "$d/nf_$a" --seed "$k" --approach "$a" \
       --temps "$nf_temps" --instrument "$inst" >/dev/null
   done
   local sim_s=$((SECONDS - start))
@@ -60,7 +64,8 @@ one() { # one instrument: $1 = its number
         >"$d/$path.$a.off.json"
     done
   done
-  python3 - "$d" "$k" "$sim_s" >"$out/$unit.json" <<'PY'
+  rm -f "$out/$unit.json"  # no row from an earlier run survives a failed one
+  python3 - "$d" "$k" "$sim_s" >"$out/$unit.json.part" <<'PY'
 import json, sys
 d, k, sim_s = sys.argv[1], int(sys.argv[2]), int(sys.argv[3])
 row = {"unit": k, "simulate_s": sim_s}
@@ -83,18 +88,30 @@ for path in ("centred", "causal"):
         row[f"{path}.{a}.drift_part"] = (raw * raw - floor * floor) / (raw * raw)
 print(json.dumps(row))
 PY
+  mv "$out/$unit.json.part" "$out/$unit.json"
   echo "unit $k done" >&2
 }
 export -f one
 export fd work out nf_temps
 TRAIN_FLAGS=("$@")
 export TRAIN_FLAGS_STR="${*:-}"
-seq "$count" | xargs -P "$jobs" -I{} bash -c 'TRAIN_FLAGS=($TRAIN_FLAGS_STR); one {}'
+units=${POPULATION_UNITS:-$(seq -s ' ' "$count")}
+for k in ${units//,/ }; do
+  if ! [[ $k =~ ^[0-9]+$ ]] || ((k < 1 || k > count)); then
+    echo "population_study.sh: POPULATION_UNITS: '$k' is not an instrument number in 1..$count" >&2
+    exit 2
+  fi
+done
+status=0
+echo ${units//,/ } | tr ' ' '\n' |
+  xargs -P "$jobs" -I{} bash -c 'TRAIN_FLAGS=($TRAIN_FLAGS_STR); one {}' || status=$?
 
-python3 - "$out" <<'PY'
+python3 - "$out" <<'PY' || { ((status)) || status=1; }
 import glob, json, math, sys
 rows = sorted((json.load(open(f)) for f in glob.glob(sys.argv[1] + "/unit_*.json")),
               key=lambda r: r["unit"])
+if not rows:
+    sys.exit("no instrument finished; nothing to summarise")
 conds = ("calibration", "soaked", "warm", "ramping")
 def pct(v):
     return "n/a" if v is None or (isinstance(v, float) and math.isnan(v)) else f"{100 * v:.0f}"
@@ -140,3 +157,7 @@ t = [r[f"{p}.train_s"] for r in rows for p in ("centred", "causal")]
 print(f"train: median {quantile(t, .5):.0f} s, longest {max(t)} s (one thread); simulate: median "
       f"{quantile([r['simulate_s'] for r in rows], .5):.0f} s per instrument")
 PY
+if ((status != 0)); then
+  echo "population_study.sh: some instruments failed (their errors are above); the summary leaves them out" >&2
+  exit "$status"
+fi
