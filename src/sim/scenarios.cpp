@@ -121,22 +121,22 @@ StartUp start_up(const Instrument& instrument, Approach approach, double t0, dou
       // before it as the calibration runs before its temperature nearest t0, from equilibrium
       // at the first, then the soak at t0. A slow instrument carries a lag into its start-up
       // that only hours of cycles build up (docs/simulator.md).
-      const std::vector<double> calibration = CalibrationOptions{}.temps_degc;
-      const long nearest = std::lround((t0 - calibration.front()) / kStepDegc);
+      const CalibrationOptions paper;  // its set points and cycle lengths
+      const long nearest = std::lround((t0 - paper.temps_degc.front()) / kStepDegc);
       const int cycles =
-          static_cast<int>(std::clamp(nearest, 0L, static_cast<long>(calibration.size()) - 1));
-      constexpr double kPoweredS = 1800.0, kRampS = 600.0;
+          static_cast<int>(std::clamp(nearest, 0L, static_cast<long>(paper.temps_degc.size()) - 1));
+      const double powered_s = paper.powered_s, ramp_s = paper.ramp_s;
       NfsSimulator chamber = at_equilibrium(instrument, t0 - cycles * kStepDegc);
       for (int c = cycles; c >= 1; --c) {
         const double here = t0 - c * kStepDegc;
         chamber.advance(
             soak_s, [here](double) { return here; }, false);
         const double power_on = chamber.time_s();
-        const AirProfile cycle = [here, power_on](double t) {
-          return here + std::clamp((t - power_on - kPoweredS) / kRampS, 0.0, 1.0) * kStepDegc;
+        const AirProfile cycle = [here, power_on, powered_s, ramp_s](double t) {
+          return here + std::clamp((t - power_on - powered_s) / ramp_s, 0.0, 1.0) * kStepDegc;
         };
-        chamber.advance(kPoweredS, cycle, true);
-        chamber.advance(kRampS, cycle, false);
+        chamber.advance(powered_s, cycle, true);
+        chamber.advance(ramp_s, cycle, false);
       }
       chamber.advance(soak_s, out.air, false);
       out.simulator = std::move(chamber);
