@@ -95,8 +95,10 @@ void run(const NorthfindArgs& a) {
           f.floor_mean_rmse_deg());
       if (model)
         std::cout << fmt::format(
-            "\n  {} removes {:.0f} % of the removable error, (raw² − comp²) / (raw² − floor²)\n",
-            f.method, 100 * f.share_removed());
+            "\n  {} removes {:.0f} % of the removable error, (raw² − comp²) / (raw² − floor²)\n"
+            "  and {:.0f} % of the drift's own error, finding by finding,"
+            " 1 − Σ(comp − floor)² / Σ(raw − floor)²\n",
+            f.method, 100 * f.share_removed(), 100 * f.drift_error_removed());
     }
   }
   if (model && !f.guarded) std::cout << "  (guard off: the model's full correction everywhere)\n";
@@ -117,7 +119,8 @@ void add_northfind(CLI::App& app) {
       "azimuth and error against the manifest's true azimuth, raw and (with --model) after\n"
       "subtracting the model's drift, and the RMSE per initial temperature (paper Table 3).\n"
       "On simulated recordings (a drift_true_dph column) also the floor, the RMSE with the true\n"
-      "drift subtracted, and the share of the removable error the model removes.\n"
+      "drift subtracted, and the share of the removable error the model removes, on the\n"
+      "RMSEs and finding by finding (docs/field.md, \"Finding by finding\").\n"
       "Example:\n"
       "  fogdrift simulate northfind --out nf && fogdrift northfind nf --model model.json");
   cmd->add_option("campaign", args->campaign, "Campaign folder (or its campaign.json)")->required();

@@ -271,7 +271,8 @@ void bind_eval(py::module_& m) {
         "with the model's drift subtracted (paper Table 3), as `fogdrift northfind --json` "
         "prints it: a dict with each recording's per-finding azimuth errors (°) and 'table3' "
         "(RMSE per initial temperature; on simulated recordings the floor with the true drift "
-        "subtracted and the share of the removable error removed).");
+        "subtracted and the share of the removable error removed, on the RMSEs as "
+        "'removable_error_removed' and finding by finding as 'drift_error_removed').");
   m.def("find_north", &find_north, py::arg("recording"), py::arg("latitude_deg"),
         py::arg("model") = nullptr,
         "Every four-position finding of one recording (a path or a mapping of columns with "

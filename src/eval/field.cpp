@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <limits>
+#include <stdexcept>
 
 #include "fogdrift/base/error.hpp"
 #include "fogdrift/eval/northfind.hpp"
@@ -38,6 +39,24 @@ double share_removed(double raw, double comp, double floor) {
   if (!std::isfinite(raw) || !std::isfinite(floor) || !std::isfinite(comp) || raw <= floor)
     return kNaN;
   return (raw * raw - comp * comp) / (raw * raw - floor * floor);
+}
+
+double drift_error_removed(std::span<const double> raw_deg, std::span<const double> comp_deg,
+                           std::span<const double> floor_deg) {
+  if (comp_deg.size() != raw_deg.size() || floor_deg.size() != raw_deg.size())
+    throw std::invalid_argument(fmt::format(
+        "drift_error_removed: {} raw, {} compensated and {} floor errors are not paired",
+        raw_deg.size(), comp_deg.size(), floor_deg.size()));
+  // Differences of two azimuth errors, each in (−180, 180], taken the short way round.
+  const auto apart = [](double a, double b) { return std::remainder(a - b, 360.0); };
+  double drift_sq = 0, left_sq = 0;
+  for (std::size_t i = 0; i < raw_deg.size(); ++i) {
+    const double d = apart(raw_deg[i], floor_deg[i]), e = apart(comp_deg[i], floor_deg[i]);
+    drift_sq += d * d;
+    left_sq += e * e;
+  }
+  if (!std::isfinite(drift_sq) || !std::isfinite(left_sq) || !(drift_sq > 0)) return kNaN;
+  return 1 - left_sq / drift_sq;
 }
 
 double FieldSummary::share_removed() const {

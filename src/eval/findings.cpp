@@ -43,6 +43,18 @@ double CampaignFindings::share_removed() const {
                              floor_mean_rmse_deg());
 }
 
+double CampaignFindings::drift_error_removed() const {
+  if (method.empty() || !has_floor) return kUnknown;
+  std::vector<double> raw, comp, floor;
+  for (const RecordingFindings& r : recordings) {
+    if (r.scenario == Scenario::stable) continue;  // as in Table 3
+    raw.insert(raw.end(), r.raw_error_deg.begin(), r.raw_error_deg.end());
+    comp.insert(comp.end(), r.compensated_error_deg.begin(), r.compensated_error_deg.end());
+    floor.insert(floor.end(), r.floor_error_deg.begin(), r.floor_error_deg.end());
+  }
+  return raw.empty() ? kUnknown : eval::drift_error_removed(raw, comp, floor);
+}
+
 namespace {
 
 // find_north on the recordings given (in memory), or read from the campaign's folder.
@@ -149,7 +161,10 @@ std::string to_json(const CampaignFindings& f, const std::string& campaign_label
   if (model) t["compensated_rmse_deg"] = comp;
   if (f.has_floor && !f.table3.empty()) {
     t["true_drift_subtracted_rmse_deg"] = floor;
-    if (model) t["removable_error_removed"] = f.share_removed();
+    if (model) {
+      t["removable_error_removed"] = f.share_removed();
+      t["drift_error_removed"] = f.drift_error_removed();
+    }
   }
   j["table3"] = t;
   if (model) j["guard"] = f.guarded;

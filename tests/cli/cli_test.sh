@@ -615,8 +615,10 @@ check "northfind compensated column" out_has "comp. err °"
 check "northfind --json" run 0 "$fd" northfind --json "$work/nf2" --model "$work/svr.json"
 check "northfind json table" out_has '"compensated_rmse_deg"'
 check "northfind shows the floor" out_has '"true_drift_subtracted_rmse_deg"'
+check "northfind --json pairs the findings" out_has '"drift_error_removed"'
 check "northfind share removed" run 0 "$fd" northfind "$work/nf2" --model "$work/svr.json" --no-guard
 check "northfind names the share" out_has "of the removable error"
+check "northfind names the paired share" out_has "of the drift's own error, finding by finding"
 check "northfind on a calibration campaign" run 1 "$fd" northfind "$work/small"
 check "northfind calibration message" err_has "no northfind or stable recordings"
 check "northfind with a wider tolerance" run 0 "$fd" northfind --json "$work/nf2" --tolerance-deg 0.5 --settle-s 4

@@ -72,6 +72,27 @@ TEST(Findings, ADriftIsSubtractedFromTheGyroAndMustMatchIt) {
   EXPECT_THROW(northfind_errors_deg(rec, short_drift, latitude, truth), std::invalid_argument);
 }
 
+TEST(Findings, TheDriftsOwnErrorRemovedPoolsTheStartUpFindings) {
+  CampaignFindings f;
+  f.method = "ssa-svr";
+  f.has_floor = true;
+  f.recordings.push_back(
+      {"a.csv", Scenario::northfind, 10, 0, {0.03, 0.01}, {0.02, 0.0}, {0.01, 0.0}});
+  f.recordings.push_back({"b.csv", Scenario::northfind, 30, 0, {-0.02}, {-0.01}, {0.0}});
+  f.recordings.push_back({"s.csv", Scenario::stable, 25, 0, {0.5}, {0.0}, {0.0}});  // not pooled
+  f.table3 = {{10, 2, 0.02, 0.01, 0.007}, {30, 1, 0.02, 0.01, 0.0}};
+  // Drift errors 0.02, 0.01, −0.02; left 0.01, 0, −0.01: 1 − 2e-4 / 9e-4.
+  EXPECT_NEAR(f.drift_error_removed(), 1 - 2.0 / 9.0, 1e-12);
+  const auto j = nlohmann::json::parse(to_json(f, "nf", "model.json"));
+  EXPECT_NEAR(j["table3"]["drift_error_removed"].get<double>(), 1 - 2.0 / 9.0, 1e-12);
+  EXPECT_EQ(j["table3"]["removable_error_removed"].get<double>(), f.share_removed());
+  f.has_floor = false;  // a logged campaign: no true drift, no share
+  EXPECT_TRUE(std::isnan(f.drift_error_removed()));
+  f.has_floor = true;
+  f.method.clear();  // no model
+  EXPECT_TRUE(std::isnan(f.drift_error_removed()));
+}
+
 TEST(Findings, StableRecordingsStandApartFromTable3) {
   test::TempDir dir;
   sim::NorthfindOptions o = sim::stable_defaults();

@@ -38,6 +38,7 @@ def test_every_example_on_the_page_runs(tmp_path, monkeypatch, capsys):
     table2 = session["table2"]["overall"]
     assert table2["std_compensated_dph"] < table2["std_denoised_dph"]
     assert session["table3"]["table3"]["removable_error_removed"] > 0.5
+    assert session["table3"]["table3"]["drift_error_removed"] > 0.5
     assert all(e is None for e in session["summary"]["error"])
     printed = capsys.readouterr().out
     assert "STD" in printed and "removed" in printed

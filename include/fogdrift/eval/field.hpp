@@ -11,6 +11,7 @@
 
 #include <cstddef>
 #include <functional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -22,6 +23,16 @@ namespace fogdrift::eval {
 /// (raw² − comp²) / (raw² − floor²), the share of the removable error removed, from RMSEs; NaN
 /// when any is not finite or raw ≤ floor (nothing removable).
 double share_removed(double raw_deg, double comp_deg, double floor_deg);
+
+/// 1 − Σ(comp − floor)² / Σ(raw − floor)² over paired findings, azimuth errors in degrees: the
+/// share of the error the drift itself causes that a compensation removes (docs/field.md,
+/// "Finding by finding"). Each finding is compared with itself with the true drift subtracted,
+/// so the gyro noise the three share cancels, where share_removed() keeps a cross term of that
+/// noise with the drift; north-finding's error is linear in the small biases it sees. NaN when
+/// the drift causes no error or a value is not finite; std::invalid_argument when the three
+/// differ in length.
+double drift_error_removed(std::span<const double> raw_deg, std::span<const double> comp_deg,
+                           std::span<const double> floor_deg);
 
 /// Predicted drift at every sample of a recording, °/h (e.g. CompensationModel::predict_dph).
 using DriftOf = std::function<std::vector<double>(const Recording&)>;

@@ -48,6 +48,9 @@ struct CampaignFindings {
   double floor_mean_rmse_deg() const;        ///< NaN without a floor
   /// (raw² − comp²) / (raw² − floor²) on the means (field.hpp); NaN without model or floor.
   double share_removed() const;
+  /// The share of the drift's own error removed, every start-up finding paired with itself
+  /// with the true drift subtracted (field.hpp, drift_error_removed); NaN without model or floor.
+  double drift_error_removed() const;
 };
 
 /// How north is found (`fogdrift northfind`'s options, northfind_option_table.hpp).
