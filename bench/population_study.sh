@@ -4,8 +4,9 @@
 # calibration (5 repetitions: calibration, soaked, warm, ramping start-ups), trains with train's
 # defaults, batch (centred rates) and causal, and measures on four north-finding campaigns, one
 # per start-up condition, the share of the removable north-finding error removed, guard on and
-# off, and train's own held-out expectation. Prints one Markdown row per instrument and the
-# distribution (median, 10th percentile, worst) per condition, path and guard.
+# off, on the RMSEs and finding by finding, and train's own held-out expectation. Prints one
+# Markdown row per instrument and the distribution (median, 10th percentile, worst) per
+# condition, path and guard.
 # Usage: bench/population_study.sh [BUILD_DIR] [N] [SEED] [JOBS] [TRAIN_FLAGS...]
 #   (default build/, 20 instruments, seed 1, 2 instruments at a time); extra flags go to
 #   `fogdrift train` (the study in docs/field.md passed a smaller search budget,
@@ -80,6 +81,7 @@ for path in ("centred", "causal"):
         for g in ("on", "off"):
             n = json.load(open(f"{d}/{path}.{a}.{g}.json"))
             row[f"{path}.{a}.{g}"] = n["table3"].get("removable_error_removed")
+            row[f"{path}.{a}.{g}.paired"] = n["table3"].get("drift_error_removed")
         # How much of the raw error the drift makes: (raw² − floor²) / raw², pooled as the
         # share is. Near 0 the share removed is a ratio of two small numbers.
         t3 = n["table3"]
@@ -115,12 +117,14 @@ if not rows:
 conds = ("calibration", "soaked", "warm", "ramping")
 def pct(v):
     return "n/a" if v is None or (isinstance(v, float) and math.isnan(v)) else f"{100 * v:.0f}"
-print("| unit | path | expected (start-up) | " + " | ".join(f"{c} on / off (drift part)" for c in conds)
+print("| unit | path | expected (start-up) | "
+      + " | ".join(f"{c} on / off, paired on (drift part)" for c in conds)
       + " | train, s |")
 print("|---|---|---|" + "---|" * len(conds) + "---|")
 for r in rows:
     for path in ("centred", "causal"):
-        cells = [f"{pct(r[f'{path}.{c}.on'])} / {pct(r[f'{path}.{c}.off'])} ({pct(r[f'{path}.{c}.drift_part'])})"
+        cells = [f"{pct(r[f'{path}.{c}.on'])} / {pct(r[f'{path}.{c}.off'])}, "
+                 f"{pct(r.get(f'{path}.{c}.on.paired'))} ({pct(r[f'{path}.{c}.drift_part'])})"
                  for c in conds]
         print(f"| {r['unit']} | {path} | {pct(r[f'{path}.expected'])} ({pct(r[f'{path}.expected_startup'])}) | "
               + " | ".join(cells) + f" | {r[f'{path}.train_s']} |")
@@ -130,7 +134,7 @@ def quantile(v, q):  # linear interpolation between order statistics
     x = q * (len(v) - 1)
     i = int(math.floor(x))
     return v[i] if i + 1 >= len(v) else v[i] + (x - i) * (v[i + 1] - v[i])
-def table(title, keep):
+def table(title, keep, measure=""):
     print(title)
     print()
     print("| path | guard | " + " | ".join(conds) + " | worse than raw |")
@@ -139,8 +143,8 @@ def table(title, keep):
         for g in ("on", "off"):
             cells, worse = [], 0
             for c in conds:
-                v = [r[f"{path}.{c}.{g}"] for r in rows
-                     if r[f"{path}.{c}.{g}"] is not None and keep(r, path, c)]
+                key = f"{path}.{c}.{g}{measure}"
+                v = [r[key] for r in rows if r.get(key) is not None and keep(r, path, c)]
                 worse += sum(x < 0 for x in v)
                 cells.append(f"{pct(quantile(v, .5))} / {pct(quantile(v, .1))} / {pct(min(v))} (n = {len(v)})"
                              if v else "n/a")
@@ -148,6 +152,8 @@ def table(title, keep):
     print()
 table(f"Share of the removable north-finding error removed over {len(rows)} instruments, %"
       " (median / 10th percentile / worst):", lambda r, p, c: True)
+table("The share of the drift's own error removed, finding by finding (1 − Σ(comp − floor)² /"
+      " Σ(raw − floor)², docs/field.md \"Finding by finding\"), %:", lambda r, p, c: True, ".paired")
 table("The same where the drift makes at least a quarter of the raw error's square"
       " ((raw² − floor²) / raw² ≥ 0.25):", lambda r, p, c: r[f"{p}.{c}.drift_part"] >= 0.25)
 table("The same where train does not warn that the model may not help the north-finder"
