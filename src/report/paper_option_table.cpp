@@ -36,7 +36,10 @@ OptionTable<PaperOptions> make_table() {
                 {}},
                [](const O& o) {
                  std::string out;
-                 for (const Method& m : o.methods) out += (out.empty() ? "" : ",") + to_string(m);
+                 for (const Method& m : o.methods) {
+                   if (!out.empty()) out += ',';
+                   out += to_string(m);
+                 }
                  return out;
                },
                [](O& o, const std::string& text) {
