@@ -53,7 +53,8 @@ TEST(Field, TheDriftsOwnErrorRemovedPairsEachFindingWithItsFloor) {
 }
 
 TEST(Field, AFindingEitherSideOfTheAzimuthsWrapIsCloseToItsFloor) {
-  // A true azimuth near 180°: errors of +179.99° and −179.99° are 0.02° apart, not 359.98°.
+  // Errors either side of ±180° (a finding half a turn off): +179.99° and −179.99° are 0.02°
+  // apart, not 359.98°.
   const std::vector<double> floor{179.99}, raw{-179.99}, comp{179.995};
   EXPECT_NEAR(drift_error_removed(raw, comp, floor), 1 - 0.005 * 0.005 / (0.02 * 0.02), 1e-9);
 }
