@@ -47,11 +47,11 @@ double drift_error_removed(std::span<const double> raw_deg, std::span<const doub
     throw std::invalid_argument(fmt::format(
         "drift_error_removed: {} raw, {} compensated and {} floor errors are not paired",
         raw_deg.size(), comp_deg.size(), floor_deg.size()));
-  // Differences of two azimuth errors, each in (−180, 180], taken the short way round.
-  const auto apart = [](double a, double b) { return std::remainder(a - b, 360.0); };
   double drift_sq = 0, left_sq = 0;
   for (std::size_t i = 0; i < raw_deg.size(); ++i) {
-    const double d = apart(raw_deg[i], floor_deg[i]), e = apart(comp_deg[i], floor_deg[i]);
+    // Two azimuth errors apart the short way round (northfind.hpp).
+    const double d = angle_difference_deg(raw_deg[i], floor_deg[i]),
+                 e = angle_difference_deg(comp_deg[i], floor_deg[i]);
     drift_sq += d * d;
     left_sq += e * e;
   }

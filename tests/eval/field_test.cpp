@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "fogdrift/base/random.hpp"
+#include "fogdrift/eval/northfind.hpp"
 
 namespace fogdrift::eval {
 namespace {
@@ -76,11 +77,6 @@ TEST(Field, TheFindingByFindingShareDoesNotMoveWithTheNoise) {
     for (double& x : noise) x = 0.02 * rng.normal();
     const Findings f = findings(noise, drift, left);
     EXPECT_NEAR(drift_error_removed(f.raw, f.comp, f.floor), 0.75, 1e-9);
-    const auto rms = [](const std::vector<double>& v) {
-      double s = 0;
-      for (double x : v) s += x * x;
-      return std::sqrt(s / static_cast<double>(v.size()));
-    };
     const double s = share_removed(rms(f.raw), rms(f.comp), rms(f.floor));
     if (std::isfinite(s)) lowest = std::min(lowest, s), highest = std::max(highest, s);
   }
