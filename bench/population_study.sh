@@ -16,6 +16,9 @@
 # $POPULATION_UNITS, if set, runs only those instruments (numbers 1..N, separated by spaces or
 # commas), replacing what an earlier run left of them in $POPULATION_WORK and $POPULATION_OUT;
 # the summary covers every instrument with a row in $POPULATION_OUT.
+# $POPULATION_CAL_APPROACHES and $POPULATION_CAL_REPETITIONS, if set, replace the calibration
+# protocol (default calibration,soaked,warm,ramping over 5 repetitions; docs/field.md, "Three
+# warm sweeps", ran calibration,soaked,warm,ramping,warm,warm,calibration over 7).
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 fd=${1:-$root/build}/apps/fogdrift/fogdrift
@@ -37,6 +40,12 @@ out=${POPULATION_OUT:-$work/results}
 # temperatures, POPULATION_NF_TEMPS=-32,-16,-5,17,28,43,54, as before 2026-11-26) scatters 1.6
 # times as much as one over 90.
 nf_temps=${POPULATION_NF_TEMPS:--38,-32,-27,-21,-16,-10,-5,1,6,12,17,23,28,34,39,45,50,56}
+cal_approaches=${POPULATION_CAL_APPROACHES:-calibration,soaked,warm,ramping}
+cal_repetitions=${POPULATION_CAL_REPETITIONS:-5}
+if ! [[ $cal_repetitions =~ ^[0-9]+$ ]] || ((cal_repetitions < 2)); then
+  echo "population_study.sh: POPULATION_CAL_REPETITIONS: '$cal_repetitions' is not a whole number ≥ 2" >&2
+  exit 2
+fi
 mkdir -p "$out"
 "$fd" simulate population --force --out "$work/units" --count "$count" --seed "$seed" >/dev/null
 
@@ -47,8 +56,8 @@ one() { # one instrument: $1 = its number; a failed step fails the instrument, n
   d="$work/$unit"
   mkdir -p "$d"
   local inst="$work/units/$unit.json" start=$SECONDS
-  "$fd" simulate calibration --force --out "$d/cal" --seed "$k" --repetitions 5 \
-    --approach calibration,soaked,warm,ramping --instrument "$inst" >/dev/null
+  "$fd" simulate calibration --force --out "$d/cal" --seed "$k" --repetitions "$cal_repetitions" \
+    --approach "$cal_approaches" --instrument "$inst" >/dev/null
   for a in calibration soaked warm ramping; do
     "$fd" simulate northfind --force --out "$d/nf_$a" --seed "$k" --approach "$a" \
       --temps "$nf_temps" --instrument "$inst" >/dev/null
@@ -94,7 +103,7 @@ PY
   echo "unit $k done" >&2
 }
 export -f one
-export fd work out nf_temps
+export fd work out nf_temps cal_approaches cal_repetitions
 TRAIN_FLAGS=("$@")
 export TRAIN_FLAGS_STR="${*:-}"
 units=${POPULATION_UNITS:-$(seq -s ' ' "$count")}
