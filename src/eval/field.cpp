@@ -63,6 +63,17 @@ double FieldSummary::share_removed() const {
   return eval::share_removed(raw_mean_rmse_deg(), comp_mean_rmse_deg(), floor_mean_rmse_deg());
 }
 
+double FieldSummary::drift_error_removed() const {
+  std::vector<double> raw, comp, floor;
+  for (const FieldRecording& r : recordings) {
+    if (r.floor_error_deg.empty() || r.comp_error_deg.empty()) return kNaN;
+    raw.insert(raw.end(), r.raw_error_deg.begin(), r.raw_error_deg.end());
+    comp.insert(comp.end(), r.comp_error_deg.begin(), r.comp_error_deg.end());
+    floor.insert(floor.end(), r.floor_error_deg.begin(), r.floor_error_deg.end());
+  }
+  return raw.empty() ? kNaN : eval::drift_error_removed(raw, comp, floor);
+}
+
 void FieldSummary::accumulate(const FieldSummary& other) {
   recordings.insert(recordings.end(), other.recordings.begin(), other.recordings.end());
   worse_than_raw += other.worse_than_raw;
@@ -82,12 +93,19 @@ FieldSummary field_summary(const Campaign& campaign, const std::vector<Recording
     r.file = e.file;
     r.initial_temp_degc = e.initial_temp_degc;
     const double latitude = campaign.latitude_deg.value(), truth = *e.true_azimuth_deg;
-    r.raw_rmse_deg = rms(northfind_errors_deg(rec, latitude, truth));
-    r.floor_rmse_deg =
-        rec.has_column("drift_true_dph")
-            ? rms(northfind_errors_deg(rec, rec.numeric_column("drift_true_dph"), latitude, truth))
-            : kNaN;
-    r.comp_rmse_deg = drift ? rms(northfind_errors_deg(rec, drift(rec), latitude, truth)) : kNaN;
+    r.raw_error_deg = northfind_errors_deg(rec, latitude, truth);
+    r.raw_rmse_deg = rms(r.raw_error_deg);
+    r.floor_rmse_deg = kNaN;
+    if (rec.has_column("drift_true_dph")) {
+      r.floor_error_deg =
+          northfind_errors_deg(rec, rec.numeric_column("drift_true_dph"), latitude, truth);
+      r.floor_rmse_deg = rms(r.floor_error_deg);
+    }
+    r.comp_rmse_deg = kNaN;
+    if (drift) {
+      r.comp_error_deg = northfind_errors_deg(rec, drift(rec), latitude, truth);
+      r.comp_rmse_deg = rms(r.comp_error_deg);
+    }
     if (r.comp_rmse_deg > r.raw_rmse_deg) ++out.worse_than_raw;
     out.recordings.push_back(std::move(r));
   }

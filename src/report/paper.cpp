@@ -94,10 +94,13 @@ TrainOptions train_options(const PaperOptions& o, Method method, std::uint64_t s
   return to;
 }
 
-// The mean start-up north-finding RMSE of a campaign with the model's drift subtracted, guarded
-// and not: one prediction per recording gives both.
-std::pair<double, double> start_up_rmse_deg(const CompensationModel& model,
-                                            const sim::SimulatedCampaign& c) {
+// A campaign's start-ups with the model's drift subtracted: the mean north-finding RMSE guarded
+// and not, and the drift's own error removed finding by finding, guarded (field.hpp). One
+// prediction per recording gives all three.
+struct StartUpScore {
+  double guarded_deg = 0, unguarded_deg = 0, guarded_drift_error_removed = 0;
+};
+StartUpScore start_up_score(const CompensationModel& model, const sim::SimulatedCampaign& c) {
   std::vector<RecordingPrediction> predicted;
   for (const Recording& rec : c.recordings) predicted.push_back(model.predict(rec));
   auto of = [&](const Recording& rec) -> const RecordingPrediction& {
@@ -105,8 +108,10 @@ std::pair<double, double> start_up_rmse_deg(const CompensationModel& model,
   };
   const eval::DriftOf guarded = [&](const Recording& rec) { return of(rec).drift_dph; };
   const eval::DriftOf unguarded = [&](const Recording& rec) { return of(rec).model_drift_dph; };
-  return {eval::field_summary(c.campaign, c.recordings, guarded).comp_mean_rmse_deg(),
-          eval::field_summary(c.campaign, c.recordings, unguarded).comp_mean_rmse_deg()};
+  const eval::FieldSummary on = eval::field_summary(c.campaign, c.recordings, guarded);
+  return {on.comp_mean_rmse_deg(),
+          eval::field_summary(c.campaign, c.recordings, unguarded).comp_mean_rmse_deg(),
+          on.drift_error_removed()};
 }
 
 // The progress line: stages are reported from the pool's threads, in the order they start.
@@ -197,9 +202,10 @@ double run_method(const PaperOptions& o, std::size_t method_index, Stages& stage
   m.rmse_deg = northfind_rmse(c.nf, predicted_by(trained.model));
   m.mean_rmse_deg = mean_of(m.rmse_deg);
   for (const sim::SimulatedCampaign& sc : c.start_ups) {
-    const auto [guarded, unguarded] = start_up_rmse_deg(trained.model, sc);
-    m.start_up_rmse_deg.push_back(guarded);
-    m.start_up_unguarded_rmse_deg.push_back(unguarded);
+    const StartUpScore score = start_up_score(trained.model, sc);
+    m.start_up_rmse_deg.push_back(score.guarded_deg);
+    m.start_up_unguarded_rmse_deg.push_back(score.unguarded_deg);
+    m.start_up_drift_error_removed.push_back(score.guarded_drift_error_removed);
   }
   m.hyperparameters = trained.summary.hyperparameters;
   if (method == Method::ssa_svr && o.causal && !c.start_ups.empty()) {
@@ -216,9 +222,10 @@ double run_method(const PaperOptions& o, std::size_t method_index, Stages& stage
             causal, to)
             .model;
     for (const sim::SimulatedCampaign& sc : c.start_ups) {
-      const auto [guarded, unguarded] = start_up_rmse_deg(streamed, sc);
-      run.causal_start_up_rmse_deg.push_back(guarded);
-      run.causal_start_up_unguarded_rmse_deg.push_back(unguarded);
+      const StartUpScore score = start_up_score(streamed, sc);
+      run.causal_start_up_rmse_deg.push_back(score.guarded_deg);
+      run.causal_start_up_unguarded_rmse_deg.push_back(score.unguarded_deg);
+      run.causal_start_up_drift_error_removed.push_back(score.guarded_drift_error_removed);
     }
   }
   m.fitness_value = trained.summary.fitness_value;

@@ -1,5 +1,6 @@
 // The field's measures (field.hpp): the share of the removable error removed on the RMSEs, and
-// the drift's own error removed finding by finding, each against a closed form.
+// the drift's own error removed finding by finding, each against a closed form, and pooled over
+// a simulated campaign's start-ups.
 #include "fogdrift/eval/field.hpp"
 
 #include <gtest/gtest.h>
@@ -12,6 +13,7 @@
 
 #include "fogdrift/base/random.hpp"
 #include "fogdrift/eval/northfind.hpp"
+#include "fogdrift/sim/scenarios.hpp"
 
 namespace fogdrift::eval {
 namespace {
@@ -81,6 +83,36 @@ TEST(Field, TheFindingByFindingShareDoesNotMoveWithTheNoise) {
     if (std::isfinite(s)) lowest = std::min(lowest, s), highest = std::max(highest, s);
   }
   EXPECT_GT(highest - lowest, 0.5);  // the RMSEs' share spreads over more than 50 points
+}
+
+TEST(Field, ACampaignsSummaryPairsEveryFindingOfEveryStartUp) {
+  // Simulated start-ups carry their true drift: subtracting it leaves the floor (1), subtracting
+  // nothing leaves the raw findings (0), and subtracting half of it leaves about a quarter of
+  // the drift's error, north-finding being linear in the small biases it sees.
+  sim::NorthfindOptions no;
+  no.temps_degc = {-16, 17, 43};
+  no.findings = 3;
+  const sim::SimulatedCampaign c = sim::simulate_northfind(sim::Instrument{}, no);
+  auto scaled = [](double k) -> DriftOf {
+    return [k](const Recording& rec) {
+      std::vector<double> d = rec.numeric_column("drift_true_dph");
+      for (double& x : d) x *= k;
+      return d;
+    };
+  };
+  const FieldSummary whole = field_summary(c.campaign, c.recordings, scaled(1));
+  ASSERT_EQ(whole.recordings.size(), 3u);
+  for (const FieldRecording& r : whole.recordings) {
+    EXPECT_EQ(r.raw_error_deg.size(), 3u);
+    EXPECT_EQ(r.comp_error_deg, r.floor_error_deg);
+    EXPECT_DOUBLE_EQ(r.raw_rmse_deg, rms(r.raw_error_deg));
+  }
+  EXPECT_EQ(whole.drift_error_removed(), 1.0);
+  EXPECT_EQ(field_summary(c.campaign, c.recordings, scaled(0)).drift_error_removed(), 0.0);
+  EXPECT_NEAR(field_summary(c.campaign, c.recordings, scaled(0.5)).drift_error_removed(), 0.75,
+              0.02);
+  // Without a drift nothing is compensated, and nothing is paired.
+  EXPECT_TRUE(std::isnan(field_summary(c.campaign, c.recordings, {}).drift_error_removed()));
 }
 
 }  // namespace

@@ -122,6 +122,8 @@ TEST(Paper, RunsEveryMethodOnEverySeedAndReportsIt) {
         << a;
     for (const Method method : kPaperMethods) {
       const std::string m = to_string(method);
+      // Finding by finding: the drift's own error, of which no model removes more than all.
+      EXPECT_LE(x[m]["drift_error_removed"].get<double>(), 1.0) << m << " " << a;
       const bool worse_than_raw = x[m]["mean_deg"].get<double>() > raw;
       bool named = false;
       for (const auto& w : j["goals"]["worse_than_raw"])

@@ -43,6 +43,9 @@ struct FieldRecording {
   double raw_rmse_deg = 0;    ///< RMSE of the recording's findings, uncompensated
   double floor_rmse_deg = 0;  ///< with drift_true_dph subtracted; NaN without that column
   double comp_rmse_deg = 0;   ///< with the drift subtracted; NaN without a drift
+  /// The findings' azimuth errors, one per finding, as the three RMSEs above pool them; floor
+  /// and compensated are empty where their RMSE is NaN.
+  std::vector<double> raw_error_deg, floor_error_deg, comp_error_deg;
 };
 
 struct FieldSummary {
@@ -54,6 +57,9 @@ struct FieldSummary {
   double comp_mean_rmse_deg() const;   ///< NaN without a drift
   /// (raw² − comp²) / (raw² − floor²) on the means; NaN when either is unknown or raw ≤ floor.
   double share_removed() const;
+  /// drift_error_removed() over every finding of every recording; NaN when any recording lacks
+  /// the floor or the drift.
+  double drift_error_removed() const;
   /// Appends another summary's recordings (another seed of the same experiment).
   void accumulate(const FieldSummary& other);
 };

@@ -99,6 +99,9 @@ struct MethodRun {
   /// Mean start-up north-finding RMSE under each of PaperOptions::start_ups, with the novelty
   /// guard (as every north-finding above) and without it.
   std::vector<double> start_up_rmse_deg, start_up_unguarded_rmse_deg;
+  /// Under each start-up condition, guarded: the share of the drift's own error removed,
+  /// finding by finding (eval/field.hpp, drift_error_removed); NaN without the true drift.
+  std::vector<double> start_up_drift_error_removed;
   /// The named hyperparameter ("C", "sigma", "epsilon", "hidden", …), NaN if the method has none.
   double hyperparameter(std::string_view name) const;
 };
@@ -119,7 +122,8 @@ struct SeedRun {
   /// The same for SSA-SVR as firmware runs it (PaperOptions::causal): its C, σ and ε refitted on
   /// causal rates and applied causally, sample by sample, guarded and not. Empty when not run.
   std::vector<double> causal_start_up_rmse_deg, causal_start_up_unguarded_rmse_deg;
-  std::vector<MethodRun> methods;  ///< in PaperOptions::methods order
+  std::vector<double> causal_start_up_drift_error_removed;  ///< as MethodRun's, guarded
+  std::vector<MethodRun> methods;                           ///< in PaperOptions::methods order
   /// Time of the seed's own work (simulation and its methods' tasks, each on one thread); the
   /// seeds' tasks run side by side on the pool, so the seeds' sum exceeds the run's wall time.
   double seconds = 0;
