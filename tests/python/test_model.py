@@ -24,6 +24,17 @@ def trained(tmp_path_factory, cli):
     return d, recording, expected
 
 
+@pytest.fixture(scope="module")
+def small(tmp_path_factory, cli):
+    """A smaller calibration campaign (three temperatures, three sweeps) for the tests that train
+    to check train's interface (both paths give the same model, options, errors), not its
+    models: a fifth of the recordings, and the searches on them run in seconds."""
+    cal = tmp_path_factory.mktemp("small") / "cal"
+    cli("simulate", "calibration", "--out", cal, "--seed", "2", "--temps", "-20,10,40",
+        "--repetitions", "3")
+    return cal
+
+
 def test_a_model_file_reads_and_writes_byte_for_byte(trained):
     d, _, _ = trained
     text = (d / "m.json").read_text()
@@ -131,19 +142,20 @@ def test_bad_input_is_a_value_error_naming_the_file_and_rule(trained, tmp_path):
         fogdrift.Model.load(tmp_path / "nothing.json")
 
 
-def test_train_gives_the_command_lines_model_byte_for_byte(trained, tmp_path, cli):
+def test_train_gives_the_command_lines_model_byte_for_byte(trained, small, tmp_path, cli):
     d, _, _ = trained
     r = fogdrift.train(d / "cal", method="svr")
     assert r["model"].to_json() == (d / "m.json").read_text()
     assert r["summary"]["method"] == "svr" and r["summary"]["recordings"] > 0
-    # A tuned model, its search reported through the progress callback. On the paper's target
-    # (denoise): the search, not the target, is under test, and its models are smaller and faster.
+    # On the smaller campaign: a tuned model, its search reported through the progress callback.
+    # On the paper's target (denoise): the search, not the target, is under test, and its models
+    # are smaller and faster.
     seen = []
-    tuned = fogdrift.train(str(d / "cal"), population=8, iterations=3, seed=5, threads=2,
+    tuned = fogdrift.train(str(small), population=8, iterations=3, seed=5, threads=2,
                            denoise=True,
                            progress=lambda p: seen.append((p["iteration"], p["best_rmse"])))
     # How sure train is, as the command line's --json says it, from the same run.
-    held = cli("train", d / "cal", "--population", "8", "--iterations", "3", "--seed", "5",
+    held = cli("train", small, "--population", "8", "--iterations", "3", "--seed", "5",
                "--denoise", "-o", tmp_path / "t.json", "--json")
     assert tuned["model"].to_json() == (tmp_path / "t.json").read_text()
     assert [i for i, _ in seen] == [0, 1, 2, 3]
@@ -163,33 +175,32 @@ def test_train_gives_the_command_lines_model_byte_for_byte(trained, tmp_path, cl
         [e["parameter"] for e in got["box_edges"]]
     assert tuned["summary"]["search"]["evaluations"] == got["search"]["evaluations"]
     # racing=False is --no-racing: every fold fitted, no candidate stopped, the same model.
-    every = fogdrift.train(str(d / "cal"), population=8, iterations=3, seed=5, racing=False,
+    every = fogdrift.train(str(small), population=8, iterations=3, seed=5, racing=False,
                            denoise=True)
-    cli("train", d / "cal", "--population", "8", "--iterations", "3", "--seed", "5",
+    cli("train", small, "--population", "8", "--iterations", "3", "--seed", "5",
         "--no-racing", "--denoise", "-o", tmp_path / "every.json", "-q")
     assert every["model"].to_json() == (tmp_path / "every.json").read_text()
     assert every["summary"]["search"]["raced"] == 0
     assert every["summary"]["search"]["fits"] >= tuned["summary"]["search"]["fits"]
     assert set(got) - {"model"} <= set(tuned["summary"])  # every key but the file written
     for method, key in (("poly", "poly_cv_rmse_by_degree"), ("bp", "bp")):
-        line = json.loads(cli("train", d / "cal", "--method", method, "-o", tmp_path / "b.json",
+        line = json.loads(cli("train", small, "--method", method, "-o", tmp_path / "b.json",
                               "--json"))
         with warnings.catch_warnings():  # how sure train is; not what this test checks
             warnings.simplefilter("ignore", UserWarning)
-            summary = fogdrift.train(d / "cal", method=method)["summary"]
+            summary = fogdrift.train(small, method=method)["summary"]
         assert set(line) - {"model"} <= set(summary), method
         assert summary[key] == line[key], method
     # A box too small: the edge warning the command line prints, in this function's words.
     with pytest.warns(UserWarning, match=r"C = .* upper edge .* a wider box may do better: "
                                          r"c_max or auto_box=True"):
-        small = fogdrift.train(str(d / "cal"), population=6, iterations=2, seed=5, c_max=0.02)
-    assert small["summary"]["box_edges"][0]["parameter"] == "C"
-    assert any("c_max or auto_box=True" in w for w in small["summary"]["warnings"])
+        edged = fogdrift.train(str(small), population=6, iterations=2, seed=5, c_max=0.02)
+    assert edged["summary"]["box_edges"][0]["parameter"] == "C"
+    assert any("c_max or auto_box=True" in w for w in edged["summary"]["warnings"])
 
 
-def test_train_options_and_errors_use_the_librarys_names(trained):
-    d, _, _ = trained
-    r = fogdrift.train(d / "cal", method="poly", features="T(fog),dT(fog)", block_s=20,
+def test_train_options_and_errors_use_the_librarys_names(small):
+    r = fogdrift.train(small, method="poly", features="T(fog),dT(fog)", block_s=20,
                        max_degree=2)
     assert r["model"].feature_names == ["T_fog_degc", "dT_fog_degc_per_s"]
     assert r["summary"]["block_s"] == 20
@@ -206,25 +217,24 @@ def test_train_options_and_errors_use_the_librarys_names(trained):
             (dict(search_epsilon=True, epsilon_min=0.0), "option epsilon_min: 0 must be finite"),
     ]:
         with pytest.raises(ValueError, match=message):
-            fogdrift.train(d / "cal", **kwargs)
+            fogdrift.train(small, **kwargs)
     with pytest.raises(ValueError, match="campaign.json"):
-        fogdrift.train(d / "no such campaign")
+        fogdrift.train(small.parent / "no such campaign")
 
     def stop(progress):
         raise KeyboardInterrupt("stopped by the user")
 
     with pytest.raises(KeyboardInterrupt, match="stopped by the user"):
-        fogdrift.train(d / "cal", population=8, iterations=3, progress=stop)
+        fogdrift.train(small, population=8, iterations=3, progress=stop)
 
 
-def test_a_gaussian_process_trains_as_the_command_line_does(trained, tmp_path, cli):
-    d, _, _ = trained
-    small = dict(population=5, iterations=3, seed=2)
+def test_a_gaussian_process_trains_as_the_command_line_does(small, tmp_path, cli):
+    budget = dict(population=5, iterations=3, seed=2)
     with warnings.catch_warnings():  # how sure train is; not what this test checks
         warnings.simplefilter("ignore", UserWarning)
-        r = fogdrift.train(d / "cal", method="gp", gp_points=150, **small)
+        r = fogdrift.train(small, method="gp", gp_points=150, **budget)
     import json
-    line = json.loads(cli("train", d / "cal", "--method", "gp", "--gp-points", "150",
+    line = json.loads(cli("train", small, "--method", "gp", "--gp-points", "150",
                           "--population", "5", "--iterations", "3", "--seed", "2", "-o",
                           tmp_path / "gp.json", "--json"))
     assert r["model"].to_json() == (tmp_path / "gp.json").read_text()
@@ -239,7 +249,7 @@ def test_a_gaussian_process_trains_as_the_command_line_does(trained, tmp_path, c
             (dict(gp_points=5), "option gp_points: 5 is outside 10"),
     ]:
         with pytest.raises(ValueError, match=message):
-            fogdrift.train(d / "cal", method="gp", **kwargs)
+            fogdrift.train(small, method="gp", **kwargs)
 
 
 def test_train_rejects_a_block_that_is_not_a_positive_number(trained):
@@ -256,13 +266,12 @@ def test_train_rejects_a_block_that_is_not_a_positive_number(trained):
         fogdrift.train(d / "cal", method="svr", rate_degree=1.5)
 
 
-def test_causal_rates_default_to_a_line_over_61_s(trained):
-    d, _, _ = trained
-    causal = fogdrift.train(d / "cal", method="poly", differentiator="causal")["summary"]
+def test_causal_rates_default_to_a_line_over_61_s(small):
+    causal = fogdrift.train(small, method="poly", differentiator="causal")["summary"]
     assert (causal["rate_window_s"], causal["rate_degree"]) == (61, 1)
-    centred = fogdrift.train(d / "cal", method="poly")["summary"]
+    centred = fogdrift.train(small, method="poly")["summary"]
     assert (centred["rate_window_s"], centred["rate_degree"]) == (121, 2)
-    given = fogdrift.train(d / "cal", method="poly", differentiator="causal", rate_degree=2,
+    given = fogdrift.train(small, method="poly", differentiator="causal", rate_degree=2,
                            rate_window_s=91)["summary"]
     assert (given["rate_window_s"], given["rate_degree"]) == (91, 2)
 
