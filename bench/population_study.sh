@@ -1,12 +1,12 @@
 #!/usr/bin/env bash
 # Defaults on a population of instruments (docs/field.md, "Instruments unlike ours"): draws N
-# instruments (fogdrift simulate population), and for each one runs the recommended field
-# calibration (5 repetitions: calibration, soaked, warm, ramping start-ups), trains with train's
-# defaults, batch (centred rates) and causal, and measures on four north-finding campaigns, one
-# per start-up condition, the share of the removable north-finding error removed, guard on and
-# off, on the RMSEs and finding by finding, and train's own held-out expectation. Prints one
-# Markdown row per instrument and the distribution (median, 10th percentile, worst) per
-# condition, path and guard.
+# instruments (fogdrift simulate population), and for each one runs a field calibration (by
+# default the five-sweep protocol: calibration, soaked, warm, ramping start-ups, then the
+# test), trains with train's defaults, batch (centred rates) and causal, and measures on four
+# north-finding campaigns, one per start-up condition, the share of the removable
+# north-finding error removed, guard on and off, on the RMSEs and finding by finding, and
+# train's own held-out expectation. Prints one Markdown row per instrument and the
+# distribution (median, 10th percentile, worst) per condition, path and guard.
 # Usage: bench/population_study.sh [BUILD_DIR] [N] [SEED] [JOBS] [TRAIN_FLAGS...]
 #   (default build/, 20 instruments, seed 1, 2 instruments at a time); extra flags go to
 #   `fogdrift train` (the study in docs/field.md passed a smaller search budget,

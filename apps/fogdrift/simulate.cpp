@@ -124,9 +124,10 @@ void add_simulate(CLI::App& app) {
                   "How each repetition's start-ups begin (--approach A[,B,...]: repetition r takes "
                   "the r-th, cycling; docs/simulator.md gives the chamber hours of each):\n") +
           kApproachHelp +
-          "Example: a protocol that covers the field (docs/compensation.md):\n"
-          "  fogdrift simulate calibration --out cal --repetitions 4 "
-          "--approach calibration,soaked,warm,ramping");
+          "Example: the protocol that covers the field's start-ups on a unit of unknown physics "
+          "(docs/field.md; the last repetition is the test):\n"
+          "  fogdrift simulate calibration --out cal --repetitions 7 "
+          "--approach calibration,soaked,warm,ramping,warm,warm,calibration");
   add_common(cal, *args);
   const auto cal_flags =
       add_protocol(cal, sim::calibration_option_table(), sim::CalibrationOptions{});

@@ -137,8 +137,9 @@ OptionTable<PaperOptions> make_table() {
                 "",
                 sim::approach_names(false),
                 "How each calibration repetition's start-ups begin, cycling (fogdrift simulate "
-                "calibration --help): the protocol docs/field.md recommends; the paper's own is "
-                "{cal_approaches} calibration and {repetitions} 4",
+                "calibration --help): docs/field.md's five-sweep field protocol (for a unit of "
+                "unknown physics it recommends seven, adding warm,warm,calibration); the "
+                "paper's own is {cal_approaches} calibration and {repetitions} 4",
                 {"calibration.approaches"}},
                [](const O& o) { return sim::approaches_to_string(o.calibration.approaches); },
                [](O& o, const std::string& text) {

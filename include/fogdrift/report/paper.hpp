@@ -61,7 +61,7 @@ struct PaperOptions {
   MlpOptions mlp;               ///< BP's settings; its seed is each run's seed
   bool studies = true;          ///< leave-one-temperature-out and fitness studies on the first seed
   sim::Instrument instrument;
-  /// The protocol docs/field.md recommends (sim::field_calibration(): repetitions 1–4 start up
+  /// docs/field.md's five-sweep protocol (sim::field_calibration(): repetitions 1–4 start up
   /// as calibration, soaked, warm and ramping; 5, the chamber's protocol, is Table 2's test);
   /// the paper's own is one approach, `calibration`, and 4 repetitions. Its seed is replaced by
   /// each run's seed.
