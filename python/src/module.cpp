@@ -23,6 +23,8 @@ PYBIND11_MODULE(_fogdrift, m) {
       PyErr_SetString(PyExc_ValueError, e.what());
     } catch (const fogdrift::ResourceError& e) {
       PyErr_SetString(PyExc_MemoryError, e.what());
+    } catch (const fogdrift::Interrupted&) {
+      PyErr_SetString(PyExc_KeyboardInterrupt, "interrupted");
     }
   });
   fogdrift::python::bind_svr(m);

@@ -162,12 +162,11 @@ py::dict fit(const Array& x, const Array& y, const std::optional<Array>& weight,
       to_params(kernel, g, c, epsilon, tol, cache_mb, max_iter, shrinking, solver);
   std::optional<svr::FitResult> r;
   std::optional<svr::TrainingSet> set;
-  {
-    py::gil_scoped_release release;
+  released_interruptibly([&] {
     set.emplace(std::move(data));
     const svr::WorkspacePool::Lease workspace = workspaces().borrow();
     r.emplace(svr::fit(*set, p, nullptr, workspace.get()));
-  }
+  });
   return to_dict(*r, set->data(), g);
 }
 
@@ -183,12 +182,11 @@ py::list fit_path(const Array& x, const Array& y, const std::optional<Array>& we
       to_params(kernel, g, c_values.front(), epsilon, tol, cache_mb, max_iter, shrinking, solver);
   std::optional<svr::TrainingSet> set;
   std::vector<svr::FitResult> path;
-  {
-    py::gil_scoped_release release;
+  released_interruptibly([&] {
     set.emplace(std::move(data));
     const svr::WorkspacePool::Lease workspace = workspaces().borrow();
     path = svr::fit_c_path(*set, p, c_values, workspace.get());
-  }
+  });
   py::list out;
   for (const auto& r : path) out.append(to_dict(r, set->data(), g));
   return out;
@@ -227,8 +225,7 @@ py::object search(const Array& x, const Array& y, const std::optional<Array>& we
     if (predict_rows) folds[f].predict = indices((*predict_rows)[f]);
   }
   svr::GridSearchResult r;
-  {
-    py::gil_scoped_release release;
+  released_interruptibly([&] {
     ThreadPool pool(n_jobs < 0 ? 0u : static_cast<unsigned>(n_jobs));
     r = svr::grid_search(
         all, folds, gammas.size(),
@@ -237,7 +234,7 @@ py::object search(const Array& x, const Array& y, const std::optional<Array>& we
                            cache_mb, max_iter, shrinking, solver);
         },
         c_values, predict_rows.has_value(), pool, workspaces());
-  }
+  });
   const auto ng = static_cast<py::ssize_t>(r.kernels), nc = static_cast<py::ssize_t>(r.c_values);
   if (predict_rows) {
     py::list out;

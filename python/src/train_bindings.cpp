@@ -160,8 +160,7 @@ py::object train(const py::object& campaign, const py::kwargs& kwargs) {
   else
     path = campaign.cast<std::filesystem::path>();
   std::optional<CampaignTrainResult> r;
-  {
-    py::gil_scoped_release release;
+  released_interruptibly([&] {
     ThreadPool pool(static_cast<unsigned>(threads));
     t.tune.pool = &pool;
     in_keywords([&] {
@@ -170,7 +169,7 @@ py::object train(const py::object& campaign, const py::kwargs& kwargs) {
       else
         r.emplace(train_campaign(read_campaign(*path), o));
     });
-  }
+  });
   if (callback_error) std::rethrow_exception(callback_error);
   const TrainSummary& s = r->trained.summary;
   py::dict summary;

@@ -2,6 +2,8 @@
 
 #include <exception>
 
+#include "fogdrift/base/interrupt.hpp"
+
 namespace fogdrift {
 namespace {
 thread_local bool t_inside_task = false;
@@ -32,6 +34,7 @@ void ThreadPool::run_tasks() {
     const bool was_inside = t_inside_task;
     t_inside_task = true;
     try {
+      check_interrupt();  // base/interrupt.hpp: no new task once a stop was asked
       (*fn)(i);
     } catch (...) {
       err = std::current_exception();
@@ -69,6 +72,7 @@ void ThreadPool::parallel_for(std::size_t n, const std::function<void(std::size_
     std::exception_ptr first;
     for (std::size_t i = 0; i < n; ++i) {
       try {
+        check_interrupt();
         fn(i);
       } catch (...) {
         if (!first) first = std::current_exception();

@@ -6,6 +6,7 @@
 
 #include "fogdrift/base/enum_names.hpp"
 #include "fogdrift/base/error.hpp"
+#include "fogdrift/base/interrupt.hpp"
 #include "fogdrift/base/thread_pool.hpp"
 
 namespace fogdrift::opt {
@@ -112,6 +113,7 @@ void Run::evaluate(std::span<const double> points, std::span<double> fitness) {
 }
 
 bool Run::end_iteration(std::size_t iteration, std::span<const double> population_fitness) {
+  check_interrupt();  // base/interrupt.hpp
   IterationRecord record;
   record.iteration = iteration;
   record.evaluations = summary_.evaluations;

@@ -35,6 +35,7 @@
 #include <cstddef>
 #include <cstdint>
 
+#include "fogdrift/base/interrupt.hpp"
 #include "fogdrift/svr/smo_solver.hpp"
 #include "svr/loops.hpp"
 
@@ -176,6 +177,7 @@ class Smo {
     while (iter < max_iterations_) {
       if (--counter == 0) {
         counter = period;
+        check_interrupt();  // base/interrupt.hpp: a host's interrupt, between rounds
         layout_.active_set_changing();
         if (shrinking_) {
           shrink();
