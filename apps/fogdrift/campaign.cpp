@@ -13,6 +13,7 @@
 #include "commands.hpp"
 #include "fogdrift/base/atomic_file.hpp"
 #include "fogdrift/base/error.hpp"
+#include "fogdrift/base/run_files.hpp"
 #include "fogdrift/base/version.hpp"
 #include "fogdrift/io/campaign.hpp"
 #include "fogdrift/io/cut.hpp"
@@ -151,6 +152,7 @@ void run(const CampaignArgs& a) {
     c.recordings.push_back(std::move(e));
   }
 
+  check_output_not_input(a.out, "DIR");
   fill_directory_atomically(a.out, a.force, [&](const fs::path& dir) {
     for (std::size_t k = 0; k < pieces.size(); ++k) {
       Recording r = pieces[k];

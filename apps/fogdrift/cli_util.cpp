@@ -14,6 +14,7 @@
 
 #include "fogdrift/base/csv.hpp"
 #include "fogdrift/base/error.hpp"
+#include "fogdrift/base/text_file.hpp"
 #include "fogdrift/io/target.hpp"
 #include "fogdrift/model/model_set.hpp"
 
@@ -104,11 +105,7 @@ std::vector<double> parse_number_list(const std::string& text, const std::string
 }
 
 std::string read_text_file(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path, 0, 0, fmt::format("cannot open ({})", std::strerror(errno)));
-  std::stringstream buffer;
-  buffer << in.rdbuf();
-  return buffer.str();
+  return fogdrift::read_text_file(std::filesystem::path(path));
 }
 
 OptionError as_flag(const OptionError& e, const FlagTable& flags) {

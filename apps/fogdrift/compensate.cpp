@@ -12,6 +12,7 @@
 #include "fogdrift/base/atomic_file.hpp"
 #include "fogdrift/base/csv.hpp"
 #include "fogdrift/base/error.hpp"
+#include "fogdrift/base/run_files.hpp"
 #include "fogdrift/eval/metrics.hpp"
 #include "fogdrift/model/model.hpp"
 #include "fogdrift/model/model_set.hpp"
@@ -67,6 +68,7 @@ void run(const CompensateArgs& a) {
   const ModelSet set = load_model_set(a.model, a.load);
   const csv::Table table = csv::read(a.input);
   const Recording recording = read_recording(a.input);
+  check_output_not_input(a.output, "--output");
   std::vector<Axis> axes;
   for (const CompensationModel& model : set.models) {
     Axis x;

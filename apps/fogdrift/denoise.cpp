@@ -10,6 +10,7 @@
 #include "fogdrift/base/atomic_file.hpp"
 #include "fogdrift/base/csv.hpp"
 #include "fogdrift/base/error.hpp"
+#include "fogdrift/base/run_files.hpp"
 #include "fogdrift/signal/denoise.hpp"
 #include "fogdrift/signal/denoise_option_table.hpp"
 #include "option_flags.hpp"
@@ -31,6 +32,7 @@ void run(const DenoiseArgs& a) {
   a.flags->apply(signal::denoise_option_table(), options);
 
   csv::Table table = csv::read(a.input);
+  check_output_not_input(a.output, "--output");
   const auto col = table.find(a.column);
   if (!col) {
     std::string names;
@@ -129,7 +131,8 @@ void add_denoise(CLI::App& app) {
       "  fogdrift denoise log.csv -o out.csv --column rate --wavelet db4 --level 6 \\\n"
       "      --threshold universal --mode hard --extension periodization");
   cmd->add_option("INPUT", args->input, "CSV file with a header row")->required();
-  cmd->add_option("-o,--output", args->output, "Output CSV (written atomically; may be INPUT)")
+  cmd->add_option("-o,--output", args->output,
+                  "Output CSV (written atomically; not INPUT, which it would destroy)")
       ->required();
   cmd->add_option("--column", args->column, "Column to denoise")->capture_default_str();
   const auto& table = signal::denoise_option_table();

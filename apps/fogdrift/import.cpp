@@ -12,6 +12,7 @@
 #include "cli_util.hpp"
 #include "commands.hpp"
 #include "fogdrift/base/error.hpp"
+#include "fogdrift/base/run_files.hpp"
 #include "fogdrift/io/import.hpp"
 #include "fogdrift/io/recording.hpp"
 #include "fogdrift/io/regrid.hpp"
@@ -300,6 +301,9 @@ void add_import(CLI::App& app) {
       }
       converted.push_back(std::move(c));
     }
+    for (const auto& c : converted)
+      for (std::size_t k = 0; k < c.segments.size(); ++k)
+        check_output_not_input(piece_path(c.target, k, c.segments.size()), "--out");
     for (const auto& c : converted) {
       for (std::size_t k = 0; k < c.segments.size(); ++k) {
         const fs::path path = piece_path(c.target, k, c.segments.size());

@@ -10,6 +10,7 @@
 #include "cli_util.hpp"
 #include "commands.hpp"
 #include "fogdrift/base/error.hpp"
+#include "fogdrift/base/run_files.hpp"
 #include "fogdrift/io/join.hpp"
 #include "fogdrift/io/recording.hpp"
 
@@ -154,6 +155,7 @@ void add_join(CLI::App& app) {
     }
     const Recording recording = read_log(a->recording);
     const Recording log = read_log(a->log);
+    check_output_not_input(a->out, "--output");
     JoinResult r;
     try {
       r = join(recording, log, o);

@@ -10,9 +10,14 @@
 #include "cli_util.hpp"
 #include "commands.hpp"
 #include "fogdrift/base/error.hpp"
+#include "fogdrift/base/run_files.hpp"
 #include "fogdrift/svr/svr.hpp"
 
 int main(int argc, char** argv) {
+  // Before any thread starts: inputs noted so that no output replaces one, closed standard
+  // descriptors kept closed for outputs, and SIGINT, SIGTERM, SIGHUP removing the run's
+  // temporaries (docs/reliability.md, "Outputs").
+  fogdrift::begin_guarded_run();
   // Over the file-size limit (ulimit -f) a write fails with EFBIG instead of killing the process
   // with SIGXFSZ, so the atomic writer removes its temporary and says why (docs/reliability.md).
   std::signal(SIGXFSZ, SIG_IGN);

@@ -11,6 +11,7 @@
 #include "commands.hpp"
 #include "fogdrift/base/atomic_file.hpp"
 #include "fogdrift/base/error.hpp"
+#include "fogdrift/base/run_files.hpp"
 #include "fogdrift/report/paper_option_table.hpp"
 #include "fogdrift/report/paper_report.hpp"
 #include "fogdrift/sim/instrument.hpp"
@@ -55,6 +56,7 @@ void run_paper_unnamed(const PaperArgs& a, report::PaperOptions o) {
   if (!a.instrument_file.empty())
     o.instrument = sim::instrument_from_json(read_text_file(a.instrument_file), a.instrument_file);
   if (!a.out.empty()) {
+    check_output_not_input(a.out, "--out");
     const std::filesystem::path out(a.out);
     std::error_code ec;
     if (std::filesystem::exists(out, ec) && !std::filesystem::is_empty(out, ec) && !a.force)

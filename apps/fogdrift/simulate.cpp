@@ -10,6 +10,7 @@
 #include "fogdrift/base/atomic_file.hpp"
 #include "fogdrift/base/error.hpp"
 #include "fogdrift/base/option_table.hpp"
+#include "fogdrift/base/run_files.hpp"
 #include "fogdrift/sim/instrument.hpp"
 #include "fogdrift/sim/population.hpp"
 #include "fogdrift/sim/scenario_option_table.hpp"
@@ -59,8 +60,10 @@ void run_protocol(const SimulateArgs& a, const OptionFlags& flags, const OptionT
   flags.apply(table, options);
   options.seed = a.seed;
   sim::SimulatedCampaign campaign;
+  const sim::Instrument instrument = load_instrument(a.instrument_file);
+  check_output_not_input(a.out, "--out");
   try {
-    campaign = simulate(load_instrument(a.instrument_file), options);
+    campaign = simulate(instrument, options);
   } catch (const OptionError& e) {
     throw flags.named(e);
   }

@@ -12,6 +12,7 @@
 #include "fogdrift/base/atomic_file.hpp"
 #include "fogdrift/base/csv.hpp"
 #include "fogdrift/base/error.hpp"
+#include "fogdrift/base/run_files.hpp"
 #include "fogdrift/svr/libsvm_format.hpp"
 #include "fogdrift/svr/svr.hpp"
 
@@ -62,6 +63,8 @@ void run_train(const SvrTrainArgs& a) {
   if (a.gamma != 0 && a.sigma != 0) throw OptionError("--sigma", "give either -g or --sigma");
   svr::Data data = svr::read_libsvm_data(a.data);
   svr::Params p;
+  check_output_not_input(
+      a.model.empty() ? fs::path(a.data).filename().string() + ".model" : a.model, "MODEL");
   if (a.kernel_type == 0) {
     p.kernel = svr::Kernel::linear();
   } else if (a.sigma != 0) {
@@ -125,6 +128,7 @@ void run_train(const SvrTrainArgs& a) {
 void run_predict(const PredictArgs& a) {
   svr::Model m = svr::read_any_model(a.model);
   svr::Data data = svr::read_libsvm_data(a.data, m.dims);
+  check_output_not_input(a.output, "OUTPUT");
   if (data.cols > m.dims) {
     // Features the model never saw are zero in every support vector (LIBSVM's sparse rule).
     std::vector<double> sv(m.size() * data.cols, 0.0);

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "fogdrift/base/error.hpp"
+#include "fogdrift/base/run_files.hpp"
 
 namespace fogdrift {
 namespace {
@@ -92,6 +93,7 @@ std::string sha256_hex(std::string_view bytes) {
 std::string sha256_file_hex(const std::filesystem::path& path) {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError(path.string(), 0, 0, "cannot be read");
+  note_input(path);
   Sha256 s;
   std::vector<char> buffer(1 << 16);
   while (in) {

@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "fogdrift/base/error.hpp"
+#include "fogdrift/base/run_files.hpp"
 
 namespace fogdrift {
 
@@ -20,6 +21,7 @@ std::string read_text_file(const std::filesystem::path& path) {
   std::ifstream in(path, std::ios::binary);
   if (!in)
     throw InputError(path.string(), 0, 0, fmt::format("cannot open ({})", std::strerror(errno)));
+  note_input(path);
   // A regular file is read straight into a string of its size: one buffer, no copy.
   std::error_code ec;
   if (std::filesystem::is_regular_file(path, ec)) {

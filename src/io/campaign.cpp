@@ -12,6 +12,7 @@
 #include "fogdrift/base/atomic_file.hpp"
 #include "fogdrift/base/enum_names.hpp"
 #include "fogdrift/base/error.hpp"
+#include "fogdrift/base/run_files.hpp"
 #include "fogdrift/base/text_file.hpp"
 #include "fogdrift/io/target.hpp"
 
@@ -222,10 +223,14 @@ Campaign read_campaign(const fs::path& path) {
                      fs::exists(manifest) ? "cannot be read"
                                           : "not found (a campaign folder holds campaign.json)");
   }
+  note_input(manifest);
   std::stringstream buffer;
   buffer << in.rdbuf();
-  return parse_manifest(buffer.str(), file,
-                        manifest.has_parent_path() ? manifest.parent_path() : fs::path("."), true);
+  Campaign c =
+      parse_manifest(buffer.str(), file,
+                     manifest.has_parent_path() ? manifest.parent_path() : fs::path("."), true);
+  for (const CampaignEntry& e : c.recordings) note_input(c.path_of(e));
+  return c;
 }
 
 Campaign campaign_from_json(const std::string& text, const std::string& source) {
