@@ -16,8 +16,15 @@ status, an exit 0 whose output holds inf or nan, a partial or temporary file, or
 that is not fogdrift's. A sample of the runs that exit 0 is repeated with standard output on
 /dev/full, which must fail. Findings are copied to OUT/findings/ with the command line.
 
+A further kind of input, "model_text", edits the strings a model file gives a C header (its
+method, version, feature names and spec, target column) to text that tries to leave a comment or
+a string literal and declare `fogdrift_injected`. export-c (with --allow-edited) must then
+refuse the file, or write a header that compiles with -Wall -Wextra -Werror -pedantic and
+declares no `fogdrift_injected` (docs/reliability.md, "Generated code").
+
 Deterministic: the same seed mutates the same way.
 Usage: python3 scripts/mutation_campaign.py FOGDRIFT N SEED [OUT]
+FOGDRIFT_MUTATION_KINDS=model_text,recording,... runs those kinds only.
 """
 import csv
 import io
@@ -108,6 +115,59 @@ NON_FINITE = re.compile(r"(?<![A-Za-z0-9_])[-+]?(nan|inf|infinity)(?![A-Za-z0-9_
 
 # In a C header, NAN is the macro the fault policy uses; a number fogdrift printed is lower case.
 NON_FINITE_C = re.compile(r"(?<![A-Za-z0-9_])[-+]?(nan|inf)(?![A-Za-z0-9_])")
+
+
+# Text that tries to leave a C comment or string literal and declare fogdrift_injected.
+INJECTIONS = ["*/ int fogdrift_injected; /*", "\"; int fogdrift_injected; static const char* x = \"",
+              "\\\nint fogdrift_injected;", "??/\nint fogdrift_injected;", "*/\n#define A\n/*",
+              "\nint fogdrift_injected;\n", "\rint fogdrift_injected;", "\x00int fogdrift_injected;",
+              "' int fogdrift_injected; '", "/* int fogdrift_injected; */", "// int fogdrift_injected;",
+              "@REAL@ fogdrift_injected;", "\u00b0C */ int fogdrift_injected;", "%s%n", "\\",
+              "*", "/", "?", "\"", "T_fog_degc", "", "x" * 3000]
+
+
+def inject_text(model: dict, rng: random.Random) -> dict:
+    """The model with one to three of its strings replaced by injection attempts."""
+    def nasty():
+        parts = [rng.choice(INJECTIONS) for _ in range(rng.randint(1, 3))]
+        if rng.random() < 0.3:
+            parts.insert(rng.randrange(len(parts) + 1),
+                         "".join(chr(rng.randrange(1, 0x250)) for _ in range(rng.randint(1, 6))))
+        return "".join(parts)
+    places = ["method", "version", "name", "spec", "target"]
+    for _ in range(rng.randint(1, 3)):
+        where = rng.choice(places)
+        if where == "method":
+            model["provenance"]["method"] = nasty()
+        elif where == "version":
+            model["provenance"]["fogdrift_version"] = nasty()
+        elif where == "name":
+            names = model["features"]["names"]
+            names[rng.randrange(len(names))] = nasty()
+        elif where == "spec":
+            model["features"]["spec"] = nasty()
+        else:
+            model["target"]["column"] = nasty()
+    return model
+
+
+def header_is_safe(header_path):
+    """Whether a header compiles strictly and declares nothing a model's text injected."""
+    cc = os.environ.get("CC", "cc")
+    folder = os.path.dirname(header_path)
+    strict = subprocess.run([cc, "-std=c99", "-Wall", "-Wextra", "-Werror", "-pedantic",
+                             "-fsyntax-only", "-x", "c", header_path], capture_output=True)
+    if strict.returncode != 0:
+        return False, "the header does not compile: " + strict.stderr.decode(errors="replace")[:300]
+    probe = os.path.join(folder, "probe.c")
+    with open(probe, "w") as f:
+        f.write(f'#include "{os.path.basename(header_path)}"\n'
+                "int main(void) { return fogdrift_injected; }\n")
+    used = subprocess.run([cc, "-std=c99", "-fsyntax-only", "-I", folder, probe],
+                          capture_output=True)
+    if used.returncode == 0:
+        return False, "the header declares fogdrift_injected"
+    return True, ""
 
 
 def finite_text(text, c_source=False):
@@ -262,13 +322,32 @@ def main():
                "--unit", "gyro_dph=deg/s", "--map", "gyro_y_dph=gy_dps", "--unit",
                "gyro_y_dph=deg/s", "--map", "temp_fog_degc=temp_raw", "--unit",
                "temp_fog_degc=int16:0.00390625:25"]
-    kinds = ["recording", "manifest", "model", "sheet", "imu", "instrument", "joined"]
+    kinds = ["recording", "manifest", "model", "sheet", "imu", "instrument", "joined",
+             "model_text"]
+    if os.environ.get("FOGDRIFT_MUTATION_KINDS"):
+        kinds = os.environ["FOGDRIFT_MUTATION_KINDS"].split(",")
     for i in range(n):
         shutil.rmtree(work, ignore_errors=True)
         shutil.copytree(good, work)
         kind = kinds[i % len(kinds)]
         c.inputs += 1
         w = lambda name: os.path.join(work, name)  # noqa: E731
+        if kind == "model_text":
+            target = w("model.json")
+            with open(target) as f:
+                model = json.load(f)
+            with open(target, "w") as f:
+                json.dump(inject_text(model, c.rng), f, indent=2)
+            header = w("m.h")
+            for extra in ([], ["--stream-rate-hz", "1"],
+                          ["--stream-rate-hz", "1", "--precision", "float", "--force-float"]):
+                argv = ["export-c", target, "--allow-edited", "-o", header] + extra
+                p = c.run(argv, [header], [target])
+                if p is not None and p.returncode == 0:
+                    ok, why = header_is_safe(header)
+                    if not ok:
+                        c.finding(why, argv, [target, header])
+            continue
         if kind == "recording":
             target = w(f"cal/{c.rng.choice(recordings)}")
         else:

@@ -12,13 +12,19 @@
 namespace fogdrift::test {
 
 /// The dataset options synthetic() stands for, named once: a `{}` temporary at each train() call
-/// made GCC 12 warn falsely (-Wmaybe-uninitialized) inside its strings.
-inline const DatasetOptions kDefaultDataset;
+/// made GCC 12 warn falsely (-Wmaybe-uninitialized) inside its strings. Its spec is the one
+/// whose three features synthetic() holds, so that a model trained on it loads (a model's
+/// feature names must be its spec's).
+inline const DatasetOptions kDefaultDataset = [] {
+  DatasetOptions o;
+  o.features = FeatureSpec::parse("T");
+  return o;
+}();
 
 inline Dataset synthetic(std::uint64_t seed = 1) {
   Dataset d;
-  d.feature_names = {"a", "b", "c"};
-  d.feature_spec = "synthetic";
+  d.feature_names = {"T_fog_degc", "T_acc1_degc", "T_acc2_degc"};
+  d.feature_spec = "T";
   Rng rng(seed);
   for (int rep = 1; rep <= 3; ++rep) {
     for (double temp : {-20.0, 0.0, 20.0, 40.0}) {

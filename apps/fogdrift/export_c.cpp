@@ -11,7 +11,9 @@
 #include "fault_options.hpp"
 #include "fogdrift/base/atomic_file.hpp"
 #include "fogdrift/base/error.hpp"
+#include "fogdrift/base/run_files.hpp"
 #include "fogdrift/firmware/c_header.hpp"
+#include "fogdrift/io/target.hpp"
 #include "fogdrift/model/decimate.hpp"
 #include "fogdrift/model/model.hpp"
 
@@ -27,6 +29,7 @@ struct ExportArgs {
   double stream_rate_hz = 0;
   std::string precision = "double";
   bool quiet = false;
+  bool force_float = false;
   std::shared_ptr<OptionFlags> fault_flags;  ///< the fault policy's (fault_options.hpp)
   FaultPolicy faults;                        ///< as run: fitted to the model, then the flags
 };
@@ -44,6 +47,7 @@ void run(const ExportArgs& given) {
   // One axis (--target, or a model of one), or every axis of a model set in one header.
   const ModelSet set = axes_to_run(load_model_set(a.model, a.load), a.target);
   const CompensationModel& model = set.models.front();
+  check_output_not_input(a.output, "--output");
   a.faults = fault_policy(*a.fault_flags, model);
   if (!(a.stream_rate_hz >= 0) || a.stream_rate_hz > 10000)
     throw OptionError("--stream-rate-hz", fmt::format("{} is outside [0, 10000] Hz (0: no "
@@ -56,12 +60,43 @@ void run(const ExportArgs& given) {
                     a.precision == "float" ? CPrecision::single : CPrecision::double_);
   } catch (const OptionError& e) {
     if (e.option() == "prefix")
-      throw OptionError("--prefix", fmt::format("'{}' is not a C identifier (letters, digits and "
-                                                "'_', not starting with a digit)",
-                                                a.prefix));
+      throw OptionError("--prefix", e.message() +
+                                        " (letters, digits and '_', starting with a "
+                                        "letter)");
+    if (e.option() == "targets")
+      throw InputError(a.model, 0, 0,
+                       fmt::format("cannot be a C header: {}; train it again with other target "
+                                   "columns",
+                                   e.message()));
     throw OptionError("--stream-rate-hz", e.message());
   }
+  // A float header must compute what the model computes (c_header.hpp, FloatPrecisionCheck).
+  if (a.precision == "float") {
+    for (const CompensationModel& m : set.models) {
+      const FloatPrecisionCheck check = check_float_precision(m);
+      if (check.share() <= kFloatShareLimit) continue;
+      const std::string what = fmt::format(
+          "in float, {}'s drift departs from the model's by up to {:.3g} {} on its own training "
+          "inputs ({} compared), {:.3g} of the drift's STD (the limit is {:g}): float keeps too "
+          "few digits of these inputs (docs/firmware.md, \"Float\")",
+          m.dataset.target_column, check.max_error, target_of(m.dataset.target_column).unit(),
+          check.inputs, check.share(), kFloatShareLimit);
+      if (!a.force_float)
+        throw OptionError("--precision",
+                          what + "; use --precision double, or --force-float to write it anyway");
+      std::cerr << "fogdrift export-c: warning: " << what << "; written anyway (--force-float)\n";
+    }
+  }
   write_text_atomically(a.output, header);
+  // What the header cannot do as fogdrift does is said on standard error, not only in it.
+  if (a.stream_rate_hz > 0)
+    for (const CompensationModel& m : set.models)
+      if (m.dataset.preprocessing.rates.causality != signal::Causality::causal)
+        std::cerr << fmt::format(
+            "fogdrift export-c: warning: {} ({}) was trained with centred temperature rates; the "
+            "header's update computes causal ones, so its drift differs from compensate's (train "
+            "with --differentiator causal for firmware)\n",
+            a.model, m.dataset.target_column);
   if (!a.quiet && set.models.size() > 1) {
     std::cout << fmt::format(
         "wrote {}: {} axes ({}) of {}, C99 in {}, no heap; each axis's model as "
@@ -142,6 +177,9 @@ void add_export_c(CLI::App& app) {
                   "error and cost); times stay double")
       ->check(CLI::IsMember({"double", "float"}))
       ->capture_default_str();
+  cmd->add_flag("--force-float", args->force_float,
+                "With --precision float: write the header even where float departs from the "
+                "model by more than 1e-3 of the drift's STD on its training inputs (warned)");
   cmd->add_flag("-q,--quiet", args->quiet, "Print nothing on success");
   args->fault_flags = add_fault_options(cmd);
   cmd->callback([args] { with_model_settings(args->model, [&] { run(*args); }); });

@@ -12,6 +12,7 @@
 #include "commands.hpp"
 #include "fogdrift/base/csv.hpp"
 #include "fogdrift/base/error.hpp"
+#include "fogdrift/base/run_files.hpp"
 #include "fogdrift/base/thread_pool.hpp"
 #include "fogdrift/io/campaign.hpp"
 #include "fogdrift/model/model_set.hpp"
@@ -196,16 +197,11 @@ void run(TrainArgs& a) {
   }
 
   const Campaign campaign = read_campaign(a.campaign);
+  check_output_not_input(a.output, "--output");
   // One model per target column, each with its own search and guard (docs/logs.md, "Every
   // axis"), written as one file.
   const std::vector<std::string> targets = split_list(a.targets);
-  for (std::size_t i = 0; i < targets.size(); ++i) {
-    target_of(targets[i], "--targets");
-    if (std::find(targets.begin(), targets.begin() + static_cast<std::ptrdiff_t>(i), targets[i]) !=
-        targets.begin() + static_cast<std::ptrdiff_t>(i))
-      throw OptionError("--targets", fmt::format("'{}' is named twice", targets[i]));
-  }
-  if (targets.empty()) throw OptionError("--targets", "names no column to compensate");
+  check_targets(targets, "--targets");
   std::vector<CampaignTrainResult> results;
   for (const std::string& target : targets) {
     campaign_options.dataset.target_column = target;

@@ -7,6 +7,8 @@
 #include <cmath>
 #include <string>
 #include <string_view>
+#include <variant>
+#include <vector>
 
 #include "base/c_text.hpp"
 #include "firmware/c_parts.hpp"
@@ -15,18 +17,71 @@
 
 namespace fogdrift {
 using detail::c_array;
+using detail::c_comment_text;
 using detail::c_number;
+using detail::c_string_literal;
 using detail::fill_template;
 
 std::string c_macro_prefix(const std::string& prefix) {
+  // Every symbol is PREFIX_… and the include guard PREFIX_H: a prefix starting with '_' would
+  // name identifiers C reserves and could take a standard header's guard (_MATH_H hides
+  // <math.h>), so it is refused with the rest (docs/firmware.md).
   const bool identifier = !prefix.empty() && !std::isdigit(static_cast<unsigned char>(prefix[0])) &&
                           std::all_of(prefix.begin(), prefix.end(), [](char c) {
                             return std::isalnum(static_cast<unsigned char>(c)) || c == '_';
                           });
   if (!identifier) throw OptionError("prefix", fmt::format("'{}' is not a C identifier", prefix));
+  if (prefix.front() == '_')
+    throw OptionError("prefix", fmt::format("'{}' starts with '_': C reserves such names (and "
+                                            "_NAME_H may be a standard header's guard); start "
+                                            "with a letter",
+                                            prefix));
   std::string upper = prefix;
   for (char& c : upper) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
   return upper;
+}
+
+FloatPrecisionCheck check_float_precision(const CompensationModel& model) {
+  const std::size_t d = model.inputs();
+  const std::vector<double>& mean = model.x_scaler.mean;
+  const std::vector<double>& scale = model.x_scaler.scale;
+  std::vector<std::vector<double>> rows;
+  if (!model.guard.empty()) {
+    const std::size_t n = model.guard.prototypes.size() / d;
+    for (std::size_t p = 0; p < n; ++p) {
+      std::vector<double> row(d);
+      for (std::size_t k = 0; k < d; ++k)
+        row[k] = model.guard.prototypes[p * d + k] * scale[k] + mean[k];
+      rows.push_back(std::move(row));
+    }
+  } else {
+    rows.push_back(mean);
+    for (std::size_t k = 0; k < d; ++k)
+      for (const double side : {-1.0, 1.0}) {
+        std::vector<double> row = mean;
+        row[k] += side * scale[k];
+        rows.push_back(std::move(row));
+      }
+  }
+  FloatPrecisionCheck check;
+  check.drift_std = model.y_scaler.scale[0];
+  std::vector<double> work(d), x(d);
+  const auto y_scale = static_cast<float>(model.y_scaler.scale[0]);
+  const auto y_mean = static_cast<float>(model.y_scaler.mean[0]);
+  for (const std::vector<double>& row : rows) {
+    const double exact = model.predict(row, work).drift_dph;
+    if (!std::isfinite(exact)) continue;
+    // The header's float steps: x[j] = (features[j] - mean[j]) / scale[j]; z * scale + mean.
+    for (std::size_t k = 0; k < d; ++k)
+      x[k] = static_cast<double>((static_cast<float>(row[k]) - static_cast<float>(mean[k])) /
+                                 static_cast<float>(scale[k]));
+    const double z =
+        std::visit([&](const auto& r) { return r.predict(x.data()); }, model.regressor);
+    const float drift = static_cast<float>(z) * y_scale + y_mean;
+    check.max_error = std::max(check.max_error, std::abs(static_cast<double>(drift) - exact));
+    ++check.inputs;
+  }
+  return check;
 }
 
 std::string to_c_header(const CompensationModel& model, const std::string& prefix,
@@ -41,10 +96,12 @@ std::string to_c_header(const CompensationModel& model, const std::string& prefi
       " * drift_@UNIT@ = {prefix}_predict_@UNIT@(features); @READING_COMP@ = @READING@ - "
       "drift_@UNIT@.\n"
       " * Features, in order (units in the names):\n",
-      fmt::arg("prefix", prefix), fmt::arg("method", p.method),
-      fmt::arg("version", p.fogdrift_version), fmt::arg("spec", model.dataset.features.to_string()),
+      fmt::arg("prefix", prefix), fmt::arg("method", c_comment_text(p.method)),
+      fmt::arg("version", c_comment_text(p.fogdrift_version)),
+      fmt::arg("spec", c_comment_text(model.dataset.features.to_string())),
       fmt::arg("rows", p.training_rows));
-  for (std::size_t k = 0; k < d; ++k) h += fmt::format(" *   [{}] {}\n", k, model.feature_names[k]);
+  for (std::size_t k = 0; k < d; ++k)
+    h += fmt::format(" *   [{}] {}\n", k, c_comment_text(model.feature_names[k]));
   h += fmt::format(
       " * Temperature rates: {} Savitzky-Golay derivative over {} s (degree {}).\n"
       " * No heap, no state: the function may be called from any context. */\n",
@@ -64,7 +121,7 @@ std::string to_c_header(const CompensationModel& model, const std::string& prefi
   h += fmt::format("#define {}_N_FEATURES {}\n\n", upper, d);
   h += fmt::format("static const char* const {}_feature_names[{}] = {{", prefix, d);
   for (std::size_t k = 0; k < d; ++k)
-    h += fmt::format("{}\"{}\"", k ? ", " : "", model.feature_names[k]);
+    h += fmt::format("{}{}", k ? ", " : "", c_string_literal(model.feature_names[k]));
   h += "};\n";
   h += fmt::format("static const @REAL@ {}_feature_mean[{}] = {{{}}};\n", prefix, d,
                    c_array(model.x_scaler.mean));

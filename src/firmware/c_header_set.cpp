@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
+#include "base/c_text.hpp"
 #include "fogdrift/base/error.hpp"
 #include "fogdrift/firmware/c_header.hpp"
 #include "fogdrift/io/target.hpp"
@@ -16,16 +17,19 @@ std::string to_c_header(const ModelSet& set, const std::string& prefix, double s
     return to_c_header(set.models.front(), prefix, stream_dt_s, faults, precision);
   const std::string upper = c_macro_prefix(prefix);
   const std::size_t n = set.models.size();
+  check_targets(set.targets(), "targets");
   const std::vector<std::string> columns = set.thermometer_columns();  // every axis's, once
   std::string names, axes, units;
   bool gyros = true;  // every axis a gyro: the arrays are named in °/h
   for (std::size_t k = 0; k < n; ++k) {
     const Target target = target_of(set.models[k].dataset.target_column);
     gyros = gyros && target.kind == TargetKind::gyro;
-    names += fmt::format("{}\"{}\"", k ? ", " : "", target.column);
+    names += fmt::format("{}{}", k ? ", " : "", detail::c_string_literal(target.column));
     axes += fmt::format("{}{}", k ? ", " : "", target.axis);
-    units += fmt::format("{}\"{}\"", k ? ", " : "",
-                         target.kind == TargetKind::gyro ? "deg/h" : target.unit());
+    units += fmt::format(
+        "{}{}", k ? ", " : "",
+        detail::c_string_literal(target.kind == TargetKind::gyro ? std::string_view("deg/h")
+                                                                 : target.unit()));
   }
   // Axes of other targets (target.hpp) share arrays whose values are each in its axis's unit.
   const std::string drift = gyros ? "drift_dph" : "drift";

@@ -5,6 +5,7 @@
 #include <array>
 #include <cmath>
 
+#include "base/c_text.hpp"
 #include "fogdrift/base/error.hpp"
 
 namespace fogdrift {
@@ -93,6 +94,36 @@ bool is_target_column(std::string_view name) {
 
 std::string axis_name(std::string_view target_column) {
   return target_of(target_column).axis;
+}
+
+void check_targets(const std::vector<std::string>& columns, const std::string& option) {
+  if (columns.empty()) throw OptionError(option, "names no column to compensate");
+  for (std::size_t i = 0; i < columns.size(); ++i) {
+    const Target t = target_of(columns[i], option);
+    if (!detail::is_plain_c_identifier(t.axis))
+      throw OptionError(option,
+                        fmt::format("'{}' names axis '{}', which is not a C identifier the C "
+                                    "header can use (letters, digits and '_', starting with a "
+                                    "letter, not a C keyword); rename the column, e.g. at import "
+                                    "with --map",
+                                    columns[i], t.axis));
+    if (t.axis == "comp" || t.axis.ends_with("_comp"))
+      throw OptionError(option,
+                        fmt::format("'{}' is the name compensate and stream give a compensated "
+                                    "output column, not a sensor's reading; name the raw "
+                                    "reading's column",
+                                    columns[i]));
+    for (std::size_t j = 0; j < i; ++j) {
+      if (columns[j] == columns[i])
+        throw OptionError(option, fmt::format("'{}' is named twice", columns[i]));
+      if (target_of(columns[j], option).axis == t.axis)
+        throw OptionError(option,
+                          fmt::format("'{}' and '{}' both name axis '{}', and each axis needs a "
+                                      "name of its own in the C header; rename one column, e.g. "
+                                      "at import with --map",
+                                      columns[j], columns[i], t.axis));
+    }
+  }
 }
 
 std::vector<double> target_values(const Recording& recording, const std::string& column) {

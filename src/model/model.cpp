@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <functional>
 #include <limits>
 #include <nlohmann/json.hpp>
 
@@ -33,9 +34,10 @@ std::string drift_scaler_name(const std::string& target_column) {
 
 std::string non_finite_drift(double drift_dph, double time_s) {
   return fmt::format(
-      "at time_s {} the model gives a drift of {}, not a finite number: its "
-      "coefficients or these readings are beyond what it can compute with",
-      time_s, drift_dph);
+      "at time_s {} the model gives no drift it can stand by ({}: not a number, or more than "
+      "{:g} of its training drift's standard deviations from their mean): its coefficients or "
+      "these readings are beyond what it can compute with",
+      time_s, drift_dph, kDriftLimitScales);
 }
 
 }  // namespace
@@ -47,7 +49,9 @@ DriftPrediction CompensationModel::predict(std::span<const double> features, std
     work[k] = (features[k] - x_scaler.mean[k]) / x_scaler.scale[k];
   const double z = std::visit([&](const auto& r) { return r.predict(work.data()); }, regressor);
   DriftPrediction out;
-  out.drift_dph = z * y_scaler.scale[0] + y_scaler.mean[0];
+  // Beyond kDriftLimitScales training STDs, the drift is not one (model.hpp).
+  out.drift_dph = std::abs(z) <= kDriftLimitScales ? z * y_scaler.scale[0] + y_scaler.mean[0]
+                                                   : std::numeric_limits<double>::quiet_NaN();
   if (guard.empty()) {
     out.novelty = std::numeric_limits<double>::quiet_NaN();
   } else {
@@ -271,6 +275,16 @@ CompensationModel compensation_model_from_json(const std::string& text, const st
     const ojson& f = doc.at("features");
     m.dataset.features = FeatureSpec::parse(f.at("spec").get<std::string>());
     m.feature_names = f.at("names").get<std::vector<std::string>>();
+    // The names are what firmware authors wire their inputs by: they must be the spec's own, in
+    // its order, or a header would label one input with another's name.
+    if (const std::vector<std::string> expected = m.dataset.features.names();
+        m.feature_names != expected)
+      fail(
+          "features.names",
+          fmt::format("'{}' are not the names spec '{}' gives its features, in order ('{}'); "
+                      "the file was edited: train the model again",
+                      csv::excerpt(fmt::format("{}", fmt::join(m.feature_names, ","))),
+                      m.dataset.features.to_string(), fmt::format("{}", fmt::join(expected, ","))));
     const ojson& dif = f.at("differentiator");
     m.dataset.preprocessing.rates.window_s = dif.at("window_s").get<double>();
     m.dataset.preprocessing.rates.poly_order =
@@ -357,17 +371,58 @@ CompensationModel compensation_model_from_json(const std::string& text, const st
   const std::size_t d = m.feature_names.size();
   if (m.x_scaler.mean.size() != d || m.x_scaler.scale.size() != d)
     fail("scalers.features", fmt::format("needs {} means and scales, one per feature", d));
+  // Bounds on every number (model.hpp), so that no finite input makes a non-finite or absurd
+  // standardised value, novelty or drift.
+  const std::string drift_scaler = "scalers." + drift_scaler_name(m.dataset.target_column);
+  auto within = [&](double v, double limit) { return std::abs(v) <= limit; };
   for (double s : m.x_scaler.scale)
-    if (!(s > 0) || !std::isfinite(s)) fail("scalers.features.scale", "must be finite and > 0");
-  if (!(m.y_scaler.scale[0] > 0) || !std::isfinite(m.y_scaler.scale[0]))
-    fail("scalers.drift_dph.scale", "must be finite and > 0");
+    if (!(s >= kModelSmallestScale && s <= kModelScalerLimit))
+      fail("scalers.features.scale", fmt::format("{} is not a scale in [{:g}, {:g}]", s,
+                                                 kModelSmallestScale, kModelScalerLimit));
+  for (double v : m.x_scaler.mean)
+    if (!within(v, kModelScalerLimit))
+      fail("scalers.features.mean",
+           fmt::format("{} is not a finite mean of magnitude at most {:g}", v, kModelScalerLimit));
+  if (!(m.y_scaler.scale[0] > 0) || !within(m.y_scaler.scale[0], kModelScalerLimit))
+    fail(drift_scaler + ".scale",
+         fmt::format("{} is not a scale in (0, {:g}]", m.y_scaler.scale[0], kModelScalerLimit));
+  if (!within(m.y_scaler.mean[0], kModelScalerLimit))
+    fail(drift_scaler + ".mean", fmt::format("{} is not a finite mean of magnitude at most {:g}",
+                                             m.y_scaler.mean[0], kModelScalerLimit));
+  {
+    // Every number of the regressor, whatever its type, within kModelRegressorLimit.
+    std::string at;
+    std::function<bool(const ojson&, const std::string&)> bounded = [&](const ojson& j,
+                                                                        const std::string& path) {
+      if (j.is_number_float() || j.is_number_integer()) {
+        if (!within(j.get<double>(), kModelRegressorLimit)) return at = path, false;
+        return true;
+      }
+      if (j.is_array()) {
+        for (std::size_t i = 0; i < j.size(); ++i)
+          if (!bounded(j[i], path)) return false;
+        return true;
+      }
+      if (j.is_object()) {
+        for (const auto& [key, value] : j.items())
+          if (!bounded(value, path + "." + key)) return false;
+      }
+      return true;
+    };
+    if (doc.contains("regressor") && !bounded(doc["regressor"], "regressor"))
+      fail(at, fmt::format("holds a number of magnitude beyond {:g}: no model fogdrift trains "
+                           "has one; the file was edited or is corrupt",
+                           kModelRegressorLimit));
+  }
   if (version >= 2) {
     if (m.guard.prototypes.size() != m.guard.settings.prototypes * d || m.guard.prototypes.empty())
       fail("guard.points", fmt::format("must hold prototypes × {} features numbers", d));
-    if (!(m.guard.radius > 0) || !std::isfinite(m.guard.radius))
-      fail("guard.radius", "must be finite and > 0");
+    if (!(m.guard.radius > 0) || !within(m.guard.radius, kModelScalerLimit))
+      fail("guard.radius", fmt::format("must be in (0, {:g}]", kModelScalerLimit));
     for (double v : m.guard.prototypes)
-      if (!std::isfinite(v)) fail("guard.points", "must be finite numbers");
+      if (!within(v, kModelScalerLimit))
+        fail("guard.points",
+             fmt::format("must be finite numbers of magnitude at most {:g}", kModelScalerLimit));
   }
   const std::size_t regressor_inputs = input_count(m.regressor);
   if (regressor_inputs != d)

@@ -1,5 +1,6 @@
-// Numbers and templates as C text (src/base/c_text.hpp): every double the header prints reads
-// back as the same double, tables break as documented, and a template's keys are all replaced once.
+// Numbers, templates and model text as C text (src/base/c_text.hpp): every double the header
+// prints reads back as the same double, tables break as documented, a template's keys are all
+// replaced once, and no text from a model file leaves its comment or literal.
 #include "base/c_text.hpp"
 
 #include <gtest/gtest.h>
@@ -49,4 +50,29 @@ TEST(CText, TemplatesReplaceEveryKeyOnce) {
 }
 
 }  // namespace
+// Found by an attack (issue 57): a model's method, version and feature names went into the
+// header's comments and literals as they were, so a model file could put code in firmware.
+TEST(CText, ModelTextCannotLeaveItsCommentOrLiteral) {
+  using detail::c_comment_text;
+  using detail::c_string_literal;
+  EXPECT_EQ(c_comment_text("ssa-svr 0.9"), "ssa-svr 0.9");
+  EXPECT_EQ(c_comment_text("a*/b"), "a\\x2a\\x2fb");
+  EXPECT_EQ(c_comment_text("/*"), "\\x2f\\x2a");
+  EXPECT_EQ(c_comment_text("x\\"), "x\\x5c");
+  EXPECT_EQ(c_comment_text("?" "?/"), "\\x3f\\x3f\\x2f");
+  EXPECT_EQ(c_comment_text(std::string("a\nb\0c", 5)), "a\\x0ab\\x00c");
+  EXPECT_EQ(c_comment_text("\xc2\xb0"), "\\xc2\\xb0");
+  EXPECT_EQ(c_string_literal("T_fog_degc"), "\"T_fog_degc\"");
+  EXPECT_EQ(c_string_literal("a\"b\\c?"), "\"a\\\"b\\\\c\\?\"");
+  EXPECT_EQ(c_string_literal("\n\x7f\xff"), "\"\\012\\177\\377\"");
+  EXPECT_TRUE(detail::is_plain_c_identifier("gyro"));
+  EXPECT_TRUE(detail::is_plain_c_identifier("accel_x"));
+  EXPECT_FALSE(detail::is_plain_c_identifier("1"));
+  EXPECT_FALSE(detail::is_plain_c_identifier("int"));
+  EXPECT_FALSE(detail::is_plain_c_identifier("_Bool"));
+  EXPECT_FALSE(detail::is_plain_c_identifier("_x"));
+  EXPECT_FALSE(detail::is_plain_c_identifier("a-b"));
+  EXPECT_FALSE(detail::is_plain_c_identifier(""));
+}
+
 }  // namespace fogdrift::detail

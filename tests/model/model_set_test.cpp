@@ -17,7 +17,7 @@ namespace {
 CompensationModel model_for(const std::string& target, std::uint64_t seed) {
   TrainOptions o;
   o.method = Method::poly;
-  DatasetOptions d;
+  DatasetOptions d = test::kDefaultDataset;
   d.target_column = target;
   return train(test::synthetic(seed), d, o).model;
 }

@@ -59,6 +59,22 @@ std::string to_c_header(const ModelSet& set, const std::string& prefix = "fogdri
                         double stream_dt_s = 0, const FaultPolicy& faults = {},
                         CPrecision precision = CPrecision::double_);
 
+/// How far a float header's drift departs from the model's own (export-c --precision float):
+/// the features rounded to float, standardised and the drift de-standardised in float as the
+/// header does (the steps where float loses most: a thermometer that varies by micro-degrees
+/// about 25 °C keeps no digits after `features - mean`), the regressor itself run in double on
+/// those float inputs. Evaluated on the model's own training inputs as its file keeps them (the
+/// guard's prototypes; without a guard, the feature means and one scale either side of each).
+struct FloatPrecisionCheck {
+  double max_error = 0;    ///< largest |float drift − double drift|, in the target's unit
+  double drift_std = 0;    ///< the training drift's standard deviation (its scaler's scale)
+  std::size_t inputs = 0;  ///< rows compared
+  /// The largest error as a share of the drift's STD; export-c refuses above kFloatShareLimit.
+  double share() const { return drift_std > 0 ? max_error / drift_std : 0.0; }
+};
+inline constexpr double kFloatShareLimit = 1e-3;
+FloatPrecisionCheck check_float_precision(const CompensationModel& model);
+
 /// The upper-case form of `prefix` that the header's macros carry; OptionError("prefix", …) when
 /// `prefix` is not a C identifier (letters, digits and '_', not starting with a digit).
 std::string c_macro_prefix(const std::string& prefix);

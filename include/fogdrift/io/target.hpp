@@ -60,6 +60,12 @@ bool is_target_column(std::string_view name);
 /// The axis a target column names (Target::axis).
 std::string axis_name(std::string_view target_column);
 
+/// Checks the targets of one model (train --targets, and export-c again for a model file): each a
+/// target, none twice, and their axes unique C identifiers that C does not reserve, since each is
+/// a member of the C header's state and a part of its names (gyro_dph and gyro_gyro_dph are both
+/// axis gyro; gyro_1_dph is axis 1; gyro_int_dph is axis int). OptionError(option) naming them.
+void check_targets(const std::vector<std::string>& target_columns, const std::string& option);
+
 /// The largest magnitude a reference may have, in its target's unit (a manifest's, a flag's, a
 /// keyword's).
 inline constexpr double kReferenceLimit = 1e7;

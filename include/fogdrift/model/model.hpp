@@ -48,6 +48,22 @@ struct Provenance {
   std::string fogdrift_version;
 };
 
+/// A drift more than this many of the training drift's standard deviations from its mean is no
+/// drift a model learned: a model file edited to absurd numbers, or inputs far beyond its
+/// training. Every path treats it as a drift that is not a number (docs/reliability.md,
+/// "Models"): the batch paths stop with an error, the streaming paths (StreamingCompensator,
+/// the C header's PREFIX_DRIFT_LIMIT) hold the last good drift or stop the correction, flagged.
+inline constexpr double kDriftLimitScales = 1e3;
+
+/// The largest magnitude of a number a model file's scalers may hold (feature means and scales,
+/// the drift's mean and scale, the guard's prototypes and radius), and the smallest feature
+/// scale: bounds that keep every finite input's standardised value and novelty finite.
+inline constexpr double kModelScalerLimit = 1e7;
+inline constexpr double kModelSmallestScale = 1e-9;
+/// The largest magnitude of any number in a model file's regressor (coefficients, weights,
+/// support vectors, kernel widths).
+inline constexpr double kModelRegressorLimit = 1e12;
+
 /// One sample's drift as the model predicts it, with the novelty guard's view of it (guard.hpp).
 struct DriftPrediction {
   double drift_dph = 0;      ///< f(x), the model's drift, °/h, unguarded
