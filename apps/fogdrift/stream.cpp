@@ -20,6 +20,7 @@
 #include "fogdrift/firmware/c_header.hpp"
 #include "fogdrift/io/recording.hpp"
 #include "fogdrift/model/compensator.hpp"
+#include "fogdrift/model/decimate.hpp"
 #include "fogdrift/model/features.hpp"
 #include "fogdrift/model/model.hpp"
 #include "fogdrift/model/model_set.hpp"
@@ -40,15 +41,15 @@ struct StreamArgs {
   FaultPolicy faults;                        ///< as run: fitted to the model, then the flags
 };
 
-std::vector<std::string> split(const std::string& line) {
-  std::vector<std::string> out(1);
-  for (char c : line) {
-    if (c == ',')
-      out.emplace_back();
-    else if (c != '\r')
-      out.back() += c;
+// A header's fields as compensate and inspect read them (csv::read): quoted, trimmed.
+std::vector<std::string> header_fields(const std::string& line, const std::string& name) {
+  std::vector<std::string> fields = csv::split_line(line, ',', name, 1);
+  for (std::string& f : fields) {
+    const auto first = f.find_first_not_of(" \t");
+    const auto last = f.find_last_not_of(" \t");
+    f = first == std::string::npos ? std::string() : f.substr(first, last - first + 1);
   }
-  return out;
+  return fields;
 }
 
 // With --strict, the first faulty sample stops the stream with its file, line and column, as a
@@ -76,11 +77,18 @@ void stop_at_fault(const std::string& name, std::size_t line_no, std::uint32_t f
 
 void run(const StreamArgs& given) {
   StreamArgs a = given;
-  if (!(a.rate_hz > 0) || a.rate_hz > 10000)
-    throw OptionError("--rate-hz", fmt::format("{} is outside (0, 10000] Hz", a.rate_hz));
   // Every axis of the model (model_set.hpp), or the one --target names.
   const ModelSet set = axes_to_run(load_model_set(a.model, a.load), a.target);
   const CompensationModel& first = set.models.front();
+  // Without --rate-hz, the model's own rate; a model file too old to record it needs the flag.
+  const double model_dt_s = first.dataset.preprocessing.sample_interval_s;
+  if (a.rate_hz == 0 && model_dt_s > 0) a.rate_hz = 1.0 / model_dt_s;
+  if (a.rate_hz == 0)
+    throw OptionError("--rate-hz", fmt::format("is needed: {} does not record the rate it was "
+                                               "trained at (written before models did)",
+                                               a.model));
+  if (!(a.rate_hz > 0) || a.rate_hz > 10000)
+    throw OptionError("--rate-hz", fmt::format("{} is outside (0, 10000] Hz", a.rate_hz));
   a.faults = fault_policy(*a.fault_flags, first);
   // Streamed, a model trained on centred rates sees causal ones, noisier than those it learned:
   // a tuned SVR's drift then departs from its batch drift by about the drift's own STD
@@ -91,7 +99,11 @@ void run(const StreamArgs& given) {
         "sees causal ones and its drift differs from compensate's (train with --differentiator "
         "causal for the instrument)\n",
         a.model);
-  const double dt_s = 1.0 / a.rate_hz;
+  // The interval the compensators run on: the model's own over the samples per model sample,
+  // so a rate rounded to four digits runs as the model was trained (decimate.hpp).
+  const double dt_s = streaming_interval_s(
+      first.dataset.preprocessing, 1.0 / a.rate_hz,
+      decimation_factor(first.dataset.preprocessing, 1.0 / a.rate_hz, "--rate-hz"));
   // One compensator per axis; a rate a model cannot run at names --rate-hz.
   std::vector<StreamingCompensator> compensators;
   compensators.reserve(set.models.size());
@@ -111,7 +123,7 @@ void run(const StreamArgs& given) {
   csv::LineReader lines(in);  // LF, CRLF or CR line ends and a byte-order mark, as compensate
   std::string line;
   if (!lines.next(line)) throw InputError(name, 1, 0, "is empty; a header line is needed");
-  const std::vector<std::string> header = split(line);
+  const std::vector<std::string> header = header_fields(line, name);
   constexpr std::size_t kAbsent = static_cast<std::size_t>(-1);
   auto column_of = [&](const std::string& wanted, bool needed) {
     const auto it = std::find(header.begin(), header.end(), wanted);
@@ -167,7 +179,17 @@ void run(const StreamArgs& given) {
   while (lines.next(line)) {
     ++line_no;
     if (line.empty()) continue;
-    const std::vector<std::string> fields = split(line);
+    // The same reader as compensate's: a quoted field is its text; a line it cannot read (an
+    // unterminated quote) is skipped as a torn one, never echoed with outputs inside the quote.
+    std::vector<std::string> fields;
+    try {
+      fields = csv::split_line(line, ',', name, line_no);
+    } catch (const InputError& e) {
+      if (a.strict) throw;
+      std::cerr << fmt::format("{}:{}: skipped: {}\n", name, line_no, e.message());
+      ++skipped;
+      continue;
+    }
     if (fields.size() != header.size()) {
       // A torn line cannot carry its outputs; the next sample sees the gap it leaves.
       const std::string what =
@@ -185,7 +207,8 @@ void run(const StreamArgs& given) {
       if (a.strict && (!value || !std::isfinite(*value)))
         throw InputError(
             name, line_no, c + 1,
-            fmt::format("{} '{}' is not a finite number", what, csv::excerpt(fields[c])));
+            fmt::format("{} '{}' {}", what, csv::excerpt(fields[c]),
+                        !value ? csv::why_not_a_number(fields[c]) : "is not a finite number"));
       return value ? *value : std::nan("");
     };
     std::vector<double>& v = values;
@@ -272,7 +295,10 @@ void add_stream(CLI::App& app) {
   add_model_load_flags(cmd, &args->load);
   cmd->add_option("input", args->input, "Recording CSV, or - for standard input")
       ->capture_default_str();
-  cmd->add_option("--rate-hz", args->rate_hz, "The logger's fixed sample rate, Hz")->required();
+  cmd->add_option("--rate-hz", args->rate_hz,
+                  "The logger's fixed sample rate, Hz (default: the model's own); the model's "
+                  "rate or a whole multiple of it, to 1 %. Steps more than 10 % off its "
+                  "interval are flagged off_interval");
   cmd->add_option("--target", args->target,
                   "With a model of several axes (train --targets): stream this one alone, e.g. "
                   "gyro_y_dph (default: every axis, each with drift_y_dph, gyro_y_comp_dph, "

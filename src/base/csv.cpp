@@ -24,7 +24,47 @@ std::string_view trim(std::string_view s) {
   return s;
 }
 
-// Splits one physical line into fields. Quotes may not span lines.
+bool all_blank(const std::vector<std::string>& fields) {
+  for (const auto& f : fields)
+    if (!trim(f).empty()) return false;
+  return true;
+}
+
+// drop_empty: removes the header's nameless columns (indices in increasing order) from the table;
+// one that holds a value anywhere is an error naming its first such cell.
+void drop_nameless(Table& table, const std::vector<std::size_t>& nameless) {
+  for (std::size_t c : nameless) {
+    for (std::size_t i = 0; i < table.rows.size(); ++i) {
+      if (!trim(table.rows[i][c]).empty()) {
+        throw InputError(table.file, table.row_line[i], c + 1,
+                         fmt::format("'{}' is in a column with no name in the header; name the "
+                                     "column, or empty it",
+                                     excerpt(table.rows[i][c])));
+      }
+    }
+  }
+  auto keep = [&](std::vector<std::string>& fields) {
+    std::vector<std::string> kept;
+    kept.reserve(fields.size() - nameless.size());
+    for (std::size_t c = 0, next = 0; c < fields.size(); ++c) {
+      if (next < nameless.size() && nameless[next] == c) {
+        ++next;
+        continue;
+      }
+      kept.push_back(std::move(fields[c]));
+    }
+    fields = std::move(kept);
+  };
+  keep(table.header);
+  for (auto& row : table.rows) keep(row);
+  std::vector<std::string> where;
+  for (std::size_t c : nameless) where.push_back(std::to_string(c + 1));
+  table.notes.push_back(fmt::format("dropped {} empty column(s) with no name (column {})",
+                                    nameless.size(), fmt::join(where, ", ")));
+}
+
+}  // namespace
+
 std::vector<std::string> split_line(std::string_view line, char delimiter, const std::string& file,
                                     std::size_t line_no) {
   std::vector<std::string> fields;
@@ -76,47 +116,6 @@ std::vector<std::string> split_line(std::string_view line, char delimiter, const
   return fields;
 }
 
-bool all_blank(const std::vector<std::string>& fields) {
-  for (const auto& f : fields)
-    if (!trim(f).empty()) return false;
-  return true;
-}
-
-// drop_empty: removes the header's nameless columns (indices in increasing order) from the table;
-// one that holds a value anywhere is an error naming its first such cell.
-void drop_nameless(Table& table, const std::vector<std::size_t>& nameless) {
-  for (std::size_t c : nameless) {
-    for (std::size_t i = 0; i < table.rows.size(); ++i) {
-      if (!trim(table.rows[i][c]).empty()) {
-        throw InputError(table.file, table.row_line[i], c + 1,
-                         fmt::format("'{}' is in a column with no name in the header; name the "
-                                     "column, or empty it",
-                                     excerpt(table.rows[i][c])));
-      }
-    }
-  }
-  auto keep = [&](std::vector<std::string>& fields) {
-    std::vector<std::string> kept;
-    kept.reserve(fields.size() - nameless.size());
-    for (std::size_t c = 0, next = 0; c < fields.size(); ++c) {
-      if (next < nameless.size() && nameless[next] == c) {
-        ++next;
-        continue;
-      }
-      kept.push_back(std::move(fields[c]));
-    }
-    fields = std::move(kept);
-  };
-  keep(table.header);
-  for (auto& row : table.rows) keep(row);
-  std::vector<std::string> where;
-  for (std::size_t c : nameless) where.push_back(std::to_string(c + 1));
-  table.notes.push_back(fmt::format("dropped {} empty column(s) with no name (column {})",
-                                    nameless.size(), fmt::join(where, ", ")));
-}
-
-}  // namespace
-
 std::optional<std::size_t> Table::find(std::string_view name) const {
   for (std::size_t i = 0; i < header.size(); ++i) {
     if (header[i] == name) return i;
@@ -135,8 +134,34 @@ Table parse(std::string_view text, const std::string& file, const ReadOptions& o
       static_cast<unsigned char>(text[1]) == 0xBB && static_cast<unsigned char>(text[2]) == 0xBF) {
     text.remove_prefix(3);
   }
-  if (text.find('\0') != std::string_view::npos) {
-    throw InputError(file, 0, 0, "contains a NUL byte: this is not a text CSV file");
+  // UTF-16 (a spreadsheet's "Unicode text"): a byte-order mark, or NULs between ASCII letters.
+  const bool utf16_mark = text.size() >= 2 && ((static_cast<unsigned char>(text[0]) == 0xFF &&
+                                                static_cast<unsigned char>(text[1]) == 0xFE) ||
+                                               (static_cast<unsigned char>(text[0]) == 0xFE &&
+                                                static_cast<unsigned char>(text[1]) == 0xFF));
+  if (const std::size_t nul = text.find('\0'); utf16_mark || nul != std::string_view::npos) {
+    const bool utf16 = utf16_mark || (text.size() >= 4 && (text[0] == '\0' || text[1] == '\0') &&
+                                      (text[2] == '\0' || text[3] == '\0'));
+    if (utf16)
+      throw InputError(file, 1, 1,
+                       "is UTF-16 text, not UTF-8: save it as \"CSV UTF-8\" (or convert it, e.g. "
+                       "iconv -f UTF-16 -t UTF-8)");
+    const std::string before(text.substr(0, nul));
+    std::size_t line = 1, column = 1;
+    for (char c : before) (c == '\n') ? (++line, column = 1) : ++column;
+    throw InputError(file, line, column, "contains a NUL byte: this is not a text CSV file");
+  }
+  // Lone CRs end lines (old Mac files), as csv::LineReader reads them for stream.
+  std::string lf_text;
+  for (std::size_t cr = text.find('\r'); cr != std::string_view::npos;
+       cr = text.find('\r', cr + 1)) {
+    if (cr + 1 < text.size() && text[cr + 1] == '\n') continue;
+    lf_text.assign(text);
+    for (std::size_t i = cr; i < lf_text.size(); ++i)
+      if (lf_text[i] == '\r' && (i + 1 == lf_text.size() || lf_text[i + 1] != '\n'))
+        lf_text[i] = '\n';
+    text = lf_text;
+    break;
   }
 
   std::size_t pos = 0;
@@ -204,6 +229,32 @@ Table parse(std::string_view text, const std::string& file, const ReadOptions& o
   return table;
 }
 
+namespace {
+
+// Whether a decimal number that from_chars found out of range is too small rather than too
+// large: the power of ten of its first non-zero digit, with its exponent, is negative.
+bool underflows(std::string_view s) {
+  if (!s.empty() && (s.front() == '-' || s.front() == '+')) s.remove_prefix(1);
+  const std::size_t e = s.find_first_of("eE");
+  const std::string_view mantissa = s.substr(0, e);
+  long long exponent = 0;
+  if (e != std::string_view::npos) {
+    std::string_view x = s.substr(e + 1);
+    const bool negative = !x.empty() && x.front() == '-';
+    if (!x.empty() && (x.front() == '-' || x.front() == '+')) x.remove_prefix(1);
+    for (char ch : x) exponent = std::min<long long>(exponent * 10 + (ch - '0'), 1LL << 40);
+    if (negative) exponent = -exponent;
+  }
+  const std::size_t point = std::min(mantissa.find('.'), mantissa.size());
+  const std::size_t first = mantissa.find_first_of("123456789");
+  if (first == std::string_view::npos) return true;
+  const long long place = first < point ? static_cast<long long>(point - first) - 1
+                                        : -static_cast<long long>(first - point);
+  return place + exponent < 0;
+}
+
+}  // namespace
+
 std::optional<double> parse_number(std::string_view field, bool decimal_comma) {
   field = trim(field);
   if (field.empty()) return std::nullopt;
@@ -231,8 +282,26 @@ std::optional<double> parse_number(std::string_view field, bool decimal_comma) {
   const char* first = field.data();
   const char* last = field.data() + field.size();
   const auto result = std::from_chars(first, last, value, std::chars_format::general);
+  // A number too small for a double (1e-400) is one: it rounds to zero. Too large is none.
+  if (result.ec == std::errc::result_out_of_range && result.ptr == last && underflows(field))
+    return field.front() == '-' ? -0.0 : 0.0;
   if (result.ec != std::errc() || result.ptr != last || !std::isfinite(value)) return std::nullopt;
   return value;
+}
+
+std::string why_not_a_number(std::string_view cell) {
+  const std::string_view field = trim(cell);
+  if (field.empty()) return "is empty";
+  std::string lower(field.substr(0, 64));
+  for (char& ch : lower) ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
+  if (lower.find("nan") != std::string::npos || lower.find("inf") != std::string::npos)
+    return "is not finite (NaN and Inf are not allowed)";
+  double value = 0.0;
+  const auto result =
+      std::from_chars(field.data(), field.data() + field.size(), value, std::chars_format::general);
+  if (result.ec == std::errc::result_out_of_range && result.ptr == field.data() + field.size())
+    return "is beyond a double's range (magnitude above 1.8e308)";
+  return "is not a number";
 }
 
 std::string format_number(double value) {
@@ -259,8 +328,18 @@ std::string quote(std::string_view field, char delimiter) {
 
 std::string excerpt(std::string_view field) {
   constexpr std::size_t kShown = 40;
-  if (field.size() <= kShown) return std::string(field);
-  return fmt::format("{}…({} characters)", field.substr(0, kShown), field.size());
+  // Control bytes (a NUL, a terminal escape) shown as \xNN: a message is one line of text that
+  // a NUL would cut short before its rule.
+  std::string shown;
+  for (const char c : field.substr(0, kShown)) {
+    const auto byte = static_cast<unsigned char>(c);
+    if (byte < 0x20 || byte == 0x7f)
+      shown += fmt::format("\\x{:02x}", byte);
+    else
+      shown += c;
+  }
+  if (field.size() <= kShown) return shown;
+  return fmt::format("{}…({} characters)", shown, field.size());
 }
 
 bool LineReader::next(std::string& line) {

@@ -111,6 +111,7 @@ constexpr std::string_view kStreamingC =
 #define @U@_TEMP_JUMP_DEGC (@TEMP_JUMP@) /* 0: no jump check */
 #endif
 @FLAGS@
+#define @U@_INTERVAL_TOLERANCE (@INTERVAL_TOLERANCE@) /* a step within it of the interval is one */
 #define @U@_BLOCK @BLOCK@ /* samples per model sample */
 static const double @P@_data_dt_s = @DATA_DT@;
 static const double @P@_dt_s = @DT@;
@@ -118,6 +119,7 @@ static const double @P@_dt_s = @DT@;
 static const int @P@_reads[@U@_N_THERMOMETERS] = {@READ_FLAGS@};
 static const @REAL@ @P@_rate_taps[@NTAPS@] = {@TAPS@};
 @LAG_TABLES@#define @U@_DRIFT_MEAN @P@_drift_mean_@UNIT@
+#define @U@_DRIFT_LIMIT ((@REAL@)@DRIFT_LIMIT@) /* kDriftLimitScales drift scales */
 #define @U@_FABS fabs@F@
 #define @U@_DIFFERENCE_FROM_NEWEST @FROM_NEWEST@
 
@@ -161,7 +163,9 @@ std::string c_streaming_part(const CompensationModel& model, const std::string& 
   validate(faults);
   const std::size_t block =
       decimation_factor(model.dataset.preprocessing, data_dt_s, "stream_dt_s");
-  const double dt_s = static_cast<double>(block) * data_dt_s;  // the model's interval
+  // The data's interval as the model's interval / block (decimate.hpp), and the model's.
+  data_dt_s = streaming_interval_s(model.dataset.preprocessing, data_dt_s, block);
+  const double dt_s = static_cast<double>(block) * data_dt_s;
   signal::CausalDifferentiator diff(model.dataset.preprocessing.rates, dt_s);
   const std::size_t w = diff.window();
   std::vector<double> taps;
@@ -271,6 +275,8 @@ std::string c_streaming_part(const CompensationModel& model, const std::string& 
        {"@STUCK@", c_number(faults.stuck_s)},
        {"@STUCK_DELTA@", c_number(faults.stuck_delta_degc)},
        {"@TEMP_JUMP@", c_number(faults.temp_jump_degc)},
+       {"@INTERVAL_TOLERANCE@", c_number(kIntervalTolerance)},
+       {"@DRIFT_LIMIT@", c_number(kDriftLimitScales * model.y_scaler.scale[0])},
        // In float, differences from the newest sample keep the rate's rounding that of the change
        // in temperature over the window, not of the temperature itself.
        {"@FROM_NEWEST@", single ? "1" : "0"},

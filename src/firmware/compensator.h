@@ -18,8 +18,10 @@
  *   fds_lag_thermometer, fds_lag_gain, fds_lag_tau_s [FDS_N_LAGS]    with lags
  *   FDS_TEMP_MIN_DEGC, FDS_TEMP_MAX_DEGC, FDS_READING_LIMIT, FDS_BRIDGE_S, FDS_HOLD_S,
  *     FDS_STUCK_S, FDS_STUCK_DELTA_DEGC, FDS_TEMP_JUMP_DEGC     the fault policy
- *   FDS_FAULT_TEMP_BAD, ... FDS_FAULT_RESTART                   its flags' bits
+ *   FDS_FAULT_TEMP_BAD, ... FDS_FAULT_OFF_INTERVAL              its flags' bits
+ *   FDS_INTERVAL_TOLERANCE             a step within this share of an interval is one
  *   FDS_DRIFT_MEAN                     the drift where the model cannot run
+ *   FDS_DRIFT_LIMIT                    the farthest a drift may lie from it
  *   FDS_FABS(x)                        fabs or fabsf
  *   FDS_DIFFERENCE_FROM_NEWEST         1: rates from the samples less the newest (float)
  *   fds_features_(temp, rate, t, lag_rate, f)   the model's inputs
@@ -193,6 +195,9 @@ static inline fds_real fds_step_(fds_state* s, double time_s,
         long_gap = 1;
       else
         missing = lround(step / fds_dt_s) - 1;
+    } else if (step < (1 - FDS_INTERVAL_TOLERANCE) * fds_dt_s ||
+               step > (1 + FDS_INTERVAL_TOLERANCE) * fds_dt_s) {
+      s->flags |= FDS_FAULT_OFF_INTERVAL;
     }
   }
   for (k = 0; k < FDS_N_THERMOMETERS; ++k) {
@@ -298,6 +303,9 @@ static inline fds_real fds_step_(fds_state* s, double time_s,
     fds_features_(temp, rate, t, 0, f);
 #endif
     drift = fds_predict_(f);
+    /* Beyond FDS_DRIFT_LIMIT of the mean, no drift the model learned: as a NaN
+     * (docs/reliability.md). */
+    if (!(FDS_FABS(drift - FDS_DRIFT_MEAN) <= FDS_DRIFT_LIMIT)) drift = (fds_real)NAN;
     if (any_bridged) s->flags |= FDS_FAULT_BRIDGED;
 #if defined(FDS_GUARD) && FDS_GUARD
     {
@@ -350,6 +358,9 @@ static inline fds_real fds_update_(fds_state* s, double time_s,
     } else if (gap < 0.5 * fds_data_dt_s) {
       s->flags |= FDS_FAULT_OUT_OF_ORDER;
       return s->last_drift;
+    } else if (gap <= 1.5 * fds_data_dt_s && (gap < (1 - FDS_INTERVAL_TOLERANCE) * fds_data_dt_s ||
+                                              gap > (1 + FDS_INTERVAL_TOLERANCE) * fds_data_dt_s)) {
+      s->flags |= FDS_FAULT_OFF_INTERVAL;
     }
   }
   first = !s->data_started;

@@ -18,8 +18,8 @@ StreamingCompensator::StreamingCompensator(const CompensationModel& model, doubl
                                            const StreamOptions& options)
     : model_(model),
       k_(decimation_factor(model.dataset.preprocessing, dt_s, "rate")),
-      data_dt_s_(dt_s),
-      dt_s_(static_cast<double>(k_) * dt_s),
+      data_dt_s_(streaming_interval_s(model.dataset.preprocessing, dt_s, k_)),
+      dt_s_(static_cast<double>(k_) * data_dt_s_),
       faults_(options.faults),
       reading_limit_(target_of(model.dataset.target_column).kind == TargetKind::gyro
                          ? faults_.gyro_limit_dph
@@ -179,6 +179,8 @@ StreamOutput StreamingCompensator::update(const Sample& s) noexcept {
       flags |= fault::restart;
     } else if (gap < 0.5 * data_dt_s_) {
       return finish(s, last_drift_dph_, flags | fault::out_of_order);
+    } else if (gap <= 1.5 * data_dt_s_ && off_interval(gap, data_dt_s_)) {
+      flags |= fault::off_interval;
     }
   }
   const bool first = !data_started_;
@@ -218,6 +220,8 @@ StreamOutput StreamingCompensator::step(const Sample& s, std::uint32_t flags) no
         long_gap = true;
       else
         missing = static_cast<std::size_t>(std::lround(step / dt_s_)) - 1;
+    } else if (off_interval(step, dt_s_)) {
+      flags |= fault::off_interval;
     }
   }
   // raw_ from the sample first: step() may be given the block means held in temp_.

@@ -50,6 +50,10 @@ std::size_t decimation_factor(const FeatureOptions& model, double data_dt_s,
   return k;
 }
 
+double streaming_interval_s(const FeatureOptions& model, double data_dt_s, std::size_t k) {
+  return model.sample_interval_s > 0 ? model.sample_interval_s / static_cast<double>(k) : data_dt_s;
+}
+
 Recording decimate(const Recording& recording, std::size_t k) {
   if (k <= 1) return recording;
   Recording out;

@@ -51,8 +51,8 @@ namespace fault {
 
 const std::array<std::string_view, count>& names() {
   static const std::array<std::string_view, count> kNames = {
-      "temp_bad", "temp_stuck", "gyro_bad", "time_bad", "gap",      "out_of_order",
-      "restart",  "bridged",    "held",     "stopped",  "temp_jump"};
+      "temp_bad", "temp_stuck", "gyro_bad", "time_bad", "gap",       "out_of_order",
+      "restart",  "bridged",    "held",     "stopped",  "temp_jump", "off_interval"};
   return kNames;
 }
 

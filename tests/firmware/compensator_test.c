@@ -56,7 +56,10 @@ static const fds_real fds_lag_tau_s[FDS_N_LAGS] = {4.0};
 #define FDS_FAULT_HELD 256u
 #define FDS_FAULT_STOPPED 512u
 #define FDS_FAULT_RESTART 1024u
+#define FDS_FAULT_OFF_INTERVAL 2048u
+#define FDS_INTERVAL_TOLERANCE (0.1)
 #define FDS_DRIFT_MEAN ((fds_real)7.0)
+#define FDS_DRIFT_LIMIT ((fds_real)1e6)
 
 static void fds_features_(const fds_real temp[FDS_N_THERMOMETERS],
                           const fds_real rate[FDS_N_THERMOMETERS], double t,

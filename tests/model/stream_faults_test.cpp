@@ -185,6 +185,49 @@ TEST(StreamFaults, GapsAreBridgedOrRestartTheRates) {
   EXPECT_EQ(out[900].drift_dph, out[899].drift_dph);
 }
 
+// Found by an attack (issue 57): 2 Hz data streamed as 1 Hz had no flag on any line. A step
+// within ±10 % of the interval is one; outside it (and neither out of order nor a gap) it is
+// flagged off_interval, at the model's interval and, for a faster logger, at the data's.
+TEST(StreamFaults, AStepOffTheIntervalIsFlagged) {
+  std::vector<Sample> s = clean_samples();
+  s.resize(200);
+  for (std::size_t i = 0; i < s.size(); ++i) s[i].time_s = 0.5 * static_cast<double>(i);
+  const std::vector<StreamOutput> twice = run(s);
+  EXPECT_EQ(twice[0].flags, 0u);
+  for (std::size_t i = 1; i < twice.size(); ++i)
+    ASSERT_EQ(twice[i].flags & fault::off_interval, fault::off_interval) << i;
+  for (std::size_t i = 0; i < s.size(); ++i)
+    s[i].time_s = static_cast<double>(i) + (i % 2 ? 0.09 : 0.0);  // steps of 1.09 and 0.91 s
+  for (const StreamOutput& o : run(s)) ASSERT_EQ(o.flags & fault::off_interval, 0u);
+  for (std::size_t i = 0; i < s.size(); ++i) s[i].time_s = 1.2 * static_cast<double>(i);
+  const std::vector<StreamOutput> slow = run(s);
+  for (std::size_t i = 1; i < slow.size(); ++i)
+    ASSERT_EQ(slow[i].flags & fault::off_interval, fault::off_interval) << i;
+  // A 10 Hz logger: its steps are checked at 0.1 s.
+  CompensationModel model = fixture().model;
+  model.dataset.preprocessing.sample_interval_s = 1.0;  // as train_campaign records it
+  StreamingCompensator fast(model, 0.1);
+  Sample x = clean_samples()[0];
+  std::uint32_t flags = 0;
+  for (int i = 0; i < 40; ++i) {
+    x.time_s = 0.05 * i;  // 20 Hz data as 10 Hz
+    flags |= i > 0 ? fast.update(x).flags : 0u;
+  }
+  EXPECT_EQ(flags & fault::off_interval, fault::off_interval);
+  EXPECT_EQ(kIntervalTolerance, 0.10);
+}
+
+// A rate given with four digits runs on the model's own interval (decimate.hpp,
+// streaming_interval_s): the drifts are those of the exact rate, bit for bit.
+TEST(StreamFaults, ARateRoundedToFourDigitsRunsAsTheModelsOwn) {
+  const std::vector<Sample> s = clean_samples();
+  CompensationModel model = fixture().model;
+  model.dataset.preprocessing.sample_interval_s = 1.0;  // as train_campaign records it
+  StreamingCompensator exact(model, 1.0), rounded(model, 1.0 / 1.0004);
+  for (std::size_t i = 0; i < 300; ++i)
+    ASSERT_EQ(exact.update(s[i]).drift_dph, rounded.update(s[i]).drift_dph) << i;
+}
+
 TEST(StreamFaults, TimeThatDoesNotAdvanceIsSkippedAndGoingBackRestarts) {
   std::vector<Sample> s = clean_samples();
   Sample repeat = s[200];
@@ -413,6 +456,8 @@ TEST(StreamFaults, TheCHeaderRunsTheSamePolicy) {
   s.erase(s.begin() + 900, s.begin() + 940);
   s.insert(s.begin() + 1000, s[998]);
   for (std::size_t i = 1200; i < s.size(); ++i) s[i].temp_fog_degc = s[1200].temp_fog_degc;
+  for (std::size_t i = 1100; i < 1110; ++i)  // steps of 0.75 s: another rate, off_interval
+    s[i].time_s = s[1099].time_s + 0.75 * static_cast<double>(i - 1099);
   std::vector<Sample> restarted(s.begin(), s.begin() + 1500);
   restarted.insert(restarted.end(), s.begin(), s.begin() + 300);
   const std::vector<StreamOutput> lib = run(restarted);

@@ -57,6 +57,16 @@ std::optional<double> parse_number(std::string_view field, bool decimal_comma = 
 /// Shortest decimal text that reads back to exactly `value` (std::to_chars), e.g. "0.1", "1e-07".
 std::string format_number(double value);
 
+/// One line's fields as read() splits them: quoted fields ("a,b", "say ""x"""), spaces before an
+/// opening quote tolerated; a quote may not span lines. InputError(file, line_no, column) for an
+/// unterminated quote or text after a closing one. Fields are not trimmed.
+std::vector<std::string> split_line(std::string_view line, char delimiter, const std::string& file,
+                                    std::size_t line_no);
+
+/// Why parse_number() found no number in `cell`, as an error message ends: "is empty", "is not
+/// finite (NaN and Inf are not allowed)", "is beyond a double's range (…)" or "is not a number".
+std::string why_not_a_number(std::string_view cell);
+
 /// `field` quoted when it holds the delimiter, a quote, a line break or edge spaces.
 std::string quote(std::string_view field, char delimiter = ',');
 

@@ -39,6 +39,12 @@ std::size_t decimation_factor(double model_dt_s, double data_dt_s, const std::st
 std::size_t decimation_factor(const FeatureOptions& model, double data_dt_s,
                               const std::string& option);
 
+/// The data interval the streaming paths run on for a model and a given `data_dt_s` that
+/// decimation_factor() accepted as k samples per model interval: the model's own interval / k,
+/// so a rate typed with four digits (0.0033 Hz for a 305 s interval) runs exactly as the model
+/// was trained; `data_dt_s` itself for a model file that does not record its interval.
+double streaming_interval_s(const FeatureOptions& model, double data_dt_s, std::size_t k);
+
 /// The recording in blocks of `k` samples (see the file comment): time of each block's last
 /// sample, thermometers (further temp_NAME_degc columns too) and gyro averaged; other columns are
 /// not kept. k = 1 returns a copy.

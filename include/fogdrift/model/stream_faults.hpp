@@ -70,6 +70,16 @@ void validate(const FaultPolicy& policy);
 /// The thermometer and gyro limits are the defaults'.
 FaultPolicy fault_policy_for(double model_dt_s, double rate_window_s);
 
+/// A step is "at the interval" within ±10 % of it, in every streaming path (StreamingCompensator,
+/// stream, the C header's PREFIX_INTERVAL_TOLERANCE); a step of 0.5 to 1.5 intervals outside that
+/// is flagged fault::off_interval, shorter is out of order, longer a gap.
+inline constexpr double kIntervalTolerance = 0.10;
+
+/// Whether a step of `step_s` between samples is off the interval `dt_s` (kIntervalTolerance).
+inline bool off_interval(double step_s, double dt_s) noexcept {
+  return step_s < (1 - kIntervalTolerance) * dt_s || step_s > (1 + kIntervalTolerance) * dt_s;
+}
+
 /// Per-sample flags of the streaming compensator, OR-ed together.
 namespace fault {
 constexpr std::uint32_t temp_bad = 1u << 0;      ///< a thermometer not a number or out of range
@@ -83,7 +93,10 @@ constexpr std::uint32_t bridged = 1u << 7;       ///< the drift uses substituted
 constexpr std::uint32_t held = 1u << 8;          ///< the drift is the last good one, held
 constexpr std::uint32_t stopped = 1u << 9;       ///< the correction stopped: the mean drift
 constexpr std::uint32_t temp_jump = 1u << 10;    ///< a thermometer jumped (temp_jump_degc)
-constexpr std::size_t count = 11;
+/// time stepped by neither the interval (within kIntervalTolerance) nor a gap: data at another
+/// rate than the one given; the sample is taken as one interval, and flagged
+constexpr std::uint32_t off_interval = 1u << 11;
+constexpr std::size_t count = 12;
 /// The flags' names, bit k at index k: "temp_bad", "temp_stuck", …
 const std::array<std::string_view, count>& names();
 /// "temp_bad|bridged", or "" for no flags.
