@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "fogdrift/base/atomic_file.hpp"
+#include "fogdrift/base/csv.hpp"
 #include "fogdrift/base/enum_names.hpp"
 #include "fogdrift/base/error.hpp"
 #include "fogdrift/base/run_files.hpp"
@@ -101,6 +102,16 @@ Campaign parse_manifest(const std::string& text, const std::string& file, const 
     throw_json_number_error(file, text, e.what());
   }
   if (!doc.is_object()) fail(file, "(top level)", "must be a JSON object");
+  // Another of fogdrift's files where a manifest belongs: say which, before any field's rule.
+  if (doc.contains("format") && doc["format"].is_string()) {
+    const std::string format = doc["format"].get<std::string>();
+    if (format.rfind("fogdrift-", 0) == 0 && format.rfind("fogdrift-campaign", 0) != 0)
+      throw InputError(file, 0, 0,
+                       fmt::format("is a fogdrift file of format \"{}\" (a model), not a campaign "
+                                   "manifest: give the campaign folder (or its campaign.json) "
+                                   "here, and the model where a command takes MODEL",
+                                   csv::excerpt(format)));
+  }
   check_keys(doc, {"format", "latitude_deg", "recordings", "generator", "notes"}, file, "");
   if (!doc.contains("format")) fail(file, "format", "required field is missing");
   if (!doc["format"].is_string() || doc["format"].get<std::string>() != kCampaignFormat) {

@@ -140,8 +140,8 @@ std::vector<double> Recording::numeric_column(std::string_view name) const {
       const auto v = csv::parse_number(extra[c].cells[i]);
       if (!v) {
         throw InputError(source, i + 2, 0,
-                         fmt::format("column '{}': '{}' is not a finite number", name,
-                                     csv::excerpt(extra[c].cells[i])));
+                         fmt::format("column '{}': '{}' {}", name, csv::excerpt(extra[c].cells[i]),
+                                     csv::why_not_a_number(extra[c].cells[i])));
       }
       values.push_back(*v);
     }
@@ -186,17 +186,9 @@ Recording read_table(const std::filesystem::path& path, bool partial) {
         const std::string& cell = table.rows[i][c];
         const auto v = csv::parse_number(cell);
         if (!v) {
-          std::string lower(cell);
-          for (char& ch : lower)
-            ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
-          const bool non_finite =
-              lower.find("nan") != std::string::npos || lower.find("inf") != std::string::npos;
-          const char* why = cell.empty() ? "is empty"
-                            : non_finite ? "is not finite (NaN and Inf are not allowed)"
-                                         : "is not a number";
-          throw InputError(
-              file, table.row_line[i], c + 1,
-              fmt::format("column '{}': value '{}' {}", name, csv::excerpt(cell), why));
+          throw InputError(file, table.row_line[i], c + 1,
+                           fmt::format("column '{}': value '{}' {}", name, csv::excerpt(cell),
+                                       csv::why_not_a_number(cell)));
         }
         if (range && !(*v >= range->min && *v <= range->max))
           throw InputError(

@@ -233,6 +233,14 @@ Standardizer Standardizer::fit(std::span<const double> x, std::size_t cols,
       throw OptionError("features", fmt::format("column {} has a non-finite value", s.names[c]));
     }
     if (!(sd > 1e-12 * std::max(1.0, std::fabs(mean)))) {
+      // The drift's own scaler (drift_dph, drift_NAME_UNIT): the target is what is constant.
+      if (s.names[c].rfind("drift", 0) == 0)
+        throw OptionError("targets",
+                          fmt::format("the drift to learn, {}, is constant ({:.6g}) over the {} "
+                                      "training rows: the target column the recordings hold "
+                                      "does not change (an all-zero or stuck log?); check it "
+                                      "with fogdrift inspect",
+                                      s.names[c], mean, rows));
       throw OptionError("features",
                         fmt::format("{} is constant ({:.6g}) over the {} training rows; it carries "
                                     "no information, drop it from the feature spec",

@@ -136,5 +136,52 @@ TEST(LineReader, EndsLinesAtLfCrlfOrCrAndDropsTheByteOrderMark) {
   EXPECT_FALSE(LineReader(empty).next(line));
 }
 
+// Found by an attack (issue 57): messages that named the wrong rule or no place.
+TEST(Csv, TinyNumbersAreZeroAndHugeOnesSayWhy) {
+  EXPECT_EQ(*parse_number("1e-400"), 0.0);
+  EXPECT_EQ(*parse_number("-1e-400"), 0.0);
+  EXPECT_TRUE(std::signbit(*parse_number("-1e-400")));
+  EXPECT_EQ(*parse_number("0.000001e-399"), 0.0);
+  EXPECT_FALSE(parse_number("1e400").has_value());
+  EXPECT_FALSE(parse_number(std::string(100000, '9')).has_value());
+  EXPECT_EQ(why_not_a_number("1e400"), "is beyond a double's range (magnitude above 1.8e308)");
+  EXPECT_EQ(why_not_a_number(std::string(100000, '9')),
+            "is beyond a double's range (magnitude above 1.8e308)");
+  EXPECT_EQ(why_not_a_number(""), "is empty");
+  EXPECT_EQ(why_not_a_number("NaN"), "is not finite (NaN and Inf are not allowed)");
+  EXPECT_EQ(why_not_a_number("abc"), "is not a number");
+  EXPECT_EQ(excerpt(std::string("1\0"
+                                "2",
+                                3)),
+            "1\\x002");
+}
+
+TEST(Csv, LoneCarriageReturnsEndLinesAndEncodingsAreNamed) {
+  const Table lf = parse("a,b\n1,2\n3,4\n", "t.csv");
+  const Table cr = parse("a,b\r1,2\r3,4\r", "t.csv");
+  EXPECT_EQ(cr.header, lf.header);
+  EXPECT_EQ(cr.rows, lf.rows);
+  try {
+    parse(std::string("a,b\n1,\0"
+                      "2\n",
+                      9),
+          "t.csv");
+    ADD_FAILURE() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("t.csv:2:3: contains a NUL byte"), std::string::npos)
+        << e.what();
+  }
+  try {
+    parse(std::string("\xff\xfe"
+                      "a\0,\0",
+                      6),
+          "t.csv");
+    ADD_FAILURE() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("t.csv:1:1: is UTF-16 text"), std::string::npos)
+        << e.what();
+  }
+}
+
 }  // namespace
 }  // namespace fogdrift::csv
