@@ -11,6 +11,7 @@
 #include <cstdio>
 #include <cstring>
 #include <fstream>
+#include <iostream>
 #include <random>
 #include <streambuf>
 #include <system_error>
@@ -160,6 +161,9 @@ void write_to_descriptor(const fs::path& path, int fd,
                      fmt::format("descriptor {} is closed, so nothing can be written there; "
                                  "redirect it (e.g. > model.h) or name a file with -o",
                                  fd));
+  // What the process printed before goes first (`-o /dev/stdout` after a progress line).
+  std::cout.flush();
+  std::fflush(nullptr);
   DescriptorBuffer buffer(fd);
   std::ostream out(&buffer);
   write(out);
