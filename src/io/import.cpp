@@ -13,6 +13,39 @@
 namespace fogdrift {
 namespace {
 
+// Rows that hold a time and nothing else (a sheet's schedule filled in ahead of its readings) are
+// padding too: dropped and counted in the table's notes, never read as empty readings.
+void drop_time_only_rows(csv::Table& table, const ImportOptions& options) {
+  const auto mapped = options.columns.find("time_s");
+  const auto time = table.find(mapped == options.columns.end() ? "time_s" : mapped->second);
+  if (!time) return;
+  auto blank = [](const std::string& cell) {
+    return cell.find_first_not_of(" \t") == std::string::npos;
+  };
+  std::size_t kept = 0, dropped = 0, first_line = 0, last_line = 0;
+  for (std::size_t i = 0; i < table.rows.size(); ++i) {
+    const std::vector<std::string>& row = table.rows[i];
+    bool time_only = !blank(row[*time]) && row.size() > 1;
+    for (std::size_t c = 0; c < row.size() && time_only; ++c)
+      time_only = c == *time || blank(row[c]);
+    if (time_only) {
+      if (dropped++ == 0) first_line = table.row_line[i];
+      last_line = table.row_line[i];
+      continue;
+    }
+    if (kept != i) {
+      table.rows[kept] = std::move(table.rows[i]);
+      table.row_line[kept] = table.row_line[i];
+    }
+    ++kept;
+  }
+  table.rows.resize(kept);
+  table.row_line.resize(kept);
+  if (dropped > 0)
+    table.notes.push_back(fmt::format("dropped {} row(s) with a time and no values (lines {}..{})",
+                                      dropped, first_line, last_line));
+}
+
 bool starts_with(std::string_view s, std::string_view p) {
   return s.substr(0, p.size()) == p;
 }
@@ -279,9 +312,10 @@ std::vector<Recording> import_recordings(const std::filesystem::path& path,
   }
 
   // A spreadsheet's padding (nameless empty columns, rows of empty cells) is dropped with a note.
-  const csv::Table table =
+  csv::Table table =
       csv::read(path.string(), {options.delimiter, options.skip_lines, options.comment, true});
   const std::string& file = table.file;
+  drop_time_only_rows(table, options);
   if (report) report->notes = table.notes;
   std::string available;
   for (const auto& h : table.header) available += (available.empty() ? "'" : ", '") + h + "'";

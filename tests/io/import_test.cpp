@@ -252,6 +252,29 @@ constexpr const char* kSheet =
     "00:05,73.4,23.0,,\n"
     ",,,,\n";
 
+// Found by a new user (issue 58): a sheet's last rows had a time and empty cells, and import
+// --partial stopped at the first ("'' is not a finite number"); --hold-empty invented readings.
+TEST(Import, RowsWithATimeAndNoValuesArePadding) {
+  test::TempDir dir;
+  test::write_file(dir / "sheet.csv",
+                   "Time,Air (C),Case (F)\n"
+                   "10:00,20.0,68.0\n"
+                   "10:05,21.0,69.8\n"
+                   "10:10,,\n"
+                   "10:15, ,\n");
+  ImportOptions o;
+  o.columns = {{"time_s", "Time"}, {"temp_acc1_degc", "Case (F)"}, {"chamber_degc", "Air (C)"}};
+  o.conversions = {{"time_s", parse_unit("time_s", "clock")},
+                   {"temp_acc1_degc", parse_unit("temp_acc1_degc", "degF")}};
+  o.allow_partial = true;
+  o.time_zero = "10:00";
+  ImportReport report;
+  const Recording sheet = import_recording(dir / "sheet.csv", o, &report);
+  EXPECT_EQ(sheet.time_s, (std::vector<double>{0.0, 300.0}));
+  ASSERT_EQ(report.notes.size(), 1u);
+  EXPECT_EQ(report.notes[0], "dropped 2 row(s) with a time and no values (lines 4..5)");
+}
+
 TEST(Import, AChamberSheetBecomesALogToJoin) {
   test::TempDir dir;
   test::write_file(dir / "sheet.csv", kSheet);
