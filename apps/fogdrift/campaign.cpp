@@ -86,6 +86,13 @@ void run(const CampaignArgs& a) {
       CutSummary summary;
       for (auto& p : cut(rec, cut_options, &summary)) pieces.push_back(std::move(p));
       plateau_cuts += summary.plateaus;
+      // Samples the cut left out are said, on standard error, whatever --quiet says.
+      for (const auto& [from, to] : summary.dropped_spans_s)
+        std::cerr << fmt::format(
+            "fogdrift campaign: note: {}: dropped the samples from {:.6g} to {:.6g} s, a piece "
+            "too short to keep (a last window under half of --cut-window-s, or under the "
+            "fewest samples a recording needs)\n",
+            input, from, to);
     } catch (const OptionError& e) {
       const std::string flag = e.option() == "gap_s"      ? "--cut-gap-s"
                                : e.option() == "window_s" ? "--cut-window-s"

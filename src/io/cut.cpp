@@ -99,6 +99,8 @@ std::vector<Recording> cut(const Recording& recording, const CutOptions& options
           ++s.windows;
         } else {
           ++s.dropped;
+          s.dropped_samples += stop - start;
+          s.dropped_spans_s.emplace_back(t[start], t[stop - 1]);
         }
         start = stop;
       }
@@ -110,6 +112,8 @@ std::vector<Recording> cut(const Recording& recording, const CutOptions& options
   for (const auto& [b, e] : pieces) {
     if (e - b < options.min_samples) {
       ++s.dropped;
+      s.dropped_samples += e - b;
+      if (e > b) s.dropped_spans_s.emplace_back(t[b], t[e - 1]);
       continue;
     }
     out.push_back(slice(recording, b, e));

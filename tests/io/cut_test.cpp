@@ -43,6 +43,10 @@ TEST(Cut, AtGapsThenIntoWindows) {
   // Windows of 120 s: 0..99 | 500..619, 620..739 | 740..759 (spans 19 s): dropped.
   const auto w120 = cut(rec, {60, 120}, &s);
   EXPECT_EQ(s.dropped, 1u);
+  // Said, not lost without a word (issue 58): 20 samples, 740 to 759 s.
+  EXPECT_EQ(s.dropped_samples, 20u);
+  ASSERT_EQ(s.dropped_spans_s.size(), 1u);
+  EXPECT_EQ(s.dropped_spans_s[0], (std::pair<double, double>{740.0, 759.0}));
   ASSERT_EQ(w120.size(), 3u);
   EXPECT_DOUBLE_EQ(w120.back().time_s.back(), 739.0);
 }

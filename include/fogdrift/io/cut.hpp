@@ -31,10 +31,13 @@ struct CutOptions {
 };
 
 struct CutSummary {
-  std::size_t gaps = 0;      ///< cuts made at gaps
-  std::size_t plateaus = 0;  ///< cuts made at the ends of plateaus
-  std::size_t windows = 0;   ///< pieces made by windows
-  std::size_t dropped = 0;   ///< pieces dropped as too short
+  std::size_t gaps = 0;             ///< cuts made at gaps
+  std::size_t plateaus = 0;         ///< cuts made at the ends of plateaus
+  std::size_t windows = 0;          ///< pieces made by windows
+  std::size_t dropped = 0;          ///< pieces dropped as too short
+  std::size_t dropped_samples = 0;  ///< the samples in them
+  /// Each dropped piece's span, first and last sample's time_s, s, in time order.
+  std::vector<std::pair<double, double>> dropped_spans_s;
 };
 
 /// The pieces of `recording`, in time order. Throws OptionError naming gap_s, window_s,
