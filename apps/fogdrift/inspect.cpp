@@ -11,6 +11,8 @@
 #include "fogdrift/io/campaign.hpp"
 #include "fogdrift/io/inspect.hpp"
 #include "fogdrift/io/recording.hpp"
+#include "fogdrift/io/target.hpp"
+#include "fogdrift/model/features.hpp"
 
 namespace fs = std::filesystem;
 
@@ -69,11 +71,22 @@ void print_recording(const std::string& path, const RecordingSummary& s) {
         "s, longest {0:.6g} s); put the logger's file on a uniform grid with 'fogdrift import "
         "FILE --rate-hz R' (docs/logs.md)\n",
         s.longest_gap_s, s.sample_interval_s);
-  if (!s.extra_columns.empty()) {
-    std::string list;
-    for (const auto& e : s.extra_columns) list += (list.empty() ? "" : ", ") + e;
-    std::cout << "  extra       " << list << " (kept, not used by the method)\n";
+  // Further channels a model can compensate (train --targets) are named as such; the rest are
+  // kept as they are and read by nothing.
+  std::string targets, thermometers, others;
+  for (const auto& e : s.extra_columns) {
+    std::string& list = is_target_column(e)                       ? targets
+                        : further_thermometer_name(e).has_value() ? thermometers
+                                                                  : others;
+    list += (list.empty() ? "" : ", ") + e;
   }
+  if (!targets.empty())
+    std::cout << "  targets     " << targets
+              << " (further channels a model can compensate: train --targets)\n";
+  if (!thermometers.empty())
+    std::cout << "  thermometer " << thermometers
+              << " (further thermometers: train --thermometers)\n";
+  if (!others.empty()) std::cout << "  extra       " << others << " (kept, read by no command)\n";
 }
 
 int inspect_campaign(const fs::path& path, bool json) {
