@@ -107,7 +107,7 @@ std::vector<Baseline> baseline_scores(const Dataset& data, std::span<const tune:
 
 HeldOutReport held_out_report(const Dataset& data, std::span<const tune::Fold> folds,
                               const FoldPredictor& predict, std::string folds_description,
-                              double startup_warning_below) {
+                              double startup_warning_below, bool model_is_a_line) {
   HeldOutReport r;
   r.folds = std::move(folds_description);
   // Pooled over the held-out rows: the squared error, and within each recording the squared
@@ -173,7 +173,7 @@ HeldOutReport held_out_report(const Dataset& data, std::span<const tune::Fold> f
         "is the static drift between temperatures, and on this unit it may not help the "
         "north-finder",
         100 * r.expected_share, 100 * r.expected_startup_share));
-  } else if (best_line != nullptr && best_line->rmse <= model_rmse) {
+  } else if (!model_is_a_line && best_line != nullptr && best_line->rmse <= model_rmse) {
     r.warnings.push_back(fmt::format(
         "a straight line in {} predicts the held-out drift as well as the model (RMSE {:.4f} "
         "against {:.4f}, standardised, over {}): the drift is mostly a static function of that "

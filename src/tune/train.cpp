@@ -13,6 +13,15 @@
 #include "fogdrift/tune/trainers.hpp"
 
 namespace fogdrift {
+namespace {
+
+// A polynomial of degree 1 in one input: the straight line held_out.hpp compares models with.
+bool is_a_line_in_one_input(const CompensationModel& m) {
+  const Poly* poly = std::get_if<Poly>(&m.regressor);
+  return poly != nullptr && poly->degree <= 1 && poly->inputs == 1;
+}
+
+}  // namespace
 
 TrainOptions resolved(const TrainOptions& options) {
   TrainOptions r = options;
@@ -89,8 +98,9 @@ TrainResult train(const Dataset& data, const DatasetOptions& dataset, const Trai
   m.guard = NoveltyGuard::fit(z, data.cols(), labels, conditions, options.guard);
   m.guard.set_warmup_inputs(m.dataset.features.rate_inputs());
   if (options.held_out && !t.held_folds.empty())
-    s.held_out = held_out_report(data, t.held_folds, t.held_predict, t.held_description,
-                                 startup_warning_share(m.dataset.denoise_target));
+    s.held_out =
+        held_out_report(data, t.held_folds, t.held_predict, t.held_description,
+                        startup_warning_share(m.dataset.denoise_target), is_a_line_in_one_input(m));
   p.fitness = s.fitness;
   p.fitness_value = s.fitness_value;
   p.hyperparameters = s.hyperparameters;

@@ -73,7 +73,10 @@ CampaignTrainResult train_inputs(const std::vector<RecordingInput>& inputs,
         {"block_s", fmt::format("recordings sampled every {:.6g} s: blocks of "
                                 "{:.6g} s, not {} s",
                                 dt_s, fitted.block.block_s, defaults.block.block_s)});
-  if (!options.rate_window_s && fitted.rates.window_s != recommended.window_s)
+  // The rate window is said only for a model that reads rates (poly in T alone reads none).
+  const std::vector<bool> rates = dataset.features.rate_inputs();
+  const bool reads_rates = std::find(rates.begin(), rates.end(), true) != rates.end();
+  if (reads_rates && !options.rate_window_s && fitted.rates.window_s != recommended.window_s)
     out.notes.push_back(
         {"window_s", fmt::format("recordings sampled every {:.6g} s, shortest {} samples: "
                                  "temperature rates over {:.6g} s, not {} s",

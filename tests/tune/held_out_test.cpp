@@ -140,6 +140,16 @@ TEST(HeldOut, AModelNoBetterThanALineIsWarnedOfAndNamesALineThatExists) {
   EXPECT_NE(r.warnings[0].find("{features} 'T(fog)'"), std::string::npos) << r.warnings[0];
 }
 
+// Found by a new user (issue 58): poly --max-degree 1 in one temperature was told that a straight
+// line "is simpler to trust", recommending itself.
+TEST(HeldOut, AStraightLineIsNotAdvisedToBecomeOne) {
+  const Dataset d = thermal(0.01, 0.001);
+  const auto folds = temperature_folds(d);
+  const HeldOutReport r =
+      held_out_report(d, folds, line_in_t_fog(), "test folds", startup_warning_share(true), true);
+  EXPECT_TRUE(r.warnings.empty()) << r.warnings.front();
+}
+
 TEST(HeldOut, AModelBlindWithinAStartUpIsWarnedOf) {
   const Dataset d = thermal(0.01, 0.001);
   const auto folds = temperature_folds(d);

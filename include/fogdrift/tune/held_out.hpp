@@ -67,8 +67,11 @@ double startup_warning_share(bool denoised_target);
 
 /// The report for the model `predict` refits on each fold; the start-up warning fires below
 /// `startup_warning_below`.
+/// `model_is_a_line`: the model is itself a straight line in one temperature, so the advice to
+/// train one instead is not given.
 HeldOutReport held_out_report(const Dataset& data, std::span<const tune::Fold> folds,
                               const FoldPredictor& predict, std::string folds_description,
-                              double startup_warning_below = startup_warning_share(true));
+                              double startup_warning_below = startup_warning_share(true),
+                              bool model_is_a_line = false);
 
 }  // namespace fogdrift
