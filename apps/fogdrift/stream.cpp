@@ -34,7 +34,7 @@ struct StreamArgs {
   std::string model;
   std::optional<std::string> target;  ///< the axis of a model set
   std::string input = "-";
-  double rate_hz = 0;
+  std::optional<double> rate_hz;  ///< none given: the model's own rate
   bool no_guard = false;
   bool strict = false;
   std::shared_ptr<OptionFlags> fault_flags;  ///< the fault policy's (fault_options.hpp)
@@ -82,13 +82,13 @@ void run(const StreamArgs& given) {
   const CompensationModel& first = set.models.front();
   // Without --rate-hz, the model's own rate; a model file too old to record it needs the flag.
   const double model_dt_s = first.dataset.preprocessing.sample_interval_s;
-  if (a.rate_hz == 0 && model_dt_s > 0) a.rate_hz = 1.0 / model_dt_s;
-  if (a.rate_hz == 0)
+  if (!a.rate_hz && !(model_dt_s > 0))
     throw OptionError("--rate-hz", fmt::format("is needed: {} does not record the rate it was "
                                                "trained at (written before models did)",
                                                a.model));
-  if (!(a.rate_hz > 0) || a.rate_hz > 10000)
-    throw OptionError("--rate-hz", fmt::format("{} is outside (0, 10000] Hz", a.rate_hz));
+  const double rate_hz = a.rate_hz.value_or(1.0 / model_dt_s);
+  if (!(rate_hz > 0) || rate_hz > 10000)
+    throw OptionError("--rate-hz", fmt::format("{} is outside (0, 10000] Hz", rate_hz));
   a.faults = fault_policy(*a.fault_flags, first);
   // Streamed, a model trained on centred rates sees causal ones, noisier than those it learned:
   // a tuned SVR's drift then departs from its batch drift by about the drift's own STD
@@ -102,8 +102,8 @@ void run(const StreamArgs& given) {
   // The interval the compensators run on: the model's own over the samples per model sample,
   // so a rate rounded to four digits runs as the model was trained (decimate.hpp).
   const double dt_s = streaming_interval_s(
-      first.dataset.preprocessing, 1.0 / a.rate_hz,
-      decimation_factor(first.dataset.preprocessing, 1.0 / a.rate_hz, "--rate-hz"));
+      first.dataset.preprocessing, 1.0 / rate_hz,
+      decimation_factor(first.dataset.preprocessing, 1.0 / rate_hz, "--rate-hz"));
   // One compensator per axis; a rate a model cannot run at names --rate-hz.
   std::vector<StreamingCompensator> compensators;
   compensators.reserve(set.models.size());
@@ -219,7 +219,7 @@ void run(const StreamArgs& given) {
         std::abs(v[0] - previous_time - dt_s) > 0.01 * dt_s)
       throw InputError(name, line_no, column[0] + 1,
                        fmt::format("time_s steps by {} s, not the {} s of --rate-hz {}",
-                                   v[0] - previous_time, dt_s, a.rate_hz));
+                                   v[0] - previous_time, dt_s, rate_hz));
     std::uint32_t any = 0;
     outputs.clear();
     for (std::size_t x = 0; x < compensators.size(); ++x) {

@@ -159,8 +159,8 @@ std::optional<fs::path> input_replaced_by(const fs::path& output) {
   for (const auto& [path, id] : in.files) {
     const fs::path file = fs::weakly_canonical(path, ec);
     if (ec) continue;
-    const auto [f, p] = std::mismatch(folder.begin(), folder.end(), file.begin(), file.end());
-    if (f == folder.end()) return path;
+    if (std::mismatch(folder.begin(), folder.end(), file.begin(), file.end()).first == folder.end())
+      return path;
   }
   return std::nullopt;
 }

@@ -7,7 +7,6 @@
 #include <cmath>
 #include <string>
 #include <string_view>
-#include <variant>
 #include <vector>
 
 #include "base/c_text.hpp"
@@ -75,8 +74,7 @@ FloatPrecisionCheck check_float_precision(const CompensationModel& model) {
     for (std::size_t k = 0; k < d; ++k)
       x[k] = static_cast<double>((static_cast<float>(row[k]) - static_cast<float>(mean[k])) /
                                  static_cast<float>(scale[k]));
-    const double z =
-        std::visit([&](const auto& r) { return r.predict(x.data()); }, model.regressor);
+    const double z = predict(model.regressor, x.data());
     const float drift = static_cast<float>(z) * y_scale + y_mean;
     check.max_error = std::max(check.max_error, std::abs(static_cast<double>(drift) - exact));
     ++check.inputs;

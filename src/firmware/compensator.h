@@ -144,6 +144,11 @@ static inline fds_real fds_push_(fds_state* s, int k, fds_real v) {
   return sum / fds_dt_s;
 }
 
+/* Whether a step between samples is more than FDS_INTERVAL_TOLERANCE off the interval dt. */
+static inline int fds_off_interval_(double step, double dt) {
+  return step < (1 - FDS_INTERVAL_TOLERANCE) * dt || step > (1 + FDS_INTERVAL_TOLERANCE) * dt;
+}
+
 static inline fds_real fds_clamp_degc_(fds_real v) {
   return v < FDS_TEMP_MIN_DEGC ? FDS_TEMP_MIN_DEGC
                                : (v > FDS_TEMP_MAX_DEGC ? FDS_TEMP_MAX_DEGC : v);
@@ -195,8 +200,7 @@ static inline fds_real fds_step_(fds_state* s, double time_s,
         long_gap = 1;
       else
         missing = lround(step / fds_dt_s) - 1;
-    } else if (step < (1 - FDS_INTERVAL_TOLERANCE) * fds_dt_s ||
-               step > (1 + FDS_INTERVAL_TOLERANCE) * fds_dt_s) {
+    } else if (fds_off_interval_(step, fds_dt_s)) {
       s->flags |= FDS_FAULT_OFF_INTERVAL;
     }
   }
@@ -358,8 +362,7 @@ static inline fds_real fds_update_(fds_state* s, double time_s,
     } else if (gap < 0.5 * fds_data_dt_s) {
       s->flags |= FDS_FAULT_OUT_OF_ORDER;
       return s->last_drift;
-    } else if (gap <= 1.5 * fds_data_dt_s && (gap < (1 - FDS_INTERVAL_TOLERANCE) * fds_data_dt_s ||
-                                              gap > (1 + FDS_INTERVAL_TOLERANCE) * fds_data_dt_s)) {
+    } else if (gap <= 1.5 * fds_data_dt_s && fds_off_interval_(gap, fds_data_dt_s)) {
       s->flags |= FDS_FAULT_OFF_INTERVAL;
     }
   }

@@ -47,7 +47,7 @@ DriftPrediction CompensationModel::predict(std::span<const double> features, std
   const std::size_t d = inputs();
   for (std::size_t k = 0; k < d; ++k)
     work[k] = (features[k] - x_scaler.mean[k]) / x_scaler.scale[k];
-  const double z = std::visit([&](const auto& r) { return r.predict(work.data()); }, regressor);
+  const double z = fogdrift::predict(regressor, work.data());
   DriftPrediction out;
   // Beyond kDriftLimitScales training STDs, the drift is not one (model.hpp).
   out.drift_dph = std::abs(z) <= kDriftLimitScales ? z * y_scaler.scale[0] + y_scaler.mean[0]

@@ -59,7 +59,9 @@ TEST(CText, ModelTextCannotLeaveItsCommentOrLiteral) {
   EXPECT_EQ(c_comment_text("a*/b"), "a\\x2a\\x2fb");
   EXPECT_EQ(c_comment_text("/*"), "\\x2f\\x2a");
   EXPECT_EQ(c_comment_text("x\\"), "x\\x5c");
-  EXPECT_EQ(c_comment_text("?" "?/"), "\\x3f\\x3f\\x2f");
+  EXPECT_EQ(c_comment_text("?"
+                           "?/"),
+            "\\x3f\\x3f\\x2f");
   EXPECT_EQ(c_comment_text(std::string("a\nb\0c", 5)), "a\\x0ab\\x00c");
   EXPECT_EQ(c_comment_text("\xc2\xb0"), "\\xc2\\xb0");
   EXPECT_EQ(c_string_literal("T_fog_degc"), "\"T_fog_degc\"");

@@ -2,7 +2,7 @@
 // (Python's KeyboardInterrupt while a fit runs with the GIL released). Long loops check it where
 // stopping is cheap and leaves nothing half-done: every SMO shrinking round (at most 1000
 // iterations), every task of the thread pool, every iteration of the optimizers
-// (docs/reliability.md, "Interrupts").
+// (docs/reliability.md, "Python interrupts").
 #pragma once
 
 #include <stdexcept>

@@ -42,8 +42,8 @@ std::optional<int> standard_descriptor_of(const std::filesystem::path& path);
 bool descriptor_usable(int fd);
 
 /// Registers a temporary file or folder that an interrupting signal removes; the destructor
-/// unregisters it. While `hold()` is in force, a signal waits (renames that must not be cut in
-/// two: a folder moved aside and the new one moved in).
+/// unregisters it (a SignalHold keeps the signal waiting across renames that must not be cut in
+/// two).
 class TemporaryRegistration {
  public:
   explicit TemporaryRegistration(std::filesystem::path path);

@@ -51,7 +51,7 @@ struct Provenance {
 /// A drift more than this many of the training drift's standard deviations from its mean is no
 /// drift a model learned: a model file edited to absurd numbers, or inputs far beyond its
 /// training. Every path treats it as a drift that is not a number (docs/reliability.md,
-/// "Models"): the batch paths stop with an error, the streaming paths (StreamingCompensator,
+/// "Finite values"): the batch paths stop with an error, the streaming paths (StreamingCompensator,
 /// the C header's PREFIX_DRIFT_LIMIT) hold the last good drift or stop the correction, flagged.
 inline constexpr double kDriftLimitScales = 1e3;
 

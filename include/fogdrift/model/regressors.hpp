@@ -32,6 +32,11 @@ bool is_regressor_type(std::string_view type);
 /// The registered types, comma-separated, for messages ("svr, mlp, poly or gp").
 std::string regressor_types();
 std::size_t input_count(const AnyRegressor& regressor);
+/// The regressor's standardised prediction for one standardised row `x` (inline: the per-sample
+/// path of every compensator).
+inline double predict(const AnyRegressor& regressor, const double* x) {
+  return std::visit([x](const auto& r) { return r.predict(x); }, regressor);
+}
 /// {"type": …, then the regressor's own fields}: the model file's "regressor" object.
 std::string to_json(const AnyRegressor& regressor);
 /// The regressor of type `type` parsed from its own JSON text. Throws InputError(source, 0, 0,
