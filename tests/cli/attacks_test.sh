@@ -50,22 +50,28 @@ check "  naming the input" err_has "which this run reads"
 check "  the manifest is untouched" cmp -s "$work/campaign.before" "$work/cal/campaign.json"
 cp "$work/cal/cal_r1_40C.csv" "$work/r1.before"
 check "train -o A_RECORDING is refused" run 1 "$fd" train "$work/cal" -o "$work/cal/cal_r1_40C.csv" --method svr -q
+check "  because it is an input" err_has "which this run reads"
 check "  the recording is untouched" cmp -s "$work/r1.before" "$work/cal/cal_r1_40C.csv"
 cp "$work/m.json" "$work/m.before"
 check "export-c MODEL -o MODEL is refused" run 1 "$fd" export-c "$work/m.json" -o "$work/m.json"
+check "  because it is an input" err_has "which this run reads"
 check "  the model is untouched" cmp -s "$work/m.before" "$work/m.json"
 ln -s "$work/m.json" "$work/m_link.json"
 check "export-c MODEL -o LINK_TO_MODEL is refused" run 1 "$fd" export-c "$work/m.json" -o "$work/m_link.json"
+check "  because it is an input" err_has "which this run reads"
 check "  the model is untouched" cmp -s "$work/m.before" "$work/m.json"
 cp "$rec" "$work/in.csv"
 check "compensate -o INPUT is refused" run 1 "$fd" compensate "$work/m.json" "$work/in.csv" -o "$work/in.csv"
+check "  because it is an input" err_has "which this run reads"
 check "  the recording is untouched" cmp -s "$rec" "$work/in.csv"
 check "denoise -o INPUT is refused" run 1 "$fd" denoise "$work/in.csv" -o "$work/in.csv"
+check "  because it is an input" err_has "which this run reads"
 check "  the recording is untouched" cmp -s "$rec" "$work/in.csv"
 check "simulate --out FOLDER_HOLDING_ITS_INSTRUMENT --force is refused" bash -c "
   '$fd' simulate --print-instrument >'$work/cal/instrument.json' &&
   '$fd' simulate calibration --out '$work/cal' --force --instrument '$work/cal/instrument.json' \
-    --temps 0,40 --repetitions 2 >/dev/null 2>'$work/err'; [ \$? -eq 1 ] && [ -f '$work/cal/instrument.json' ]"
+    --temps 0,40 --repetitions 2 >/dev/null 2>'$work/err'; [ \$? -eq 1 ] && [ -f '$work/cal/instrument.json' ] &&
+  grep -q 'is or holds the input' '$work/err'"
 rm -f "$work/cal/instrument.json"
 
 # A late write error (EIO at fsync: a network file system, a quota) is an error, and nothing is
@@ -79,6 +85,20 @@ if "$cc" -shared -fPIC -o "$work/eio.so" "$work/eio.c" 2>/dev/null; then
   check "  is an error naming the reason" err_has "write failed at sync (Input/output error)"
   check "  and writes nothing" bash -c "[ ! -e '$work/eio.h' ] && ! ls -A '$work' | grep -q '\.eio\.h\.tmp-'"
 fi
+
+ln -s "$work/loop_b.h" "$work/loop_a.h"
+ln -s "$work/loop_a.h" "$work/loop_b.h"
+check "-o A_LINK_LOOP is refused" run 1 "$fd" export-c "$work/m.json" -o "$work/loop_a.h"
+check "  naming the loop" err_has "more than 40 symbolic links"
+cp "$rec" "$work/join_in.csv"
+check "join -o ITS_RECORDING is refused" run 1 "$fd" join "$work/join_in.csv" "$rec" -o "$work/join_in.csv" --offset-s 0
+check "  naming the input" err_has "which this run reads"
+check "  the recording is untouched" cmp -s "$rec" "$work/join_in.csv"
+check "campaign --force over the folder holding its recording is refused" \
+  run 1 "$fd" campaign "$work/cal" "$work/cal/cal_r2_40C.csv" "$work/cal/cal_r3_40C.csv" \
+  --input-rate-dph 0 --test 2 --force
+check "  naming the input" err_has "is or holds the input"
+check "  the campaign is untouched" cmp -s "$work/campaign.before" "$work/cal/campaign.json"
 
 # A long output name the file system takes is written; the temporary does not make it too long.
 long=$(printf 'n%.0s' $(seq 1 250))
@@ -221,6 +241,16 @@ edit_model "$work/m.json" "$work/huge_coef.json" \
   'r = m["regressor"]; k = next(k for k in r if isinstance(r[k], list)); r[k][0] = 1e300'
 check "a regressor number of 1e300 is refused" run 1 "$fd" export-c "$work/huge_coef.json" --allow-edited -o "$work/x.h"
 check "  naming the regressor" err_has "regressor"
+
+edit_model "$work/m.json" "$work/huge_drift_scale.json" 'm["scalers"]["drift_dph"]["scale"] = 1e300'
+check "a drift scale of 1e300 is refused" run 1 "$fd" compensate "$work/huge_drift_scale.json" "$rec" --allow-edited -o "$work/x.csv"
+check "  naming the field" err_has "scalers.drift_dph.scale"
+edit_model "$work/m.json" "$work/huge_radius.json" 'm["guard"]["radius"] = 1e300'
+check "a guard radius of 1e300 is refused" run 1 "$fd" compensate "$work/huge_radius.json" "$rec" --allow-edited -o "$work/x.csv"
+check "  naming the field" err_has "guard.radius"
+check "stream of a model that records no rate, without --rate-hz" \
+  run 1 "$fd" stream "$(dirname "$0")/../data/models/bp_v2.json" "$rec" --allow-old-format
+check "  asks for --rate-hz" err_has "--rate-hz: is needed"
 
 # --- a float header that departs from its model is refused ---------------------------------
 edit_model "$work/m.json" "$work/micro.json" '
