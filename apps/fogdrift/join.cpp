@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <iostream>
 #include <memory>
+#include <optional>
 
 #include "cli_util.hpp"
 #include "commands.hpp"
@@ -26,36 +27,52 @@ struct JoinArgs {
   std::string columns;  ///< empty: every numeric column of the log
   bool replace = false;
   std::string method = "linear";
-  double offset_s = 0;
-  std::string offset_from;
+  std::optional<double> offset_s;
+  std::vector<std::string> offset_from;
+  bool force = false;
   double offset_range_s = 0;
   double max_step_s = -1;
   double max_age_s = -1;
   bool quiet = false;
 };
 
-void print_summary(const JoinSummary& s, const Recording& recording, const Recording& log) {
-  if (s.estimate) {
-    const OffsetEstimate& e = *s.estimate;
+/// "a=b", or "a" when both columns have one name.
+std::string pair_name(const ColumnMatch& m) {
+  return m.recording_column == m.log_column ? m.recording_column
+                                            : m.recording_column + "=" + m.log_column;
+}
+
+/// What supports the offset: printed before the join, and before a refusal.
+void print_evidence(const JoinEvidence& ev) {
+  if (ev.given) {
+    std::cout << fmt::format("  clock offset: {:.6g} s as given (t_recording = t_log + offset)\n",
+                             ev.offset_s);
+    return;
+  }
+  for (const ColumnMatch& m : ev.matches) {
+    const OffsetEstimate& e = m.estimate;
     std::cout << fmt::format(
-        "  clock offset: {:.6g} s estimated (searched {:.6g} .. {:.6g} s; sharp to about ±{:.3g} "
-        "s); the difference of the two columns has STD {:.4g} there{}, over {} rows\n",
-        e.offset_s, e.searched_from_s, e.searched_to_s, e.half_width_s, e.residual_std,
+        "  clock offset from {}: {:.6g} s, sharp to ±{:.3g} s (searched {:.6g} .. {:.6g} s)\n"
+        "    over {} rows ({:.6g} s): the difference has STD {:.4g} against the column's own "
+        "{:.4g} ({:.0f} %){}; the columns stand {:.4g} apart, and vary by {:.4g} and {:.4g}\n",
+        pair_name(m), e.offset_s, e.half_width_s, e.searched_from_s, e.searched_to_s,
+        e.rows_compared, e.compared_to_s - e.compared_from_s, e.residual_std, e.recording_std,
+        e.recording_std > 0 ? 100 * e.residual_std / e.recording_std : 0.0,
         std::isnan(e.residual_std_at_start)
             ? std::string()
-            : fmt::format(" (at the offset given, {:.6g} s: {:.4g})", e.centre_s,
-                          e.residual_std_at_start),
-        e.rows_compared);
-    if (e.at_edge)
-      std::cout << "  warning: the estimate lies at an end of the searched range; widen "
-                   "--offset-range-s or give --offset-s near the true offset\n";
-    if (e.half_width_s > 0.1 * (e.searched_to_s - e.searched_from_s))
-      std::cout << "  warning: the column fixes the offset poorly (it changes too little, or "
-                   "at a constant rate); check the estimate or give --offset-s\n";
-  } else {
-    std::cout << fmt::format("  clock offset: {:.6g} s (t_recording = t_log + offset)\n",
-                             s.offset_s);
+            : fmt::format(" (at {:.6g} s: {:.4g})", e.centre_s, e.residual_std_at_start),
+        e.mean_difference, e.recording_range, e.log_range);
   }
+  if (ev.matches.size() > 1)
+    std::cout << fmt::format(
+        "  clock offset applied: {:.6g} s, the estimates weighted by their "
+        "sharpness\n",
+        ev.offset_s);
+  std::cout << (ev.founded() ? "  evidence: founded (docs/logs.md, \"The evidence\")\n"
+                             : "  evidence: NOT founded (docs/logs.md, \"The evidence\")\n");
+}
+
+void print_summary(const JoinSummary& s, const Recording& recording, const Recording& log) {
   std::cout << fmt::format(
       "  overlap: the log spans {:.6g} .. {:.6g} s on the recording's axis, the recording "
       "{:.6g} .. {:.6g} s; {} log samples fall inside\n",
@@ -73,6 +90,9 @@ void print_summary(const JoinSummary& s, const Recording& recording, const Recor
   if (!s.skipped.empty())
     std::cout << fmt::format("  not joined (text columns of {}): {}\n", log.source,
                              fmt::join(s.skipped, ", "));
+  if (s.forced)
+    for (const std::string& f : s.evidence.failures)
+      std::cout << fmt::format("warning: written with --force against the evidence: {}\n", f);
 }
 
 }  // namespace
@@ -85,10 +105,14 @@ void add_join(CLI::App& app) {
       "--partial', time-of-day stamps with --unit time_s=clock and --time-zero), then:\n"
       "  fogdrift join unit.csv sheet.csv -o joined.csv --offset-from temp_fog_degc=T_case\n"
       "A row at time t takes the log's values at t - offset (t_recording = t_log + offset), by\n"
-      "linear interpolation or from the nearest sample. The offset is given (--offset-s) or\n"
-      "estimated from a column both hold (--offset-from). Rows the log does not cover are\n"
-      "dropped, and a gap in the log longer than the limit splits the recording (out_1.csv, ...).\n"
-      "See docs/logs.md, \"Temperatures from another file\".");
+      "linear interpolation or from the nearest sample. Nothing ties two clocks together, so the\n"
+      "offset has no default: give it (--offset-s, 0 when both were imported with the same\n"
+      "--time-zero) or estimate it from a column both hold (--offset-from, repeatable). An\n"
+      "estimate is judged before anything is written: the two columns must move together, stand\n"
+      "no farther apart than they vary, fix the offset sharply, and agree with each other;\n"
+      "otherwise join refuses, printing the evidence (--force writes anyway, with warnings).\n"
+      "Rows the log does not cover are dropped, and a gap in the log longer than the limit splits\n"
+      "the recording (out_1.csv, ...). See docs/logs.md, \"Temperatures from another file\".");
   auto a = std::make_shared<JoinArgs>();
   cmd->add_option("RECORDING", a->recording, "The recording (fogdrift format)")
       ->required()
@@ -108,13 +132,16 @@ void add_join(CLI::App& app) {
                   "nearest log sample)")
       ->capture_default_str();
   cmd->add_option("--offset-s", a->offset_s,
-                  "Clock offset, s: t_recording = t_log + offset; with --offset-from, the centre "
-                  "of the search")
-      ->capture_default_str();
+                  "Clock offset, s: t_recording = t_log + offset (no default: nothing ties two "
+                  "clocks together); with --offset-from, the centre of the search (default 0)");
   cmd->add_option("--offset-from", a->offset_from,
                   "Estimate the offset from a column both files hold: RECORDING_COLUMN=LOG_COLUMN, "
                   "or one name for both; the offset that minimises the variance of their "
-                  "difference");
+                  "difference. Repeat it for several pairs: each is judged, and they must agree")
+      ->take_all();
+  cmd->add_flag("--force", a->force,
+                "Write the join even when the evidence for its offset fails; the failures are "
+                "printed as warnings with the result");
   cmd->add_option("--offset-range-s", a->offset_range_s,
                   "With --offset-from: search --offset-s ± this, s (default 0: every offset that "
                   "leaves half the shorter file overlapping)")
@@ -138,37 +165,42 @@ void add_join(CLI::App& app) {
     o.offset_s = a->offset_s;
     o.max_step_s = a->max_step_s;
     o.max_age_s = a->max_age_s;
-    if (!a->offset_from.empty()) {
-      const auto eq = a->offset_from.find('=');
+    for (const std::string& pair : a->offset_from) {
+      const auto eq = pair.find('=');
       OffsetSearch search;
-      search.recording_column = a->offset_from.substr(0, eq);
-      search.log_column =
-          eq == std::string::npos ? search.recording_column : a->offset_from.substr(eq + 1);
+      search.recording_column = pair.substr(0, eq);
+      search.log_column = eq == std::string::npos ? search.recording_column : pair.substr(eq + 1);
       if (search.recording_column.empty() || search.log_column.empty())
-        throw OptionError("--offset-from", fmt::format("'{}' is not COLUMN or "
-                                                       "RECORDING_COLUMN=LOG_COLUMN",
-                                                       a->offset_from));
+        throw OptionError("--offset-from",
+                          fmt::format("'{}' is not COLUMN or RECORDING_COLUMN=LOG_COLUMN", pair));
       search.range_s = a->offset_range_s;
-      o.estimate = search;
-    } else if (a->offset_range_s != 0) {
-      throw OptionError("--offset-range-s", "has no effect without --offset-from");
+      o.estimates.push_back(search);
     }
+    if (a->offset_from.empty() && a->offset_range_s != 0)
+      throw OptionError("--offset-range-s", "has no effect without --offset-from");
+    o.force = a->force;
     const Recording recording = read_log(a->recording);
     const Recording log = read_log(a->log);
     check_output_not_input(a->out, "--output");
+    // Each library option in its flag's words.
+    auto in_flag_words = [](const OptionError& e) {
+      const std::string& n = e.option();
+      return OptionError(n == "columns"      ? "--columns"
+                         : n == "method"     ? "--method"
+                         : n == "offset_s"   ? "--offset-s"
+                         : n == "estimate"   ? "--offset-from"
+                         : n == "max_step_s" ? "--max-step-s"
+                         : n == "max_age_s"  ? "--max-age-s"
+                                             : n,
+                         e.message());
+    };
     JoinResult r;
     try {
-      r = join(recording, log, o);
+      const JoinEvidence evidence = judge_alignment(recording, log, o);
+      if (!a->quiet || !evidence.founded()) print_evidence(evidence);
+      r = join(recording, log, o, evidence);
     } catch (const OptionError& e) {
-      const std::string& n = e.option();
-      throw OptionError(n == "columns"      ? "--columns"
-                        : n == "method"     ? "--method"
-                        : n == "offset_s"   ? "--offset-s"
-                        : n == "estimate"   ? "--offset-from"
-                        : n == "max_step_s" ? "--max-step-s"
-                        : n == "max_age_s"  ? "--max-age-s"
-                                            : n,
-                        e.message());
+      throw in_flag_words(e);
     }
     for (std::size_t k = 0; k < r.segments.size(); ++k) {
       const fs::path path = piece_path(a->out, k, r.segments.size());

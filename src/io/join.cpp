@@ -209,6 +209,33 @@ OffsetEstimate estimate_offset(const Recording& recording, const Recording& log,
   const Fit chosen = refined_better ? at_refined : fit_at(at);
   e.residual_std = std::sqrt(chosen.variance);
   e.rows_compared = chosen.rows;
+  // The two columns over the rows compared at the estimate: their gap, spread and ranges.
+  {
+    for (std::size_t i = 0; i < t.size(); ++i) shifted[i] = t[i] - e.offset_s;
+    const std::vector<double> v = sample(lt, y, shifted, JoinMethod::linear, limit);
+    double sum_d = 0, sum_x = 0, sum_x2 = 0, n = 0;
+    double x_lo = std::numeric_limits<double>::infinity(), x_hi = -x_lo, y_lo = x_lo, y_hi = -x_lo;
+    double t_lo = x_lo, t_hi = -x_lo;
+    for (std::size_t i = 0; i < v.size(); ++i) {
+      if (std::isnan(v[i])) continue;
+      sum_d += x[i] - v[i];
+      sum_x += x[i];
+      sum_x2 += x[i] * x[i];
+      n += 1;
+      x_lo = std::min(x_lo, x[i]), x_hi = std::max(x_hi, x[i]);
+      y_lo = std::min(y_lo, v[i]), y_hi = std::max(y_hi, v[i]);
+      t_lo = std::min(t_lo, t[i]), t_hi = std::max(t_hi, t[i]);
+    }
+    if (n > 0) {
+      e.mean_difference = sum_d / n;
+      const double mean_x = sum_x / n;
+      e.recording_std = std::sqrt(std::max(0.0, sum_x2 / n - mean_x * mean_x));
+      e.recording_range = x_hi - x_lo;
+      e.log_range = y_hi - y_lo;
+      e.compared_from_s = t_lo;
+      e.compared_to_s = t_hi;
+    }
+  }
   e.centre_s = centre_s;
   const double f_start = objective(centre_s);
   e.residual_std_at_start = std::isfinite(f_start) ? std::sqrt(f_start) : kNoValue;
@@ -221,11 +248,91 @@ OffsetEstimate estimate_offset(const Recording& recording, const Recording& log,
   return e;
 }
 
+JoinEvidence judge_alignment(const Recording& recording, const Recording& log,
+                             const JoinOptions& options) {
+  if (options.offset_s && !std::isfinite(*options.offset_s))
+    throw OptionError("offset_s", "must be a finite number of seconds");
+  JoinEvidence ev;
+  if (options.estimates.empty()) {
+    if (!options.offset_s)
+      throw OptionError(
+          "offset_s",
+          fmt::format("nothing ties the clock of {} to that of {}: give the offset (0 when both "
+                      "were imported with the same --time-zero), or estimate it from a column "
+                      "both hold",
+                      log.source, recording.source));
+    ev.given = true;
+    ev.offset_s = *options.offset_s;
+    return ev;
+  }
+  const double centre = options.offset_s.value_or(0.0);
+  double weight_sum = 0, weighted = 0;
+  ev.uncertainty_s = std::numeric_limits<double>::infinity();
+  for (const OffsetSearch& search : options.estimates) {
+    ColumnMatch m{search.recording_column,
+                  search.log_column,
+                  estimate_offset(recording, log, search, centre),
+                  {}};
+    const OffsetEstimate& e = m.estimate;
+    const std::string pair = search.recording_column == search.log_column
+                                 ? search.recording_column
+                                 : search.recording_column + "=" + search.log_column;
+    const double compared_s = e.compared_to_s - e.compared_from_s;
+    if (e.at_edge)
+      m.failures.push_back(fmt::format(
+          "{}: the estimate {:.6g} s lies at an end of the searched range {:.6g} .. {:.6g} s, so "
+          "the best offset may lie beyond it",
+          pair, e.offset_s, e.searched_from_s, e.searched_to_s));
+    if (!(e.half_width_s <= kJoinSharpShare * compared_s))
+      m.failures.push_back(fmt::format(
+          "{}: the column fixes the offset only to ±{:.3g} s, more than {:.0f} % of the {:.6g} s "
+          "compared (it changes too little, or at a constant rate)",
+          pair, e.half_width_s, 100 * kJoinSharpShare, compared_s));
+    if (!(e.residual_std <= kJoinResidualShare * e.recording_std))
+      m.failures.push_back(fmt::format(
+          "{}: the two columns do not move together: their difference has STD {:.4g}, more than "
+          "{:.0f} % of the column's own STD {:.4g}",
+          pair, e.residual_std, 100 * kJoinResidualShare, e.recording_std));
+    const double range = std::max(e.recording_range, e.log_range);
+    if (!(std::fabs(e.mean_difference) <= kJoinGapShare * range))
+      m.failures.push_back(fmt::format(
+          "{}: the columns stand {:.4g} apart on average, more than either varies over the rows "
+          "compared ({:.4g} and {:.4g}): two different quantities, not one seen twice",
+          pair, e.mean_difference, e.recording_range, e.log_range));
+    const double w = 1.0 / std::max(e.half_width_s * e.half_width_s, 1e-300);
+    weight_sum += w;
+    weighted += w * e.offset_s;
+    ev.uncertainty_s = std::min(ev.uncertainty_s, e.half_width_s);
+    for (const std::string& f : m.failures) ev.failures.push_back(f);
+    ev.matches.push_back(std::move(m));
+  }
+  ev.offset_s = ev.matches.size() == 1 ? ev.matches[0].estimate.offset_s : weighted / weight_sum;
+  // Several pairs must agree: each pair's estimate within the sum of its and the sharpest
+  // pair's half-widths of every other.
+  for (std::size_t i = 0; i < ev.matches.size(); ++i)
+    for (std::size_t j = i + 1; j < ev.matches.size(); ++j) {
+      const OffsetEstimate& a = ev.matches[i].estimate;
+      const OffsetEstimate& b = ev.matches[j].estimate;
+      if (std::fabs(a.offset_s - b.offset_s) > a.half_width_s + b.half_width_s)
+        ev.failures.push_back(
+            fmt::format("{} and {} disagree: {:.6g} s (±{:.3g}) against {:.6g} s (±{:.3g})",
+                        ev.matches[i].recording_column + "=" + ev.matches[i].log_column,
+                        ev.matches[j].recording_column + "=" + ev.matches[j].log_column, a.offset_s,
+                        a.half_width_s, b.offset_s, b.half_width_s));
+    }
+  return ev;
+}
+
 JoinResult join(const Recording& recording, const Recording& log, const JoinOptions& options) {
   validate(recording);
   validate(log);
-  if (!std::isfinite(options.offset_s))
-    throw OptionError("offset_s", "must be a finite number of seconds");
+  return join(recording, log, options, judge_alignment(recording, log, options));
+}
+
+JoinResult join(const Recording& recording, const Recording& log, const JoinOptions& options,
+                const JoinEvidence& evidence) {
+  validate(recording);
+  validate(log);
   for (const auto& [value, name] :
        {std::pair{options.max_step_s, "max_step_s"}, std::pair{options.max_age_s, "max_age_s"}}) {
     if (!std::isfinite(value) || (value < 0 && value != -1))
@@ -282,10 +389,17 @@ JoinResult join(const Recording& recording, const Recording& log, const JoinOpti
   }
 
   // The offset, the limit, and which rows have values.
-  s.offset_s = options.offset_s;
-  if (options.estimate) {
-    s.estimate = estimate_offset(recording, log, *options.estimate, options.offset_s);
-    s.offset_s = s.estimate->offset_s;
+  s.evidence = evidence;
+  s.offset_s = evidence.offset_s;
+  if (!evidence.founded()) {
+    if (!options.force)
+      throw InputError(
+          log.source, 0, 0,
+          fmt::format("its alignment with {} is not founded, so nothing was written: {}. Give the "
+                      "offset if you know it, estimate from a column both files truly share, or "
+                      "write anyway with --force (the evidence is then printed with the result)",
+                      recording.source, fmt::join(evidence.failures, "; ")));
+    s.forced = true;
   }
   const double requested =
       options.method == JoinMethod::linear ? options.max_step_s : options.max_age_s;

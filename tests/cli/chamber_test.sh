@@ -97,18 +97,23 @@ check "a log is not a recording" run 1 "$fd" inspect sheet_fd.csv
 check "log message names join" err_has "'fogdrift join' to add columns from a log of their own"
 
 check "join, estimating the clock offset" run 0 "$fd" join imu.csv sheet_fd.csv -o joined.csv --offset-from temp_fog_degc=temp_case_degc
-check "offset printed" out_has "clock offset: "
-check "offset within 10 s of the truth, 250 s" bash -c "grep -o 'clock offset: [0-9.-]*' '$work/out' | awk '{d = \$3 - 250; exit !(d < 10 && d > -10)}'"
+check "offset printed" out_has "clock offset from temp_fog_degc=temp_case_degc: "
+check "evidence founded" out_has "evidence: founded"
+check "offset within its stated uncertainty of the truth, 250 s" bash -c "grep -o 'temp_case_degc: [0-9.-]* s, sharp to ±[0-9.]*' '$work/out' | sed 's/±//' | awk '{d = \$2 - 250; exit !(d <= \$6 && d >= -\$6)}'"
 check "overlap reported" out_has "joined temp_acc1_degc, temp_acc2_degc, chamber_degc, temp_case_degc by linear (limit 450 s): 360 of 360 rows kept"
 check "joined columns and every axis" bash -c "head -1 joined.csv | grep -qx 'time_s,gyro_dph,temp_fog_degc,temp_acc1_degc,temp_acc2_degc,accel_x_g,chamber_degc,accel_z_g,gyro_y_dph,gyro_z_dph,sf_gx_ppm,temp_case_degc'"
 check "inspect the joined recording" run 0 "$fd" inspect joined.csv
 
-check "a column twice" run 1 "$fd" join imu.csv imu.csv -o x.csv --columns gyro_dph
+check "a column twice" run 1 "$fd" join imu.csv imu.csv -o x.csv --columns gyro_dph --offset-s 0
 check "twice message" err_has "option --columns: the recording imu.csv has a column 'gyro_dph' already"
-check "age limit on linear" run 1 "$fd" join imu.csv sheet_fd.csv -o x.csv --max-age-s 60
+check "age limit on linear" run 1 "$fd" join imu.csv sheet_fd.csv -o x.csv --max-age-s 60 --offset-s 0
 check "age limit message" err_has "option --max-age-s: applies to the nearest method; linear takes max_step_s"
 check "a range without an estimate" run 1 "$fd" join imu.csv sheet_fd.csv -o x.csv --offset-range-s 600
 check "range message" err_has "option --offset-range-s: has no effect without --offset-from"
+check "no offset and no estimate" run 1 "$fd" join imu.csv sheet_fd.csv -o x.csv
+check "no default offset message" err_has "option --offset-s: nothing ties the clock of sheet_fd.csv to that of imu.csv"
+check "the air does not fix the case's offset" run 1 "$fd" join imu.csv sheet_fd.csv -o x.csv --offset-from temp_fog_degc=temp_case_degc --offset-from temp_fog_degc=chamber_degc
+check "disagreement message" err_has "temp_fog_degc=temp_case_degc and temp_fog_degc=chamber_degc disagree"
 check "clocks a day apart" run 1 "$fd" join imu.csv sheet_fd.csv -o x.csv --offset-s 86400
 check "no overlap message" err_has "import both with the same --time-zero, or give the clock offset"
 check "nothing written by failed joins" test ! -e x.csv

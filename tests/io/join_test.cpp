@@ -5,6 +5,9 @@
 #include <cmath>
 #include <random>
 
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
 #include "fogdrift/base/csv.hpp"
 #include "fogdrift/base/error.hpp"
 
@@ -81,7 +84,9 @@ TEST(Join, RowsOutsideTheLogAreDroppedAndItsLongGapsSplit) {
     log.chamber_degc->erase(log.chamber_degc->begin() + at);
     for (auto& e : log.extra) e.cells.erase(e.cells.begin() + at);
   }
-  const JoinResult r = join(rec, log, {});
+  JoinOptions same_clock;
+  same_clock.offset_s = 0.0;
+  const JoinResult r = join(rec, log, same_clock);
   ASSERT_EQ(r.segments.size(), 2u);
   EXPECT_DOUBLE_EQ(r.segments[0].time_s.front(), 600.0);
   EXPECT_DOUBLE_EQ(r.segments[0].time_s.back(), 1200.0);
@@ -98,7 +103,7 @@ TEST(Join, RowsOutsideTheLogAreDroppedAndItsLongGapsSplit) {
   EXPECT_EQ(r.segments[0].extra[0].name, "tc_case_degc");
 
   // A wider limit bridges the gap.
-  JoinOptions wide;
+  JoinOptions wide = same_clock;
   wide.max_step_s = 900.0;
   EXPECT_EQ(join(rec, log, wide).segments.size(), 1u);
 }
@@ -109,6 +114,7 @@ TEST(Join, NearestTakesTheClosestSampleWithinItsAge) {
   JoinOptions o;
   o.method = JoinMethod::nearest;
   o.columns = {"chamber_degc"};
+  o.offset_s = 0.0;
   o.max_age_s = 100.0;  // rows more than 100 s from a reading cannot be joined
   const JoinResult r = join(rec, log, o);
   ASSERT_EQ(r.segments.size(), 3u);  // around 0, 300 and 600 s
@@ -130,11 +136,14 @@ TEST(Join, EstimatesTheClockOffsetDespiteASensorBias) {
     cell = csv::format_number(*csv::parse_number(cell) + noise(rng));
   JoinOptions o;
   o.columns = {"tc_case_degc"};
-  o.estimate = OffsetSearch{"temp_fog_degc", "tc_case_degc", 0.0};
+  o.estimates = {OffsetSearch{"temp_fog_degc", "tc_case_degc", 0.0}};
   const JoinResult r = join(rec, log, o);
-  ASSERT_TRUE(r.summary.estimate.has_value());
-  const OffsetEstimate& e = *r.summary.estimate;
+  ASSERT_EQ(r.summary.evidence.matches.size(), 1u);
+  EXPECT_TRUE(r.summary.evidence.founded()) << r.summary.evidence.failures.front();
+  const OffsetEstimate& e = r.summary.evidence.matches[0].estimate;
   EXPECT_NEAR(e.offset_s, truth, 5.0);
+  EXPECT_LE(std::fabs(e.offset_s - truth), e.half_width_s);  // within its stated uncertainty
+  EXPECT_NEAR(e.mean_difference, -0.4, 0.01);                // the thermocouple reads 0.4 high
   EXPECT_DOUBLE_EQ(r.summary.offset_s, e.offset_s);
   EXPECT_FALSE(e.at_edge);
   EXPECT_LT(e.residual_std, 0.03);  // the noise, the bias gone
@@ -145,12 +154,22 @@ TEST(Join, EstimatesTheClockOffsetDespiteASensorBias) {
 
   // A range around a given centre finds it too; one that excludes it ends at its edge.
   o.offset_s = 400.0;
-  o.estimate->range_s = 100.0;
+  o.estimates[0].range_s = 100.0;
   EXPECT_NEAR(join(rec, log, o).summary.offset_s, truth, 5.0);
+  // A range that excludes it ends at its edge: evidence that fails, so nothing is joined unless
+  // forced.
   o.offset_s = 0.0;
-  const OffsetEstimate edge = *join(rec, log, o).summary.estimate;
-  EXPECT_TRUE(edge.at_edge);
+  const JoinEvidence edge = judge_alignment(rec, log, o);
+  ASSERT_EQ(edge.matches.size(), 1u);
+  EXPECT_TRUE(edge.matches[0].estimate.at_edge);
   EXPECT_NEAR(edge.offset_s, 100.0, 1e-9);
+  ASSERT_FALSE(edge.founded());
+  EXPECT_NE(edge.failures[0].find("at an end of the searched range"), std::string::npos);
+  EXPECT_THROW(join(rec, log, o), InputError);
+  o.force = true;
+  const JoinResult forced = join(rec, log, o);
+  EXPECT_TRUE(forced.summary.forced);
+  EXPECT_NEAR(forced.summary.offset_s, 100.0, 1e-9);
 }
 
 TEST(Join, APartialRecordingBecomesWholeWhenTheLogHoldsWhatItLacks) {
@@ -161,6 +180,7 @@ TEST(Join, APartialRecordingBecomesWholeWhenTheLogHoldsWhatItLacks) {
   log.temp_fog_degc = *log.chamber_degc;
   JoinOptions o;
   o.columns = {"temp_fog_degc"};
+  o.offset_s = 0.0;
   const JoinResult r = join(gyro_only, log, o);
   ASSERT_EQ(r.segments.size(), 1u);
   EXPECT_FALSE(r.segments[0].partial);
@@ -170,9 +190,11 @@ TEST(Join, APartialRecordingBecomesWholeWhenTheLogHoldsWhatItLacks) {
 TEST(Join, ImpossibleRequestsNameTheRuleBroken) {
   const Recording rec = unit(10.0, 600.0);
   const Recording log = sheet(60.0, 0.0, 600.0, 0.0, 0.0);
-  auto option_of_for = [](const Recording& r, const Recording& l) -> std::string {
+  JoinOptions same_clock;
+  same_clock.offset_s = 0.0;
+  auto option_of_for = [&](const Recording& r, const Recording& l) -> std::string {
     try {
-      join(r, l, {});
+      join(r, l, same_clock);
     } catch (const OptionError& e) {
       return e.option();
     }
@@ -186,7 +208,8 @@ TEST(Join, ImpossibleRequestsNameTheRuleBroken) {
     }
     return "";
   };
-  JoinOptions o;
+  EXPECT_EQ(option_of({}), "offset_s");  // 0 is no default for two clocks
+  JoinOptions o = same_clock;
   o.columns = {"pressure"};
   EXPECT_EQ(option_of(o), "columns");
   o.columns = {"operator"};  // text
@@ -200,17 +223,17 @@ TEST(Join, ImpossibleRequestsNameTheRuleBroken) {
   o.replace = true;
   EXPECT_NEAR((*join(has_air, log, o).segments[0].chamber_degc)[6], 10.06, 1e-12);
   // With no columns named, the ones the recording has are kept and said so.
-  const JoinResult kept = join(has_air, log, {});
+  const JoinResult kept = join(has_air, log, same_clock);
   EXPECT_EQ(kept.summary.kept, (std::vector<std::string>{"chamber_degc"}));
   EXPECT_EQ(kept.summary.columns, (std::vector<std::string>{"tc_case_degc"}));
   EXPECT_EQ((*kept.segments[0].chamber_degc)[6], 20.0);
   Recording only_air = log;
   only_air.extra.clear();
   EXPECT_EQ(option_of_for(has_air, only_air), "columns");  // nothing left to bring in
-  JoinOptions age;
+  JoinOptions age = same_clock;
   age.max_age_s = 10;  // a nearest-method limit on the linear method
   EXPECT_EQ(option_of(age), "max_age_s");
-  JoinOptions bad_method;
+  JoinOptions bad_method = same_clock;
   bad_method.method = JoinMethod::nearest;
   bad_method.max_step_s = 10;
   EXPECT_EQ(option_of(bad_method), "max_step_s");
@@ -223,13 +246,76 @@ TEST(Join, ImpossibleRequestsNameTheRuleBroken) {
     EXPECT_NE(std::string(e.what()).find("--time-zero"), std::string::npos) << e.what();
   }
   JoinOptions flat;
-  flat.estimate = OffsetSearch{"temp_fog_degc", "chamber_degc", 0.0};
+  flat.estimates = {OffsetSearch{"temp_fog_degc", "chamber_degc", 0.0}};
   Recording constant = rec;
   constant.temp_fog_degc.assign(rec.size(), 21.0);
   EXPECT_THROW(join(constant, log, flat), InputError);  // nothing to fix an offset with
-  flat.estimate->recording_column = "nope";
+  flat.estimates[0].recording_column = "nope";
   EXPECT_EQ(option_of(flat), "estimate");
   EXPECT_THROW(join_method_from_string("cubic"), OptionError);
+}
+
+TEST(JoinEvidence, ColumnsThatDoNotMoveTogetherAreRefused) {
+  // The sheet's thermocouple sees another quantity: a slow ramp with a wobble of its own, not the
+  // case. Some offset minimises the variance of the difference, but the difference stays as
+  // large as the column's own spread.
+  const Recording rec = unit(10.0, 7200.0);
+  Recording log = sheet(60.0, 0.0, 7200.0, 0.0, 0.0);
+  for (std::size_t i = 0; i < log.size(); ++i)
+    log.extra[0].cells[i] =
+        csv::format_number(5.0 - 0.001 * log.time_s[i] + 2.0 * std::sin(log.time_s[i] / 300.0));
+  JoinOptions o;
+  o.estimates = {OffsetSearch{"temp_fog_degc", "tc_case_degc", 0.0}};
+  const JoinEvidence ev = judge_alignment(rec, log, o);
+  ASSERT_FALSE(ev.founded());
+  bool residual = false;
+  for (const auto& f : ev.failures) residual = residual || f.find("move together") != f.npos;
+  EXPECT_TRUE(residual) << fmt::format("{}", fmt::join(ev.failures, " | "));
+  try {
+    join(rec, log, o);
+    FAIL() << "an unfounded join was written";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("not founded"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("--force"), std::string::npos) << e.what();
+  }
+}
+
+TEST(JoinEvidence, AConstantGapLargerThanTheColumnsChangeIsRefused) {
+  // The same shape 15 °C apart: the offset is sharp and the residual small, but two sensors
+  // that far apart while varying by less are not one quantity seen twice.
+  const Recording rec = unit(10.0, 1700.0);  // 20 .. 22.9 °C of self-heating
+  const Recording log = sheet(60.0, -600.0, 2400.0, 0.0, -15.0);
+  JoinOptions o;
+  o.estimates = {OffsetSearch{"temp_fog_degc", "tc_case_degc", 0.0}};
+  const JoinEvidence ev = judge_alignment(rec, log, o);
+  ASSERT_FALSE(ev.founded());
+  EXPECT_NE(ev.failures.back().find("apart on average"), std::string::npos) << ev.failures.back();
+  EXPECT_NEAR(ev.matches[0].estimate.mean_difference, 15.0, 0.05);
+}
+
+TEST(JoinEvidence, SeveralColumnsMustAgree) {
+  // Two thermocouples on the sheet's clock, 437 s behind; one pair agrees with the truth, the
+  // other is built 900 s off: each is sharp on its own, together they disagree.
+  const double truth = 437.0;
+  const Recording rec = unit(10.0, 7200.0);
+  Recording log = sheet(60.0, -1200.0, 7000.0, truth, 0.4);
+  std::vector<std::string> late;
+  for (double t : log.time_s) late.push_back(csv::format_number(case_temperature(t + truth + 900)));
+  log.extra.push_back({"tc_late_degc", late});
+  JoinOptions o;
+  o.estimates = {OffsetSearch{"temp_fog_degc", "tc_case_degc", 0.0}};
+  const JoinEvidence one = judge_alignment(rec, log, o);
+  EXPECT_TRUE(one.founded());
+  EXPECT_NEAR(one.offset_s, truth, one.uncertainty_s);
+  o.estimates.push_back(OffsetSearch{"temp_fog_degc", "tc_late_degc", 0.0});
+  const JoinEvidence two = judge_alignment(rec, log, o);
+  ASSERT_FALSE(two.founded());
+  EXPECT_NE(two.failures.back().find("disagree"), std::string::npos) << two.failures.back();
+  // Two that agree: the applied offset lies between them.
+  o.estimates[1] = OffsetSearch{"temp_fog_degc", "tc_case_degc", 0.0};
+  const JoinEvidence same = judge_alignment(rec, log, o);
+  EXPECT_TRUE(same.founded());
+  EXPECT_NEAR(same.offset_s, one.offset_s, 1e-9);
 }
 
 }  // namespace

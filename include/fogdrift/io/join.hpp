@@ -45,6 +45,17 @@ struct OffsetSearch {
   double range_s = 0;
 };
 
+/// The rules an estimated alignment must pass (docs/logs.md, "The evidence").
+/// The STD of the difference of the two columns at the estimate, at most this share of the
+/// recording column's STD over the rows compared: the two move together.
+inline constexpr double kJoinResidualShare = 0.5;
+/// The mean difference (the constant gap between the two sensors), at most this multiple of the
+/// larger of the two columns' ranges over the rows compared: the same quantity, not two.
+inline constexpr double kJoinGapShare = 1.0;
+/// The half-width of the minimum, at most this share of the time the two columns were compared
+/// over (and the minimum not at an end of the searched range): the column fixes the offset.
+inline constexpr double kJoinSharpShare = 0.05;
+
 struct JoinOptions {
   /// The log's columns to bring in; empty: every numeric column but time_s and those the
   /// recording has already. A column named here that the recording has is an error unless
@@ -52,9 +63,15 @@ struct JoinOptions {
   std::vector<std::string> columns;
   bool replace = false;
   JoinMethod method = JoinMethod::linear;
-  /// t_recording = t_log + offset_s; the centre of the search when `estimate` is set.
-  double offset_s = 0;
-  std::optional<OffsetSearch> estimate;
+  /// t_recording = t_log + offset_s, given by the user; the centre of the searches when
+  /// `estimates` are set (0 when not given). Neither given nor estimated: an OptionError, since 0
+  /// is no default for two clocks nothing ties together.
+  std::optional<double> offset_s;
+  /// Column pairs to estimate the offset from; with several, each is judged and they must agree,
+  /// and the offset applied is their mean weighted by 1 / half-width².
+  std::vector<OffsetSearch> estimates;
+  /// Write the join even when the evidence fails (JoinEvidence::failures say why).
+  bool force = false;
   /// linear: the longest step between two log samples interpolated across, s; negative: 1.5 ×
   /// the log's median step.
   double max_step_s = -1;
@@ -73,12 +90,38 @@ struct OffsetEstimate {
   /// sharply the column fixes the offset.
   double half_width_s = 0;
   std::size_t rows_compared = 0;
+  double compared_from_s = 0, compared_to_s = 0;  ///< the recording's rows compared, first .. last
+  /// At the estimate, over the rows compared: the mean of (recording − log), the constant gap
+  /// between the two sensors; the recording column's STD; both columns' ranges (max − min).
+  double mean_difference = 0;
+  double recording_std = 0;
+  double recording_range = 0, log_range = 0;
+};
+
+/// One column pair's estimate and what it shows.
+struct ColumnMatch {
+  std::string recording_column, log_column;
+  OffsetEstimate estimate;
+  /// The rules this pair breaks, each a sentence with the numbers; empty when it passes.
+  std::vector<std::string> failures;
+};
+
+/// What supports the offset a join applies (see the file comment).
+struct JoinEvidence {
+  bool given = false;        ///< the user gave the offset and asked for no estimate
+  double offset_s = 0;       ///< the offset to apply
+  double uncertainty_s = 0;  ///< ± the sharpest estimate's half-width; 0 when given
+  std::vector<ColumnMatch> matches;
+  /// Every rule broken (the pairs' and their disagreement); empty when the evidence passes.
+  std::vector<std::string> failures;
+  bool founded() const { return failures.empty(); }
 };
 
 struct JoinSummary {
   JoinMethod method = JoinMethod::linear;
   double offset_s = 0;  ///< the offset applied
-  std::optional<OffsetEstimate> estimate;
+  JoinEvidence evidence;
+  bool forced = false;                  ///< written with JoinOptions::force against failed evidence
   double limit_s = 0;                   ///< max_step_s (linear) or max_age_s (nearest) as applied
   std::vector<std::string> columns;     ///< the columns brought in
   std::vector<std::string> skipped;     ///< the log's text columns, not brought in
@@ -97,12 +140,22 @@ struct JoinResult {
   JoinSummary summary;
 };
 
-/// The recording with the log's columns joined in (see the file comment). Throws OptionError
-/// naming columns, method, offset_s, estimate, max_step_s or max_age_s for an impossible option,
-/// and InputError naming the files when no row can be joined or the estimate has no overlap.
-JoinResult join(const Recording& recording, const Recording& log, const JoinOptions& options);
+/// The offset and its evidence: the given offset, or every estimate judged by the rules above.
+/// Throws OptionError naming offset_s when neither is given, estimate for a column either file
+/// lacks, and InputError naming the files when an estimate finds no overlap.
+JoinEvidence judge_alignment(const Recording& recording, const Recording& log,
+                             const JoinOptions& options);
 
-/// The offset alone (what join() does when options.estimate is set).
+/// The recording with the log's columns joined in (see the file comment), at the offset
+/// judge_alignment() gives. Throws OptionError naming columns, method, offset_s, estimate,
+/// max_step_s or max_age_s for an impossible option, and InputError naming the files when no row
+/// can be joined, an estimate has no overlap, or the evidence fails without options.force.
+JoinResult join(const Recording& recording, const Recording& log, const JoinOptions& options);
+/// The same with the evidence already judged (what the command line prints before it joins).
+JoinResult join(const Recording& recording, const Recording& log, const JoinOptions& options,
+                const JoinEvidence& evidence);
+
+/// One column pair's offset alone, searched about centre_s.
 OffsetEstimate estimate_offset(const Recording& recording, const Recording& log,
                                const OffsetSearch& search, double centre_s);
 
