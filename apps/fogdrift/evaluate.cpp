@@ -16,6 +16,7 @@
 #include "fogdrift/eval/eval_option_table.hpp"
 #include "fogdrift/eval/evaluation.hpp"
 #include "fogdrift/io/campaign.hpp"
+#include "fogdrift/model/baselines.hpp"
 #include "fogdrift/model/model.hpp"
 #include "fogdrift/model/model_set.hpp"
 #include "option_flags.hpp"
@@ -49,6 +50,8 @@ bool is_campaign(const std::string& path) {
 void print_evaluation(const CompensationModel& model, const eval::Evaluation& e,
                       const std::string& source, const std::string& heading, bool allan);
 void print_field_figures(const eval::Evaluation& e);
+void print_baselines(const eval::Evaluation& e);
+void print_extrapolation(const eval::Evaluation& e);
 void print_allan(const std::vector<eval::RecordingEvaluation>& per);
 
 void run(const EvaluateArgs& a) {
@@ -153,6 +156,8 @@ void print_evaluation(const CompensationModel& model, const eval::Evaluation& e,
         "\nTable 2 view: denoised STD {:.4f} °/h, {} STD {:.4f} °/h, MAE {:.4f} °/h "
         "(paper: denoised 0.0134; SSA-SVR 0.0031, MAE 0.0025)\n",
         all.std_before_dph, e.method, all.std_after_dph, all.mae_dph);
+  print_baselines(e);
+  print_extrapolation(e);
   if (target.kind == TargetKind::gyro) {
     print_field_figures(e);
     if (allan) print_allan(per);
@@ -167,6 +172,100 @@ void print_evaluation(const CompensationModel& model, const eval::Evaluation& e,
                                e.target);
   }
   for (const auto& w : e.warnings) std::cout << "warning: " << w << "\n";
+}
+
+/// "a, b and c".
+std::string listed(const std::vector<std::string>& items) {
+  std::string out;
+  for (std::size_t i = 0; i < items.size(); ++i)
+    out += (i == 0 ? "" : i + 1 == items.size() ? " and " : ", ") + items[i];
+  return out;
+}
+
+/// The model beside raw, the recording mean and the line in T, with the harm it does.
+void print_baselines(const eval::Evaluation& e) {
+  const Target target = target_of(e.target);
+  const auto f = [&](double v) { return std::isfinite(v) ? target.format(v) : "n/a"; };
+  const std::string line = e.line_input.empty() ? "line in T" : "line in " + e.line_input;
+  std::cout << fmt::format(
+      "\nBeside its baselines (docs/compensation.md, \"Judging a model\"), {}: RMSE of each "
+      "prediction of the drift; STD of what it leaves\n"
+      "| recording | raw | recording mean | {} | model | STD raw / line / model | judged |\n"
+      "|---|---|---|---|---|---|---|\n",
+      target.symbol(), line);
+  auto judged = [](const eval::BaselineComparison& c) {
+    if (!c.harms.empty()) return std::string("**HARMS**");
+    if (!c.no_better_than.empty()) return "no better than " + listed(c.no_better_than);
+    return std::string("better");
+  };
+  auto row = [&](const std::string& name, const eval::BaselineComparison& c) {
+    std::cout << fmt::format("| {} | {} | {} | {} | {} | {} / {} / {} | {} |\n", name,
+                             f(c.raw_rmse), f(c.mean_rmse), f(c.line_rmse), f(c.model_rmse),
+                             f(c.raw_std), f(c.line_std), f(c.model_std), judged(c));
+  };
+  for (const eval::RecordingEvaluation& r : e.recordings) row(r.info.file, r.baselines);
+  row("**all**", e.overall_baselines);
+  if (e.line_input.empty())
+    std::cout << (e.ranges_known ? "(no line in T: the model has no temperature input)\n"
+                                 : "(no line in T: the model file was written before models kept "
+                                   "their baselines; train it again to see one)\n");
+  for (const eval::RecordingEvaluation& r : e.recordings)
+    for (const std::string& h : r.baselines.harms)
+      std::cout << fmt::format("warning: the model harms {}: {}\n", r.info.file,
+                               eval::with_unit(h, target.symbol()));
+  for (const eval::RecordingEvaluation& r : e.recordings)
+    if (!r.baselines.no_better_than.empty())
+      std::cout << fmt::format("warning: the model is no better than {} on {}\n",
+                               listed(r.baselines.no_better_than), r.info.file);
+  for (const std::string& h : e.overall_baselines.harms)
+    std::cout << fmt::format("warning: the model harms {} over all recordings: {}\n", e.target,
+                             eval::with_unit(h, target.symbol()));
+  const std::size_t n = e.recordings.size();
+  const std::string v = eval::verdict(e);
+  if (v == "harms")
+    std::cout << fmt::format(
+        "verdict: the model HARMS {} of {} recording{}{}; it makes {} worse where a warning says "
+        "so, and should not be shipped for this axis as it is\n",
+        e.harmed.size(), n, n == 1 ? "" : "s", e.harmed.empty() ? " (and all pooled)" : "",
+        e.target);
+  else if (v == "no better than its baselines")
+    std::cout << fmt::format(
+        "verdict: no better than its baselines on {} of {} recording{} ({}): on {} the model "
+        "removes less than {:.0f} % beyond what needs no model\n",
+        e.no_better.size(), n, n == 1 ? "" : "s",
+        listed(e.overall_baselines.no_better_than.empty() ? std::vector<std::string>{"some"}
+                                                          : e.overall_baselines.no_better_than),
+        e.target, 100 * eval::kNoBetterShare);
+  else
+    std::cout << fmt::format("verdict: beats raw, the recording mean{} on every recording\n",
+                             e.line_input.empty() ? "" : " and the " + line);
+}
+
+/// Each input's training range in its own unit, and how far each recording lies outside it.
+void print_extrapolation(const eval::Evaluation& e) {
+  if (!e.ranges_known) {
+    std::cout << "\n(training ranges not known: the model file was written before models kept "
+                 "them; train it again to see how far each recording lies outside them)\n";
+    return;
+  }
+  if (e.recordings.empty() || e.recordings.front().extrapolation.empty()) return;
+  std::cout << "\nInputs against their training ranges, in their own units:\n  training:";
+  for (const InputExtrapolation& x : e.recordings.front().extrapolation)
+    std::cout << fmt::format(" {} {:.4g} .. {:.4g};", x.input, x.train_min, x.train_max);
+  std::cout << "\n| recording | rows outside | farthest outside | guard |\n|---|---|---|---|\n";
+  for (const eval::RecordingEvaluation& r : e.recordings) {
+    std::vector<std::string> far;
+    for (const InputExtrapolation& x : r.extrapolation)
+      if (x.share_outside > 0)
+        far.push_back(fmt::format("{} by {:.3g} ({:.0f} % of rows; {:.4g} .. {:.4g})", x.input,
+                                  x.farthest_outside, 100 * x.share_outside, x.min, x.max));
+    std::cout << fmt::format(
+        "| {} | {:.1f} % | {} | {} |\n", r.info.file, 100 * r.outside_training_share,
+        far.empty() ? std::string("inside") : listed(far), r.novelty.line().substr(9));
+  }
+  std::cout << "(rows outside: any input beyond its training range, at the model's block rate; "
+               "guard: the novelty of the inputs together, at the recording's rate, which counts "
+               "a sample between calibration temperatures as familiar; docs/field.md)\n";
 }
 
 /// Where north-finding needs it: the start-up residual and the opposite-position difference.

@@ -2,6 +2,7 @@
 // model's Table 2 and Table 3, and the gyro's noise terms (eval/evaluation.hpp,
 // eval/findings.hpp, eval/allan.hpp; docs/python.md).
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
@@ -116,6 +117,16 @@ py::object evaluate(const CompensationModel& model, const py::object& data,
   out.attr("pop")("model");
   // What the command prints as warnings (a lost turn-on bias, …) is a Python warning too.
   for (const py::handle w : out["warnings"]) warn(w.cast<std::string>().c_str());
+  // So is the harm the model does, and a model no better than its baselines: out["verdict"].
+  const std::string unit(target_of(e.target).symbol());
+  for (const eval::RecordingEvaluation& r : e.recordings) {
+    for (const std::string& h : r.baselines.harms)
+      warn(fmt::format("the model harms {}: {}", r.info.file, eval::with_unit(h, unit)).c_str());
+    if (!r.baselines.no_better_than.empty())
+      warn(fmt::format("the model is no better than {} on {}",
+                       fmt::join(r.baselines.no_better_than, " and "), r.info.file)
+               .c_str());
+  }
   return out;
 }
 

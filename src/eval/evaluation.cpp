@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cmath>
 #include <nlohmann/json.hpp>
 
 #include "fogdrift/base/error.hpp"
@@ -47,6 +48,23 @@ nlohmann::ordered_json metrics_json(const CompensationMetrics& m, std::string_vi
   return out;
 }
 
+/// A comparison's figures with keys in the target's unit, its harms with the unit filled in.
+nlohmann::ordered_json baselines_json(const BaselineComparison& c, std::string_view unit,
+                                      std::string_view symbol) {
+  nlohmann::ordered_json j;
+  for (const auto& [key, value] :
+       {std::pair{"raw_rmse", c.raw_rmse}, std::pair{"recording_mean_rmse", c.mean_rmse},
+        std::pair{"line_rmse", c.line_rmse}, std::pair{"model_rmse", c.model_rmse},
+        std::pair{"raw_std", c.raw_std}, std::pair{"line_std", c.line_std},
+        std::pair{"model_std", c.model_std}})
+    j[fmt::format("{}_{}", key, unit)] =
+        std::isfinite(value) ? nlohmann::ordered_json(value) : nlohmann::ordered_json(nullptr);
+  j["harms"] = nlohmann::ordered_json::array();
+  for (const std::string& h : c.harms) j["harms"].push_back(with_unit(h, symbol));
+  j["no_better_than"] = c.no_better_than;
+  return j;
+}
+
 nlohmann::ordered_json terms_json(const NoiseTerms& t) {
   return {{"arw_deg_per_rt_h", t.arw_deg_per_rt_h},
           {"bias_instability_dph", t.bias_instability_dph},
@@ -54,6 +72,19 @@ nlohmann::ordered_json terms_json(const NoiseTerms& t) {
 }
 
 }  // namespace
+
+std::string with_unit(std::string_view text, std::string_view symbol) {
+  std::string out(text);
+  for (std::size_t at; (at = out.find("{unit}")) != std::string::npos;) out.replace(at, 6, symbol);
+  return out;
+}
+
+std::string verdict(const Evaluation& e) {
+  if (!e.harmed.empty() || !e.overall_baselines.harms.empty()) return "harms";
+  if (!e.no_better.empty() || !e.overall_baselines.no_better_than.empty())
+    return "no better than its baselines";
+  return "beats its baselines";
+}
 
 Evaluation evaluate(const CompensationModel& model, const std::vector<RecordingInput>& inputs,
                     const EvaluationOptions& options, const std::string& model_label) {
@@ -71,9 +102,18 @@ Evaluation evaluate(const CompensationModel& model, const std::vector<RecordingI
   const bool gyro = target_of(e.target).kind == TargetKind::gyro;
   e.rows = data.rows;
   e.warnings = data.warnings;
-  const std::vector<CompensationMetrics> per =
-      metrics_per_recording(data, model.predict_dph(data, options.guarded));
+  const std::vector<double> predicted = model.predict_dph(data, options.guarded);
+  const std::vector<CompensationMetrics> per = metrics_per_recording(data, predicted);
   e.overall = pool(per);
+  // The baselines and the training ranges, from the model file (baselines.hpp).
+  const auto& line = model.baselines.line;
+  e.line_input = line ? line->input : "";
+  e.ranges_known = model.baselines.has_ranges();
+  const std::vector<double> line_all =
+      line ? line_drift(*line, data, model_label) : std::vector<double>{};
+  std::vector<std::vector<std::size_t>> rows_of(per.size());
+  for (std::size_t i = 0; i < data.rows; ++i) rows_of[data.group[i]].push_back(i);
+  std::vector<BaselineComparison> comparisons;
   for (std::size_t g = 0; g < per.size(); ++g) {
     // The gyro the model compensates: gyro_dph, or another axis (dataset.hpp, with_target).
     Recording other_axis;
@@ -84,6 +124,20 @@ Evaluation evaluate(const CompensationModel& model, const std::vector<RecordingI
     RecordingEvaluation r;
     r.info = data.groups[g];
     r.metrics = per[g];
+    {
+      std::vector<double> y, p, l;
+      for (std::size_t i : rows_of[g]) {
+        y.push_back(data.y[i]);
+        p.push_back(predicted[i]);
+        if (line) l.push_back(line_all[i]);
+      }
+      r.baselines = compare_with_baselines(y, p, l, e.line_input);
+      comparisons.push_back(r.baselines);
+      if (!r.baselines.harms.empty()) e.harmed.push_back(r.info.file);
+      if (!r.baselines.no_better_than.empty()) e.no_better.push_back(r.info.file);
+      r.extrapolation = extrapolation(model.baselines, data, rows_of[g]);
+      r.outside_training_share = share_outside_any(model.baselines, data, rows_of[g]);
+    }
     const RecordingPrediction p = model.predict(rec, options.guarded);
     r.novelty = summarize_novelty(p.novelty, p.weight);
     if (options.allan && gyro) r.allan = allan_comparison(rec, p.drift_dph);
@@ -91,6 +145,7 @@ Evaluation evaluate(const CompensationModel& model, const std::vector<RecordingI
     r.samples = rec.time_s.size();
     e.recordings.push_back(std::move(r));
   }
+  e.overall_baselines = pool(comparisons, e.line_input);
   return e;
 }
 
@@ -110,6 +165,14 @@ std::string to_json(const Evaluation& e, const std::string& model_label,
   j["source"] = source;
   const std::string_view unit = target_of(e.target).unit();
   j["overall"] = metrics_json(e.overall, unit);
+  const std::string_view symbol = target_of(e.target).symbol();
+  j["baselines"] = baselines_json(e.overall_baselines, unit, symbol);
+  j["baselines"]["line_input"] =
+      e.line_input.empty() ? nlohmann::ordered_json(nullptr) : nlohmann::ordered_json(e.line_input);
+  j["verdict"] = verdict(e);
+  j["harmed"] = e.harmed;
+  j["no_better"] = e.no_better;
+  j["training_ranges_known"] = e.ranges_known;
   j["guard"] = e.guarded;
   j["recordings"] = nlohmann::ordered_json::array();
   for (const RecordingEvaluation& r : e.recordings) {
@@ -120,6 +183,17 @@ std::string to_json(const Evaluation& e, const std::string& model_label,
     const double n = static_cast<double>(std::max<std::size_t>(1, r.novelty.samples));
     o["novelty_outside_share"] = static_cast<double>(r.novelty.outside) / n;
     o["novelty_reduced_share"] = static_cast<double>(r.novelty.reduced) / n;
+    o["baselines"] = baselines_json(r.baselines, unit, symbol);
+    o["outside_training_share"] = r.outside_training_share;
+    o["extrapolation"] = nlohmann::ordered_json::array();
+    for (const InputExtrapolation& x : r.extrapolation)
+      o["extrapolation"].push_back({{"input", x.input},
+                                    {"train_min", x.train_min},
+                                    {"train_max", x.train_max},
+                                    {"min", x.min},
+                                    {"max", x.max},
+                                    {"share_outside", x.share_outside},
+                                    {"farthest_outside", x.farthest_outside}});
     if (r.allan)
       o["allan"] = {{"raw", terms_json(r.allan->raw)},
                     {"compensated", terms_json(r.allan->compensated)}};

@@ -205,6 +205,13 @@ std::string to_json(const CompensationModel& m) {
                   {"radius", m.guard.radius},
                   {"prototypes", m.guard.size()},
                   {"points", m.guard.prototypes}};
+  if (m.baselines.has_ranges()) {
+    j["baselines"] = {{"input_min", m.baselines.input_min}, {"input_max", m.baselines.input_max}};
+    if (m.baselines.line)
+      j["baselines"]["line"] = {{"input", m.baselines.line->input},
+                                {"intercept", m.baselines.line->intercept},
+                                {"slope", m.baselines.line->slope}};
+  }
   const Provenance& p = m.provenance;
   ojson hyper = ojson::object();
   for (const auto& [k, v] : p.hyperparameters) hyper[k] = v;
@@ -345,6 +352,16 @@ CompensationModel compensation_model_from_json(const std::string& text, const st
       m.guard.set_warmup_inputs(m.dataset.features.rate_inputs());
       validate(m.guard.settings);
     }
+    if (doc.contains("baselines")) {
+      where = "baselines";
+      const ojson& b = doc.at("baselines");
+      m.baselines.input_min = b.at("input_min").get<std::vector<double>>();
+      m.baselines.input_max = b.at("input_max").get<std::vector<double>>();
+      if (b.contains("line"))
+        m.baselines.line = BaselineLine{b.at("line").at("input").get<std::string>(),
+                                        b.at("line").at("intercept").get<double>(),
+                                        b.at("line").at("slope").get<double>()};
+    }
     where = "provenance";
     const ojson& p = doc.at("provenance");
     m.provenance.method = p.at("method").get<std::string>();
@@ -423,6 +440,29 @@ CompensationModel compensation_model_from_json(const std::string& text, const st
       if (!within(v, kModelScalerLimit))
         fail("guard.points",
              fmt::format("must be finite numbers of magnitude at most {:g}", kModelScalerLimit));
+  }
+  if (m.baselines.has_ranges()) {
+    if (m.baselines.input_min.size() != d || m.baselines.input_max.size() != d)
+      fail("baselines", fmt::format("needs {} input minima and maxima, one per feature", d));
+    for (std::size_t k = 0; k < d; ++k)
+      if (!(m.baselines.input_min[k] <= m.baselines.input_max[k]) ||
+          !within(m.baselines.input_min[k], kModelScalerLimit) ||
+          !within(m.baselines.input_max[k], kModelScalerLimit))
+        fail("baselines.input_min",
+             fmt::format("feature {}: [{}, {}] is not a finite range of magnitude at most {:g}",
+                         k + 1, m.baselines.input_min[k], m.baselines.input_max[k],
+                         kModelScalerLimit));
+    if (const auto& line = m.baselines.line) {
+      if (std::find(m.feature_names.begin(), m.feature_names.end(), line->input) ==
+          m.feature_names.end())
+        fail("baselines.line.input",
+             fmt::format("'{}' is not one of the model's features", csv::excerpt(line->input)));
+      if (!within(line->intercept, kModelRegressorLimit) ||
+          !within(line->slope, kModelRegressorLimit))
+        fail("baselines.line", fmt::format("needs a finite intercept and slope of magnitude at "
+                                           "most {:g}",
+                                           kModelRegressorLimit));
+    }
   }
   const std::size_t regressor_inputs = input_count(m.regressor);
   if (regressor_inputs != d)

@@ -97,6 +97,7 @@ TrainResult train(const Dataset& data, const DatasetOptions& dataset, const Trai
   }
   m.guard = NoveltyGuard::fit(z, data.cols(), labels, conditions, options.guard);
   m.guard.set_warmup_inputs(m.dataset.features.rate_inputs());
+  m.baselines = fit_training_baselines(data);
   if (options.held_out && !t.held_folds.empty())
     s.held_out =
         held_out_report(data, t.held_folds, t.held_predict, t.held_description,

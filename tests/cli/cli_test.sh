@@ -361,7 +361,9 @@ check "no model written on error" test ! -e "$work/x.json"
 # --- evaluate ---------------------------------------------------------------------------------
 check "evaluate on the test repetition" run 0 "$fd" evaluate "$work/svr.json" "$work/small"
 check "evaluate prints the Table 2 view" out_has "Table 2 view: denoised STD"
-check "evaluate has a row per test recording" test "$(grep -c '^| cal_r4_' "$work/out")" -eq 6
+check "evaluate has a row per test recording in each of its four tables" test "$(grep -c '^| cal_r4_' "$work/out")" -eq 12
+check "evaluate shows the model beside its baselines" out_has "| recording | raw | recording mean | line in T_fog_degc | model | STD raw / line / model | judged |"
+check "evaluate gives its verdict" out_has "verdict: beats raw, the recording mean and the line in T_fog_degc on every recording"
 check "evaluate shows what a finding sees" out_has "| recording | first 5 min residual | opposite positions 180 s apart | guard |"
 check "evaluate without the guard" run 0 "$fd" evaluate "$work/svr.json" "$work/small" --no-guard --json
 check "evaluate json has the finding metrics" out_has '"opposite_difference_after_dph"'

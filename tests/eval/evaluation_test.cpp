@@ -110,5 +110,64 @@ TEST_F(EvaluationTest, ARecordingWithoutAThermometerTheModelReadsIsAnErrorNaming
   }
 }
 
+TEST_F(EvaluationTest, JudgesTheModelBesideItsBaselinesFromItsFile) {
+  const Trained& t = trained();
+  // The model file keeps the training rows' ranges and line, and reads them back exactly.
+  ASSERT_TRUE(t.model.baselines.has_ranges());
+  ASSERT_TRUE(t.model.baselines.line.has_value());
+  EXPECT_EQ(t.model.baselines.line->input, "T_fog_degc");
+  const CompensationModel back = compensation_model_from_json(to_json(t.model), "m.json");
+  EXPECT_EQ(back.baselines.input_min, t.model.baselines.input_min);
+  EXPECT_EQ(back.baselines.input_max, t.model.baselines.input_max);
+  EXPECT_EQ(back.baselines.line->slope, t.model.baselines.line->slope);
+  const Evaluation e = evaluate(t.model, t.campaign);
+  EXPECT_EQ(e.line_input, "T_fog_degc");
+  EXPECT_TRUE(e.ranges_known);
+  for (const RecordingEvaluation& r : e.recordings) {
+    // The simulated unit's drift is no line in T: the model beats all three, on every recording.
+    EXPECT_TRUE(r.baselines.harms.empty()) << r.info.file;
+    EXPECT_LT(r.baselines.model_rmse, r.baselines.line_rmse);
+    EXPECT_LT(r.baselines.model_std, r.baselines.raw_std);
+    // The comparison's model RMSE is the metrics' own.
+    EXPECT_NEAR(r.baselines.model_rmse, r.metrics.rmse_dph, 1e-12 * r.metrics.rmse_dph);
+    EXPECT_NEAR(r.baselines.raw_std, r.metrics.std_before_dph, 1e-12 * r.metrics.std_before_dph);
+    // The held-out temperatures lie inside the training ranges (-20, 10 and 40 °C each twice).
+    ASSERT_FALSE(r.extrapolation.empty());
+    EXPECT_EQ(r.extrapolation[0].input, t.model.feature_names[0]);
+  }
+  EXPECT_EQ(verdict(e), "beats its baselines");
+  const auto j = nlohmann::json::parse(to_json(e, "m.json", "cal"));
+  EXPECT_EQ(j["verdict"], "beats its baselines");
+  EXPECT_EQ(j["baselines"]["line_input"], "T_fog_degc");
+  EXPECT_TRUE(j["recordings"][0]["baselines"].contains("line_rmse_dph"));
+  EXPECT_TRUE(j["recordings"][0].contains("extrapolation"));
+
+  // A model the evaluation's recordings make worse is flagged: its drift turned upside down.
+  CompensationModel upside_down = t.model;
+  upside_down.y_scaler.scale[0] = -upside_down.y_scaler.scale[0];
+  const Evaluation bad = evaluate(upside_down, t.campaign, {.guarded = false});
+  EXPECT_EQ(verdict(bad), "harms");
+  EXPECT_EQ(bad.harmed.size(), 3u);
+
+  // A file whose baselines were edited to nonsense is refused, naming the field.
+  auto refused_field = [&](const std::string& from, const std::string& to) -> std::string {
+    std::string text = to_json(t.model);
+    const auto at = text.find(from);
+    EXPECT_NE(at, std::string::npos) << from;
+    text.replace(at, from.size(), to);
+    try {
+      compensation_model_from_json(text, "m.json", {.allow_edited = true});
+    } catch (const InputError& err) {
+      return err.what();
+    }
+    return "";
+  };
+  EXPECT_NE(refused_field("\"input\": \"T_fog_degc\"", "\"input\": \"T_air_degc\"")
+                .find("baselines.line.input"),
+            std::string::npos);
+  EXPECT_NE(refused_field("\"input_max\": [", "\"input_max\": [-1e30,").find("baselines"),
+            std::string::npos);
+}
+
 }  // namespace
 }  // namespace fogdrift::eval

@@ -4,15 +4,19 @@
 //
 // Per recording: the metrics of metrics.hpp against the dataset's target at the model's block
 // rate, the novelty guard's view at the recording's own rate (as compensate and stream see it),
-// and optionally the Allan noise terms of the gyro output before and after compensation. Over
-// all recordings: eval::pool of the per-recording metrics.
+// and optionally the Allan noise terms of the gyro output before and after compensation; the
+// model beside its baselines (raw, the recording mean, the training rows' line in T) with the
+// harm it does (baseline_comparison.hpp); and how far its inputs lie outside the training ranges,
+// in their own units (baselines.hpp). Over all recordings: eval::pool of each.
 #pragma once
 
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "fogdrift/eval/allan.hpp"
+#include "fogdrift/eval/baseline_comparison.hpp"
 #include "fogdrift/eval/metrics.hpp"
 #include "fogdrift/io/campaign.hpp"
 #include "fogdrift/model/dataset.hpp"
@@ -39,6 +43,11 @@ struct RecordingEvaluation {
   CompensationMetrics metrics;  ///< at the model's block rate
   NoveltySummary novelty;       ///< at the recording's own rate
   std::optional<AllanComparison> allan;
+  BaselineComparison baselines;  ///< at the model's block rate, the dataset's rows
+  /// Per input, how far the recording's rows lie outside the training ranges (empty when the
+  /// model file does not know them), and the share of rows with any input outside.
+  std::vector<InputExtrapolation> extrapolation;
+  double outside_training_share = 0;
   double duration_s = 0;    ///< last minus first time stamp
   std::size_t samples = 0;  ///< at the recording's own rate
 };
@@ -52,6 +61,12 @@ struct Evaluation {
   std::size_t rows = 0;         ///< dataset rows over all recordings
   CompensationMetrics overall;  ///< eval::pool of the recordings' metrics
   std::vector<RecordingEvaluation> recordings;
+  BaselineComparison overall_baselines;  ///< eval::pool of the recordings'
+  std::string line_input;                ///< the line's temperature input; empty: no line
+  bool ranges_known = false;             ///< the model file holds its training ranges
+  /// The recordings the model harms (file names), and those it is no better than its
+  /// baselines on.
+  std::vector<std::string> harmed, no_better;
   std::vector<std::string> warnings;  ///< the dataset builder's
 };
 
@@ -66,10 +81,19 @@ Evaluation evaluate(const CompensationModel& model, const Campaign& campaign,
                     const EvaluationOptions& options = {},
                     const std::string& model_label = "model");
 
+/// The overall verdict: "harms" (some recording, or all pooled, made worse), "no better than
+/// its baselines", or "beats its baselines" (baseline_comparison.hpp).
+std::string verdict(const Evaluation& evaluation);
+
+/// A harm's sentence with "{unit}" replaced by the target's unit symbol.
+std::string with_unit(std::string_view text, std::string_view symbol);
+
 /// The JSON `fogdrift evaluate --json` prints: "model" (`model_label`), "method", "source",
-/// "overall", "guard", "recordings" (each with its metrics, novelty shares and, when computed,
-/// "allan"), "warnings"; metric keys name their unit: …_dph for a gyro, …_g for an
-/// accelerometer, …_ppm for a scale-factor channel.
+/// "overall", "baselines" (the pooled comparison, its "harms" and "no_better_than"), "verdict"
+/// ("harms", "no better than its baselines" or "beats its baselines"), "harmed" and "no_better"
+/// (file names), "guard", "recordings" (each with its metrics, novelty shares, "baselines",
+/// "extrapolation" and, when computed, "allan"), "warnings"; metric keys name their unit: …_dph for
+/// a gyro, …_g for an accelerometer, …_ppm for a scale-factor channel.
 std::string to_json(const Evaluation& evaluation, const std::string& model_label,
                     const std::string& source);
 

@@ -5,6 +5,7 @@
 //   scalers   feature and target standardisation fitted on the training rows
 //   regressor one of the registry's (regressors.hpp): ε-SVR (support vectors, coefficients, γ,
 //              ρ), BP network weights, polynomial, or Gaussian process
+//   baselines  the training rows' input ranges and line in T (baselines.hpp), for evaluate
 //   provenance method, fitness, hyperparameters, seed, optimizer budget, training files with
 //              their SHA-256, fogdrift version. Nothing depends on the clock, so one seed gives
 //              one file, byte for byte.
@@ -19,6 +20,7 @@
 #include <variant>
 #include <vector>
 
+#include "fogdrift/model/baselines.hpp"
 #include "fogdrift/model/dataset.hpp"
 #include "fogdrift/model/guard.hpp"
 #include "fogdrift/model/regressors.hpp"
@@ -89,6 +91,8 @@ struct CompensationModel {
   /// The region of feature space the model was trained on (guard.hpp); empty in files written
   /// before format version 2, which then compensate unguarded.
   NoveltyGuard guard;
+  /// What evaluate judges the model against (baselines.hpp); empty in files written before it.
+  TrainingBaselines baselines;
 
   std::size_t inputs() const { return feature_names.size(); }
   /// One row of features in their own units, unguarded; `work` holds inputs() doubles.
