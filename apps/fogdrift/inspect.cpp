@@ -1,5 +1,6 @@
 // fogdrift inspect: validate a recording or a campaign and summarise it (like svm-checkdata).
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <filesystem>
 #include <iostream>
@@ -35,11 +36,19 @@ nlohmann::ordered_json summary_json(const RecordingSummary& s) {
   }
   j["extra_columns"] = s.extra_columns;
   j["uniformly_sampled"] = s.uniformly_sampled;
+  j["log_to_join"] = s.partial;
+  if (s.partial) j["missing"] = s.missing;
   return j;
 }
 
 void print_recording(const std::string& path, const RecordingSummary& s) {
-  std::cout << fmt::format("{}: valid fogdrift recording\n", path);
+  std::cout << (s.partial ? fmt::format("{}: valid log to join ({}; fogdrift join brings its "
+                                        "columns into a recording by time)\n",
+                                        path,
+                                        s.missing.empty()
+                                            ? std::string("it starts before power-on, t < 0")
+                                            : fmt::format("no {}", fmt::join(s.missing, ", ")))
+                          : fmt::format("{}: valid fogdrift recording\n", path));
   std::cout << fmt::format("  samples     {}\n  time        {} .. {} s ({:.1f} min)\n", s.samples,
                            s.start_s, s.end_s, s.duration_s / 60.0);
   if (s.bursts > 0)
@@ -58,7 +67,10 @@ void print_recording(const std::string& path, const RecordingSummary& s) {
     std::cout << fmt::format("  {:<16}{:>14.6g}{:>14.6g}{:>14.6g}{:>14.6g}\n", c.name, c.min, c.max,
                              c.mean, c.std);
   }
-  if (s.uniformly_sampled)
+  if (s.partial)
+    std::cout << "  training    not a recording: 'fogdrift join RECORDING LOG -o OUT' brings its "
+                 "columns into one (docs/logs.md, \"Temperatures from another file\")\n";
+  else if (s.uniformly_sampled)
     std::cout << "  training    usable as it stands (uniform time steps)\n";
   else if (s.bursts > 0)
     std::cout << fmt::format(
@@ -159,20 +171,52 @@ void add_inspect(CLI::App& app) {
   auto* cmd = app.add_subcommand(
       "inspect",
       "Validate a recording (CSV) or a campaign (folder or campaign.json) and summarise it:\n"
-      "duration, sample rate, gaps, temperature ranges per thermometer, gyro mean and STD.\n"
+      "duration, sample rate, gaps, temperature ranges per thermometer, gyro mean and STD. With\n"
+      "--log, a log to join (a chamber sheet imported with --partial) is summarised too: span,\n"
+      "step, columns and their ranges.\n"
       "Exit status 0 when everything is valid, 1 with the error (file:line:column: rule) "
       "otherwise.");
   auto path = std::make_shared<std::string>();
   auto json = std::make_shared<bool>(false);
+  auto log = std::make_shared<bool>(false);
   cmd->add_option("PATH", *path, "Recording CSV, campaign folder or campaign.json")->required();
   cmd->add_flag("--json", *json, "Print the summary as JSON");
-  cmd->callback([path, json] {
+  cmd->add_flag("--log", *log,
+                "The file may be a log to join (a chamber sheet imported with --partial): "
+                "summarise it without the gyro or the FOG thermometer, and with times before "
+                "power-on");
+  cmd->callback([path, json, log] {
     const fs::path p(*path);
     int status = 0;
     if (fs::is_directory(p) || p.extension() == ".json") {
       status = inspect_campaign(p, *json);
     } else {
-      const Recording rec = read_recording(p);
+      // A recording is held to a recording's rules; with --log, a log to join (a chamber sheet
+      // imported with --partial) is summarised too.
+      Recording rec;
+      if (*log) {
+        rec = read_log(p);
+        // Every column a recording needs, from time 0 on: a recording, held to its rules.
+        if (missing_required(rec).empty() && !rec.time_s.empty() && rec.time_s.front() >= 0) {
+          rec.partial = false;
+          validate(rec);
+        }
+      } else {
+        try {
+          rec = read_recording(p);
+        } catch (const InputError& e) {
+          bool is_log = false;
+          try {
+            is_log = read_log(p).partial;
+          } catch (const InputError&) {
+          }
+          if (!is_log) throw;
+          throw InputError(e.file(), e.line(), e.column(),
+                           e.message() + fmt::format("; it is a valid log to join, and "
+                                                     "'fogdrift inspect --log {}' summarises it",
+                                                     p.string()));
+        }
+      }
       const RecordingSummary s = summarize(rec);
       if (*json) {
         nlohmann::ordered_json j = summary_json(s);

@@ -60,8 +60,12 @@ RecordingSummary summarize(const Recording& rec) {
     }
   }
   s.uniformly_sampled = is_uniformly_sampled(rec);
-  s.columns.push_back(column_range("gyro_dph", rec.gyro_dph));
-  s.columns.push_back(column_range("temp_fog_degc", rec.temp_fog_degc));
+  s.missing = missing_required(rec);
+  s.partial = rec.partial && (!s.missing.empty() || (!rec.time_s.empty() && rec.time_s[0] < 0));
+  // A log to join may lack the gyro and the FOG thermometer (recording.hpp).
+  if (!rec.gyro_dph.empty()) s.columns.push_back(column_range("gyro_dph", rec.gyro_dph));
+  if (!rec.temp_fog_degc.empty())
+    s.columns.push_back(column_range("temp_fog_degc", rec.temp_fog_degc));
   if (!rec.temp_acc1_degc.empty())
     s.columns.push_back(column_range("temp_acc1_degc", rec.temp_acc1_degc));
   if (!rec.temp_acc2_degc.empty())
@@ -70,7 +74,11 @@ RecordingSummary summarize(const Recording& rec) {
   if (rec.accel_y_g) s.columns.push_back(column_range("accel_y_g", *rec.accel_y_g));
   if (rec.table_deg) s.columns.push_back(column_range("table_deg", *rec.table_deg));
   if (rec.chamber_degc) s.columns.push_back(column_range("chamber_degc", *rec.chamber_degc));
-  for (const auto& e : rec.extra) s.extra_columns.push_back(e.name);
+  for (const auto& e : rec.extra) {
+    s.extra_columns.push_back(e.name);
+    if (const auto values = numbers_of(e); values && !values->empty())
+      s.columns.push_back(column_range(e.name, *values));
+  }
   return s;
 }
 

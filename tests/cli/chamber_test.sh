@@ -93,7 +93,13 @@ check "padding columns dropped with a note" out_has "note: dropped 2 empty colum
 check "padding rows dropped with a note" out_has "note: dropped 2 row(s) with every field empty"
 check "said to be a log to join" out_has "a log to join: it has no gyro_dph and no temp_fog_degc"
 check "the sheet starts before power-on" bash -c "awk -F, 'NR==2{exit !(\$1 < 0)}' sheet_fd.csv"
-check "a log is not a recording" run 1 "$fd" inspect sheet_fd.csv
+check "inspect of a log says it is one" run 1 "$fd" inspect sheet_fd.csv
+check "  and how to summarise it" err_has "it is a valid log to join, and 'fogdrift inspect --log sheet_fd.csv' summarises it"
+check "inspect --log summarises a log to join" run 0 "$fd" inspect --log sheet_fd.csv
+check "  said to be a log to join" out_has "sheet_fd.csv: valid log to join (no gyro_dph, temp_fog_degc; fogdrift join brings its columns into a recording by time)"
+check "  with its columns' ranges" out_has "  temp_case_degc"
+check "  and what to do with it" out_has "training    not a recording: 'fogdrift join RECORDING LOG -o OUT' brings its columns into one"
+check "a log is not a recording to cut into a campaign" run 1 "$fd" campaign x sheet_fd.csv --input-rate-dph 0
 check "log message names join" err_has "'fogdrift join' to add columns from a log of their own"
 
 check "join, estimating the clock offset" run 0 "$fd" join imu.csv sheet_fd.csv -o joined.csv --offset-from temp_fog_degc=temp_case_degc

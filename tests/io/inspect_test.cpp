@@ -58,5 +58,30 @@ TEST(Inspect, ColumnRangeStdIsTheSampleStd) {
   EXPECT_DOUBLE_EQ(r.std, std::sqrt(32.0 / 7.0));
 }
 
+// A chamber sheet as a log to join (issue 58): it was refused for lacking a gyro; now its span,
+// step, columns and ranges are summarised, its text columns named and not ranged.
+TEST(Inspect, ALogToJoinIsSummarisedWithWhatItLacks) {
+  Recording sheet;
+  sheet.partial = true;
+  sheet.chamber_degc.emplace();
+  for (double t : {-600.0, -300.0, 0.0, 300.0}) {
+    sheet.time_s.push_back(t);
+    sheet.chamber_degc->push_back(20.0 + t / 300.0);
+  }
+  sheet.extra.push_back({"temp_case_degc", {"19.5", "20.5", "21.5", "22.5"}});
+  sheet.extra.push_back({"operator", {"jd", "jd", "kl", "kl"}});
+  const RecordingSummary s = summarize(sheet);
+  EXPECT_TRUE(s.partial);
+  EXPECT_EQ(s.missing, (std::vector<std::string>{"gyro_dph", "temp_fog_degc"}));
+  EXPECT_DOUBLE_EQ(s.start_s, -600.0);
+  EXPECT_DOUBLE_EQ(s.sample_interval_s, 300.0);
+  ASSERT_EQ(s.columns.size(), 2u);
+  EXPECT_EQ(s.columns[0].name, "chamber_degc");
+  EXPECT_DOUBLE_EQ(s.columns[0].min, 18.0);
+  EXPECT_EQ(s.columns[1].name, "temp_case_degc");
+  EXPECT_DOUBLE_EQ(s.columns[1].max, 22.5);
+  EXPECT_EQ(s.extra_columns, (std::vector<std::string>{"temp_case_degc", "operator"}));
+}
+
 }  // namespace
 }  // namespace fogdrift

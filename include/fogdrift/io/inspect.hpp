@@ -26,11 +26,16 @@ struct RecordingSummary {
   /// burst log). Then the number of bursts and that median period, s; else 0 and 0.
   std::size_t bursts = 0;
   double burst_period_s = 0;
-  bool uniformly_sampled = false;    ///< every step within 1 % of the median (train needs it)
-  std::vector<ColumnRange> columns;  ///< every known numeric column except time_s
-  std::vector<std::string> extra_columns;
+  bool uniformly_sampled = false;  ///< every step within 1 % of the median (train needs it)
+  /// Every numeric column but time_s with values: the known ones, then the numeric further
+  /// columns.
+  std::vector<ColumnRange> columns;
+  std::vector<std::string> extra_columns;  ///< the further columns, numeric or not
+  bool partial = false;                    ///< a log to join (Recording::partial)
+  std::vector<std::string> missing;        ///< what a log to join lacks of a recording
 };
 
+/// A recording, or a log to join (a chamber sheet: span, step, columns and ranges).
 RecordingSummary summarize(const Recording& recording);
 
 /// Mean and sample standard deviation (n − 1) of `values`; 0 for the STD of fewer than 2 values.
