@@ -12,13 +12,16 @@
 
 #include "cli_util.hpp"
 #include "commands.hpp"
+#include "fogdrift/base/atomic_file.hpp"
 #include "fogdrift/base/error.hpp"
+#include "fogdrift/base/run_files.hpp"
 #include "fogdrift/eval/eval_option_table.hpp"
 #include "fogdrift/eval/evaluation.hpp"
 #include "fogdrift/io/campaign.hpp"
 #include "fogdrift/model/baselines.hpp"
 #include "fogdrift/model/model.hpp"
 #include "fogdrift/model/model_set.hpp"
+#include "fogdrift/report/evaluation_figures.hpp"
 #include "option_flags.hpp"
 
 namespace fogdrift::app {
@@ -32,6 +35,8 @@ struct EvaluateArgs {
   std::shared_ptr<OptionFlags> flags;  // the evaluation's options (eval_option_table.hpp)
   std::optional<double> input_rate_dph;
   std::vector<std::string> references;
+  std::string figures;  ///< folder for the figures; empty: none
+  bool force = false;   ///< replace that folder
 };
 
 /// A metric as printed: n/a where it does not apply (eval::kNotApplicable).
@@ -49,6 +54,8 @@ bool is_campaign(const std::string& path) {
 
 void print_evaluation(const CompensationModel& model, const eval::Evaluation& e,
                       const std::string& source, const std::string& heading, bool allan);
+void write_figures(const std::string& dir, bool force, const std::vector<report::Figure>& figures,
+                   bool json);
 void print_field_figures(const eval::Evaluation& e);
 void print_baselines(const eval::Evaluation& e);
 void print_extrapolation(const eval::Evaluation& e);
@@ -87,12 +94,22 @@ void run(const EvaluateArgs& a) {
     }
     source = fmt::format("{} recording file{}", inputs.size(), inputs.size() == 1 ? "" : "s");
   }
+  if (!a.figures.empty()) {
+    check_output_not_input(a.figures, "--figures");
+    options.series = true;
+  }
   // One evaluation per axis the model compensates (model_set.hpp).
   std::vector<std::string> axes;  // --json: each axis's evaluation
+  std::vector<report::Figure> figures;
   for (const CompensationModel& model : set.models) {
     const eval::Evaluation e = campaign ? eval::evaluate(model, *campaign, options, a.model)
                                         : eval::evaluate(model, inputs, options, a.model);
     const std::string& target = model.dataset.target_column;
+    if (options.series)
+      for (report::Figure& f : report::evaluation_figures(
+               e, model.baselines, model.feature_names,
+               set.models.size() > 1 || target != "gyro_dph" ? target + "_" : ""))
+        figures.push_back(std::move(f));
     if (a.json) {
       axes.push_back(eval::to_json(e, a.model, source));
     } else {
@@ -118,6 +135,30 @@ void run(const EvaluateArgs& a) {
     }
     std::cout << j.dump(2) << "\n";
   }
+  if (!a.figures.empty()) write_figures(a.figures, a.force, figures, a.json);
+}
+
+/// The figures as JSON and PNG in `dir`, all or none (atomic_file.hpp); a PNG gnuplot cannot
+/// draw is said on standard error, its JSON still written.
+void write_figures(const std::string& dir, bool force, const std::vector<report::Figure>& figures,
+                   bool json) {
+  const std::string gnuplot = report::find_gnuplot();
+  std::vector<std::string> problems;
+  fill_directory_atomically(dir, force, [&](const std::filesystem::path& folder) {
+    for (const report::Figure& f : figures) {
+      write_text_atomically(folder / (f.name + ".json"), report::to_json(f));
+      const std::string problem = report::render_png(f, folder, gnuplot);
+      if (!problem.empty()) problems.push_back(problem);
+    }
+  });
+  (json ? std::cerr : std::cout) << fmt::format("\nWrote {} figures to {}/ (PNG and JSON): {}\n",
+                                                figures.size(), dir, [&] {
+                                                  std::string names;
+                                                  for (const report::Figure& f : figures)
+                                                    names += (names.empty() ? "" : ", ") + f.name;
+                                                  return names;
+                                                }());
+  for (const std::string& p : problems) std::cerr << "fogdrift evaluate: no PNG: " << p << "\n";
 }
 
 void print_evaluation(const CompensationModel& model, const eval::Evaluation& e,
@@ -355,7 +396,8 @@ void add_evaluate(CLI::App& app) {
       "Examples:\n"
       "  fogdrift evaluate model.json cal              # the campaign's role \"test\" recordings\n"
       "  fogdrift evaluate model.json run1.csv run2.csv --json\n"
-      "  fogdrift evaluate model.json cal --allan      # datasheet noise terms before and after");
+      "  fogdrift evaluate model.json cal --allan      # datasheet noise terms before and after\n"
+      "  fogdrift evaluate model.json cal --figures figs   # PNG and JSON to look at");
   cmd->add_option("model", args->model, "Model file written by `fogdrift train`")->required();
   add_model_load_flags(cmd, &args->load);
   cmd->add_option("inputs", args->inputs, "A campaign folder, or recording CSV files")->required();
@@ -368,6 +410,12 @@ void add_evaluate(CLI::App& app) {
                   "its unit (accel_x_g=0, sf_fog_ppm=0; docs/logs.md, \"Other targets\"), as "
                   "fogdrift campaign --reference gives it");
   cmd->add_flag("--json", args->json, "Print the metrics as JSON");
+  cmd->add_option("--figures", args->figures,
+                  "Folder for figures, PNG (gnuplot) and JSON, per axis: each recording raw and "
+                  "compensated, the residual against temperature for the model and the line in T, "
+                  "and the held-out rows over the training region (docs/compensation.md, "
+                  "\"Figures\"); written whole or not at all");
+  cmd->add_flag("--force", args->force, "With --figures: replace the folder if it exists");
   const auto& table = eval::evaluation_option_table();
   args->flags = std::make_shared<OptionFlags>(cmd, specs_of(table), defaults_of(table));
   cmd->callback([args] { with_model_settings(args->model, [&] { run(*args); }); });

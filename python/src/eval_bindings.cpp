@@ -17,6 +17,7 @@
 
 #include "bindings.hpp"
 #include "convert.hpp"
+#include "fogdrift/base/atomic_file.hpp"
 #include "fogdrift/base/error.hpp"
 #include "fogdrift/eval/allan.hpp"
 #include "fogdrift/eval/eval_option_table.hpp"
@@ -25,6 +26,7 @@
 #include "fogdrift/eval/northfind.hpp"
 #include "fogdrift/io/campaign.hpp"
 #include "fogdrift/io/target.hpp"
+#include "fogdrift/report/evaluation_figures.hpp"
 #include "option_keywords.hpp"
 
 namespace py = pybind11;
@@ -47,10 +49,12 @@ bool is_campaign(const py::object& o) {
 
 py::object evaluate(const CompensationModel& model, const py::object& data,
                     std::optional<double> input_rate_dph,
-                    const std::map<std::string, double>& references, const py::kwargs& kwargs) {
+                    const std::map<std::string, double>& references,
+                    const std::optional<std::filesystem::path>& figures, const py::kwargs& kwargs) {
   eval::EvaluationOptions options;
   apply_keywords(eval::evaluation_option_table(), options, kwargs, "evaluate",
-                 {"model", "data", "input_rate_dph", "references"});
+                 {"model", "data", "input_rate_dph", "references", "figures"});
+  options.series = figures.has_value();
   for (const auto& [column, value] : references) check_reference(column, value, "references");
   eval::Evaluation e;
   std::string source;
@@ -115,6 +119,28 @@ py::object evaluate(const CompensationModel& model, const py::object& data,
   }
   py::dict out = from_json(eval::to_json(e, "model", source)).cast<py::dict>();
   out.attr("pop")("model");
+  if (figures) {
+    // As `fogdrift evaluate --figures`: PNG and JSON, the folder whole or not at all.
+    const std::vector<report::Figure> drawn = report::evaluation_figures(
+        e, model.baselines, model.feature_names,
+        model.dataset.target_column == "gyro_dph" ? "" : model.dataset.target_column + "_");
+    const std::string gnuplot = report::find_gnuplot();
+    std::vector<std::string> problems;
+    {
+      py::gil_scoped_release release;
+      fill_directory_atomically(*figures, false, [&](const std::filesystem::path& dir) {
+        for (const report::Figure& f : drawn) {
+          write_text_atomically(dir / (f.name + ".json"), report::to_json(f));
+          const std::string problem = report::render_png(f, dir, gnuplot);
+          if (!problem.empty()) problems.push_back(problem);
+        }
+      });
+    }
+    py::list names;
+    for (const report::Figure& f : drawn) names.append(f.name);
+    out["figures"] = names;
+    for (const std::string& p : problems) warn(("no PNG: " + p).c_str());
+  }
   // What the command prints as warnings (a lost turn-on bias, …) is a Python warning too.
   for (const py::handle w : out["warnings"]) warn(w.cast<std::string>().c_str());
   // So is the harm the model does, and a model no better than its baselines: out["verdict"].
@@ -264,7 +290,7 @@ void bind_eval(py::module_& m) {
       "(docs/options.md).");
   m.def("evaluate", &evaluate, py::arg("model"), py::arg("data"), py::kw_only(),
         py::arg("input_rate_dph") = py::none(),
-        py::arg("references") = std::map<std::string, double>{},
+        py::arg("references") = std::map<std::string, double>{}, py::arg("figures") = py::none(),
         "The paper's Table 2 view of a Model on test data, as `fogdrift evaluate --json` prints "
         "it: data is a campaign folder (its recordings with role 'test'), a recording (a path or "
         "a mapping of columns) or a list of them. Recordings have no manifest to say what rate "
@@ -276,7 +302,11 @@ void bind_eval(py::module_& m) {
         "'overall' and one entry per recording in 'recordings' (MAE, RMSE, STD before and "
         "after, start-up residual, opposite-position difference, all °/h, or the target's unit "
         "as the keys say; novelty shares; with "
-        "allan=True the Allan noise terms raw and compensated), 'guard', 'warnings'.");
+        "allan=True the Allan noise terms raw and compensated), 'guard', 'warnings'; the model "
+        "beside its baselines ('baselines', 'verdict', 'harmed', 'no_better', each recording's "
+        "'baselines' and 'extrapolation'; a Python warning for each harm); with figures=DIR, "
+        "the figures `fogdrift evaluate --figures` draws, written to DIR as PNG and JSON, and "
+        "their names under 'figures'.");
   m.def("northfind", &northfind, py::arg("campaign"), py::arg("model") = nullptr,
         "Four-position north-finding on a campaign's northfind and stable recordings, raw and "
         "with the model's drift subtracted (paper Table 3), as `fogdrift northfind --json` "

@@ -111,6 +111,38 @@ Evaluation evaluate(const CompensationModel& model, const std::vector<RecordingI
   e.ranges_known = model.baselines.has_ranges();
   const std::vector<double> line_all =
       line ? line_drift(*line, data, model_label) : std::vector<double>{};
+  // The inputs the figures draw the training region in.
+  const auto index_of = [&](const std::string& name) {
+    const auto it = std::find(data.feature_names.begin(), data.feature_names.end(), name);
+    return it == data.feature_names.end()
+               ? std::string::npos
+               : static_cast<std::size_t>(it - data.feature_names.begin());
+  };
+  std::size_t t_col = std::string::npos, r_col = std::string::npos;
+  if (options.series) {
+    e.temperature_input = e.line_input;
+    for (const std::string& n : data.feature_names)
+      if (e.temperature_input.empty() && n.starts_with("T_") && n.ends_with("_degc"))
+        e.temperature_input = n;
+    if (!e.temperature_input.empty()) {
+      // "T_fog_degc" → a rate "dT…_fog_degc_per_s".
+      const std::string thermometer =
+          e.temperature_input.substr(1, e.temperature_input.size() - 1) + "_per_s";
+      for (const std::string& n : data.feature_names)
+        if (e.rate_input.empty() && n.starts_with("dT") && n.ends_with(thermometer))
+          e.rate_input = n;
+    }
+    t_col = e.temperature_input.empty() ? std::string::npos : index_of(e.temperature_input);
+    r_col = e.rate_input.empty() ? std::string::npos : index_of(e.rate_input);
+    const std::size_t d = model.feature_names.size();
+    for (std::size_t p = 0; d > 0 && p < model.guard.prototypes.size() / d; ++p) {
+      auto unscaled = [&](std::size_t k) {
+        return model.guard.prototypes[p * d + k] * model.x_scaler.scale[k] + model.x_scaler.mean[k];
+      };
+      if (t_col != std::string::npos) e.region_temperature.push_back(unscaled(t_col));
+      if (r_col != std::string::npos) e.region_rate.push_back(unscaled(r_col));
+    }
+  }
   std::vector<std::vector<std::size_t>> rows_of(per.size());
   for (std::size_t i = 0; i < data.rows; ++i) rows_of[data.group[i]].push_back(i);
   std::vector<BaselineComparison> comparisons;
@@ -135,6 +167,18 @@ Evaluation evaluate(const CompensationModel& model, const std::vector<RecordingI
       comparisons.push_back(r.baselines);
       if (!r.baselines.harms.empty()) e.harmed.push_back(r.info.file);
       if (!r.baselines.no_better_than.empty()) e.no_better.push_back(r.info.file);
+      if (options.series) {
+        RecordingSeries rs;
+        for (std::size_t i : rows_of[g]) {
+          rs.time_s.push_back(data.time_s.empty() ? 0.0 : data.time_s[i]);
+          if (t_col != std::string::npos) rs.temperature.push_back(data.x[i * data.cols() + t_col]);
+          if (r_col != std::string::npos) rs.rate.push_back(data.x[i * data.cols() + r_col]);
+        }
+        rs.target = std::move(y);
+        rs.model = std::move(p);
+        rs.line = std::move(l);
+        r.series = std::move(rs);
+      }
       r.extrapolation = extrapolation(model.baselines, data, rows_of[g]);
       r.outside_training_share = share_outside_any(model.baselines, data, rows_of[g]);
     }

@@ -107,8 +107,11 @@ std::string to_gnuplot(const Figure& figure, const std::string& png_name) {
       const Series& series = panel.series[s];
       if (s) g << ", \\\n     ";
       g << "$d" << p << "_" << s << " using 1:2 with "
-        << (series.points ? "linespoints pt 7 ps 0.8" : "lines") << " lw 1.5"
-        << (series.dashed ? " dt 2 lc rgb 'black'" : "") << " title " << quoted(series.name);
+        << (series.scatter  ? "points pt 7 ps 0.5"
+            : series.points ? "linespoints pt 7 ps 0.8"
+                            : "lines")
+        << " lw 1.5" << (series.dashed ? " dt 2 lc rgb 'black'" : "") << " title "
+        << quoted(series.name);
     }
     g << "\n";
   }

@@ -30,6 +30,19 @@ struct EvaluationOptions {
   /// Also the Allan noise terms of each recording, raw and compensated: a gyro's alone (its
   /// terms are °/√h, °/h, °/h/√h); another target gets none.
   bool allan = false;
+  /// Keep each recording's rows for figures (RecordingEvaluation::series) and the training
+  /// region's prototypes (Evaluation::region_*): what `evaluate --figures` draws.
+  bool series = false;
+};
+
+/// One recording's rows at the model's block rate, for figures.
+struct RecordingSeries {
+  std::vector<double> time_s;       ///< since power-on, s
+  std::vector<double> target;       ///< y, the drift target (raw less the reference)
+  std::vector<double> model;        ///< ŷ, the model's drift as applied (guarded when asked)
+  std::vector<double> line;         ///< the line in T's drift; empty without a line
+  std::vector<double> temperature;  ///< Evaluation::temperature_input; empty without one
+  std::vector<double> rate;         ///< Evaluation::rate_input; empty without one
 };
 
 /// Datasheet noise terms of a recording's gyro output before and after compensation, from the
@@ -48,8 +61,9 @@ struct RecordingEvaluation {
   /// model file does not know them), and the share of rows with any input outside.
   std::vector<InputExtrapolation> extrapolation;
   double outside_training_share = 0;
-  double duration_s = 0;    ///< last minus first time stamp
-  std::size_t samples = 0;  ///< at the recording's own rate
+  std::optional<RecordingSeries> series;  ///< with EvaluationOptions::series
+  double duration_s = 0;                  ///< last minus first time stamp
+  std::size_t samples = 0;                ///< at the recording's own rate
 };
 
 struct Evaluation {
@@ -64,6 +78,12 @@ struct Evaluation {
   BaselineComparison overall_baselines;  ///< eval::pool of the recordings'
   std::string line_input;                ///< the line's temperature input; empty: no line
   bool ranges_known = false;             ///< the model file holds its training ranges
+  /// With EvaluationOptions::series: the temperature and rate inputs the figures draw the
+  /// training region in (the line's temperature, else the first T_; the first rate of the same
+  /// thermometer; empty when the model has none), and the guard's prototypes in those inputs'
+  /// own units.
+  std::string temperature_input, rate_input;
+  std::vector<double> region_temperature, region_rate;
   /// The recordings the model harms (file names), and those it is no better than its
   /// baselines on.
   std::vector<std::string> harmed, no_better;

@@ -12,8 +12,9 @@ namespace fogdrift::report {
 struct Series {
   std::string name;
   std::vector<double> x, y;
-  bool points = false;  ///< draw markers (and lines) instead of a plain line
-  bool dashed = false;  ///< a reference line
+  bool points = false;   ///< draw markers (and lines) instead of a plain line
+  bool dashed = false;   ///< a reference line
+  bool scatter = false;  ///< markers alone, no line between them (a cloud of rows)
 };
 
 struct Panel {
