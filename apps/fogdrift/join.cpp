@@ -54,7 +54,7 @@ void print_evidence(const JoinEvidence& ev) {
     std::cout << fmt::format(
         "  clock offset from {}: {:.6g} s, sharp to ±{:.3g} s (searched {:.6g} .. {:.6g} s)\n"
         "    over {} rows ({:.6g} s): the difference has STD {:.4g} against the column's own "
-        "{:.4g} ({:.0f} %){}; the columns stand {:.4g} apart, and vary by {:.4g} and {:.4g}\n",
+        "{:.4g} ({:.2g} %){}; the columns stand {:.4g} apart, and vary by {:.4g} and {:.4g}\n",
         pair_name(m), e.offset_s, e.half_width_s, e.searched_from_s, e.searched_to_s,
         e.rows_compared, e.compared_to_s - e.compared_from_s, e.residual_std, e.recording_std,
         e.recording_std > 0 ? 100 * e.residual_std / e.recording_std : 0.0,
