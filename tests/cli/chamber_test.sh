@@ -120,6 +120,10 @@ check "no offset and no estimate" run 1 "$fd" join imu.csv sheet_fd.csv -o x.csv
 check "no default offset message" err_has "option --offset-s: nothing ties the clock of sheet_fd.csv to that of imu.csv"
 check "the air does not fix the case's offset" run 1 "$fd" join imu.csv sheet_fd.csv -o x.csv --offset-from temp_fog_degc=temp_case_degc --offset-from temp_fog_degc=chamber_degc
 check "disagreement message" err_has "temp_fog_degc=temp_case_degc and temp_fog_degc=chamber_degc disagree"
+check "  and nothing written" test ! -e x.csv
+check "--force writes against the evidence" run 0 "$fd" join imu.csv sheet_fd.csv -o forced.csv --offset-from temp_fog_degc=temp_case_degc --offset-from temp_fog_degc=chamber_degc --force
+check "  with every broken rule as a warning" out_has "warning: written with --force against the evidence: temp_fog_degc=temp_case_degc and temp_fog_degc=chamber_degc disagree"
+check "  and the evidence printed" out_has "evidence: NOT founded"
 check "clocks a day apart" run 1 "$fd" join imu.csv sheet_fd.csv -o x.csv --offset-s 86400
 check "no overlap message" err_has "import both with the same --time-zero, or give the clock offset"
 check "nothing written by failed joins" test ! -e x.csv
