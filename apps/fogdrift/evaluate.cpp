@@ -101,6 +101,7 @@ void run(const EvaluateArgs& a) {
   // One evaluation per axis the model compensates (model_set.hpp).
   std::vector<std::string> axes;  // --json: each axis's evaluation
   std::vector<report::Figure> figures;
+  std::vector<std::pair<std::string, std::string>> verdicts;  // target, verdict
   for (const CompensationModel& model : set.models) {
     const eval::Evaluation e = campaign ? eval::evaluate(model, *campaign, options, a.model)
                                         : eval::evaluate(model, inputs, options, a.model);
@@ -110,6 +111,7 @@ void run(const EvaluateArgs& a) {
                e, model.baselines, model.feature_names,
                set.models.size() > 1 || target != "gyro_dph" ? target + "_" : ""))
         figures.push_back(std::move(f));
+    verdicts.emplace_back(target, eval::verdict(e));
     if (a.json) {
       axes.push_back(eval::to_json(e, a.model, source));
     } else {
@@ -118,6 +120,19 @@ void run(const EvaluateArgs& a) {
                        options.allan);
     }
   }
+  // Over several axes, the axes the models harm or do not help, by name.
+  std::vector<std::string> harmed_axes, no_better_axes;
+  for (const auto& [target, v] : verdicts) {
+    if (v == "harms")
+      harmed_axes.push_back(target);
+    else if (v != "beats its baselines")
+      no_better_axes.push_back(target);
+  }
+  if (!a.json && verdicts.size() > 1) {
+    std::cout << "\nverdict over " << verdicts.size() << " axes:";
+    for (const auto& [target, v] : verdicts) std::cout << " " << target << " " << v << ";";
+    std::cout << "\n";
+  }
   if (a.json && axes.size() == 1) {
     std::cout << axes.front() << "\n";
   } else if (a.json) {
@@ -125,6 +140,8 @@ void run(const EvaluateArgs& a) {
     j["model"] = a.model;
     j["source"] = source;
     j["targets"] = set.targets();
+    j["harmed_axes"] = harmed_axes;
+    j["no_better_axes"] = no_better_axes;
     j["axes"] = nlohmann::ordered_json::array();
     for (std::size_t i = 0; i < axes.size(); ++i) {
       nlohmann::ordered_json one = {{"target", set.models[i].dataset.target_column}};
