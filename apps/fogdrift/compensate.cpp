@@ -11,8 +11,10 @@
 #include "commands.hpp"
 #include "fogdrift/base/atomic_file.hpp"
 #include "fogdrift/base/csv.hpp"
+#include "fogdrift/base/csv_rows.hpp"
 #include "fogdrift/base/error.hpp"
 #include "fogdrift/base/run_files.hpp"
+#include "fogdrift/base/text_file.hpp"
 #include "fogdrift/eval/metrics.hpp"
 #include "fogdrift/model/model.hpp"
 #include "fogdrift/model/model_set.hpp"
@@ -66,8 +68,11 @@ nlohmann::ordered_json axis_json(const CompensateArgs& a, const Axis& x) {
 
 void run(const CompensateArgs& a) {
   const ModelSet set = load_model_set(a.model, a.load);
-  const csv::Table table = csv::read(a.input);
   const Recording recording = read_recording(a.input);
+  // The input again, row by row, to copy each row's fields as they are beside the new columns
+  // (csv_rows.hpp: no second copy of the file in memory).
+  std::ifstream in = open_text_file(a.input);
+  csv::RowReader table(in, a.input);
   check_output_not_input(a.output, "--output");
   std::vector<Axis> axes;
   for (const CompensationModel& model : set.models) {
@@ -77,7 +82,7 @@ void run(const CompensateArgs& a) {
     for (const std::string& name : x.columns)
       if (table.find(name))
         throw InputError(
-            table.file, 1, *table.find(name) + 1,
+            table.file(), 1, *table.find(name) + 1,
             fmt::format("already has a {} column; compensate the original recording", name));
     x.gyro = target_values(recording, model.dataset.target_column);
     x.prediction = model.predict(recording, !a.no_guard);
@@ -90,28 +95,39 @@ void run(const CompensateArgs& a) {
     axes.push_back(std::move(x));
   }
 
-  std::string text;
-  auto add_fields = [&text](const std::vector<std::string>& fields) {
-    for (const auto& f : fields) {
-      text += csv::quote(f);
-      text += ',';
-    }
-  };
-  add_fields(table.header);
-  for (const Axis& x : axes) add_fields(x.columns);
-  text.back() = '\n';
-  for (std::size_t i = 0; i < table.rows.size(); ++i) {
-    add_fields(table.rows[i]);
-    for (const Axis& x : axes) {
-      for (double v : {x.prediction.drift_dph[i], x.compensated[i], x.prediction.novelty[i],
-                       x.prediction.weight[i]}) {
-        text += csv::format_number(v);
-        text += ',';
+  write_file_atomically(a.output, [&](std::ostream& out) {
+    std::string line;
+    auto add_field = [&line](std::string_view f) {
+      line += csv::quote(f);
+      line += ',';
+    };
+    for (const std::string& f : table.header()) add_field(f);
+    for (const Axis& x : axes)
+      for (const std::string& f : x.columns) add_field(f);
+    line.back() = '\n';
+    out << line;
+    std::vector<std::string_view> fields;
+    std::size_t line_no = 0;
+    const std::size_t rows = recording.size();
+    std::size_t i = 0;
+    for (; table.next(fields, line_no); ++i) {
+      if (i == rows)
+        throw InputError(a.input, line_no, 0, "changed while it was read; compensate it again");
+      line.clear();
+      for (std::string_view f : fields) add_field(f);
+      for (const Axis& x : axes) {
+        for (double v : {x.prediction.drift_dph[i], x.compensated[i], x.prediction.novelty[i],
+                         x.prediction.weight[i]}) {
+          line += csv::format_number(v);
+          line += ',';
+        }
       }
+      line.back() = '\n';
+      out << line;
     }
-    text.back() = '\n';
-  }
-  write_text_atomically(a.output, text);
+    if (i != rows)
+      throw InputError(a.input, 0, 0, "changed while it was read; compensate it again");
+  });
 
   if (a.json) {
     nlohmann::ordered_json j;

@@ -12,7 +12,7 @@
 
 namespace fogdrift {
 
-std::string read_text_file(const std::filesystem::path& path) {
+std::ifstream open_text_file(const std::filesystem::path& path) {
   // A folder opens as an empty stream on Linux; given for a file (a campaign where a model file
   // belongs, say), it would read as an empty file.
   std::error_code dir_ec;
@@ -22,6 +22,11 @@ std::string read_text_file(const std::filesystem::path& path) {
   if (!in)
     throw InputError(path.string(), 0, 0, fmt::format("cannot open ({})", std::strerror(errno)));
   note_input(path);
+  return in;
+}
+
+std::string read_text_file(const std::filesystem::path& path) {
+  std::ifstream in = open_text_file(path);
   // A regular file is read straight into a string of its size: one buffer, no copy.
   std::error_code ec;
   if (std::filesystem::is_regular_file(path, ec)) {

@@ -5,13 +5,16 @@
 
 #include <cctype>
 #include <cmath>
+#include <fstream>
 #include <optional>
 #include <sstream>
 #include <stdexcept>
 
 #include "fogdrift/base/atomic_file.hpp"
 #include "fogdrift/base/csv.hpp"
+#include "fogdrift/base/csv_rows.hpp"
 #include "fogdrift/base/error.hpp"
+#include "fogdrift/base/text_file.hpp"
 
 namespace fogdrift {
 
@@ -153,8 +156,10 @@ std::vector<double> Recording::numeric_column(std::string_view name) const {
 namespace {
 
 Recording read_table(const std::filesystem::path& path, bool partial) {
-  const csv::Table table = csv::read(path.string());
-  const std::string& file = table.file;
+  // Row by row: a kilohertz log costs its numbers, not a string per field (csv_rows.hpp).
+  std::ifstream in = open_text_file(path);
+  csv::RowReader table(in, path.string());
+  const std::string& file = table.file();
   for (const auto& name : required_columns()) {
     if (partial && name != "time_s") continue;
     if (!table.find(name)) {
@@ -167,52 +172,61 @@ Recording read_table(const std::filesystem::path& path, bool partial) {
                                    name));
     }
   }
-  if (table.rows.size() < 2) {
-    throw InputError(
-        file, 0, 0,
-        fmt::format("has {} data rows; a recording needs at least 2 samples", table.rows.size()));
-  }
 
   Recording rec;
   rec.source = path.string();
   rec.partial = partial;
-  const std::size_t n = table.rows.size();
-  for (std::size_t c = 0; c < table.header.size(); ++c) {
-    const std::string& name = table.header[c];
-    if (std::vector<double>* col = known_column(rec, name, true)) {
-      col->reserve(n);
-      const std::optional<Plausible> range = plausible_range(name);
-      for (std::size_t i = 0; i < n; ++i) {
-        const std::string& cell = table.rows[i][c];
-        const auto v = csv::parse_number(cell);
-        if (!v) {
-          throw InputError(file, table.row_line[i], c + 1,
-                           fmt::format("column '{}': value '{}' {}", name, csv::excerpt(cell),
-                                       csv::why_not_a_number(cell)));
-        }
-        if (range && !(*v >= range->min && *v <= range->max))
-          throw InputError(
-              file, table.row_line[i], c + 1,
-              fmt::format("column '{}': value '{}' {}", name, csv::excerpt(cell), range->rule));
-        col->push_back(*v);
-      }
+  // Each column's destination: a known column's numbers, or an extra column's text.
+  const std::vector<std::string>& header = table.header();
+  std::vector<std::vector<double>*> numbers(header.size(), nullptr);
+  std::vector<std::optional<Plausible>> ranges(header.size());
+  std::vector<std::size_t> extra_of(header.size(), 0);
+  for (std::size_t c = 0; c < header.size(); ++c) {
+    numbers[c] = known_column(rec, header[c], true);
+    if (numbers[c]) {
+      ranges[c] = plausible_range(header[c]);
     } else {
-      ExtraColumn extra{name, {}};
-      extra.cells.reserve(n);
-      for (std::size_t i = 0; i < n; ++i) extra.cells.push_back(table.rows[i][c]);
-      rec.extra.push_back(std::move(extra));
+      extra_of[c] = rec.extra.size();
+      rec.extra.push_back({header[c], {}});
     }
   }
-  check_time(rec.time_s, file, &table.row_line, *table.find("time_s") + 1, partial);
   // The simulator's true drift is the one extra column fogdrift computes with (the floor of
   // northfind and paper): it must be numbers from the start, not when it is first used.
-  if (const auto c = table.find("drift_true_dph")) {
-    for (std::size_t i = 0; i < n; ++i)
-      if (!csv::parse_number(table.rows[i][*c]))
-        throw InputError(file, table.row_line[i], *c + 1,
-                         fmt::format("column 'drift_true_dph': '{}' is not a finite number",
-                                     csv::excerpt(table.rows[i][*c])));
+  const std::optional<std::size_t> true_drift = table.find("drift_true_dph");
+  std::vector<std::size_t> row_line;
+  std::vector<std::string_view> fields;
+  std::size_t line = 0;
+  while (table.next(fields, line)) {
+    row_line.push_back(line);
+    for (std::size_t c = 0; c < fields.size(); ++c) {
+      const std::string_view cell = fields[c];
+      if (numbers[c] == nullptr) {
+        if (true_drift == c && !csv::parse_number(cell))
+          throw InputError(file, line, c + 1,
+                           fmt::format("column 'drift_true_dph': '{}' is not a finite number",
+                                       csv::excerpt(cell)));
+        rec.extra[extra_of[c]].cells.emplace_back(cell);
+        continue;
+      }
+      const auto v = csv::parse_number(cell);
+      if (!v)
+        throw InputError(file, line, c + 1,
+                         fmt::format("column '{}': value '{}' {}", header[c], csv::excerpt(cell),
+                                     csv::why_not_a_number(cell)));
+      const std::optional<Plausible>& range = ranges[c];
+      if (range && !(*v >= range->min && *v <= range->max))
+        throw InputError(
+            file, line, c + 1,
+            fmt::format("column '{}': value '{}' {}", header[c], csv::excerpt(cell), range->rule));
+      numbers[c]->push_back(*v);
+    }
   }
+  if (row_line.size() < 2) {
+    throw InputError(
+        file, 0, 0,
+        fmt::format("has {} data rows; a recording needs at least 2 samples", row_line.size()));
+  }
+  check_time(rec.time_s, file, &row_line, *table.find("time_s") + 1, partial);
   return rec;
 }
 

@@ -4,6 +4,7 @@
 #include <cstddef>
 #include <exception>
 #include <filesystem>
+#include <fstream>
 #include <string>
 #include <utility>
 
@@ -11,6 +12,10 @@ namespace fogdrift {
 
 /// The bytes of `path`. Throws InputError("PATH: cannot open (REASON)").
 std::string read_text_file(const std::filesystem::path& path);
+
+/// `path` opened to be read piece by piece (csv::RowReader), with read_text_file's checks and
+/// errors: a folder is refused, and the file is noted as the run's input (run_files.hpp).
+std::ifstream open_text_file(const std::filesystem::path& path);
 
 /// Line and column (1-based) of a byte offset in `text`, for error messages.
 std::pair<std::size_t, std::size_t> line_column_of(const std::string& text, std::size_t byte);
