@@ -247,9 +247,15 @@ void run(const StreamArgs& given) {
     if (any != 0) ++flagged;
     for (std::size_t k = 0; k < fault::count; ++k)
       if (any & (1u << k)) ++per_flag[k];
-    std::cout << line << outputs << '\n' << std::flush;
+    std::cout << line << outputs << '\n';
+    // Each line goes out before stream waits for more input: at once from a logger's pipe, whose
+    // lines arrive one by one, and a buffer at a time from a file, where a flush per line cost
+    // a system call per sample.
+    if (in.rdbuf()->in_avail() <= 0) std::cout.flush();
     if (!std::cout) check_standard_output();  // stop at the first line that could not be written
   }
+  std::cout.flush();
+  if (!std::cout) check_standard_output();
   if (samples == 0)
     throw InputError(name, line_no, 0, "has no sample after its header: nothing was compensated");
   if (flagged == 0 && skipped == 0) return;
