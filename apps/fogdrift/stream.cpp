@@ -176,14 +176,15 @@ void run(const StreamArgs& given) {
   double previous_time = std::nan("");
   std::string outputs;
   std::vector<double> values(names.size());
+  std::vector<std::string_view> fields;  // the line's fields, views into it (or into quoted)
+  std::vector<std::string> quoted;
   while (lines.next(line)) {
     ++line_no;
     if (line.empty()) continue;
     // The same reader as compensate's: a quoted field is its text; a line it cannot read (an
     // unterminated quote) is skipped as a torn one, never echoed with outputs inside the quote.
-    std::vector<std::string> fields;
     try {
-      fields = csv::split_line(line, ',', name, line_no);
+      csv::split_fields(line, ',', name, line_no, fields, quoted);
     } catch (const InputError& e) {
       if (a.strict) throw;
       std::cerr << fmt::format("{}:{}: skipped: {}\n", name, line_no, e.message());
@@ -251,7 +252,7 @@ void run(const StreamArgs& given) {
     // Each line goes out before stream waits for more input: at once from a logger's pipe, whose
     // lines arrive one by one, and a buffer at a time from a file, where a flush per line cost
     // a system call per sample.
-    if (in.rdbuf()->in_avail() <= 0) std::cout.flush();
+    if (lines.buffered() == 0 && in.rdbuf()->in_avail() <= 0) std::cout.flush();
     if (!std::cout) check_standard_output();  // stop at the first line that could not be written
   }
   std::cout.flush();

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
+#include <algorithm>
 #include <cctype>
 #include <cerrno>
 #include <charconv>
@@ -289,6 +290,33 @@ std::optional<double> parse_number(std::string_view field, bool decimal_comma) {
   return value;
 }
 
+std::size_t line_end(const char* data, std::size_t begin, std::size_t end) {
+  const void* lf = std::memchr(data + begin, '\n', end - begin);
+  const std::size_t stop = lf ? static_cast<std::size_t>(static_cast<const char*>(lf) - data) : end;
+  const void* cr = std::memchr(data + begin, '\r', stop - begin);
+  return cr ? static_cast<std::size_t>(static_cast<const char*>(cr) - data) : stop;
+}
+
+void split_fields(std::string_view line, char delimiter, const std::string& file,
+                  std::size_t line_no, std::vector<std::string_view>& fields,
+                  std::vector<std::string>& quoted) {
+  fields.clear();
+  if (line.find('"') != std::string_view::npos) {
+    quoted = split_line(line, delimiter, file, line_no);
+    for (const std::string& f : quoted) fields.emplace_back(f);
+    return;
+  }
+  for (std::size_t i = 0;;) {
+    const std::size_t end = line.find(delimiter, i);
+    if (end == std::string_view::npos) {
+      fields.push_back(line.substr(i));
+      return;
+    }
+    fields.push_back(line.substr(i, end - i));
+    i = end + 1;
+  }
+}
+
 std::string why_not_a_number(std::string_view cell) {
   const std::string_view field = trim(cell);
   if (field.empty()) return "is empty";
@@ -342,28 +370,51 @@ std::string excerpt(std::string_view field) {
   return fmt::format("{}…({} characters)", shown, field.size());
 }
 
+bool LineReader::refill() {
+  constexpr std::size_t kBlock = 1 << 16;
+  std::streambuf* in = in_.rdbuf();
+  if (buffer_.size() < kBlock) buffer_.resize(kBlock);
+  begin_ = end_ = 0;
+  std::streamsize ready = in->in_avail();
+  if (ready <= 0) {
+    using traits = std::char_traits<char>;
+    const int c = in->sbumpc();  // waits for input
+    if (traits::eq_int_type(c, traits::eof())) return false;
+    buffer_[end_++] = traits::to_char_type(c);
+    ready = in->in_avail();
+  }
+  if (ready > 0)
+    end_ += static_cast<std::size_t>(
+        in->sgetn(buffer_.data() + end_,
+                  std::min<std::streamsize>(ready, static_cast<std::streamsize>(kBlock - end_))));
+  return true;
+}
+
 bool LineReader::next(std::string& line) {
   line.clear();
-  std::streambuf* in = in_.rdbuf();
-  using traits = std::char_traits<char>;
   bool any = false;
   for (;;) {
-    const int c = in->sbumpc();
-    if (traits::eq_int_type(c, traits::eof())) {
+    if (begin_ == end_ && !refill()) {
       in_.setstate(std::ios::eofbit);
       break;
     }
     if (after_cr_) {
       after_cr_ = false;
-      if (c == '\n') continue;  // the LF of a CRLF
+      if (buffer_[begin_] == '\n') {  // the LF of a CRLF
+        ++begin_;
+        continue;
+      }
     }
+    const char* data = buffer_.data();
+    const std::size_t at = line_end(data, begin_, end_);
     any = true;
-    if (c == '\n') break;
-    if (c == '\r') {
-      after_cr_ = true;
+    line.append(data + begin_, at - begin_);
+    if (at < end_) {
+      after_cr_ = data[at] == '\r';
+      begin_ = at + 1;
       break;
     }
-    line.push_back(traits::to_char_type(c));
+    begin_ = end_;
   }
   if (first_ && any) {
     first_ = false;

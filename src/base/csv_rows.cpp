@@ -86,8 +86,7 @@ bool RowReader::read_line(std::string_view& line) {
   for (;;) {
     // A line end in the bytes read: LF, CR LF, or a lone CR (its next byte must be read to know).
     const char* data = buffer_.data();
-    std::size_t at = begin_;
-    while (at < end_ && data[at] != '\n' && data[at] != '\r') ++at;
+    const std::size_t at = line_end(data, begin_, end_);
     const bool cr_needs_next = at < end_ && data[at] == '\r' && at + 1 == end_ && !at_eof_;
     if ((at < end_ && !cr_needs_next) || (at_eof_ && begin_ < end_)) {
       std::size_t next = at;
@@ -131,22 +130,7 @@ bool RowReader::read_line(std::string_view& line) {
 }
 
 void RowReader::split(std::string_view line, std::vector<std::string_view>& fields) {
-  fields.clear();
-  if (line.find('"') != std::string_view::npos) {
-    quoted_ = split_line(line, options_.delimiter, file_, line_no_);
-    for (const std::string& f : quoted_) fields.emplace_back(f);
-    return;
-  }
-  std::size_t i = 0;
-  for (;;) {
-    const std::size_t end = line.find(options_.delimiter, i);
-    if (end == std::string_view::npos) {
-      fields.push_back(line.substr(i));
-      return;
-    }
-    fields.push_back(line.substr(i, end - i));
-    i = end + 1;
-  }
+  split_fields(line, options_.delimiter, file_, line_no_, fields, quoted_);
 }
 
 }  // namespace fogdrift::csv

@@ -63,6 +63,17 @@ std::string format_number(double value);
 std::vector<std::string> split_line(std::string_view line, char delimiter, const std::string& file,
                                     std::size_t line_no);
 
+/// The first LF or CR in data[begin, end), or `end`: where a line ends (two memchr scans, which
+/// the C library vectorises).
+std::size_t line_end(const char* data, std::size_t begin, std::size_t end);
+
+/// split_line()'s fields as views, without a string per field: into `line` itself when it holds
+/// no quote (the common case), else into `quoted`, which holds split_line()'s fields. The views
+/// live as long as `line` and `quoted` are unchanged. The same fields and errors as split_line().
+void split_fields(std::string_view line, char delimiter, const std::string& file,
+                  std::size_t line_no, std::vector<std::string_view>& fields,
+                  std::vector<std::string>& quoted);
+
 /// Why parse_number() found no number in `cell`, as an error message ends: "is empty", "is not
 /// finite (NaN and Inf are not allowed)", "is beyond a double's range (…)" or "is not a number".
 std::string why_not_a_number(std::string_view cell);
@@ -78,16 +89,26 @@ std::string excerpt(std::string_view field);
 /// reads them: a line ends at LF, CRLF or a lone CR, and none of them is kept; the first line
 /// loses a UTF-8 byte-order mark. A line is returned as soon as its end arrives (a CR is not held
 /// back to see whether an LF follows). The same lines read() sees in a file with LF or CRLF ends.
+/// It takes at once whatever the stream has ready, so that a file is read a block at a time,
+/// and waits for one byte only when nothing is ready.
 class LineReader {
  public:
   explicit LineReader(std::istream& in) : in_(in) {}
   /// The next line into `line`; false at the end of the input with nothing left.
   bool next(std::string& line);
+  /// Bytes taken from the stream and not yet returned in a line: with the stream's own
+  /// in_avail(), whether a next line can come without waiting.
+  std::size_t buffered() const { return end_ - begin_; }
 
  private:
+  /// Takes what the stream has ready, waiting for one byte when it has none; false at its end.
+  bool refill();
+
   std::istream& in_;
   bool first_ = true;
   bool after_cr_ = false;  ///< the last line ended at a CR: an LF next is its CRLF's
+  std::string buffer_;
+  std::size_t begin_ = 0, end_ = 0;  ///< the bytes of buffer_ not yet returned
 };
 
 }  // namespace fogdrift::csv
