@@ -97,6 +97,8 @@ void run(const EvaluateArgs& a) {
   if (!a.figures.empty()) {
     check_output_not_input(a.figures, "--figures");
     options.series = true;
+  } else if (a.force) {
+    throw OptionError("--force", "replaces the folder of --figures; give --figures DIR with it");
   }
   // One evaluation per axis the model compensates (model_set.hpp).
   std::vector<std::string> axes;  // --json: each axis's evaluation

@@ -253,6 +253,8 @@ check "evaluate every target" run 0 "$fd" evaluate mo.json campo
 check "in the accelerometer's unit" out_has "accel_x_g: ssa-svr on campo (recordings with role \"test\"): 60 rows of 1 recording"
 check "before and after in g" out_has "Before (the drift as logged, not denoised) → after compensation, g:"
 check "no finding figures for a scale factor" out_has "(no north-finding figures: a four-position finding reads gyros, and sf_gx_ppm is a scale-factor channel)"
+check "evaluate --force without --figures" run 1 "$fd" evaluate mo.json campo --force
+check "  says what it replaces" err_has "option --force: replaces the folder of --figures; give --figures DIR with it"
 check "evaluate every target as JSON" run 0 "$fd" evaluate mo.json campo --json
 check "keys in each target's unit" python3 -c "import json; j = json.load(open('$work/out')); a = j['axes']; assert [x['target'] for x in a] == ['gyro_dph', 'accel_x_g', 'accel_z_g', 'sf_gx_ppm']; assert 'mae_dph' in a[0]['overall'] and 'mae_g' in a[1]['overall'] and 'mae_ppm' in a[3]['overall']; assert a[1]['overall']['mae_g'] < 0.1 * a[1]['overall']['mae_before_g']"
 check "evaluate a file with its references" run 0 "$fd" evaluate mo.json campo/joined_05.csv --input-rate-dph 0 --reference accel_x_g=0 --reference accel_z_g=1 --reference sf_gx_ppm=0
