@@ -26,23 +26,14 @@ import os
 import random
 import sys
 
+# The chamber's program is the chamber fixture's (scripts/make_chamber_fixture.py), its neighbour.
+from make_chamber_fixture import chamber
+
 RUN_S = 6 * 3600
 POWER_ON_S = 9 * 3600          # 09:00:00 on the unit's clock
 SHEET_CLOCK_EARLY_S = 437      # the sheet's clock reads this much early
 CASE_BIAS_DEGC = 0.6
 TRAILING_ROWS = 14
-
-
-def chamber(t):
-    """The chamber air, °C, t seconds after power-on."""
-    legs = [(1200, 20.0, 20.0), (2400, 20.0, -20.0), (4200, -20.0, -20.0),
-            (4800, -20.0, 40.0), (4200, 40.0, 40.0), (4800, 40.0, 20.0)]
-    start = 0.0
-    for length, a, b in legs:
-        if t < start + length:
-            return a + (b - a) * (t - start) / length
-        start += length
-    return 20.0
 
 
 def other_chamber(t):

@@ -161,14 +161,9 @@ void run(const EvaluateArgs& a) {
 /// draw is said on standard error, its JSON still written.
 void write_figures(const std::string& dir, bool force, const std::vector<report::Figure>& figures,
                    bool json) {
-  const std::string gnuplot = report::find_gnuplot();
   std::vector<std::string> problems;
   fill_directory_atomically(dir, force, [&](const std::filesystem::path& folder) {
-    for (const report::Figure& f : figures) {
-      write_text_atomically(folder / (f.name + ".json"), report::to_json(f));
-      const std::string problem = report::render_png(f, folder, gnuplot);
-      if (!problem.empty()) problems.push_back(problem);
-    }
+    problems = report::write_figures(figures, folder);
   });
   (json ? std::cerr : std::cout) << fmt::format("\nWrote {} figures to {}/ (PNG and JSON): {}\n",
                                                 figures.size(), dir, [&] {

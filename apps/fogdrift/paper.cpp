@@ -90,15 +90,10 @@ void run_paper_unnamed(const PaperArgs& a, report::PaperOptions o) {
   const std::string json = report::paper_json(result);
   std::vector<std::string> figure_problems;
   if (!a.out.empty()) {
-    const std::string gnuplot = report::find_gnuplot();
     fill_directory_atomically(a.out, a.force, [&](const std::filesystem::path& dir) {
       write_text_atomically(dir / "report.md", markdown);
       write_text_atomically(dir / "paper.json", json);
-      for (const report::Figure& f : result.figures) {
-        write_text_atomically(dir / (f.name + ".json"), report::to_json(f));
-        const std::string problem = report::render_png(f, dir, gnuplot);
-        if (!problem.empty()) figure_problems.push_back(problem);
-      }
+      figure_problems = report::write_figures(result.figures, dir);
     });
   }
   if (a.json) {

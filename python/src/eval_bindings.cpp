@@ -124,16 +124,11 @@ py::object evaluate(const CompensationModel& model, const py::object& data,
     const std::vector<report::Figure> drawn = report::evaluation_figures(
         e, model.baselines, model.feature_names,
         model.dataset.target_column == "gyro_dph" ? "" : model.dataset.target_column + "_");
-    const std::string gnuplot = report::find_gnuplot();
     std::vector<std::string> problems;
     {
       py::gil_scoped_release release;
       fill_directory_atomically(*figures, false, [&](const std::filesystem::path& dir) {
-        for (const report::Figure& f : drawn) {
-          write_text_atomically(dir / (f.name + ".json"), report::to_json(f));
-          const std::string problem = report::render_png(f, dir, gnuplot);
-          if (!problem.empty()) problems.push_back(problem);
-        }
+        problems = report::write_figures(drawn, dir);
       });
     }
     py::list names;

@@ -17,13 +17,13 @@
 #include "fogdrift/base/text_file.hpp"
 
 namespace fogdrift::csv {
-namespace {
-
 std::string_view trim(std::string_view s) {
   while (!s.empty() && (s.front() == ' ' || s.front() == '\t')) s.remove_prefix(1);
   while (!s.empty() && (s.back() == ' ' || s.back() == '\t')) s.remove_suffix(1);
   return s;
 }
+
+namespace {
 
 bool all_blank(const std::vector<std::string>& fields) {
   for (const auto& f : fields)
@@ -371,9 +371,8 @@ std::string excerpt(std::string_view field) {
 }
 
 bool LineReader::refill() {
-  constexpr std::size_t kBlock = 1 << 16;
   std::streambuf* in = in_.rdbuf();
-  if (buffer_.size() < kBlock) buffer_.resize(kBlock);
+  if (buffer_.size() < block_) buffer_.resize(block_);
   begin_ = end_ = 0;
   std::streamsize ready = in->in_avail();
   if (ready <= 0) {
@@ -386,7 +385,7 @@ bool LineReader::refill() {
   if (ready > 0)
     end_ += static_cast<std::size_t>(
         in->sgetn(buffer_.data() + end_,
-                  std::min<std::streamsize>(ready, static_cast<std::streamsize>(kBlock - end_))));
+                  std::min<std::streamsize>(ready, static_cast<std::streamsize>(block_ - end_))));
   return true;
 }
 

@@ -120,10 +120,7 @@ Evaluation evaluate(const CompensationModel& model, const std::vector<RecordingI
   };
   std::size_t t_col = std::string::npos, r_col = std::string::npos;
   if (options.series) {
-    e.temperature_input = e.line_input;
-    for (const std::string& n : data.feature_names)
-      if (e.temperature_input.empty() && n.starts_with("T_") && n.ends_with("_degc"))
-        e.temperature_input = n;
+    e.temperature_input = temperature_input_of(data.feature_names);
     if (!e.temperature_input.empty()) {
       // "T_fog_degc" → a rate "dT…_fog_degc_per_s".
       const std::string thermometer =

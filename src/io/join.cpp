@@ -250,6 +250,8 @@ OffsetEstimate estimate_offset(const Recording& recording, const Recording& log,
 
 JoinEvidence judge_alignment(const Recording& recording, const Recording& log,
                              const JoinOptions& options) {
+  validate(recording);
+  validate(log);
   if (options.offset_s && !std::isfinite(*options.offset_s))
     throw OptionError("offset_s", "must be a finite number of seconds");
   JoinEvidence ev;
@@ -324,8 +326,6 @@ JoinEvidence judge_alignment(const Recording& recording, const Recording& log,
 }
 
 JoinResult join(const Recording& recording, const Recording& log, const JoinOptions& options) {
-  validate(recording);
-  validate(log);
   return join(recording, log, options, judge_alignment(recording, log, options));
 }
 

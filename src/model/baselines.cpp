@@ -17,16 +17,15 @@ bool is_temperature(const std::string& name) {
   return name.size() > 7 && name.starts_with("T_") && name.ends_with("_degc");
 }
 
-/// The input the line is fitted in: T_fog_degc, else the first temperature; npos for none.
-std::size_t line_input(std::span<const std::string> names) {
-  for (std::size_t k = 0; k < names.size(); ++k)
-    if (names[k] == "T_fog_degc") return k;
-  for (std::size_t k = 0; k < names.size(); ++k)
-    if (is_temperature(names[k])) return k;
-  return std::string::npos;
-}
-
 }  // namespace
+
+std::string temperature_input_of(std::span<const std::string> feature_names) {
+  for (const std::string& n : feature_names)
+    if (n == "T_fog_degc") return n;
+  for (const std::string& n : feature_names)
+    if (is_temperature(n)) return n;
+  return "";
+}
 
 TrainingBaselines fit_training_baselines(const Dataset& data) {
   TrainingBaselines b;
@@ -39,8 +38,11 @@ TrainingBaselines fit_training_baselines(const Dataset& data) {
       b.input_min[k] = std::min(b.input_min[k], data.x[i * d + k]);
       b.input_max[k] = std::max(b.input_max[k], data.x[i * d + k]);
     }
-  const std::size_t k = line_input(data.feature_names);
-  if (k == std::string::npos) return b;
+  const std::string input = temperature_input_of(data.feature_names);
+  if (input.empty()) return b;
+  const auto k = static_cast<std::size_t>(
+      std::find(data.feature_names.begin(), data.feature_names.end(), input) -
+      data.feature_names.begin());
   // Least squares about the means, for accuracy at temperatures far from 0 °C.
   double mx = 0, my = 0;
   for (std::size_t i = 0; i < data.rows; ++i) {

@@ -161,4 +161,16 @@ std::string render_png(const Figure& figure, const std::filesystem::path& dir,
   return {};
 }
 
+std::vector<std::string> write_figures(const std::vector<Figure>& figures,
+                                       const std::filesystem::path& folder) {
+  const std::string gnuplot = find_gnuplot();
+  std::vector<std::string> problems;
+  for (const Figure& f : figures) {
+    write_text_atomically(folder / (f.name + ".json"), to_json(f));
+    const std::string problem = render_png(f, folder, gnuplot);
+    if (!problem.empty()) problems.push_back(problem);
+  }
+  return problems;
+}
+
 }  // namespace fogdrift::report

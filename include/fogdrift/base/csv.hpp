@@ -49,6 +49,10 @@ Table read(const std::string& path, const ReadOptions& options = {});
 /// Same as read(), from text already in memory; `file` names it in error messages.
 Table parse(std::string_view text, const std::string& file, const ReadOptions& options = {});
 
+/// `s` without its leading and trailing spaces and tabs: how a header name or a blank line is
+/// read.
+std::string_view trim(std::string_view s);
+
 /// Parses a finite decimal number ("1.5", "-2e-3", "+4"); surrounding spaces are allowed.
 /// Returns nothing for an empty field, text, "nan", "inf" or an out-of-range value.
 /// With `decimal_comma`, a single ',' is read as the decimal point ("1,5").
@@ -93,7 +97,10 @@ std::string excerpt(std::string_view field);
 /// and waits for one byte only when nothing is ready.
 class LineReader {
  public:
-  explicit LineReader(std::istream& in) : in_(in) {}
+  /// `block_bytes`: the most taken at once (any size gives the same lines; tests use small ones
+  /// to put line ends across blocks).
+  explicit LineReader(std::istream& in, std::size_t block_bytes = std::size_t{1} << 16)
+      : in_(in), block_(block_bytes > 0 ? block_bytes : 1) {}
   /// The next line into `line`; false at the end of the input with nothing left.
   bool next(std::string& line);
   /// Bytes taken from the stream and not yet returned in a line: with the stream's own
@@ -105,6 +112,7 @@ class LineReader {
   bool refill();
 
   std::istream& in_;
+  std::size_t block_;
   bool first_ = true;
   bool after_cr_ = false;  ///< the last line ended at a CR: an LF next is its CRLF's
   std::string buffer_;

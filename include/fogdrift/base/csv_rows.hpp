@@ -25,8 +25,8 @@ class RowReader {
  public:
   /// Reads up to and including the header. `file` names the input in errors. Throws InputError
   /// as csv::read() does; std::invalid_argument for options.drop_empty.
-  /// `chunk_bytes`: how much is read at a time (any size gives the same rows; tests use small
-  /// ones to put line ends across chunks).
+  /// `chunk_bytes`: the most read at a time (LineReader's block; any size gives the same rows,
+  /// tests use small ones to put line ends across chunks).
   RowReader(std::istream& in, std::string file, const ReadOptions& options = {},
             std::size_t chunk_bytes = std::size_t{1} << 20);
 
@@ -39,18 +39,16 @@ class RowReader {
   bool next(std::vector<std::string_view>& fields, std::size_t& line);
 
  private:
-  /// The next physical line, without its end; false at the end of the input.
+  /// The next physical line, without its end (a view of line_); false at the end of the input.
   bool read_line(std::string_view& line);
   /// The fields of `line` as views, into the line or, for a quoted line, into quoted_.
   void split(std::string_view line, std::vector<std::string_view>& fields);
 
   std::istream& in_;
+  LineReader lines_;  ///< line ends and the byte-order mark, as stream reads them
+  std::string line_;  ///< the line read last, which read_line's views show
   std::string file_;
   ReadOptions options_;
-  std::string buffer_;
-  std::size_t begin_ = 0, end_ = 0;  ///< the unread bytes of buffer_
-  bool at_eof_ = false;
-  std::size_t chunk_;
   std::size_t line_no_ = 0;
   std::size_t pending_blank_ = 0;  ///< the first blank line after the header, if any
   std::vector<std::string> quoted_;

@@ -79,7 +79,7 @@ struct Evaluation {
   std::string line_input;                ///< the line's temperature input; empty: no line
   bool ranges_known = false;             ///< the model file holds its training ranges
   /// With EvaluationOptions::series: the temperature and rate inputs the figures draw the
-  /// training region in (the line's temperature, else the first T_; the first rate of the same
+  /// training region in (temperature_input_of, baselines.hpp; the first rate of the same
   /// thermometer; empty when the model has none), and the guard's prototypes in those inputs'
   /// own units.
   std::string temperature_input, rate_input;

@@ -37,6 +37,10 @@ struct TrainingBaselines {
   bool has_ranges() const { return !input_min.empty(); }
 };
 
+/// The temperature input a line is fitted in, and figures drawn against: T_fog_degc when among
+/// `feature_names`, else the first T_<name>_degc; empty when there is none.
+std::string temperature_input_of(std::span<const std::string> feature_names);
+
 /// The ranges and the line of a training dataset (see the file comment). The line is absent
 /// when no feature is a temperature T_<name>_degc, or when that feature does not vary.
 TrainingBaselines fit_training_baselines(const Dataset& data);

@@ -47,4 +47,10 @@ std::string find_gnuplot();
 std::string render_png(const Figure& figure, const std::filesystem::path& dir,
                        const std::string& gnuplot);
 
+/// Each figure as NAME.json and, drawn by gnuplot, NAME.png into the folder being filled (a
+/// fill_directory_atomically folder). Returns what kept a PNG from being drawn, one line each
+/// (render_png's); the JSON is written regardless.
+std::vector<std::string> write_figures(const std::vector<Figure>& figures,
+                                       const std::filesystem::path& folder);
+
 }  // namespace fogdrift::report
