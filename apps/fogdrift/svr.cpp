@@ -14,6 +14,7 @@
 #include "fogdrift/base/error.hpp"
 #include "fogdrift/base/run_files.hpp"
 #include "fogdrift/svr/libsvm_format.hpp"
+#include "fogdrift/svr/libsvm_options.hpp"
 #include "fogdrift/svr/svr.hpp"
 
 namespace fs = std::filesystem;
@@ -49,14 +50,8 @@ bool ends_with(const std::string& s, const std::string& suffix) {
 }
 
 void run_train(const SvrTrainArgs& a) {
-  if (a.svm_type != 3)
-    throw OptionError("-s", fmt::format("svm_type {} is not supported; fogdrift fits ε-SVR "
-                                        "(-s 3) only",
-                                        a.svm_type));
-  if (a.kernel_type != 0 && a.kernel_type != 2)
-    throw OptionError("-t", fmt::format("kernel_type {} is not supported; use 2 (RBF) or 0 "
-                                        "(linear)",
-                                        a.kernel_type));
+  svr::check_svm_type(a.svm_type);
+  svr::check_kernel_type(a.kernel_type);
   if (a.shrinking != 0 && a.shrinking != 1) throw OptionError("-h", "must be 0 or 1");
   if (a.solver != "libsvm" && a.solver != "pairs")
     throw OptionError("--solver", fmt::format("must be libsvm or pairs (got '{}')", a.solver));
@@ -142,20 +137,10 @@ void run_predict(const PredictArgs& a) {
     for (double v : f) out << fmt::format("{:.17g}\n", v);
   });
   // svm-predict's regression summary: mean squared error and squared correlation.
-  double se = 0, sy = 0, sf = 0, syy = 0, sff = 0, syf = 0;
-  const double n = static_cast<double>(f.size());
-  for (std::size_t i = 0; i < f.size(); ++i) {
-    const double y = data.y[i], v = f[i];
-    se += (v - y) * (v - y);
-    sy += y;
-    sf += v;
-    syy += y * y;
-    sff += v * v;
-    syf += y * v;
-  }
-  const double mse = se / n;
-  const double r2 =
-      ((n * syf - sf * sy) * (n * syf - sf * sy)) / ((n * sff - sf * sf) * (n * syy - sy * sy));
+  double se = 0;
+  for (std::size_t i = 0; i < f.size(); ++i) se += (f[i] - data.y[i]) * (f[i] - data.y[i]);
+  const double mse = se / static_cast<double>(f.size());
+  const double r2 = svr::squared_correlation(f, data.y);
   if (a.json) {
     nlohmann::ordered_json j;
     j["samples"] = f.size();
