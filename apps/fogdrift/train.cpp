@@ -18,6 +18,7 @@
 #include "fogdrift/model/model_set.hpp"
 #include "fogdrift/tune/train_campaign.hpp"
 #include "fogdrift/tune/train_option_table.hpp"
+#include "fogdrift/tune/train_summary.hpp"
 #include "option_flags.hpp"
 
 namespace fogdrift::app {
@@ -57,60 +58,15 @@ std::vector<std::string> edge_notes_of(const TrainArgs& a, const TrainSummary& s
   });
 }
 
-/// `fogdrift train --json`'s summary of one model.
+/// `fogdrift train --json`'s summary of one model: the library's, its options named by flag.
 nlohmann::ordered_json summary_json(const TrainArgs& a, const CampaignTrainResult& trained) {
-  const TrainSummary& s = trained.trained.summary;
-  const Dataset& data = trained.data;
-  const DatasetOptions& dataset = trained.dataset;
-  const Provenance& p = trained.trained.model.provenance;
-  const std::vector<std::string> notes = notes_of(a, trained);
-  {
-    nlohmann::ordered_json j;
-    j["model"] = a.output;
-    j["method"] = to_string(s.method);
-    j["fitness"] = s.fitness;
-    j["fitness_rmse"] = s.fitness_value;
-    j["cv"] = p.cv;
-    for (const auto& [k, v] : s.hyperparameters) j["hyperparameters"][k] = v;
-    j["training_rows"] = s.rows;
-    j["recordings"] = data.groups.size();
-    j["features"] = data.feature_names;
-    for (const auto& [key, value] : s.record.items()) j[key] = value;  // the trainer's own
-    j["notes"] = notes;
-    nlohmann::ordered_json edges = nlohmann::ordered_json::array();
-    for (const auto& e : s.box_edges)
-      edges.push_back({{"parameter", e.parameter},
-                       {"edge", e.upper ? "upper" : "lower"},
-                       {"value", e.value},
-                       {"box", {e.low, e.high}},
-                       {"improvement", e.improvement}});
-    j["box_edges"] = edges;
-    nlohmann::ordered_json boxes = nlohmann::ordered_json::array();
-    for (const auto& b : s.boxes)
-      boxes.push_back({{"c", {b.c_min, b.c_max}}, {"sigma", {b.sigma_min, b.sigma_max}}});
-    j["boxes_searched"] = boxes;
-    if (s.held_out) {
-      const HeldOutReport& h = *s.held_out;
-      nlohmann::ordered_json base = nlohmann::ordered_json::array();
-      for (const Baseline& b : h.baselines) base.push_back({{"name", b.name}, {"rmse", b.rmse}});
-      j["held_out"] = {{"folds", h.folds},
-                       {"model_rmse", h.model_rmse},
-                       {"expected_share", h.expected_share},
-                       {"expected_startup_share", h.expected_startup_share},
-                       {"baselines", base},
-                       {"warnings", held_out_warnings(a, h)}};
-    } else {
-      j["held_out"] = {{"missing", s.held_out_missing}};
-    }
-    nlohmann::ordered_json warnings = data.warnings;
-    if (s.held_out)
-      for (const auto& w : held_out_warnings(a, *s.held_out)) warnings.push_back(w);
-    j["warnings"] = warnings;
-    j["block_s"] = dataset.preprocessing.block.block_s;
-    j["rate_window_s"] = dataset.preprocessing.rates.window_s;
-    j["seconds"] = s.seconds;
-    return j;
-  }
+  nlohmann::ordered_json j;
+  j["model"] = a.output;
+  const OptionWords flags{
+      [&](const std::string& field) { return flag_for(field, a.flags->flag_table()); },
+      [&](const std::string& text) { return a.flags->words(text); }};
+  j.update(fogdrift::summary_json(trained, flags));
+  return j;
 }
 
 /// The text summary of one model; `heading` prefixes its first line (the axis of a model set).
