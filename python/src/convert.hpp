@@ -52,12 +52,7 @@ std::string keyword_of(const std::string& field);
 /// names as {keyword} by their keywords.
 template <class F>
 auto in_keywords_of(const std::vector<OptionSpec>& specs, F&& f) {
-  try {
-    return f();
-  } catch (const OptionError& e) {
-    throw OptionError(option_word(specs, e.option(), false),
-                      in_option_words(e.message(), specs, false));
-  }
+  return in_option_words_of(specs, false, std::forward<F>(f));
 }
 
 /// in_keywords_of fogdrift.train's options.

@@ -153,11 +153,8 @@ LibsvmTrainOptions parse_libsvm_train_options(std::string_view text, std::size_t
   });
   check_svm_type(svm_type);
   check_kernel_type(kernel_type);
-  if (kernel_type == 0)
-    o.params.kernel = Kernel::linear();
-  else
-    o.params.kernel = Kernel::rbf_gamma(
-        o.gamma_given ? gamma : 1.0 / static_cast<double>(std::max<std::size_t>(1, features)));
+  o.gamma = o.gamma_given ? gamma : 1.0 / static_cast<double>(std::max<std::size_t>(1, features));
+  o.params.kernel = kernel_type == 0 ? Kernel::linear() : Kernel::rbf_gamma(o.gamma);
   validate(o.params, ParamNames{"-c", "-g", "-p", "-e", "-m", "max_iterations"});
   return o;
 }

@@ -18,6 +18,7 @@
 #include <string>
 #include <string_view>
 #include <type_traits>
+#include <utility>
 #include <vector>
 
 #include "fogdrift/base/error.hpp"
@@ -117,6 +118,19 @@ std::string option_word(const std::vector<OptionSpec>& specs, const std::string&
 /// or the keyword. The library writes advice that names options this way (a held-out warning's
 /// "{method} poly"), and each front end shows it in its own words.
 std::string in_option_words(std::string text, const std::vector<OptionSpec>& specs, bool flag);
+
+/// f(), with an OptionError it throws named in a front end's words: its field by the keyword
+/// (`flag` false) or flag of the option of `specs` that sets it (option_word), and the options
+/// its message names as {keyword} likewise (in_option_words).
+template <class F>
+auto in_option_words_of(const std::vector<OptionSpec>& specs, bool flag, F&& f) {
+  try {
+    return f();
+  } catch (const OptionError& e) {
+    throw OptionError(option_word(specs, e.option(), flag),
+                      in_option_words(e.message(), specs, flag));
+  }
+}
 
 /// The option's help text as --help (`flag`) and the docstring show it: doc, then the unit and
 /// the values allowed, e.g. "Largest C searched (> --c-min)", every "{keyword}" in them replaced

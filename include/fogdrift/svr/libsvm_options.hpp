@@ -21,10 +21,13 @@ struct LibsvmTrainOptions {
   /// (libsvm_path) unless "--solver pairs" asks for fogdrift's solver.
   Params params;
   bool gamma_given = false;  ///< -g given; else γ = 1/number of features, as svm-train
-  int degree = 3;            ///< -d, kept for the model's Parameters as LIBSVM keeps it
-  double coef0 = 0;          ///< -r, likewise
-  int folds = 0;             ///< -v n: n-fold cross-validation instead of a model (0: none)
-  bool quiet = false;        ///< -q
+  /// γ as svm-train records it in the model's parameters: -g, or 1/number of features, also for
+  /// the linear kernel, which does not use it.
+  double gamma = 0;
+  int degree = 3;      ///< -d, kept for the model's Parameters as LIBSVM keeps it
+  double coef0 = 0;    ///< -r, likewise
+  int folds = 0;       ///< -v n: n-fold cross-validation instead of a model (0: none)
+  bool quiet = false;  ///< -q
 };
 
 /// OptionError("-s") for an SVM type fogdrift does not fit, naming it: 0 C-SVC, 1 ν-SVC,
