@@ -17,6 +17,7 @@ packages=(
   python3-dask python3-distributed     # fogdrift.fleet: one model per unit on a Dask cluster
   python3-matplotlib                   # docs/python.md's worked example, run as a test
   gcc-arm-none-eabi libnewlib-arm-none-eabi qemu-system-arm   # the C header on a Cortex-M4F
+  octave liboctave-dev                 # fogdrift for Octave and MATLAB (matlab/, docs/matlab.md)
 )
 
 missing=()

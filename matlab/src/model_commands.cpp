@@ -1,0 +1,168 @@
+// fogdrift.Model's methods: a model travels through Octave/MATLAB as its file's text, checked
+// again (checksum included) at every call, so a model object is a value like any other and
+// saving it writes the bytes `fogdrift train -o` writes (docs/matlab.md).
+#include <fmt/format.h>
+
+#include "commands.hpp"
+#include "fogdrift/base/atomic_file.hpp"
+#include "fogdrift/base/error.hpp"
+#include "fogdrift/firmware/c_header.hpp"
+#include "fogdrift/io/recording.hpp"
+#include "fogdrift/io/target.hpp"
+#include "fogdrift/model/compensator.hpp"
+#include "fogdrift/model/fault_option_table.hpp"
+#include "fogdrift/model/model.hpp"
+#include "fogdrift/model/model_set.hpp"
+#include "fogdrift/signal/differentiate.hpp"
+
+namespace fogdrift::matlab {
+namespace {
+
+CompensationModel model_of(const Args& args) {
+  return compensation_model_from_json(text_of(args.at(0, "model"), "model"), "model", {});
+}
+
+}  // namespace
+
+void model_load(const Args& args, Results& out) {
+  const std::string path = text_of(args.at(0, "path"), "path");
+  std::optional<std::string> target;
+  ModelLoadOptions load;
+  for (const auto& [name, value] : name_values(args, 1)) {
+    OptionSpec spec;
+    spec.keyword = name;
+    spec.type = OptionType::on_off;
+    if (name == "target")
+      target = text_of(value, "target");
+    else if (name == "allow_edited")
+      load.allow_edited = option_text(spec, value) == "true";
+    else if (name == "allow_old_format")
+      load.allow_old_format = option_text(spec, value) == "true";
+    else
+      throw OptionError(name,
+                        "is not an option of fogdrift.Model.load; its options are target, "
+                        "allow_edited, allow_old_format");
+  }
+  const ModelSet set = load_model_set(path, load);
+  out.values.push_back(text(to_json(choose_model(set, target, "target"))));
+}
+
+void model_info(const Args& args, Results& out) {
+  const CompensationModel m = model_of(args);
+  nlohmann::ordered_json j;
+  j["method"] = m.provenance.method;
+  j["target"] = m.dataset.target_column;
+  j["feature_names"] = m.feature_names;
+  j["hyperparameters"] = nlohmann::ordered_json::object();
+  for (const auto& [k, v] : m.provenance.hyperparameters) j["hyperparameters"][k] = v;
+  j["fitness"] = m.provenance.fitness;
+  j["fitness_value"] = m.provenance.fitness_value;
+  j["training_rows"] = m.provenance.training_rows;
+  j["causal"] = m.dataset.preprocessing.rates.causality == signal::Causality::causal;
+  out.values.push_back(to_mx(j));
+}
+
+void model_predict(const Args& args, Results& out) {
+  const CompensationModel m = model_of(args);
+  const mxArray* r = args.at(1, "recording");
+  const Recording recording = mxIsChar(r) ? fogdrift::read_recording(text_of(r, "recording"))
+                                          : recording_of(r, "recording");
+  bool guarded = true;
+  for (const auto& [name, value] : name_values(args, 2)) {
+    if (name != "guarded")
+      throw OptionError(name, "is not an option of fogdrift.Model.predict; its option is guarded");
+    OptionSpec spec;
+    spec.keyword = name;
+    spec.type = OptionType::on_off;
+    guarded = option_text(spec, value) == "true";
+  }
+  const RecordingPrediction p = m.predict(recording, guarded);
+  // Fields in the target's unit: drift_dph for a gyro, drift_g, drift_ppm (target.hpp).
+  const std::string unit(target_of(m.dataset.target_column).unit());
+  nlohmann::ordered_json names = {"drift_" + unit, "model_drift_" + unit, "novelty",
+                                  "guard_weight"};
+  const std::vector<const std::vector<double>*> values = {&p.drift_dph, &p.model_drift_dph,
+                                                          &p.novelty, &p.weight};
+  std::vector<std::string> fields;
+  std::vector<const char*> c;
+  for (const auto& n : names) fields.push_back(n.get<std::string>());
+  for (const auto& f : fields) c.push_back(f.c_str());
+  MxPtr s(mxCreateStructMatrix(1, 1, static_cast<int>(c.size()), c.data()));
+  for (std::size_t k = 0; k < c.size(); ++k)
+    mxSetField(s.get(), 0, c[k], column(*values[k]).release());
+  out.values.push_back(std::move(s));
+}
+
+void model_save(const Args& args, Results&) {
+  const CompensationModel m = model_of(args);
+  save(m, text_of(args.at(1, "path"), "path"));
+}
+
+void model_export_c(const Args& args, Results& out) {
+  const CompensationModel m = model_of(args);
+  const std::string path = text_of(args.at(1, "path"), "path");
+  const auto& table = fault_option_table();
+  const std::vector<OptionSpec> specs = specs_of(table);
+  FaultPolicy faults = fault_policy_of(m);
+  std::string prefix = "fogdrift_model", precision = "double";
+  double rate_hz = 0;
+  bool force_float = false;
+  const auto rest =
+      in_keywords_of(specs, [&] { return apply_options(table, faults, name_values(args, 2)); });
+  for (const auto& [name, value] : rest) {
+    if (name == "prefix") {
+      prefix = text_of(value, "prefix");
+    } else if (name == "stream_rate_hz") {
+      rate_hz = scalar_of(value, "stream_rate_hz");
+      if (!(rate_hz >= 0) || rate_hz > 10000)
+        throw OptionError("stream_rate_hz", fmt::format("{} is outside [0, 10000] Hz (0: no "
+                                                        "streaming part)",
+                                                        rate_hz));
+    } else if (name == "precision") {
+      precision = text_of(value, "precision");
+      if (precision != "double" && precision != "float")
+        throw OptionError("precision",
+                          fmt::format("must be double or float (got '{}')", precision));
+    } else if (name == "force_float") {
+      OptionSpec spec;
+      spec.keyword = name;
+      spec.type = OptionType::on_off;
+      force_float = option_text(spec, value) == "true";
+    } else {
+      unknown_option(args.function, name, {"prefix", "stream_rate_hz", "precision", "force_float"},
+                     specs);
+    }
+  }
+  const std::string header = in_keywords_of(specs, [&] {
+    return to_c_header(m, prefix, rate_hz > 0 ? 1.0 / rate_hz : 0.0, faults,
+                       precision == "float" ? CPrecision::single : CPrecision::double_);
+  });
+  if (precision == "float") {
+    const FloatPrecisionCheck check = check_float_precision(m);
+    if (check.share() > kFloatShareLimit) {
+      const std::string what = fmt::format(
+          "in float, the drift departs from the model's by up to {:.3g} {} on its own training "
+          "inputs, {:.3g} of the drift's STD (the limit is {:g}): float keeps too few digits of "
+          "these inputs (docs/firmware.md, \"Float\")",
+          check.max_error, target_of(m.dataset.target_column).unit(), check.share(),
+          kFloatShareLimit);
+      if (!force_float)
+        throw OptionError("precision", what +
+                                           "; use 'precision', 'double', or 'force_float', "
+                                           "true to write it anyway");
+      out.warnings.push_back(what + "; written anyway (force_float)");
+    }
+  }
+  if (rate_hz > 0 && m.dataset.preprocessing.rates.causality != signal::Causality::causal)
+    out.warnings.push_back(
+        "the model was trained with centred temperature rates; the header's update computes "
+        "causal ones, so its drift differs from predict's (train with 'differentiator', "
+        "'causal' for firmware)");
+  write_text_atomically(path, header);
+}
+
+void read_recording(const Args& args, Results& out) {
+  out.values.push_back(to_struct(fogdrift::read_recording(text_of(args.at(0, "path"), "path"))));
+}
+
+}  // namespace fogdrift::matlab
