@@ -57,12 +57,6 @@ ModelSet axes_to_run(const ModelSet& set, const std::optional<std::string>& targ
   return set;
 }
 
-std::vector<std::string> compensated_columns(const std::string& target) {
-  if (target == "gyro_dph") return {"drift_dph", "gyro_comp_dph", "novelty", "guard_weight"};
-  const Target t = target_of(target);
-  return {t.drift_column(), t.compensated_column(), "novelty_" + t.axis, "guard_weight_" + t.axis};
-}
-
 std::map<std::string, double> parse_references(const std::vector<std::string>& given,
                                                const std::string& option) {
   std::map<std::string, double> out;

@@ -31,12 +31,6 @@ CompensationModel load_one_model(const std::string& path, const ModelLoadOptions
 /// differ in sample interval, block or rate window, which one update cannot serve.
 ModelSet axes_to_run(const ModelSet& set, const std::optional<std::string>& target);
 
-/// The columns compensate and stream add for one axis: drift_dph, gyro_comp_dph, novelty and
-/// guard_weight for gyro_dph; Target::drift_column, Target::compensated_column, novelty_AXIS
-/// and guard_weight_AXIS for another (drift_y_dph, gyro_y_comp_dph, novelty_y, ... for
-/// gyro_y_dph; drift_accel_x_g, accel_x_comp_g, novelty_accel_x, ... for accel_x_g).
-std::vector<std::string> compensated_columns(const std::string& target);
-
 /// --reference COLUMN=VALUE, repeated: what each target channel sensed, in its unit
 /// (CampaignEntry::references). Throws OptionError(option) naming the item and the rule.
 std::map<std::string, double> parse_references(const std::vector<std::string>& given,

@@ -9,13 +9,10 @@
 
 #include "cli_util.hpp"
 #include "commands.hpp"
-#include "fogdrift/base/atomic_file.hpp"
-#include "fogdrift/base/csv.hpp"
-#include "fogdrift/base/csv_rows.hpp"
 #include "fogdrift/base/error.hpp"
 #include "fogdrift/base/run_files.hpp"
-#include "fogdrift/base/text_file.hpp"
 #include "fogdrift/eval/metrics.hpp"
+#include "fogdrift/model/compensate_file.hpp"
 #include "fogdrift/model/model.hpp"
 #include "fogdrift/model/model_set.hpp"
 
@@ -32,13 +29,8 @@ struct CompensateArgs {
   bool no_guard = false;
 };
 
-/// One axis compensated.
-struct Axis {
-  const CompensationModel* model = nullptr;
-  std::vector<std::string> columns;
-  RecordingPrediction prediction;
-  std::vector<double> gyro, compensated;
-  NoveltySummary novelty;
+/// One axis compensated, with its STD before and after, as evaluate computes them.
+struct Axis : CompensatedAxis {
   eval::CompensationMetrics metrics;
 };
 
@@ -68,66 +60,15 @@ nlohmann::ordered_json axis_json(const CompensateArgs& a, const Axis& x) {
 
 void run(const CompensateArgs& a) {
   const ModelSet set = load_model_set(a.model, a.load);
-  const Recording recording = read_recording(a.input);
-  // The input again, row by row, to copy each row's fields as they are beside the new columns
-  // (csv_rows.hpp: no second copy of the file in memory).
-  std::ifstream in = open_text_file(a.input);
-  csv::RowReader table(in, a.input);
+  note_input(a.input);
   check_output_not_input(a.output, "--output");
   std::vector<Axis> axes;
-  for (const CompensationModel& model : set.models) {
+  for (CompensatedAxis& c : compensate_file(set, a.input, a.output, !a.no_guard)) {
     Axis x;
-    x.model = &model;
-    x.columns = compensated_columns(model.dataset.target_column);
-    for (const std::string& name : x.columns)
-      if (table.find(name))
-        throw InputError(
-            table.file(), 1, *table.find(name) + 1,
-            fmt::format("already has a {} column; compensate the original recording", name));
-    x.gyro = target_values(recording, model.dataset.target_column);
-    x.prediction = model.predict(recording, !a.no_guard);
-    const std::vector<double>& drift = x.prediction.drift_dph;
-    x.novelty = summarize_novelty(x.prediction.novelty, x.prediction.weight);
-    x.compensated.resize(drift.size());
-    for (std::size_t i = 0; i < drift.size(); ++i) x.compensated[i] = x.gyro[i] - drift[i];
-    // STD of the gyro before and after (gyro − drift), as evaluate computes them.
-    x.metrics = eval::compensation_metrics(x.gyro, drift);
+    static_cast<CompensatedAxis&>(x) = std::move(c);
+    x.metrics = eval::compensation_metrics(x.reading, x.prediction.drift_dph);
     axes.push_back(std::move(x));
   }
-
-  write_file_atomically(a.output, [&](std::ostream& out) {
-    std::string line;
-    auto add_field = [&line](std::string_view f) {
-      line += csv::quote(f);
-      line += ',';
-    };
-    for (const std::string& f : table.header()) add_field(f);
-    for (const Axis& x : axes)
-      for (const std::string& f : x.columns) add_field(f);
-    line.back() = '\n';
-    out << line;
-    std::vector<std::string_view> fields;
-    std::size_t line_no = 0;
-    const std::size_t rows = recording.size();
-    std::size_t i = 0;
-    for (; table.next(fields, line_no); ++i) {
-      if (i == rows)
-        throw InputError(a.input, line_no, 0, "changed while it was read; compensate it again");
-      line.clear();
-      for (std::string_view f : fields) add_field(f);
-      for (const Axis& x : axes) {
-        for (double v : {x.prediction.drift_dph[i], x.compensated[i], x.prediction.novelty[i],
-                         x.prediction.weight[i]}) {
-          line += csv::format_number(v);
-          line += ',';
-        }
-      }
-      line.back() = '\n';
-      out << line;
-    }
-    if (i != rows)
-      throw InputError(a.input, 0, 0, "changed while it was read; compensate it again");
-  });
 
   if (a.json) {
     nlohmann::ordered_json j;

@@ -22,6 +22,7 @@
 #include "fogdrift/model/compensator.hpp"
 #include "fogdrift/model/decimate.hpp"
 #include "fogdrift/model/features.hpp"
+#include "fogdrift/model/compensate_file.hpp"
 #include "fogdrift/model/model.hpp"
 #include "fogdrift/model/model_set.hpp"
 #include "fogdrift/model/stream_faults.hpp"

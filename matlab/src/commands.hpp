@@ -40,6 +40,7 @@ void model_info(const Args& args, Results& out);
 void model_predict(const Args& args, Results& out);
 void model_save(const Args& args, Results& out);
 void model_export_c(const Args& args, Results& out);
+void compensate(const Args& args, Results& out);
 void read_recording(const Args& args, Results& out);
 
 }  // namespace fogdrift::matlab

@@ -128,6 +128,11 @@ void train(const Args& args, Results& out) {
   if (const mxArray* v = take(rest, "out")) path = text_of(v, "out");
   in_keywords_of(specs, [&] { validate(o.train); });
   const Campaign c = read_campaign(campaign);
+  if (path) {
+    std::vector<std::filesystem::path> inputs = {c.dir / "campaign.json"};
+    for (const CampaignEntry& e : c.recordings) inputs.push_back(c.path_of(e));
+    refuse_input(*path, inputs, "out");
+  }
   ThreadPool pool(static_cast<unsigned>(threads));
   o.train.tune.pool = &pool;
   // A line every 5 s of a search, unless 'progress' is false (the host shows what it prints

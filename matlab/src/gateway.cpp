@@ -40,6 +40,7 @@ constexpr NamedCommand kCommands[] = {
     {"model_predict", "fogdrift.Model.predict", model_predict},
     {"model_save", "fogdrift.Model.save", model_save},
     {"model_export_c", "fogdrift.Model.exportC", model_export_c},
+    {"compensate", "fogdrift.compensate", compensate},
 };
 
 /// Polls the host's interrupt flag while a command runs and passes it to the library.

@@ -9,6 +9,7 @@
 #include "fogdrift/firmware/c_header.hpp"
 #include "fogdrift/io/recording.hpp"
 #include "fogdrift/io/target.hpp"
+#include "fogdrift/model/compensate_file.hpp"
 #include "fogdrift/model/compensator.hpp"
 #include "fogdrift/model/fault_option_table.hpp"
 #include "fogdrift/model/model.hpp"
@@ -20,6 +21,20 @@ namespace {
 
 CompensationModel model_of(const Args& args) {
   return compensation_model_from_json(text_of(args.at(0, "model"), "model"), "model", {});
+}
+
+/// The one option of predict and compensate, 'guarded' (default true), from argument `first` on.
+bool guarded_of(const Args& args, std::size_t first) {
+  bool guarded = true;
+  for (const auto& [name, value] : name_values(args, first)) {
+    if (name != "guarded")
+      throw OptionError(name, "is not an option of " + args.function + "; its option is guarded");
+    OptionSpec spec;
+    spec.keyword = name;
+    spec.type = OptionType::on_off;
+    guarded = option_text(spec, value) == "true";
+  }
+  return guarded;
 }
 
 }  // namespace
@@ -67,15 +82,7 @@ void model_predict(const Args& args, Results& out) {
   const mxArray* r = args.at(1, "recording");
   const Recording recording = mxIsChar(r) ? fogdrift::read_recording(text_of(r, "recording"))
                                           : recording_of(r, "recording");
-  bool guarded = true;
-  for (const auto& [name, value] : name_values(args, 2)) {
-    if (name != "guarded")
-      throw OptionError(name, "is not an option of fogdrift.Model.predict; its option is guarded");
-    OptionSpec spec;
-    spec.keyword = name;
-    spec.type = OptionType::on_off;
-    guarded = option_text(spec, value) == "true";
-  }
+  const bool guarded = guarded_of(args, 2);
   const RecordingPrediction p = m.predict(recording, guarded);
   // Fields in the target's unit: drift_dph for a gyro, drift_g, drift_ppm (target.hpp).
   const std::string unit(target_of(m.dataset.target_column).unit());
@@ -159,6 +166,22 @@ void model_export_c(const Args& args, Results& out) {
         "causal ones, so its drift differs from predict's (train with 'differentiator', "
         "'causal' for firmware)");
   write_text_atomically(path, header);
+}
+
+void compensate(const Args& args, Results& out) {
+  const CompensationModel m = model_of(args);
+  const std::string input = text_of(args.at(1, "input"), "input");
+  const std::string output = text_of(args.at(2, "output"), "output");
+  const bool guarded = guarded_of(args, 3);
+  refuse_input(output, {input}, "output");
+  ModelSet set;
+  set.models.push_back(m);
+  const CompensatedAxis axis = compensate_file(set, input, output, guarded).front();
+  nlohmann::ordered_json j;
+  j["samples"] = axis.prediction.drift_dph.size();
+  j["columns"] = axis.columns;
+  j["novelty"] = axis.novelty.line();
+  out.values.push_back(to_mx(j));
 }
 
 void read_recording(const Args& args, Results& out) {

@@ -50,6 +50,8 @@ header = strsplit(strtrim(fgetl(fopen('comp_c.csv'))), ',');
 drift_cli = c(:, strcmp(header, 'drift_dph'));
 p = model.predict(fogdrift.read_recording(rec));
 check(isequal(p.drift_dph, drift_cli), 'Model.predict''s drift is compensate''s to the bit');
+fogdrift.compensate(model, rec, 'comp_m.csv');
+check(same_bytes('comp_m.csv', 'comp_c.csv'), 'compensate writes the CLI''s file byte for byte');
 q = model.predict(rec);
 check(isequal(q.drift_dph, p.drift_dph), 'predict takes a path as well as a struct');
 
@@ -79,5 +81,9 @@ expect_error(@() fogdrift.simulate('calibration', 'out', 'cal_m'), 'fogdrift:bad
 expect_error(@() model.predict(struct('time_s', [1; 2])), 'fogdrift:badInput', 'missing required column gyro_dph', 'a recording without its gyro');
 expect_error(@() model.exportC('x.h', 'prefix', '7up'), 'fogdrift:badOption', 'prefix', 'a prefix C cannot use');
 expect_error(@() fogdrift.Model('{"format": 1}'), 'fogdrift:badInput', 'model', 'a model text that is not one');
-check(~exist('x.h', 'file'), 'nothing is written on an error');
+expect_error(@() fogdrift.compensate(model, rec, rec), 'fogdrift:badOption', 'which this call reads', 'an output that is its input');
+expect_error(@() fogdrift.train('cal_m', 'population', 5, 'iterations', 1, 'out', ['cal_m/' names{1}]), ...
+             'fogdrift:badOption', 'option out:', 'a model written over a recording');
+expect_error(@() fogdrift.compensate(model, 'comp_c.csv', 'x.csv'), 'fogdrift:badInput', 'already has a drift_dph column', 'a compensated file again');
+check(~exist('x.h', 'file') && ~exist('x.csv', 'file'), 'nothing is written on an error');
 printf('all passed\n');

@@ -1,0 +1,40 @@
+// A recording file compensated: every column as it was written, then each axis's drift,
+// compensated reading, novelty and guard weight (docs/formats.md), written atomically. What
+// `fogdrift compensate` and Octave's fogdrift.compensate write.
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "fogdrift/model/guard.hpp"
+#include "fogdrift/model/model.hpp"
+#include "fogdrift/model/model_set.hpp"
+
+namespace fogdrift {
+
+/// The columns compensate and stream add for one axis: drift_dph, gyro_comp_dph, novelty and
+/// guard_weight for gyro_dph; Target::drift_column, Target::compensated_column, novelty_AXIS
+/// and guard_weight_AXIS for another (drift_y_dph, gyro_y_comp_dph, novelty_y, ... for
+/// gyro_y_dph; drift_accel_x_g, accel_x_comp_g, novelty_accel_x, ... for accel_x_g).
+std::vector<std::string> compensated_columns(const std::string& target);
+
+/// One axis of a compensated file.
+struct CompensatedAxis {
+  const CompensationModel* model = nullptr;  ///< into the set given
+  std::vector<std::string> columns;          ///< the columns added (compensated_columns)
+  RecordingPrediction prediction;
+  std::vector<double> reading;      ///< the target's values as recorded (target_values)
+  std::vector<double> compensated;  ///< reading − drift
+  NoveltySummary novelty;
+};
+
+/// Compensates `input` with every model of `set` and writes `output` (the input's fields copied
+/// as they are, row by row, then four columns per axis). InputError when the input already has
+/// one of the columns it would add, or gains or loses rows while it is read; nothing is
+/// written then. The caller checks that `output` is not an input (run_files.hpp).
+std::vector<CompensatedAxis> compensate_file(const ModelSet& set,
+                                             const std::filesystem::path& input,
+                                             const std::filesystem::path& output, bool guarded);
+
+}  // namespace fogdrift

@@ -1,0 +1,85 @@
+// A recording file compensated (compensate_file.hpp; docs/compensation.md).
+#include "fogdrift/model/compensate_file.hpp"
+
+#include <fmt/format.h>
+
+#include "fogdrift/base/atomic_file.hpp"
+#include "fogdrift/base/csv.hpp"
+#include "fogdrift/base/csv_rows.hpp"
+#include "fogdrift/base/error.hpp"
+#include "fogdrift/base/text_file.hpp"
+#include "fogdrift/io/recording.hpp"
+#include "fogdrift/io/target.hpp"
+
+namespace fogdrift {
+
+std::vector<std::string> compensated_columns(const std::string& target) {
+  if (target == "gyro_dph") return {"drift_dph", "gyro_comp_dph", "novelty", "guard_weight"};
+  const Target t = target_of(target);
+  return {t.drift_column(), t.compensated_column(), "novelty_" + t.axis, "guard_weight_" + t.axis};
+}
+
+std::vector<CompensatedAxis> compensate_file(const ModelSet& set,
+                                             const std::filesystem::path& input,
+                                             const std::filesystem::path& output, bool guarded) {
+  const std::string source = input.string();
+  const Recording recording = read_recording(input);
+  // The input again, row by row, to copy each row's fields as they are beside the new columns
+  // (csv_rows.hpp: no second copy of the file in memory).
+  std::ifstream in = open_text_file(input);
+  csv::RowReader table(in, source);
+  std::vector<CompensatedAxis> axes;
+  for (const CompensationModel& model : set.models) {
+    CompensatedAxis x;
+    x.model = &model;
+    x.columns = compensated_columns(model.dataset.target_column);
+    for (const std::string& name : x.columns)
+      if (table.find(name))
+        throw InputError(
+            table.file(), 1, *table.find(name) + 1,
+            fmt::format("already has a {} column; compensate the original recording", name));
+    x.reading = target_values(recording, model.dataset.target_column);
+    x.prediction = model.predict(recording, guarded);
+    const std::vector<double>& drift = x.prediction.drift_dph;
+    x.novelty = summarize_novelty(x.prediction.novelty, x.prediction.weight);
+    x.compensated.resize(drift.size());
+    for (std::size_t i = 0; i < drift.size(); ++i) x.compensated[i] = x.reading[i] - drift[i];
+    axes.push_back(std::move(x));
+  }
+
+  write_file_atomically(output, [&](std::ostream& out) {
+    std::string line;
+    auto add_field = [&line](std::string_view f) {
+      line += csv::quote(f);
+      line += ',';
+    };
+    for (const std::string& f : table.header()) add_field(f);
+    for (const CompensatedAxis& x : axes)
+      for (const std::string& f : x.columns) add_field(f);
+    line.back() = '\n';
+    out << line;
+    std::vector<std::string_view> fields;
+    std::size_t line_no = 0;
+    const std::size_t rows = recording.size();
+    std::size_t i = 0;
+    for (; table.next(fields, line_no); ++i) {
+      if (i == rows)
+        throw InputError(source, line_no, 0, "changed while it was read; compensate it again");
+      line.clear();
+      for (std::string_view f : fields) add_field(f);
+      for (const CompensatedAxis& x : axes) {
+        for (double v : {x.prediction.drift_dph[i], x.compensated[i], x.prediction.novelty[i],
+                         x.prediction.weight[i]}) {
+          line += csv::format_number(v);
+          line += ',';
+        }
+      }
+      line.back() = '\n';
+      out << line;
+    }
+    if (i != rows) throw InputError(source, 0, 0, "changed while it was read; compensate it again");
+  });
+  return axes;
+}
+
+}  // namespace fogdrift
