@@ -17,6 +17,20 @@ from setuptools.command.build_ext import build_ext
 
 ROOT = Path(__file__).resolve().parent
 
+# pip builds a wheel through setuptools' bdist_wheel, which the 'wheel' package provides. A virtual
+# environment of another interpreter than Debian's lacks it, and there is no PyPI to fetch it
+# from: say so, instead of setuptools' "invalid command 'bdist_wheel'" (which pip's metadata step,
+# dist_info, meets first).
+if {"bdist_wheel", "dist_info"} & set(sys.argv):
+    try:
+        import wheel  # noqa: F401
+    except ImportError:
+        sys.exit(f"fogdrift: building a wheel needs the 'wheel' package, which {sys.executable} "
+                 "lacks. Make the environment with Debian's interpreter and its packages: "
+                 "/usr/bin/python3 -m venv --system-site-packages ENV (apt-get install "
+                 "python3-wheel python3-venv), or install 'wheel' into it from a local copy; "
+                 "then pip install --no-build-isolation . (docs/python.md, \"Install\")")
+
 
 def version():
     """The one version, from include/fogdrift/base/version.hpp."""
@@ -36,7 +50,7 @@ class CMakeBuild(build_ext):
                  "-DCMAKE_BUILD_TYPE=Release", "-DFOGDRIFT_BUILD_TESTS=OFF",
                  "-DFOGDRIFT_BUILD_BENCH=OFF", "-DFOGDRIFT_BUILD_PYTHON=ON",
                  f"-DPython_EXECUTABLE={sys.executable}"], check=True)
-        subprocess.run(["cmake", "--build", str(build), "--target", "_fogdrift", "--parallel",
+        subprocess.run(["cmake", "--build", str(build), "--target", "fogdrift_python", "--parallel",
                         str(os.cpu_count() or 1)], check=True)
         built = sorted((build / "python" / "fogdrift").glob("_fogdrift*.so"))
         if not built:
@@ -44,6 +58,9 @@ class CMakeBuild(build_ext):
         target = Path(self.get_ext_fullpath(ext.name))
         target.parent.mkdir(parents=True, exist_ok=True)
         shutil.copyfile(built[-1], target)
+        # The compiled module's type stub, beside it (py.typed is package data).
+        shutil.copyfile(build / "python" / "fogdrift" / "_fogdrift.pyi",
+                        target.parent / "_fogdrift.pyi")
 
 
 setup(

@@ -15,6 +15,7 @@ packages=(
   python3-sklearn python3-pytest       # its tests: scikit-learn's estimator checks, its SVR and GP as references
   python3-pandas                       # recordings as DataFrames, and scikit-learn's DataFrame checks
   python3-dask python3-distributed     # fogdrift.fleet: one model per unit on a Dask cluster
+  python3-tqdm                         # the progress bar of fogdrift.train, and its test
   python3-matplotlib                   # docs/python.md's worked example, run as a test
   gcc-arm-none-eabi libnewlib-arm-none-eabi qemu-system-arm   # the C header on a Cortex-M4F
   octave liboctave-dev                 # fogdrift for Octave and MATLAB (matlab/, docs/matlab.md)

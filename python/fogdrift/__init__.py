@@ -29,6 +29,7 @@ from ._fogdrift import (Model, StreamingCompensator, __version__, allan_deviatio
                         stream_options, train, train_options, write_recording)
 from ._keywords import method_naming_keywords, naming_keywords
 from ._options import keyword_lines, with_keywords, with_options
+from ._progress import with_progress
 from .fleet import train_fleet
 from .search import SVRGridSearchCV
 from .svr import SVR
@@ -41,7 +42,7 @@ from .svr import SVR
                                  write_recording))
 # train checks its keywords against the library's descriptions of them (docs/options.md); its
 # signature and docstring come from the same descriptions (_options.py).
-train = with_options(train, train_options())
+train = with_options(with_progress(train), train_options())
 simulate.__doc__ += "".join(
     f"\n\nKeywords of {scenario}:\n" + "\n".join(
         keyword_lines(simulate_options(scenario), f"fogdrift simulate {scenario}"))

@@ -8,7 +8,9 @@ has the wrong type, what it must be, and what was given, e.g.
 
 reading the types from the signature the compiled function itself reports (docs/python.md).
 """
+import ast
 import functools
+import inspect
 import numbers
 import os
 import re
@@ -119,6 +121,58 @@ def _better(label, error, args, kwargs):
     return error if better is None else TypeError(better)
 
 
+class _Default:
+    """A default as pybind11 wrote it, shown as that text where it is no Python literal."""
+
+    def __init__(self, text):
+        self.text = text
+
+    def __repr__(self):
+        return self.text
+
+
+def signature_of(function, drop_self=False):
+    """The inspect.Signature of a compiled function, from the first line of the docstring
+    pybind11 writes ("name(a: int, *, b: str = 'x', **kwargs) -> dict"); None when there is
+    none to read. Annotations are pybind11's type names, as text."""
+    first = (getattr(function, "__doc__", None) or "").split("\n", 1)[0]
+    found = re.fullmatch(r"[\w.]*\((.*)\)(?: -> (.+))?", first.strip())
+    if not found:
+        return None
+    parameters, kind = [], inspect.Parameter.POSITIONAL_OR_KEYWORD
+    for part in _split_top(found.group(1)):
+        if part == "*":
+            kind = inspect.Parameter.KEYWORD_ONLY
+            continue
+        if part.startswith("**"):
+            parameters.append(inspect.Parameter(part[2:].split(":")[0].strip(),
+                                                inspect.Parameter.VAR_KEYWORD))
+            continue
+        if part.startswith("*"):
+            parameters.append(inspect.Parameter(part[1:].split(":")[0].strip(),
+                                                inspect.Parameter.VAR_POSITIONAL))
+            kind = inspect.Parameter.KEYWORD_ONLY
+            continue
+        name_type, _, default = part.partition("=")
+        name, _, annotation = name_type.partition(":")
+        extra = {}
+        if annotation.strip():
+            extra["annotation"] = annotation.strip()
+        if default.strip():
+            try:
+                extra["default"] = ast.literal_eval(default.strip())
+            except (ValueError, SyntaxError):
+                extra["default"] = _Default(default.strip())
+        parameters.append(inspect.Parameter(name.strip(), kind, **extra))
+    if drop_self and parameters and parameters[0].name == "self":
+        parameters = parameters[1:]
+    returns = found.group(2).strip() if found.group(2) else inspect.Signature.empty
+    try:
+        return inspect.Signature(parameters, return_annotation=returns)
+    except ValueError:  # an order inspect refuses; no signature rather than a wrong one
+        return None
+
+
 def naming_keywords(function, name=None):
     """`function`, raising a TypeError that names the keyword where pybind11 would list the
     signature."""
@@ -134,6 +188,9 @@ def naming_keywords(function, name=None):
                 raise
             raise better from None
 
+    signature = signature_of(function)
+    if signature is not None:
+        call.__signature__ = signature
     return call
 
 
@@ -152,4 +209,8 @@ def method_naming_keywords(cls, method):
                 raise
             raise better from None
 
+    signature = signature_of(original)
+    if signature is not None:
+        call.__signature__ = signature
     setattr(cls, method, call)
+

@@ -10,6 +10,7 @@ scaler's setting, …) makes groups of its own. Each path returns its prediction
 scores them; the scores, the choice, cv_results_ and the refit follow GridSearchCV's conventions,
 so the two are interchangeable.
 """
+import numbers
 import time
 
 import numpy as np
@@ -19,6 +20,7 @@ from sklearn.metrics import check_scoring
 from sklearn.model_selection import ParameterGrid, check_cv
 from sklearn.pipeline import Pipeline
 from sklearn.utils import _safe_indexing, check_array, indexable
+from sklearn.utils._param_validation import Interval
 from sklearn.utils.validation import check_is_fitted
 
 from . import _fogdrift
@@ -75,6 +77,18 @@ class SVRGridSearchCV(RegressorMixin, BaseEstimator):
     n_splits_, multimetric_ (False), n_features_in_.
     """
 
+    # scikit-learn's constraints and messages, as GridSearchCV's (the grid and the estimator are
+    # checked further in fit).
+    _parameter_constraints = {
+        "estimator": [object],  # anything: _svr_prefix says what it must be
+        "param_grid": [dict, list, None],
+        "scoring": [None, str, callable],
+        "cv": ["cv_object"],
+        "n_jobs": [None, Interval(numbers.Integral, -1, None, closed="left")],
+        "refit": ["boolean"],
+        "return_train_score": ["boolean"],
+    }
+
     def __init__(self, estimator=None, param_grid=None, *, scoring=None, cv=None, n_jobs=None,
                  refit=True, return_train_score=False):
         self.estimator = estimator
@@ -87,11 +101,22 @@ class SVRGridSearchCV(RegressorMixin, BaseEstimator):
 
     # -- the search ----------------------------------------------------------------------------
 
-    def fit(self, X, y, sample_weight=None):
+    def fit(self, X, y, sample_weight=None, *, groups=None, **fit_params):
         """sample_weight: per sample, for the SVR (a Pipeline's SVR step gets it); samples of
-        weight 0 are left out of every fit, as SVR.fit leaves them out."""
+        weight 0 are left out of every fit, as SVR.fit leaves them out. groups: the group of each
+        sample, for a cv that splits by group (GroupKFold, LeaveOneGroupOut: fogdrift's own
+        folds are one group per recording). fit_params: GridSearchCV's, of which the engine
+        takes the SVR's sample weight under the Pipeline step's name (``svr__sample_weight``)."""
+        self._validate_params()
         base = SVR() if self.estimator is None else self.estimator
         prefix = self._svr_prefix(base)
+        for name, value in fit_params.items():
+            if prefix and name == prefix + "sample_weight" and sample_weight is None:
+                sample_weight = value
+            else:
+                taken = f"sample_weight or {prefix}sample_weight" if prefix else "sample_weight"
+                raise ValueError(f"fit(): the fit parameter {name!r} is not taken: the search "
+                                 f"fits the SVR on its engine, which takes {taken} only")
         candidates = self._candidates(base)
         self.scorer_ = check_scoring(base, scoring="r2" if self.scoring is None else self.scoring)
         self.multimetric_ = False
@@ -101,7 +126,7 @@ class SVRGridSearchCV(RegressorMixin, BaseEstimator):
         else:
             X, y, weights = clone(base)._prepare(X, y, sample_weight)
             self.n_features_in_ = X.shape[1]
-        folds = list(check_cv(self.cv, y, classifier=False).split(X, y))
+        folds = list(check_cv(self.cv, y, classifier=False).split(X, y, groups))
         n_jobs = 1 if self.n_jobs is None else int(self.n_jobs)
         if n_jobs == 0 or n_jobs < -1:
             raise ValueError(f"n_jobs must be None, -1 or an integer > 0 (got {self.n_jobs!r})")

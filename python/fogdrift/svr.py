@@ -10,6 +10,7 @@ import warnings
 import numpy as np
 from sklearn.base import BaseEstimator, RegressorMixin
 from sklearn.exceptions import ConvergenceWarning
+from sklearn.utils._param_validation import Interval, StrOptions
 from sklearn.utils.validation import _check_sample_weight, check_is_fitted
 
 from . import _fogdrift
@@ -77,6 +78,24 @@ class SVR(RegressorMixin, BaseEstimator):
     objective_ : float
         The dual objective at the solution.
     """
+
+    # scikit-learn's constraints, checked by _validate_params with its messages ("The 'C' parameter
+    # of SVR must be a float in the range (0.0, inf). Got 'ten' instead.").
+    _parameter_constraints = {
+        "kernel": [StrOptions(set(_KERNELS))],
+        "degree": [Interval(numbers.Integral, 0, None, closed="left")],
+        "gamma": [StrOptions({"scale", "auto"}), Interval(numbers.Real, 0.0, None, closed="neither")],
+        "coef0": [Interval(numbers.Real, None, None, closed="neither")],
+        "tol": [Interval(numbers.Real, 0.0, None, closed="neither")],
+        "C": [Interval(numbers.Real, 0.0, None, closed="neither")],
+        "epsilon": [Interval(numbers.Real, 0.0, None, closed="left")],
+        "shrinking": ["boolean"],
+        "cache_size": [Interval(numbers.Real, 0, None, closed="neither")],
+        "verbose": ["verbose"],
+        "max_iter": [Interval(numbers.Integral, -1, None, closed="left")],
+        "n_jobs": [None, Interval(numbers.Integral, -1, None, closed="left")],
+        "solver": [StrOptions({"pairs", "libsvm"})],
+    }
 
     def __init__(
         self,
@@ -201,18 +220,14 @@ class SVR(RegressorMixin, BaseEstimator):
             raise ValueError(
                 f"kernel must be 'rbf' or 'linear' (got {self.kernel!r}); fogdrift has no "
                 "'poly', 'sigmoid' or 'precomputed' kernel")
-        if isinstance(self.gamma, str):
-            if self.gamma not in ("scale", "auto"):
-                raise ValueError(f"gamma must be 'scale', 'auto' or a float > 0 (got {self.gamma!r})")
-        elif not isinstance(self.gamma, numbers.Real) or not self.gamma > 0:
-            raise ValueError(f"gamma must be 'scale', 'auto' or a float > 0 (got {self.gamma!r})")
-        if not isinstance(self.max_iter, numbers.Integral) or self.max_iter < -1 or self.max_iter == 0:
-            raise ValueError(f"max_iter must be -1 or an integer > 0 (got {self.max_iter!r})")
-        if self.solver not in ("pairs", "libsvm"):
-            raise ValueError(f"solver must be 'pairs' or 'libsvm' (got {self.solver!r})")
-        if self.n_jobs is not None and (not isinstance(self.n_jobs, numbers.Integral)
-                                        or self.n_jobs == 0 or self.n_jobs < -1):
-            raise ValueError(f"n_jobs must be None, -1 or an integer > 0 (got {self.n_jobs!r})")
+        self._validate_params()
+        # What an interval cannot say: 0 is neither an iteration limit nor a thread count.
+        if self.max_iter == 0:
+            raise ValueError("The 'max_iter' parameter of SVR must be -1 (no limit) or an int "
+                             "> 0. Got 0 instead.")
+        if self.n_jobs == 0:
+            raise ValueError("The 'n_jobs' parameter of SVR must be None, -1 or an int > 0. "
+                             "Got 0 instead.")
 
     def _prepare(self, X, y, sample_weight):
         self._check_params()

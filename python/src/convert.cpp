@@ -62,10 +62,19 @@ py::dict to_dict(const Recording& r) {
 Recording to_recording(const py::object& columns, const std::string& source, bool keep_others) {
   if (py::isinstance<py::str>(columns) || py::hasattr(columns, "__fspath__"))
     return read_recording(py::cast<std::filesystem::path>(columns));
-  if (!py::hasattr(columns, "__contains__") || !py::hasattr(columns, "__getitem__"))
+  // A mapping has keys; an array (a DataFrame's .to_numpy()) has none and would be asked
+  // elementwise whether it contains a name.
+  if (!py::hasattr(columns, "keys") || !py::hasattr(columns, "__getitem__")) {
+    const std::string type = py::str(py::type::of(columns).attr("__qualname__"));
     throw InputError(source, 0, 0,
                      "a recording must be a path or a mapping of column names to arrays (a dict "
-                     "or a pandas DataFrame)");
+                     "or a pandas DataFrame), not " +
+                         type +
+                         (py::hasattr(columns, "shape")
+                              ? "; an array has no column names: pass the DataFrame itself, or "
+                                "a dict such as {'time_s': t, 'gyro_dph': g, ...}"
+                              : ""));
+  }
   Recording r;
   r.source = source;
   for (const auto* names : {&required_columns(), &optional_columns()})
@@ -78,8 +87,10 @@ Recording to_recording(const py::object& columns, const std::string& source, boo
       column->assign(values.data(), values.data() + values.shape(0));
     }
   for (const std::string& name : required_columns())
-    if (known_column(r, name) == nullptr || known_column(r, name)->empty())
+    if (!columns.attr("__contains__")(name).cast<bool>())
       throw InputError(source, 0, 0, "missing required column " + name);
+  if (r.time_s.empty())
+    throw InputError(source, 0, 0, "has no rows: a recording needs at least one sample");
   // Further thermometers always (a model may read them, docs/logs.md "More thermometers"); the
   // other columns when asked.
   for (const py::handle key : columns.attr("keys")()) {

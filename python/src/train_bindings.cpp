@@ -62,10 +62,13 @@ const std::vector<PythonKeyword>& python_only() {
         OptionType::text,
         "",
         "",
-        "Called after each iteration of a search with a dict (iteration, iterations, "
-        "evaluations, best_rmse, best_point); returning False stops the search",
+        "How the search shows its progress: 'auto', a tqdm bar when tqdm is installed, else "
+        "a line on standard error every 5 s when it is a terminal; True, a bar or the lines "
+        "wherever standard error goes; 'lines'; False or None, nothing; or a callable, called "
+        "after each iteration with a dict (iteration, iterations, evaluations, best_rmse, "
+        "best_point), returning False to stop the search (docs/python.md, \"Progress\")",
         {}},
-       "None"},
+       "auto"},
       {{"validate_only",
         "",
         OptionType::on_off,
@@ -155,10 +158,20 @@ py::object train(const py::object& campaign, const py::kwargs& kwargs) {
   // A folder (or its campaign.json), or a campaign held in memory.
   std::optional<std::filesystem::path> path;
   std::optional<HeldCampaign> held;
-  if (py::isinstance<py::dict>(campaign))
+  if (py::isinstance<py::dict>(campaign)) {
     held = held_campaign(campaign);
-  else
+  } else if (py::isinstance<py::str>(campaign) || py::hasattr(campaign, "__fspath__")) {
     path = campaign.cast<std::filesystem::path>();
+  } else {
+    const std::string type = py::str(py::type::of(campaign).attr("__qualname__"));
+    throw py::type_error(
+        "train(): campaign must be a folder (str or os.PathLike) or a campaign in memory (the "
+        "dict fogdrift.simulate returns), not " +
+        type +
+        (py::isinstance<py::list>(campaign) || py::isinstance<py::tuple>(campaign)
+             ? "; for one model per unit's campaign use fogdrift.train_fleet(campaigns)"
+             : ""));
+  }
   std::optional<CampaignTrainResult> r;
   released_interruptibly([&] {
     ThreadPool pool(static_cast<unsigned>(threads));

@@ -48,8 +48,22 @@ if "$py" -c "import build" 2>/dev/null; then
     { cat "$work/pip2.log" >&2; fail "pip install the wheel"; }
   "$work/venv2/bin/python" -c "import fogdrift, numpy as np; m = fogdrift.SVR(C=1.0).fit(np.eye(3), [1.0, 2.0, 3.0]); assert m.predict(np.eye(3)).shape == (3,)" ||
     fail "the wheel's package does not fit an SVR"
+  # Types: py.typed and the compiled module's stub are in the wheel.
+  for f in py.typed _fogdrift.pyi; do
+    "$py" -c "import sys, zipfile; names = zipfile.ZipFile(sys.argv[1]).namelist(); sys.exit('fogdrift/$f' not in names)" \
+      "$work"/dist/fogdrift-*.whl || fail "the wheel lacks fogdrift/$f"
+  done
 else
   fail "python3-build is missing (scripts/setup.sh installs it)"
+fi
+# An environment without the 'wheel' package (one made from another interpreter, say): pip's
+# build stops with what to do, not setuptools' "invalid command 'bdist_wheel'".
+"$py" -m venv "$work/bare" || fail "bare venv"
+if ! "$work/bare/bin/python" -c "import wheel" 2>/dev/null; then
+  "$work/bare/bin/pip" install -q --no-build-isolation --no-deps "$root" >"$work/bare.log" 2>&1 &&
+    fail "pip install without 'wheel' succeeded"
+  grep -q "building a wheel needs the 'wheel' package" "$work/bare.log" ||
+    { tail -5 "$work/bare.log" >&2; fail "no word on the missing 'wheel' package"; }
 fi
 [ "$failed" -eq 0 ] && echo "python install: passed"
 exit "$failed"

@@ -97,3 +97,40 @@ def test_options_are_checked_once_before_any_unit_runs(units, tmp_path):
             train_fleet(paths, out=tmp_path / "models",
                         progress=lambda done, total, r: ran.append(done), **options)
         assert ran == [] and not (tmp_path / "models").exists()
+
+
+def test_each_units_warnings_are_raised_in_the_caller_naming_the_unit(units):
+    paths, _ = units
+    # A box far too small for C: the held-out estimate warns, on a worker as at home.
+    options = dict(population=5, iterations=2, c_min=0.01, c_max=0.012)
+    with pytest.warns(UserWarning) as serial:
+        results = train_fleet(paths[:2], **options)
+    assert {str(w.message).split(":")[0] for w in serial} == {"unit1", "unit2"}
+    assert all(r["warnings"] for r in results)
+    with distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=True,
+                                  dashboard_address=None) as cluster, \
+            distributed.Client(cluster) as client:
+        with pytest.warns(UserWarning) as parallel:
+            train_fleet(paths[:2], client=client, **options)
+    assert sorted(str(w.message) for w in parallel) == sorted(str(w.message) for w in serial)
+
+
+def test_a_misspelt_keyword_and_a_wrong_campaign_are_named(units):
+    paths, _ = units
+    with pytest.raises(TypeError, match=r"train_fleet\(\) got an unexpected keyword argument "
+                                        r"'popluation'; its keywords are client, out"):
+        train_fleet(paths, popluation=5)
+    with pytest.raises(TypeError, match=r"train_fleet\(\): campaigns\[1\] must be a folder .* "
+                                        r"not int"):
+        train_fleet([paths[0], 3])
+
+
+def test_campaigns_in_memory_train_as_their_folders(units, tmp_path):
+    paths, _ = units
+    held = fogdrift.simulate("calibration", seed=1, temps_degc=[-20, 10, 40], repetitions=2)
+    options = dict(population=5, iterations=2, evaluate=False)
+    from_memory = train_fleet([held], out=tmp_path, **options)
+    from_folder = train_fleet([paths[0]], **options)
+    assert from_memory[0]["unit"] == "unit 1" and from_folder[0]["unit"] == "unit1"
+    assert from_memory[0]["model"].to_json() == from_folder[0]["model"].to_json()
+    assert (tmp_path / "unit 1.json").read_text() == from_folder[0]["model"].to_json()

@@ -312,7 +312,7 @@ def test_a_wrong_type_is_a_type_error_naming_the_keyword(trained):
             (lambda: fogdrift.train(d / "cal", validate_only=1),
              r"train\(\): validate_only must be a bool, not int"),
             (lambda: fogdrift.train(d / "cal", progress=3),
-             r"train\(\): progress must be callable or None, not int"),
+             r"train\(\): progress must be .auto., True, False, .lines., None or a callable, not int \(3\)"),
             (lambda: fogdrift.simulate("calibration", seed="1"),
              r"simulate\(\): seed must be an int, not str"),
             (lambda: fogdrift.denoise(np.ones(64), level=1.5),
