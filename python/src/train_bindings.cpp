@@ -20,6 +20,7 @@
 #include "fogdrift/signal/differentiate.hpp"
 #include "fogdrift/tune/train_campaign.hpp"
 #include "fogdrift/tune/train_option_table.hpp"
+#include "fogdrift/tune/train_summary.hpp"
 #include "option_keywords.hpp"
 
 namespace py = pybind11;
@@ -185,85 +186,30 @@ py::object train(const py::object& campaign, const py::kwargs& kwargs) {
   });
   if (callback_error) std::rethrow_exception(callback_error);
   const TrainSummary& s = r->trained.summary;
-  py::dict summary;
-  summary["method"] = to_string(s.method);
-  summary["fitness"] = s.fitness;
-  summary["fitness_rmse"] = s.fitness_value;
-  py::dict hyper;
-  for (const auto& [k, v] : s.hyperparameters) hyper[py::str(k)] = v;
-  summary["hyperparameters"] = hyper;
-  summary["training_rows"] = s.rows;
-  summary["recordings"] = r->data.groups.size();
-  summary["features"] = r->data.feature_names;
-  summary["block_s"] = r->dataset.preprocessing.block.block_s;
-  summary["rate_window_s"] = r->dataset.preprocessing.rates.window_s;
-  summary["rate_degree"] = r->dataset.preprocessing.rates.poly_order;
-  // The method's own record, under `fogdrift train --json`'s keys.
-  for (const auto& [key, value] : s.record.items()) summary[py::str(key)] = from_json(value.dump());
-  if (!s.record.contains("search")) summary["search"] = py::none();  // a method with no search
+  // The library's summary (`fogdrift train --json`'s keys), its advice in this function's
+  // keywords; then what Python keeps its own way: notes as (keyword, text) pairs, no held_out
+  // when there is none, and the box-edge advice among the warnings.
+  const OptionWords keywords{
+      [](const std::string& field) { return keyword_of(field); },
+      [&](const std::string& text) { return in_option_words(text, specs, false); }};
+  py::dict summary = from_json(summary_json(*r, keywords).dump()).cast<py::dict>();
   py::list notes;
   for (const auto& n : r->notes) notes.append(py::make_tuple(keyword_of(n.field), n.text));
   summary["notes"] = notes;
-  std::vector<std::string> warnings = r->data.warnings;
-  if (s.held_out) {
-    const HeldOutReport& h = *s.held_out;
-    py::list base;
-    for (const Baseline& b : h.baselines) {
-      py::dict d;
-      d["name"] = b.name;
-      d["rmse"] = b.rmse;
-      base.append(d);
-    }
-    py::dict held;
-    held["folds"] = h.folds;
-    held["model_rmse"] = h.model_rmse;
-    held["expected_share"] = h.expected_share;
-    held["expected_startup_share"] = h.expected_startup_share;
-    held["baselines"] = base;
-    summary["held_out"] = held;
-    // Its advice in this function's keywords.
-    std::vector<std::string> advice;
-    for (const auto& w : h.warnings) advice.push_back(in_option_words(w, specs, false));
-    warnings.insert(warnings.end(), advice.begin(), advice.end());
-    // A model that does not beat the baselines is a warning a Python user sees, not only a key.
-    for (const std::string& w : advice) warn(w.c_str());
-  } else {
-    summary["held_out"] = py::none();
-  }
-  // What `fogdrift train --json` reports of the search, under the same keys.
-  summary["cv"] = r->trained.model.provenance.cv;
-  py::list edges;
-  for (const auto& e : s.box_edges) {
-    py::dict d;
-    d["parameter"] = e.parameter;
-    d["edge"] = e.upper ? "upper" : "lower";
-    d["value"] = e.value;
-    d["box"] = py::make_tuple(e.low, e.high);
-    d["improvement"] = e.improvement;
-    edges.append(d);
-  }
-  summary["box_edges"] = edges;
-  py::list boxes;
-  for (const auto& b : s.boxes) {
-    py::dict d;
-    d["c"] = py::make_tuple(b.c_min, b.c_max);
-    d["sigma"] = py::make_tuple(b.sigma_min, b.sigma_max);
-    boxes.append(d);
-  }
-  summary["boxes_searched"] = boxes;
-  // The box-edge warning the command line prints, in this function's keywords, as a warning.
+  if (!s.held_out) summary["held_out"] = py::none();
+  py::list warnings = summary["warnings"];
+  // A model that does not beat the baselines is a warning a Python user sees, not only a key.
+  if (s.held_out)
+    for (const auto& w : s.held_out->warnings) warn(in_option_words(w, specs, false).c_str());
   for (const std::string& w :
        box_edge_warnings(s, t.auto_box_rounds > 0, [&](const std::string& field) {
          return field == "auto_box"         ? std::string("auto_box=True")
                 : field == "search_epsilon" ? std::string("search_epsilon=True")
                                             : option_word(specs, field, false);
        })) {
-    warnings.push_back(w);
+    warnings.append(w);
     warn(w.c_str());
   }
-  summary["warnings"] = warnings;
-  summary["fits"] = s.tuning.fits;
-  summary["seconds"] = s.seconds;
   py::dict out;
   out["model"] = py::cast(std::move(r->trained.model));
   out["summary"] = summary;
