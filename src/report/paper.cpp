@@ -333,8 +333,7 @@ void validate(const PaperOptions& o) {
   if (o.population < 5 || o.population > 10000)
     throw OptionError("population",
                       fmt::format("{} is outside [5, 10000] (SSA needs 5 sparrows)", o.population));
-  if (!std::isfinite(o.epsilon) || o.epsilon < 0 || o.epsilon > 10)
-    throw OptionError("epsilon", fmt::format("{} is outside [0, 10]", o.epsilon));
+  tune::check_epsilon(o.epsilon);
   if (o.iterations < 1 || o.iterations > 100000)
     throw OptionError("iterations", fmt::format("{} is outside [1, 100000]", o.iterations));
   const std::size_t temps = o.calibration.temps_degc.size();

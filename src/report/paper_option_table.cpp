@@ -107,8 +107,7 @@ OptionTable<PaperOptions> make_table() {
        {"cv.folds"}},
       [](auto& o) -> auto& { return o.cv.folds; }));
   t.push_back(number_option<O>(
-      {"epsilon", "--epsilon", {}, "", "0 … 10", "ε of the tuned SVRs (standardised target)", {}},
-      [](auto& o) -> auto& { return o.epsilon; }));
+      tune::epsilon_option_spec(), [](auto& o) -> auto& { return o.epsilon; }));
   t.push_back(on_off_option<O>(
       {"search_epsilon",
        "--search-epsilon",

@@ -213,14 +213,7 @@ OptionTable<O> make_table() {
       {"sigma_max", "--sigma-max", {}, "", "> {sigma_min}", "Largest σ searched", {}},
       [](auto& o) -> auto& { return o.train.tune.space.sigma_max; }));
   t.push_back(number_option<O>(
-      {"epsilon",
-       "--epsilon",
-       {},
-       "",
-       "≥ 0",
-       "ε of the SVR's tube, in standardised drift units, when it is not searched",
-       {}},
-      [](auto& o) -> auto& { return o.train.tune.space.epsilon; }));
+      tune::epsilon_option_spec(), [](auto& o) -> auto& { return o.train.tune.space.epsilon; }));
   t.push_back(on_off_option<O>(
       {"search_epsilon",
        "--search-epsilon",

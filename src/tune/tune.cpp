@@ -40,6 +40,23 @@ std::string fitness_names() {
   return names_in(kFitnessNames);
 }
 
+OptionSpec epsilon_option_spec() {
+  return {"epsilon",
+          "--epsilon",
+          OptionType::number,
+          "",
+          "0 … 10",
+          "ε of the SVR's tube, in standardised drift units, when it is not searched",
+          {}};
+}
+
+void check_epsilon(double epsilon) {
+  if (!(epsilon >= 0 && epsilon <= kEpsilonMax))
+    throw OptionError("epsilon", fmt::format("{} is outside [0, {:g}]: ε is in standardised drift "
+                                             "units, and a wider tube holds every sample",
+                                             epsilon, kEpsilonMax));
+}
+
 void validate(const TuneOptions& options) {
   const SearchSpace& s = options.space;
   auto range = [](double lo, double hi, const char* lo_name, const char* hi_name) {
@@ -53,8 +70,8 @@ void validate(const TuneOptions& options) {
   range(s.sigma_min, s.sigma_max, "sigma_min", "sigma_max");
   if (s.search_epsilon)
     range(s.epsilon_min, s.epsilon_max, "epsilon_min", "epsilon_max");
-  else if (!(s.epsilon >= 0 && std::isfinite(s.epsilon)))
-    throw OptionError("epsilon", fmt::format("{} must be finite and ≥ 0", s.epsilon));
+  else
+    check_epsilon(s.epsilon);
   if (!(options.tolerance > 0 && std::isfinite(options.tolerance)))
     throw OptionError("tolerance", fmt::format("{} must be finite and > 0", options.tolerance));
   if (!(options.cache_mb >= 0 && std::isfinite(options.cache_mb)))

@@ -35,6 +35,7 @@
 #include <string>
 #include <vector>
 
+#include "fogdrift/base/option_table.hpp"
 #include "fogdrift/model/dataset.hpp"
 #include "fogdrift/opt/optimizer.hpp"
 #include "fogdrift/svr/svr.hpp"
@@ -68,6 +69,18 @@ struct SearchSpace {
 
   bool operator==(const SearchSpace&) const = default;
 };
+
+/// The largest ε: in standardised drift units (the drift's STD is 1), a tube of 10 holds every
+/// sample and leaves a flat model.
+inline constexpr double kEpsilonMax = 10;
+
+/// The one description of the option ε (`epsilon`, --epsilon) that train and paper take: its
+/// keyword, flag, range and help (docs/options.md).
+OptionSpec epsilon_option_spec();
+
+/// OptionError("epsilon") unless ε is a finite number in [0, kEpsilonMax]: the rule of
+/// epsilon_option_spec, checked by validate(TuneOptions) and by the paper's validate.
+void check_epsilon(double epsilon);
 
 struct TuneOptions {
   Fitness fitness = Fitness::cv;
