@@ -20,10 +20,12 @@ ROOT = pathlib.Path(__file__).resolve().parents[1]
 PEER = "/usr/bin/python3" if os.path.exists("/usr/bin/python3") else sys.executable
 
 
-def measured(cmd):
-    """(seconds, peak resident memory in bytes) of one run of `cmd`, its output discarded."""
+def measured(cmd, stdin=None):
+    """(seconds, peak resident memory in bytes) of one run of `cmd`, its output discarded;
+    `stdin`, a file its standard input reads."""
     start = time.perf_counter()
-    child = subprocess.Popen(cmd, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE)
+    source = open(stdin, "rb") if stdin else subprocess.DEVNULL
+    child = subprocess.Popen(cmd, stdin=source, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE)
     _, status, usage = os.wait4(child.pid, 0)
     seconds = time.perf_counter() - start
     if os.waitstatus_to_exitcode(status) != 0:
@@ -70,14 +72,16 @@ def main(build, runs):
                 ("fogdrift compensate", [fd, "compensate", w / "model.json", rec, "-o", out,
                                          "-q"]),
                 ("fogdrift stream", [fd, "stream", w / "model.json", rec, "--rate-hz", str(hz)]),
+                ("fogdrift stream < file", [fd, "stream", w / "model.json", "-", "--rate-hz",
+                                            str(hz)], rec),
                 ("pandas read_csv", [PEER, "-c",
                                      f"import pandas; pandas.read_csv({str(rec)!r})"]),
                 ("pandas read_csv + to_csv", [PEER, "-c",
                                               f"import pandas; pandas.read_csv({str(rec)!r})"
                                               f".to_csv({str(out)!r}, index=False)"]),
             ]
-            for name, cmd in commands:
-                got = [measured(cmd) for _ in range(runs)]
+            for name, cmd, *stdin in commands:
+                got = [measured(cmd, *stdin) for _ in range(runs)]
                 t = statistics.median(g[0] for g in got)
                 m = statistics.median(g[1] for g in got)
                 print(f"| {hz} Hz | {size / 1e6:.0f} MB | {name} | {t:.2f} | "

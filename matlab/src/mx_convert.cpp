@@ -225,9 +225,10 @@ Recording recording_of(const mxArray* s, const std::string& source) {
       throw InputError(source, 0, 0, "missing required column " + name);
   for (int k = 0; k < mxGetNumberOfFields(s); ++k) {
     const std::string name = mxGetFieldNameByNumber(s, k);
-    if (r.has_column(name) || !further_thermometer_name(name)) continue;
+    const mxArray* values = mxGetField(s, 0, name.c_str());
+    if (r.has_column(name) || !further_thermometer_name(name) || !values) continue;
     ExtraColumn c{name, {}};
-    for (double x : vector_of(mxGetField(s, 0, name.c_str()), source + ": column " + name))
+    for (double x : vector_of(values, source + ": column " + name))
       c.cells.push_back(csv::format_number(x));
     if (c.cells.size() != r.size())
       throw InputError(

@@ -111,7 +111,10 @@ class SVRGridSearchCV(RegressorMixin, BaseEstimator):
         base = SVR() if self.estimator is None else self.estimator
         prefix = self._svr_prefix(base)
         for name, value in fit_params.items():
-            if prefix and name == prefix + "sample_weight" and sample_weight is None:
+            if prefix and name == prefix + "sample_weight":
+                if sample_weight is not None:
+                    raise ValueError(f"fit(): sample_weight and {name} are the same weights; "
+                                     f"give one of them")
                 sample_weight = value
             else:
                 taken = f"sample_weight or {prefix}sample_weight" if prefix else "sample_weight"
