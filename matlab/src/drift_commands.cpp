@@ -74,6 +74,7 @@ void simulate(const Args& args, Results& out) {
   std::optional<std::filesystem::path> folder;
   bool replace = false;
   sim::Instrument unit;
+  std::vector<std::filesystem::path> read;  // the instrument file, which out must not replace
   for (const auto& [name, value] : pairs) {
     if (name == "seed") {
       OptionSpec spec;
@@ -87,6 +88,7 @@ void simulate(const Args& args, Results& out) {
     } else if (name == "instrument") {
       const std::string file = text_of(value, "instrument");
       unit = sim::instrument_from_json(read_text_file(file), file);
+      read.push_back(file);
     }
   }
   sim::SimulatedCampaign c;
@@ -103,7 +105,10 @@ void simulate(const Args& args, Results& out) {
     throw OptionError("scenario", fmt::format("must be 'calibration', 'northfind' or 'stable' "
                                               "(got '{}')",
                                               scenario));
-  if (folder) sim::write_campaign(*folder, c, replace);
+  if (folder) {
+    refuse_input(*folder, read, "out");
+    sim::write_campaign(*folder, c, replace);
+  }
   out.values.push_back(to_mx(nlohmann::ordered_json::parse(manifest_json(c.campaign))));
 }
 

@@ -85,9 +85,9 @@ auto in_keywords_of(const std::vector<OptionSpec>& specs, F&& f) {
                                  const std::vector<std::string>& own,
                                  const std::vector<OptionSpec>& specs);
 
-/// OptionError(option) when `output` names one of `inputs` (the same file, through any link):
-/// writing it would destroy what the call reads. (The command line notes its inputs as it reads
-/// them, run_files.hpp; a call from Octave names them here.)
+/// OptionError(option) when `output` names one of `inputs` (the same file, through any link), or
+/// is a folder that holds one: writing it would destroy what the call reads. (The command line
+/// notes its inputs as it reads them, run_files.hpp; a call from Octave names them here.)
 void refuse_input(const std::filesystem::path& output,
                   const std::vector<std::filesystem::path>& inputs, const std::string& option);
 

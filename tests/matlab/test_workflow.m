@@ -77,6 +77,10 @@ expect_error(@() fogdrift.train('cal_m', 'cmax', 1), 'fogdrift:badOption', 'is n
 expect_error(@() fogdrift.train('cal_m', 'population', 'many'), 'fogdrift:badOption', 'option population: must be a number', 'a word for a number');
 expect_error(@() fogdrift.train('cal_m', 'population'), 'fogdrift:badInput', 'name–value pairs', 'a name without its value');
 expect_error(@() fogdrift.train('nowhere'), 'fogdrift:badInput', 'nowhere', 'a missing campaign');
+system(sprintf('"%s" simulate --print-instrument > cal_c/unit.json', getenv('FOGDRIFT_CLI')));
+expect_error(@() fogdrift.simulate('calibration', 'out', 'cal_c', 'replace', true, 'instrument', 'cal_c/unit.json'), ...
+             'fogdrift:badOption', 'holds cal_c/unit.json', 'a campaign replaced over the instrument file it reads');
+check(exist('cal_c/unit.json', 'file') == 2, 'the instrument file is still there');
 expect_error(@() fogdrift.simulate('calibration', 'out', 'cal_m'), 'fogdrift:badInput', '''replace'', true', 'a full folder is not replaced');
 expect_error(@() model.predict(struct('time_s', [1; 2])), 'fogdrift:badInput', 'missing required column gyro_dph', 'a recording without its gyro');
 expect_error(@() model.exportC('x.h', 'prefix', '7up'), 'fogdrift:badOption', 'prefix', 'a prefix C cannot use');
