@@ -9,6 +9,7 @@
 
 #include "commands.hpp"
 #include "fogdrift/base/error.hpp"
+#include "fogdrift/base/run_files.hpp"
 #include "fogdrift/base/text_file.hpp"
 #include "fogdrift/base/thread_pool.hpp"
 #include "fogdrift/eval/eval_option_table.hpp"
@@ -106,7 +107,7 @@ void simulate(const Args& args, Results& out) {
                                               "(got '{}')",
                                               scenario));
   if (folder) {
-    refuse_input(*folder, read, "out");
+    check_output_not_among(*folder, read, "out");
     sim::write_campaign(*folder, c, replace);
   }
   out.values.push_back(to_mx(nlohmann::ordered_json::parse(manifest_json(c.campaign))));
@@ -136,7 +137,7 @@ void train(const Args& args, Results& out) {
   if (path) {
     std::vector<std::filesystem::path> inputs = {c.dir / "campaign.json"};
     for (const CampaignEntry& e : c.recordings) inputs.push_back(c.path_of(e));
-    refuse_input(*path, inputs, "out");
+    check_output_not_among(*path, inputs, "out");
   }
   ThreadPool pool(static_cast<unsigned>(threads));
   o.train.tune.pool = &pool;

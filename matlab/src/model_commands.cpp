@@ -6,6 +6,7 @@
 #include "commands.hpp"
 #include "fogdrift/base/atomic_file.hpp"
 #include "fogdrift/base/error.hpp"
+#include "fogdrift/base/run_files.hpp"
 #include "fogdrift/firmware/c_header.hpp"
 #include "fogdrift/io/recording.hpp"
 #include "fogdrift/io/target.hpp"
@@ -173,7 +174,7 @@ void compensate(const Args& args, Results& out) {
   const std::string input = text_of(args.at(1, "input"), "input");
   const std::string output = text_of(args.at(2, "output"), "output");
   const bool guarded = guarded_of(args, 3);
-  refuse_input(output, {input}, "output");
+  check_output_not_among(output, {input}, "output");
   ModelSet set;
   set.models.push_back(m);
   const CompensatedAxis axis = compensate_file(set, input, output, guarded).front();

@@ -194,26 +194,6 @@ void unknown_option(const std::string& function, const std::string& name,
                     fmt::format("is not an option of {}; its options are {}", function, known));
 }
 
-void refuse_input(const std::filesystem::path& output,
-                  const std::vector<std::filesystem::path>& inputs, const std::string& option) {
-  namespace fs = std::filesystem;
-  for (const auto& input : inputs) {
-    std::error_code ec;
-    if (fs::equivalent(output, input, ec))
-      throw OptionError(option, fmt::format("'{}' is {}, which this call reads: writing it would "
-                                            "destroy what is being read; choose another file",
-                                            output.string(), input.string()));
-    // A folder written whole (a campaign replaced) holds the input.
-    const fs::path inside =
-        fs::weakly_canonical(input, ec).lexically_relative(fs::weakly_canonical(output, ec));
-    if (!ec && !inside.empty() && *inside.begin() != ".." && fs::is_directory(output, ec))
-      throw OptionError(option, fmt::format("'{}' holds {}, which this call reads: replacing it "
-                                            "would destroy what is being read; choose another "
-                                            "folder",
-                                            output.string(), input.string()));
-  }
-}
-
 Recording recording_of(const mxArray* s, const std::string& source) {
   if (!mxIsStruct(s) || mxGetNumberOfElements(s) != 1)
     throw InputError(source, 0, 0,

@@ -6,7 +6,6 @@
 #include <mex.h>
 
 #include <cstddef>
-#include <filesystem>
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <span>
@@ -84,12 +83,6 @@ auto in_keywords_of(const std::vector<OptionSpec>& specs, F&& f) {
 [[noreturn]] void unknown_option(const std::string& function, const std::string& name,
                                  const std::vector<std::string>& own,
                                  const std::vector<OptionSpec>& specs);
-
-/// OptionError(option) when `output` names one of `inputs` (the same file, through any link), or
-/// is a folder that holds one: writing it would destroy what the call reads. (The command line
-/// notes its inputs as it reads them, run_files.hpp; a call from Octave names them here.)
-void refuse_input(const std::filesystem::path& output,
-                  const std::vector<std::filesystem::path>& inputs, const std::string& option);
 
 /// A recording from a scalar struct whose fields are columns (column or row vectors of equal
 /// length): fogdrift's columns and further thermometers are read, other fields ignored; then

@@ -13,6 +13,7 @@
 #include "bindings.hpp"
 #include "convert.hpp"
 #include "fogdrift/base/error.hpp"
+#include "fogdrift/base/run_files.hpp"
 #include "fogdrift/base/text_file.hpp"
 #include "fogdrift/sim/instrument.hpp"
 #include "fogdrift/sim/scenario_option_table.hpp"
@@ -69,6 +70,9 @@ py::dict simulate(const std::string& scenario, const std::optional<std::filesyst
                       "must be 'calibration', 'northfind' or 'stable' (got '" + scenario + "')");
   }
   if (out) {
+    // A campaign replaced over the instrument file it was made from would lose that file.
+    if (!instrument.is_none() && !py::isinstance<py::dict>(instrument))
+      check_output_not_among(*out, {instrument.cast<std::filesystem::path>()}, "out");
     py::gil_scoped_release release;
     sim::write_campaign(*out, c, replace);
   }

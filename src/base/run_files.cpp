@@ -165,6 +165,25 @@ std::optional<fs::path> input_replaced_by(const fs::path& output) {
   return std::nullopt;
 }
 
+void check_output_not_among(const fs::path& output, const std::vector<fs::path>& inputs,
+                            const std::string& option) {
+  for (const auto& input : inputs) {
+    std::error_code ec;
+    if (fs::equivalent(output, input, ec))
+      throw OptionError(option, fmt::format("'{}' is {}, which this call reads: writing it would "
+                                            "destroy what is being read; choose another file",
+                                            output.string(), input.string()));
+    // A folder written whole (a campaign replaced) holds the input.
+    const fs::path inside =
+        fs::weakly_canonical(input, ec).lexically_relative(fs::weakly_canonical(output, ec));
+    if (!ec && !inside.empty() && *inside.begin() != ".." && fs::is_directory(output, ec))
+      throw OptionError(option, fmt::format("'{}' holds {}, which this call reads: replacing it "
+                                            "would destroy what is being read; choose another "
+                                            "folder",
+                                            output.string(), input.string()));
+  }
+}
+
 void check_output_not_input(const fs::path& output, const std::string& option) {
   if (const auto input = input_replaced_by(output)) {
     throw OptionError(

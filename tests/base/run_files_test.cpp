@@ -13,6 +13,7 @@
 #include <sstream>
 
 #include "fogdrift/base/atomic_file.hpp"
+#include "fogdrift/base/error.hpp"
 
 namespace fogdrift {
 namespace {
@@ -64,6 +65,33 @@ TEST(RunFiles, ADescriptorIsWrittenThroughAndALinkStaysALink) {
   EXPECT_EQ(read_all(dir / "absent.txt"), "made");
   // A closed descriptor is an error, not a file that takes its number.
   EXPECT_THROW(write_text_atomically("/dev/fd/987", "x"), std::exception);
+  fs::remove_all(dir);
+}
+
+// A host that notes no inputs names them: the same file through a link, or a folder that holds
+// one, is refused naming the option; other outputs pass.
+TEST(RunFiles, AnOutputAmongTheNamedInputsIsRefused) {
+  const fs::path dir = fs::temp_directory_path() / "fogdrift_among_test";
+  fs::remove_all(dir);
+  fs::create_directories(dir / "cal");
+  std::ofstream(dir / "cal" / "unit.json") << "{}";
+  fs::create_symlink(dir / "cal" / "unit.json", dir / "link.json");
+  const std::vector<fs::path> inputs = {dir / "cal" / "unit.json"};
+  auto message = [&](const fs::path& output) -> std::string {
+    try {
+      check_output_not_among(output, inputs, "out");
+    } catch (const OptionError& e) {
+      EXPECT_EQ(e.option(), "out");
+      return e.message();
+    }
+    return "";
+  };
+  EXPECT_NE(message(dir / "cal" / "unit.json").find("which this call reads"), std::string::npos);
+  EXPECT_NE(message(dir / "link.json").find("which this call reads"), std::string::npos);
+  EXPECT_NE(message(dir / "cal").find("holds"), std::string::npos);
+  EXPECT_NE(message(dir / "cal" / ".." / "cal").find("holds"), std::string::npos);
+  EXPECT_EQ(message(dir / "other"), "");
+  EXPECT_EQ(message(dir / "cal" / "model.json"), "");
   fs::remove_all(dir);
 }
 

@@ -102,3 +102,15 @@ def test_grid_search_fit_params_are_the_svrs_weights_or_named(rng):
         fogdrift.SVRGridSearchCV(pipe, {"svr__C": [1]}, cv=3).fit(X, y, svr__verbose=True)
     with pytest.raises(ValueError, match=r"The 'refit' parameter of SVRGridSearchCV must be"):
         fogdrift.SVRGridSearchCV(pipe, {"svr__C": [1]}, refit="yes").fit(X, y)
+
+
+def test_a_campaign_is_not_written_over_the_instrument_file_it_reads(tmp_path, cli):
+    cli("simulate", "calibration", "--out", tmp_path / "cal", "--temps=-20,20",
+        "--repetitions", "2")
+    (tmp_path / "cal" / "unit.json").write_text(cli("simulate", "--print-instrument"))
+    with pytest.raises(ValueError, match=r"option out: .* holds .*unit.json, which this call "
+                                         r"reads"):
+        fogdrift.simulate("calibration", out=tmp_path / "cal", replace=True,
+                          instrument=tmp_path / "cal" / "unit.json", temps_degc=[-20, 20],
+                          repetitions=2)
+    assert (tmp_path / "cal" / "unit.json").exists()

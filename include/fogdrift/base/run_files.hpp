@@ -29,6 +29,13 @@ void note_input(const std::filesystem::path& path);
 /// it once their inputs are noted and before their work; the atomic writers check again.
 void check_output_not_input(const std::filesystem::path& output, const std::string& option);
 
+/// Throws OptionError(option, …) when `output` is one of `inputs` (the same file, through any
+/// link) or a folder that holds one. For hosts that run no guarded run and so note no inputs
+/// (Python, Octave): a call names what it read.
+void check_output_not_among(const std::filesystem::path& output,
+                            const std::vector<std::filesystem::path>& inputs,
+                            const std::string& option);
+
 /// The input `output` would replace, if any (same device and inode as a noted input, or, when
 /// `output` is a folder, a noted input inside it).
 std::optional<std::filesystem::path> input_replaced_by(const std::filesystem::path& output);
