@@ -75,8 +75,9 @@ def train_fleet(campaigns, *, client=None, out=None, evaluate=True, progress=Non
     down) raise ValueError once, before any unit runs.
 
     Returns one dict per campaign, in the order given: ``campaign`` (the path as given, or the
-    name of a campaign in memory), ``unit`` (its name: the folder's), ``model`` (a Model), ``summary`` and ``evaluation`` (as fogdrift.train and fogdrift.evaluate
-    return them), ``error`` (the message, when fogdrift refused the unit; the other fields are
+    name of a campaign in memory), ``unit`` (its name: the folder's), ``model`` (a Model),
+    ``summary`` and ``evaluation`` (as fogdrift.train and fogdrift.evaluate return them),
+    ``error`` (the message, when fogdrift refused the unit; the other fields are
     then None) and ``warnings`` ((category, message) of each warning the unit raised). Each
     warning is also raised here, in the caller, as "UNIT: message", so that
     ``warnings.catch_warnings`` and ``-W error`` see it wherever the unit ran.
