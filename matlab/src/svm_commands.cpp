@@ -81,15 +81,27 @@ const mxArray* field(const mxArray* model, const char* name) {
 svr::Model model_of(const mxArray* s, std::size_t features) {
   if (!mxIsStruct(s) || mxGetNumberOfElements(s) != 1)
     throw InputError("model", 0, 0, "must be the struct svmtrain returned");
+  // An edited or damaged struct is refused as a damaged LIBSVM model file is
+  // (libsvm_format.hpp): a prediction from it would be wrong, not an error.
   const std::vector<double> p = vector_of(field(s, "Parameters"), "model.Parameters");
   if (p.size() < 5) throw InputError("model.Parameters", 0, 0, "must hold 5 values");
+  for (int k : {0, 1})
+    if (!(p[k] == std::floor(p[k]) && std::abs(p[k]) < 100))
+      throw InputError("model.Parameters", k + 1, 0,
+                       fmt::format("{} is not an SVM or kernel type", p[k]));
   const int svm_type = static_cast<int>(p[0]), kernel_type = static_cast<int>(p[1]);
   if (svm_type != 4) svr::check_svm_type(svm_type);  // ν-SVR predicts as ε-SVR does
   svr::check_kernel_type(kernel_type);
+  if (kernel_type == 2 && !(p[3] > 0 && std::isfinite(p[3])))
+    throw InputError("model.Parameters", 4, 0,
+                     fmt::format("gamma is {}; an RBF model needs a finite gamma > 0", p[3]));
   svr::Model m;
   m.kernel = kernel_type == 0 ? svr::Kernel::linear() : svr::Kernel::rbf_gamma(p[3]);
   m.coef = vector_of(field(s, "sv_coef"), "model.sv_coef");
   m.rho = scalar_of(field(s, "rho"), "model.rho");
+  const auto finite = [](double x) { return std::isfinite(x); };
+  if (!std::all_of(m.coef.begin(), m.coef.end(), finite) || !std::isfinite(m.rho))
+    throw InputError("model", 0, 0, "sv_coef or rho holds a value that is not finite");
   const mxArray* svs = field(s, "SVs");
   if (!mxIsDouble(svs) || mxGetM(svs) != m.coef.size())
     throw InputError(
@@ -108,6 +120,8 @@ svr::Model model_of(const mxArray* s, std::size_t features) {
       for (std::size_t i = 0; i < m.size(); ++i)
         m.support_vectors[i * m.dims + j] = v[j * m.size() + i];
   }
+  if (!std::all_of(m.support_vectors.begin(), m.support_vectors.end(), finite))
+    throw InputError("model.SVs", 0, 0, "holds a value that is not finite");
   return m;
 }
 

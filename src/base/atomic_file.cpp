@@ -270,9 +270,10 @@ void fill_directory_atomically(const fs::path& given, bool replace,
     throw InputError(dir.string(), 0, 0, "exists and is not a folder");
   }
   if (exists && !replace && !fs::is_empty(dir, ec)) {
-    throw InputError(dir.string(), 0, 0,
-                     "folder exists and is not empty (choose another folder, or replace it: --force "
-                     "on the command line, replace=True in Python, 'replace', true in Octave)");
+    throw InputError(
+        dir.string(), 0, 0,
+        "folder exists and is not empty (choose another folder, or replace it: --force "
+        "on the command line, replace=True in Python, 'replace', true in Octave)");
   }
   if (dir.has_parent_path() && !fs::exists(dir.parent_path(), ec)) {
     fs::create_directories(dir.parent_path(), ec);

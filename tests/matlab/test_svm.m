@@ -98,5 +98,13 @@ expect_error(@() fogdrift.svmtrain(y, X, 3), 'fogdrift:badInput', 'libsvm_option
 expect_error(@() fogdrift.svmpredict(yt, Xt, struct('a', 1)), 'fogdrift:badInput', 'has no field Parameters', 'not a model');
 c = model; c.Parameters(1) = 0;
 expect_error(@() fogdrift.svmpredict(yt, Xt, c), 'fogdrift:badOption', 'C-SVC', 'a C-SVC model refused');
+c = model; c.sv_coef(2) = NaN;
+expect_error(@() fogdrift.svmpredict(yt, Xt, c), 'fogdrift:badInput', 'not finite', 'an edited coefficient refused');
+c = model; c.Parameters(4) = 0;
+expect_error(@() fogdrift.svmpredict(yt, Xt, c), 'fogdrift:badInput', 'gamma is 0', 'an RBF model without gamma refused');
+c = model; c.Parameters(1) = 3.5;
+expect_error(@() fogdrift.svmpredict(yt, Xt, c), 'fogdrift:badInput', 'not an SVM or kernel type', 'a type that is no type refused');
+c = model; c.SVs(1, 1) = Inf;
+expect_error(@() fogdrift.svmpredict(yt, Xt, c), 'fogdrift:badInput', 'model.SVs: holds a value that is not finite', 'an infinite support vector refused');
 expect_error(@() fogdrift.svmpredict(yt, Xt, model, '-b 1'), 'fogdrift:badOption', 'probability', '-b 1 refused in predict');
 printf('all passed\n');
