@@ -3,9 +3,10 @@ function list = options(name)
 %
 %   list = fogdrift.options('train')
 %
-%   name is train, simulate-calibration, simulate-northfind, evaluate, denoise or stream (the
-%   fault policy of Model.exportC). list is a struct array: name, type, default, unit, allowed,
-%   help, flag (the command line's).
+%   name is train, simulate-calibration, simulate-northfind, simulate-stable, evaluate, denoise,
+%   northfind, paper or stream (the fault policy of Model.exportC). list is a struct array, as
+%   `fogdrift options NAME --json` prints it: keyword (the name-value name), flag (the command
+%   line's), type, unit, default, allowed, doc and help.
 [err, warns, list] = fogdrift_mex('options', name);
 if ~isempty(err), error(err); end
 end

@@ -16,9 +16,9 @@
 #include "fogdrift/eval/evaluation.hpp"
 #include "fogdrift/io/campaign.hpp"
 #include "fogdrift/io/target.hpp"
-#include "fogdrift/model/fault_option_table.hpp"
 #include "fogdrift/model/model.hpp"
 #include "fogdrift/opt/summary.hpp"
+#include "fogdrift/report/option_descriptions.hpp"
 #include "fogdrift/signal/denoise.hpp"
 #include "fogdrift/signal/denoise_option_table.hpp"
 #include "fogdrift/sim/instrument.hpp"
@@ -168,6 +168,14 @@ void train(const Args& args, Results& out) {
   const nlohmann::ordered_json summary = summary_json(r, keywords);
   if (summary["held_out"].contains("warnings"))
     for (const auto& w : summary["held_out"]["warnings"]) out.warnings.push_back(w);
+  // A best value on its box's edge, the advice in name-value pairs, as Python and the CLI say it.
+  for (const std::string& w : box_edge_warnings(
+           r.trained.summary, o.train.auto_box_rounds > 0, [&](const std::string& field) {
+             return field == "auto_box"         ? std::string("'auto_box', true")
+                    : field == "search_epsilon" ? std::string("'search_epsilon', true")
+                                                : "'" + option_word(specs, field, false) + "'";
+           }))
+    out.warnings.push_back(w);
   out.values.push_back(text(to_json(r.trained.model)));
   out.values.push_back(to_mx(summary));
 }
@@ -211,43 +219,9 @@ void denoise(const Args& args, Results& out) {
   out.values.push_back(to_mx(s));
 }
 
-namespace {
-template <class O>
-MxPtr described(const OptionTable<O>& table, const O& defaults = O()) {
-  const std::vector<OptionSpec> specs = specs_of(table);
-  const std::vector<std::string> values = defaults_of(table, defaults);
-  nlohmann::ordered_json j = nlohmann::ordered_json::array();
-  for (std::size_t i = 0; i < specs.size(); ++i)
-    j.push_back({{"name", specs[i].keyword},
-                 {"type", std::string(to_string(specs[i].type))},
-                 {"default", values[i]},
-                 {"unit", specs[i].unit},
-                 {"allowed", specs[i].range},
-                 {"help", option_help(specs[i], specs, false)},
-                 {"flag", specs[i].flag}});
-  return to_mx(j);
-}
-}  // namespace
-
 void options(const Args& args, Results& out) {
   const std::string which = text_of(args.at(0, "function"), "function");
-  if (which == "train")
-    out.values.push_back(described(train_option_table()));
-  else if (which == "simulate-calibration")
-    out.values.push_back(described(sim::calibration_option_table()));
-  else if (which == "simulate-northfind")
-    out.values.push_back(described(sim::northfind_option_table()));
-  else if (which == "evaluate")
-    out.values.push_back(described(eval::evaluation_option_table()));
-  else if (which == "denoise")
-    out.values.push_back(described(signal::denoise_option_table()));
-  else if (which == "stream")
-    out.values.push_back(described(fault_option_table()));
-  else
-    throw OptionError("function", fmt::format("must be train, simulate-calibration, "
-                                              "simulate-northfind, evaluate, denoise or stream "
-                                              "(got '{}')",
-                                              which));
+  out.values.push_back(to_mx(report::options_json(report::option_descriptions(which, "function"))));
 }
 
 }  // namespace fogdrift::matlab

@@ -10,6 +10,11 @@ function run_cli(varargin)
   if status ~= 0, error('test:cli', '%s failed: %s', cmd, fileread('cli_out.txt')); end
 end
 
+function text = fileread_cli(args)
+  run_cli(args);
+  text = fileread('cli_out.txt');
+end
+
 function same = same_bytes(a, b)
   same = strcmp(fileread(a), fileread(b));
 end
@@ -70,7 +75,10 @@ x = sin((1:512)' / 20) + 0.1 * randn(512, 1);
 [y, s] = fogdrift.denoise(x, 'wavelet', 'db4', 'threshold', 'universal');
 check(isequal(size(y), size(x)) && s.level > 0 && std(y - x) < 0.2, 'denoise');
 o = fogdrift.options('train');
-check(any(strcmp({o.name}, 'c_max')) && any(strcmp({o.flag}, '--c-max')), 'options lists the table');
+check(any(strcmp({o.keyword}, 'c_max')) && any(strcmp({o.flag}, '--c-max')), 'options lists the table');
+cli_o = jsondecode(fileread_cli('options train --json'));
+check(isequal({o.keyword}, {cli_o.keyword}) && isequal({o.doc}, {cli_o.doc}), 'options are `fogdrift options --json`''s');
+expect_error(@() fogdrift.options('trian'), 'fogdrift:badOption', 'option function: ''trian'' is not one of train', 'an unknown function named');
 
 expect_error(@() fogdrift.train('cal_m', 'c_max', -1), 'fogdrift:badOption', 'option c_max:', 'a range named by keyword');
 expect_error(@() fogdrift.train('cal_m', 'cmax', 1), 'fogdrift:badOption', 'is not an option of fogdrift.train', 'an unknown name');

@@ -1,0 +1,57 @@
+// Every command's options by name (option_descriptions.hpp; docs/options.md).
+#include "fogdrift/report/option_descriptions.hpp"
+
+#include <fmt/format.h>
+
+#include "fogdrift/base/error.hpp"
+#include "fogdrift/eval/eval_option_table.hpp"
+#include "fogdrift/model/fault_option_table.hpp"
+#include "fogdrift/report/paper_option_table.hpp"
+#include "fogdrift/signal/denoise_option_table.hpp"
+#include "fogdrift/sim/scenario_option_table.hpp"
+#include "fogdrift/tune/train_option_table.hpp"
+
+namespace fogdrift::report {
+namespace {
+
+template <class O>
+OptionDescriptions described(const OptionTable<O>& table, const O& defaults = O()) {
+  return {specs_of(table), defaults_of(table, defaults)};
+}
+
+}  // namespace
+
+std::string_view described_commands() {
+  return "train, simulate-calibration, simulate-northfind, simulate-stable, stream, denoise, "
+         "evaluate, northfind, paper";
+}
+
+OptionDescriptions option_descriptions(std::string_view command, const std::string& option) {
+  if (command == "train") return described(train_option_table());
+  if (command == "simulate-calibration") return described(sim::calibration_option_table());
+  if (command == "simulate-northfind") return described(sim::northfind_option_table());
+  if (command == "simulate-stable")
+    return described(sim::northfind_option_table(), sim::stable_defaults());
+  if (command == "stream") return described(fault_option_table());
+  if (command == "denoise") return described(signal::denoise_option_table());
+  if (command == "evaluate") return described(eval::evaluation_option_table());
+  if (command == "northfind") return described(eval::finding_option_table());
+  if (command == "paper") return described(paper_option_table());
+  throw OptionError(option, fmt::format("'{}' is not one of {}", command, described_commands()));
+}
+
+nlohmann::ordered_json options_json(const OptionDescriptions& d) {
+  nlohmann::ordered_json out = nlohmann::ordered_json::array();
+  for (std::size_t i = 0; i < d.specs.size(); ++i)
+    out.push_back({{"keyword", d.specs[i].keyword},
+                   {"flag", d.specs[i].flag},
+                   {"type", to_string(d.specs[i].type)},
+                   {"unit", d.specs[i].unit},
+                   {"default", d.defaults[i]},
+                   {"allowed", d.specs[i].range},
+                   {"doc", option_help(d.specs[i], d.specs, false)},
+                   {"help", option_help(d.specs[i], d.specs, true)}});
+  return out;
+}
+
+}  // namespace fogdrift::report
