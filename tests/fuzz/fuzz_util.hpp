@@ -32,18 +32,24 @@ inline std::string text_of(const std::uint8_t* data, std::size_t size) {
   return std::string(reinterpret_cast<const char*>(data), size);
 }
 
-/// This process's scratch folder, removed at exit.
+/// This process's scratch folder, removed at exit. The exit handler is registered once the
+/// path is built, so it runs before the path is destroyed (handlers and static destructors run
+/// in the reverse order of their registration): registered inside the path's own initializer,
+/// it ran after and removed nothing, leaving a folder in /tmp per run.
 inline const std::filesystem::path& scratch_dir() {
   static const std::filesystem::path dir = [] {
     const std::filesystem::path d =
         std::filesystem::temp_directory_path() / ("fogdrift_fuzz_" + std::to_string(::getpid()));
     std::filesystem::create_directories(d);
-    std::atexit([] {
-      std::error_code ignored;
-      std::filesystem::remove_all(scratch_dir(), ignored);
-    });
     return d;
   }();
+  static const bool removed_at_exit = [] {
+    return std::atexit([] {
+             std::error_code ignored;
+             std::filesystem::remove_all(dir, ignored);
+           }) == 0;
+  }();
+  (void)removed_at_exit;
   return dir;
 }
 
