@@ -25,21 +25,36 @@ std::pair<double, double> rmse_and_std(std::span<const double> y, std::span<cons
   return {std::sqrt(sum2 / n), y.size() > 1 ? std::sqrt(centred / (n - 1)) : 0.0};
 }
 
+/// Two figures of a rule broken, with 4 significant digits or as many more (up to 12) as it
+/// takes to print them apart: a harm of a millionth must not read "0.04947 against 0.04947".
+std::pair<std::string, std::string> apart(double worse, double better) {
+  int digits = 4;
+  while (digits < 12 &&
+         fmt::format("{:.{}g}", worse, digits) == fmt::format("{:.{}g}", better, digits))
+    ++digits;
+  return {fmt::format("{:.{}g}", worse, digits), fmt::format("{:.{}g}", better, digits)};
+}
+
 /// The rules of the file comment, on figures already computed.
 void judge(BaselineComparison& c, const std::string& line_input) {
   c.harms.clear();
   c.no_better_than.clear();
-  if (c.model_rmse > c.raw_rmse)
-    c.harms.push_back(fmt::format("worse than raw: RMSE {:.4g} {{unit}} against {:.4g}",
-                                  c.model_rmse, c.raw_rmse));
-  if (c.model_std > c.raw_std)
+  if (c.model_rmse > c.raw_rmse) {
+    const auto [model, raw] = apart(c.model_rmse, c.raw_rmse);
+    c.harms.push_back(fmt::format("worse than raw: RMSE {} {{unit}} against {}", model, raw));
+  }
+  if (c.model_std > c.raw_std) {
+    const auto [after, before] = apart(c.model_std, c.raw_std);
     c.harms.push_back(
-        fmt::format("adds variation: STD {:.4g} {{unit}} after against {:.4g} "
-                    "before, worse than the recording mean",
-                    c.model_std, c.raw_std));
-  if (std::isfinite(c.line_rmse) && c.model_rmse > c.line_rmse)
-    c.harms.push_back(fmt::format("worse than the line in {}: RMSE {:.4g} {{unit}} against {:.4g}",
-                                  line_input, c.model_rmse, c.line_rmse));
+        fmt::format("adds variation: STD {} {{unit}} after against {} before, "
+                    "worse than the recording mean",
+                    after, before));
+  }
+  if (std::isfinite(c.line_rmse) && c.model_rmse > c.line_rmse) {
+    const auto [model, line] = apart(c.model_rmse, c.line_rmse);
+    c.harms.push_back(fmt::format("worse than the line in {}: RMSE {} {{unit}} against {}",
+                                  line_input, model, line));
+  }
   if (!c.harms.empty()) return;
   if (c.model_std > (1.0 - kNoBetterShare) * c.raw_std)
     c.no_better_than.push_back("the recording mean");

@@ -43,6 +43,19 @@ TEST(BaselineComparison, EachRuleOfHarmIsNamedWithItsNumbers) {
   EXPECT_EQ(compare_with_baselines(y, model, {}, "").harms.size(), 2u);
 }
 
+// A harm of a millionth is still a harm, and its figures are printed apart: "STD 0.04947 after
+// against 0.04947 before" said nothing a user could check.
+TEST(BaselineComparison, ATinyHarmIsPrintedWithTheDigitsThatShowIt) {
+  const std::vector<double> y = {1, -1, 1, -1};
+  const std::vector<double> model = {-1e-6, 1e-6, -1e-6, 1e-6};
+  const BaselineComparison c = compare_with_baselines(y, model, {}, "");
+  ASSERT_EQ(c.harms.size(), 2u);
+  EXPECT_NE(c.harms[0].find("worse than raw: RMSE 1.000001 {unit} against 1"), std::string::npos)
+      << c.harms[0];
+  EXPECT_NE(c.harms[1].find("STD 1.154702 {unit} after against 1.154701 before"), std::string::npos)
+      << c.harms[1];
+}
+
 TEST(BaselineComparison, AModelThatRemovesLessThanFivePercentIsNoBetter) {
   // A bias of 3 and a variation the model does not follow: the model removes the bias (as the
   // line does) and 2 % of the variation.
