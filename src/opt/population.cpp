@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cmath>
 
 #include "fogdrift/base/enum_names.hpp"
 #include "fogdrift/base/error.hpp"
@@ -16,6 +17,11 @@ namespace {
 constexpr std::array<EnumName<Algorithm>, 3> kAlgorithmNames = {
     {{Algorithm::ssa, "ssa"}, {Algorithm::pso, "pso"}, {Algorithm::gwo, "gwo"}}};
 
+constexpr std::array<EnumName<Status>, 3> kStatusNames = {
+    {{Status::iteration_limit, "iteration_limit"},
+     {Status::stopped, "stopped"},
+     {Status::converged, "converged"}}};
+
 }  // namespace
 
 std::string to_string(Algorithm algorithm) {
@@ -26,10 +32,23 @@ Algorithm parse_algorithm(const std::string& text, const std::string& option) {
   return parse_in(kAlgorithmNames, text, option, "an optimizer");
 }
 
+std::string to_string(Status status) {
+  return std::string(name_in(kStatusNames, status));
+}
+
 std::string Summary::brief_report() const {
   return fmt::format("{}: best {:.6g} after {} iterations, {} evaluations, {:.1f} s{}",
                      to_string(algorithm), best_fitness, iterations, evaluations, seconds,
-                     status == Status::stopped ? " (stopped)" : "");
+                     status == Status::iteration_limit ? "" : " (" + to_string(status) + ")");
+}
+
+bool stalled(const std::vector<IterationRecord>& log, std::size_t iterations, double tolerance) {
+  if (iterations == 0 || log.size() <= iterations) return false;
+  const double then = log[log.size() - 1 - iterations].best_fitness;
+  const double now = log.back().best_fitness;
+  if (!std::isfinite(then)) return false;  // nothing finite found yet: keep looking
+  // An improvement of less than `tolerance` of |then| (or none at all when then is 0).
+  return then - now <= tolerance * std::abs(then);
 }
 
 void validate(const RunOptions& options, std::size_t min_population) {
@@ -41,6 +60,14 @@ void validate(const RunOptions& options, std::size_t min_population) {
   if (options.iterations < 1) throw OptionError("iterations", "must be at least 1");
   if (options.iterations > 10000000)
     throw OptionError("iterations", fmt::format("{} is above 10000000", options.iterations));
+  if (options.stall_iterations > 10000000)
+    throw OptionError("stall_iterations",
+                      fmt::format("{} is above 10000000", options.stall_iterations));
+  if (!(options.stall_tolerance >= 0 && options.stall_tolerance < 1))
+    throw OptionError("stall_tolerance",
+                      fmt::format("{} is outside [0, 1): a relative improvement of the best "
+                                  "fitness, e.g. 0.001",
+                                  options.stall_tolerance));
 }
 
 void validate(const Problem& problem) {
@@ -130,6 +157,10 @@ bool Run::end_iteration(std::size_t iteration, std::span<const double> populatio
   summary_.log.push_back(record);
   if (options_.progress && !options_.progress(summary_.log.back())) {
     summary_.status = Status::stopped;
+    return false;
+  }
+  if (stalled(summary_.log, options_.stall_iterations, options_.stall_tolerance)) {
+    summary_.status = Status::converged;
     return false;
   }
   return true;

@@ -43,16 +43,22 @@ Trained SvrTrainer::train(const TrainContext& c) {
     out.population = t.optimizer.run.population;
     out.iterations = t.optimizer.run.iterations;
     const tune::TuneSummary& u = s.tuning;
+    nlohmann::ordered_json rescored = nlohmann::ordered_json::array();
+    for (const tune::Candidate& r : u.rescored)
+      rescored.push_back({{"C", r.params.c}, {"sigma", r.params.kernel.sigma()}, {"rmse", r.loss}});
     nlohmann::ordered_json log = nlohmann::ordered_json::array();
     for (const auto& r : u.optimizer.log) log.push_back(r.best_fitness);
     s.record["search"] = {{"optimizer", opt::to_string(u.optimizer.algorithm)},
                           {"population", t.optimizer.run.population},
                           {"iterations", u.optimizer.iterations},
+                          {"status", opt::to_string(u.optimizer.status)},
                           {"evaluations", u.optimizer.evaluations},
                           {"candidates", u.candidates},
                           {"repeats", u.repeats},
                           {"fits", u.fits},
                           {"raced", u.raced},
+                          {"row_stride", u.stride},
+                          {"rescored", rescored},
                           {"initial_best_rmse", u.optimizer.initial_best_fitness},
                           {"seconds", u.seconds},
                           {"best_rmse_per_iteration", log}};

@@ -192,6 +192,39 @@ OptionTable<O> make_table() {
        {}},
       [](auto& o) -> auto& { return o.train.tune.optimizer.run.iterations; }));
   t.push_back(whole_option<O>(
+      {"stall_iterations",
+       "--stall-iterations",
+       {},
+       "",
+       "≥ 0; 0 runs every iteration",
+       "Stop the search early once its best fitness has improved by less than "
+       "{stall_tolerance} over this many iterations: the search ends when it stops learning, "
+       "and what it returns is what the full run had found by then (docs/tuning.md)",
+       {}},
+      [](auto& o) -> auto& { return o.train.tune.optimizer.run.stall_iterations; }));
+  t.push_back(number_option<O>(
+      {"stall_tolerance",
+       "--stall-tolerance",
+       {},
+       "",
+       "0 … 1, below 1",
+       "The relative improvement of the best fitness that counts as learning for "
+       "{stall_iterations} (0.001: a tenth of a percent)",
+       {}},
+      [](auto& o) -> auto& { return o.train.tune.optimizer.run.stall_tolerance; }));
+  t.push_back(whole_option<O>(
+      {"search_rows",
+       "--search-rows",
+       {},
+       "",
+       "≥ 0; 0 fits every row",
+       "The fewest training rows of a fold the search may thin: a fold with k times as many "
+       "is searched on every k-th row (C × k, every held-out row scored), and the best 3 "
+       "candidates are scored again on all rows. A fit costs the square of its rows "
+       "(docs/tuning.md)",
+       {}},
+      [](auto& o) -> auto& { return o.train.tune.search_rows; }));
+  t.push_back(whole_option<O>(
       {"seed", "--seed", {}, "", "", "Seed of the search (and of bp's weights)", {}},
       [](auto& o) -> auto& { return o.train.tune.optimizer.run.seed; }));
   t.push_back(number_option<O>(

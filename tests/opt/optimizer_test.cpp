@@ -197,6 +197,52 @@ TEST(Optimizers, ProgressCanStopTheRun) {
   }
 }
 
+// The stall rule (RunOptions::stall_iterations) ends a run once the best fitness stops
+// improving; it reads only the best fitness after each iteration, so a stopped run is the full
+// run's prefix, point for point.
+TEST(Optimizers, StallStopsARunAsItsFullRunsPrefix) {
+  const auto& fn = function("sphere");
+  for (Algorithm a : {Algorithm::ssa, Algorithm::pso, Algorithm::gwo}) {
+    OptimizerOptions o;
+    o.algorithm = a;
+    o.run.iterations = 200;
+    const Summary full = minimize(make_problem(fn, 2, 0.1), o);
+    o.run.stall_iterations = 5;
+    o.run.stall_tolerance = 0.01;
+    const Summary stopped = minimize(make_problem(fn, 2, 0.1), o);
+    ASSERT_EQ(stopped.status, Status::converged) << to_string(a);
+    ASSERT_LT(stopped.iterations, 200u);
+    EXPECT_NE(stopped.brief_report().find("converged"), std::string::npos);
+    const std::size_t t = stopped.iterations;
+    EXPECT_EQ(stopped.best_fitness, full.log[t].best_fitness) << to_string(a);
+    EXPECT_EQ(stopped.best_point, full.log[t].best_point);
+    // It stopped at the first iteration where the rule held, and the rule did hold there.
+    for (std::size_t k = 5; k < t; ++k) {
+      const std::vector<IterationRecord> prefix(full.log.begin(),
+                                                full.log.begin() + static_cast<long>(k) + 1);
+      EXPECT_FALSE(stalled(prefix, 5, 0.01)) << to_string(a) << " iteration " << k;
+    }
+    const double then = full.log[t - 5].best_fitness, now = full.log[t].best_fitness;
+    EXPECT_LE(then - now, 0.01 * then);
+  }
+}
+
+TEST(Optimizers, StalledReadsTheBestFitnessOnly) {
+  auto log_of = [](std::vector<double> best) {
+    std::vector<IterationRecord> log;
+    for (double b : best) log.push_back({log.size(), 0, b, 0, {}});
+    return log;
+  };
+  EXPECT_FALSE(stalled(log_of({1, 1, 1}), 0, 0.1));  // 0: never
+  EXPECT_FALSE(stalled(log_of({1, 1}), 2, 0.1));     // not enough iterations yet
+  EXPECT_TRUE(stalled(log_of({1, 1, 1}), 2, 0.0));   // no improvement at all
+  EXPECT_TRUE(stalled(log_of({1, 0.95, 0.91}), 2, 0.1));
+  EXPECT_FALSE(stalled(log_of({1, 0.95, 0.89}), 2, 0.1));  // an 11 % gain
+  EXPECT_TRUE(stalled(log_of({5, 1, 0.95, 0.91}), 2, 0.1));
+  EXPECT_FALSE(stalled(log_of({INFINITY, INFINITY, INFINITY}), 2, 0.1));  // nothing found yet
+  EXPECT_TRUE(stalled(log_of({0, 0, 0}), 2, 0.1));                        // an exact optimum
+}
+
 TEST(Optimizers, NanFitnessIsNeverBest) {
   Problem p = Problem::from_function({-1, -1}, {1, 1}, [](std::span<const double> x) {
     return x[0] > 0 ? std::numeric_limits<double>::quiet_NaN() : test::sphere(x);
@@ -229,6 +275,11 @@ TEST(Optimizers, RejectImpossibleOptions) {
   o = {};
   o.run.iterations = 0;
   expect_option([&] { minimize(good, o); }, "iterations");
+  o = {};
+  o.run.stall_tolerance = 1;
+  expect_option([&] { minimize(good, o); }, "stall_tolerance");
+  o.run.stall_tolerance = -0.1;
+  expect_option([&] { minimize(good, o); }, "stall_tolerance");
   o = {};
   o.ssa.safety_threshold = 0.4;
   expect_option([&] { minimize(good, o); }, "safety_threshold");

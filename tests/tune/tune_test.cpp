@@ -166,6 +166,72 @@ TEST(TuneSvr, MatchesAFineGrid) {
   EXPECT_LE(s.best.kernel.sigma(), o.space.sigma_max * (1 + 1e-12));
 }
 
+// A search on every k-th training row fits with C × k. With every row of the campaign present
+// twice in a row, every second training row is the campaign itself, and C × 2 on it is the same
+// quadratic program as C on both copies (each copy's dual variable holds half): the losses the
+// strided search saw equal the losses on all rows, to the solver's tolerance. The rescored
+// candidates are the search's best, scored on all rows, and the winner is the lowest of them.
+TEST(TuneSvr, AStrideScalesCSoThatDuplicatedRowsLoseNothing) {
+  const Dataset once = synthetic();
+  Dataset twice = once;
+  twice.x.clear(), twice.y.clear(), twice.time_s.clear(), twice.group.clear();
+  const std::size_t cols = once.feature_names.size();
+  for (std::size_t r = 0; r < once.rows; ++r)
+    for (int copy = 0; copy < 2; ++copy) {
+      twice.x.insert(twice.x.end(), once.x.begin() + static_cast<long>(r * cols),
+                     once.x.begin() + static_cast<long>((r + 1) * cols));
+      twice.y.push_back(once.y[r]);
+      twice.time_s.push_back(once.time_s[r]);
+      twice.group.push_back(once.group[r]);
+    }
+  twice.rows = 2 * once.rows;
+  ThreadPool pool(2);
+  TuneOptions o = small_search(opt::Algorithm::ssa, &pool);
+  // Three folds of the four temperatures, dealt in turn: the most training rows of a fold are
+  // three temperatures' 360 rows (720 twice).
+  o.cv.scheme = CvScheme::temperature;
+  o.search_rows = 360;
+  EXPECT_EQ(search_stride(once, o), 1u);
+  EXPECT_EQ(search_stride(twice, o), 2u);
+  o.search_rows = 361;
+  EXPECT_EQ(search_stride(twice, o), 1u);
+  o.search_rows = 240;
+  EXPECT_EQ(search_stride(twice, o), 3u);
+  o.search_rows = 1000;
+  EXPECT_EQ(search_stride(twice, o), 1u);
+  o.search_rows = 0;
+  EXPECT_EQ(search_stride(twice, o), 1u);
+  o.search_rows = 360;
+  const TuneSummary s = tune_svr(twice, o);
+  ASSERT_EQ(s.stride, 2u);
+  TuneOptions all_rows = o;
+  all_rows.search_rows = 0;
+  all_rows.pool = nullptr;
+  std::size_t checked = 0;
+  for (const Candidate& c : s.history) {
+    if (!c.complete || checked == 6) continue;
+    EXPECT_NEAR(svr_loss(twice, c.params, all_rows), c.loss, 3e-3 * c.loss) << "C=" << c.params.c;
+    ++checked;
+  }
+  EXPECT_EQ(checked, 6u);
+  ASSERT_EQ(s.rescored.size(), kRescored);
+  // The first rescored candidate is the search's best.
+  EXPECT_EQ(s.rescored[0].params.c, std::pow(10.0, s.optimizer.best_point[0]));
+  EXPECT_EQ(s.rescored[0].params.kernel, params_at(s.optimizer.best_point, o).kernel);
+  double lowest_rescored = INFINITY;
+  for (const Candidate& c : s.rescored) {
+    EXPECT_NEAR(svr_loss(twice, c.params, all_rows), c.loss, 1e-12 * c.loss);
+    lowest_rescored = std::min(lowest_rescored, c.loss);
+  }
+  EXPECT_EQ(s.best_fitness, lowest_rescored);
+  // The same search without a stride sees the same landscape (the same losses to the solver's
+  // tolerance), so it ends as low.
+  const TuneSummary plain = tune_svr(twice, all_rows);
+  EXPECT_EQ(plain.stride, 1u);
+  EXPECT_TRUE(plain.rescored.empty());
+  EXPECT_NEAR(s.best_fitness, plain.best_fitness, 1e-2 * plain.best_fitness);
+}
+
 TEST(TuneSvr, SearchesEpsilonWhenAsked) {
   const Dataset d = synthetic();
   TuneOptions o = small_search(opt::Algorithm::pso, nullptr);

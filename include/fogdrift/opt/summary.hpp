@@ -21,6 +21,7 @@ Algorithm parse_algorithm(const std::string& text, const std::string& option = "
 enum class Status {
   iteration_limit,  ///< ran every iteration asked for
   stopped,          ///< the progress callback asked to stop
+  converged,        ///< the best stopped improving (RunOptions::stall_iterations)
 };
 
 /// The state after one iteration (iteration 0 is the initial population).
@@ -40,7 +41,13 @@ struct RunOptions {
   std::size_t population = 20;  ///< individuals, ≥ 2 (SSA: ≥ 5 so that every role has one)
   std::size_t iterations = 50;  ///< iterations after the initial population, ≥ 1
   std::uint64_t seed = 1;       ///< the whole run is a function of this seed
-  Progress progress;            ///< optional
+  /// Stop once the best fitness has improved by less than stall_tolerance (relative) over the
+  /// last stall_iterations iterations; 0 runs every iteration. The rule reads only the best
+  /// fitness after each iteration, so a stopped run is the full run's prefix (docs/tuning.md,
+  /// "A search that stops when it stops learning").
+  std::size_t stall_iterations = 0;
+  double stall_tolerance = 1e-3;  ///< relative improvement that counts, in [0, 1)
+  Progress progress;              ///< optional
 };
 
 struct Summary {
@@ -59,6 +66,13 @@ struct Summary {
   /// "ssa: best 0.1234 after 50 iterations, 1020 evaluations, 3.2 s"
   std::string brief_report() const;
 };
+
+/// "iteration_limit", "stopped", "converged".
+std::string to_string(Status status);
+
+/// True when the best fitness after iteration `log.back()` is less than a `tolerance` relative
+/// improvement on the best `iterations` iterations earlier (false before then, or with 0).
+bool stalled(const std::vector<IterationRecord>& log, std::size_t iterations, double tolerance);
 
 /// Throws OptionError naming the option for a population or iteration count out of range.
 void validate(const RunOptions& options, std::size_t min_population = 2);

@@ -19,12 +19,32 @@
 
 namespace fogdrift {
 
+/// Iterations without a 0.1 % gain after which train's search stops (opt::RunOptions; docs/
+/// tuning.md, "A search that stops when it stops learning"). fogdrift paper keeps the paper's
+/// fixed budget.
+inline constexpr std::size_t kTrainStallIterations = 10;
+/// The fewest training rows a fold is thinned to for train's search (tune::TuneOptions::
+/// search_rows; docs/tuning.md, "A search on fewer rows"): the paper's 3 × 11 start-ups (at
+/// most 4,320 a fold) are searched on all their rows, the five-sweep protocol's 5,760 on every
+/// second row, the seven-sweep protocol's 8,640 on every third.
+inline constexpr std::size_t kTrainSearchRows = 2500;
+
+/// The search train runs unless told otherwise: TuneOptions' defaults, stopping on a stall and
+/// fitting at most kTrainSearchRows training rows per fold.
+inline tune::TuneOptions train_search_defaults() {
+  tune::TuneOptions t;
+  t.optimizer.run.stall_iterations = kTrainStallIterations;
+  t.search_rows = kTrainSearchRows;
+  return t;
+}
+
 struct TrainOptions {
   Method method = Method::ssa_svr;
   /// A search for a method whose name implies none (svr with pso is pso-svr, gp's cv fit with
   /// gwo searches by gwo); own: the method's own (resolved()).
   Search search = Search::own;
-  tune::TuneOptions tune;           ///< fitness, folds, search box, optimizer budget, seed, pool
+  /// fitness, folds, search box, optimizer budget and stall rule, seed, pool
+  tune::TuneOptions tune = train_search_defaults();
   MlpOptions mlp;                   ///< BP settings; its seed is set from tune.optimizer.run.seed
   std::size_t poly_max_degree = 3;  ///< highest polynomial degree tried, 1 … 6
   GpOptions gp;                     ///< gp: rows kept and the likelihood search

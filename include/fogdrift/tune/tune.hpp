@@ -92,7 +92,12 @@ struct TuneOptions {
   bool warm_start = true;           ///< warm-start fits from the nearest solved candidate
   bool racing = true;               ///< stop candidates that cannot beat the best (header)
   bool newton = true;               ///< svr::Params::newton of every fit (docs/svr.md)
-  ThreadPool* pool = nullptr;       ///< fits a population in parallel when given
+  /// cv: the fewest training rows a fold may be thinned to for the search. A campaign with at
+  /// least twice as many in a fold is searched on every k-th training row (C × k), the largest
+  /// k that leaves this many, and its best kRescored candidates are scored again on all rows,
+  /// the best of those winning (docs/tuning.md, "A search on fewer rows"). 0: every row.
+  std::size_t search_rows = 0;
+  ThreadPool* pool = nullptr;  ///< fits a population in parallel when given
 };
 
 /// Throws OptionError naming the field: bounds not positive or not increasing, ε outside its
@@ -110,6 +115,13 @@ struct Candidate {
   bool complete = true;
 };
 
+/// Candidates of a search on every k-th row scored again on all rows (TuneOptions::search_rows).
+inline constexpr std::size_t kRescored = 3;
+
+/// The stride of a search on `data` (cv only): the largest fold's training rows divided by
+/// options.search_rows, rounded down, and at least 1; 1 with search_rows 0.
+std::size_t search_stride(const Dataset& data, const TuneOptions& options);
+
 struct TuneSummary {
   svr::Params best;                ///< C, σ (kernel) and ε of the best candidate
   double best_fitness = 0;         ///< RMSE on the standardised target
@@ -122,7 +134,12 @@ struct TuneSummary {
   std::size_t raced = 0;           ///< candidates stopped by racing before their last fold
   double fit_seconds = 0;          ///< sum of the fits' own times (over all threads)
   std::vector<Candidate> history;  ///< every distinct candidate and its loss
-  double seconds = 0;              ///< wall time of the search
+  /// The search's stride (search_stride); above 1, `history` holds the losses of fits on every
+  /// k-th training row and `rescored` the best of them scored again on all rows, best first
+  /// in the search's order; `best` and `best_fitness` are the rescored winner's.
+  std::size_t stride = 1;
+  std::vector<Candidate> rescored;
+  double seconds = 0;  ///< wall time of the search
 };
 
 /// Searches C, σ (and ε) for `data` (training recordings only) with the chosen optimizer.
