@@ -9,7 +9,9 @@ option of `fogdrift train` and Python's fogdrift.train (src/tune/train_option_ta
 `fogdrift denoise` and Python's fogdrift.denoise (src/signal/denoise_option_table.cpp), of
 `fogdrift evaluate` and `fogdrift northfind` and their Python functions
 (src/eval/eval_option_table.cpp), and of
-`fogdrift paper` and `fogdrift demo` (src/report/paper_option_table.cpp). This
+`fogdrift paper` and `fogdrift demo` (src/report/paper_option_table.cpp), and of the chamber of
+`fogdrift plan` (src/sim/scenario_option_table.cpp): every command `fogdrift options --list`
+names. This
 script puts each between its two marker lines on the page, so that the page cannot fall behind
 the code.
 
@@ -22,8 +24,6 @@ import subprocess
 import sys
 
 PAGE = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "docs", "options.md")
-COMMANDS = ("train", "simulate-calibration", "simulate-northfind", "simulate-stable", "stream",
-            "denoise", "evaluate", "northfind", "paper")
 
 
 def markers(command):
@@ -37,7 +37,11 @@ def main(argv):
     with open(PAGE, encoding="utf-8") as f:
         page = f.read()
     wanted = page
-    for command in COMMANDS:
+    # The commands whose options are described once, as the tool lists them: a command added
+    # there without a table on the page fails here.
+    commands = subprocess.run([argv[1], "options", "--list"], check=True, capture_output=True,
+                              text=True).stdout.split()
+    for command in commands:
         table = subprocess.run([argv[1], "options", command], check=True, capture_output=True,
                                text=True).stdout
         begin, end = markers(command)

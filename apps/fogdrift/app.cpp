@@ -21,6 +21,7 @@ void add_commands(CLI::App& app) {
   app.require_subcommand(1);
   app.fallthrough(false);
   add_simulate(app);
+  add_plan(app);
   add_inspect(app);
   add_import(app);
   add_join(app);

@@ -31,6 +31,7 @@ void add_export_c(CLI::App& app);
 void add_northfind(CLI::App& app);
 void add_paper(CLI::App& app);
 void add_stream(CLI::App& app);
+void add_plan(CLI::App& app);
 
 class OptionFlags;
 

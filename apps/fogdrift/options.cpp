@@ -1,7 +1,8 @@
 // fogdrift options: the options of the commands whose options are described once (`fogdrift
 // train`, `simulate`'s protocols, `stream`'s fault policy, `denoise`, `evaluate`, `northfind`,
-// `paper`) and of their Python
+// `paper`, `plan`'s chamber) and of their Python
 // functions, as that one description gives them (option_table.hpp, docs/options.md).
+#include <algorithm>
 #include <iostream>
 #include <nlohmann/json.hpp>
 
@@ -21,7 +22,8 @@ void add_options(CLI::App& app) {
       "stream' and 'fogdrift export-c', Python's StreamingCompensator) or denoise ('fogdrift\n"
       "denoise', Python's fogdrift.denoise) or evaluate or northfind (the commands and their\n"
       "Python functions, find_north too) or paper ('fogdrift paper' and, with its own\n"
-      "defaults, 'fogdrift demo'). The tables in docs/options.md are this output\n"
+      "defaults, 'fogdrift demo') or plan (the chamber of 'fogdrift plan'; --list lists\n"
+      "them all). The tables in docs/options.md are this output\n"
       "(scripts/options_doc.py writes them there).\n"
       "Example:\n"
       "  fogdrift options --json | python3 -c 'import json,sys; print(len(json.load(sys.stdin)))'");
@@ -34,7 +36,18 @@ void add_options(CLI::App& app) {
                 "Print a JSON array instead of Markdown, one object per option: keyword, flag, "
                 "type, unit, default, allowed, doc (other options named by keyword) and help "
                 "(as --help shows it, other options named by flag)");
-  cmd->callback([command, json] {
+  auto list = std::make_shared<bool>(false);
+  cmd->add_flag("--list", *list,
+                "Print the commands whose options are described, one a line (what COMMAND takes)");
+  cmd->callback([command, json, list] {
+    if (*list) {
+      std::string names(report::described_commands());
+      for (char& c : names)
+        if (c == ',') c = '\n';
+      names.erase(std::remove(names.begin(), names.end(), ' '), names.end());
+      std::cout << names << "\n";
+      return;
+    }
     const report::OptionDescriptions described = report::option_descriptions(*command);
     if (!*json) {
       std::cout << options_markdown(described.specs, described.defaults);

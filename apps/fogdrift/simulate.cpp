@@ -125,7 +125,7 @@ void add_simulate(CLI::App& app) {
                   "soak, 30 min powered and recorded, 10 min ramp), repeated; the last repetition "
                   "is the test set.\n"
                   "How each repetition's start-ups begin (--approach A[,B,...]: repetition r takes "
-                  "the r-th, cycling; docs/simulator.md gives the chamber hours of each):\n") +
+                  "the r-th, cycling; 'fogdrift plan' gives the chamber hours of a protocol):\n") +
           kApproachHelp +
           "Example: the protocol that covers the field's start-ups on a unit of unknown physics "
           "(docs/field.md; the last repetition is the test):\n"

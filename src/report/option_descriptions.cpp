@@ -23,7 +23,7 @@ OptionDescriptions described(const OptionTable<O>& table, const O& defaults = O(
 
 std::string_view described_commands() {
   return "train, simulate-calibration, simulate-northfind, simulate-stable, stream, denoise, "
-         "evaluate, northfind, paper";
+         "evaluate, northfind, paper, plan";
 }
 
 OptionDescriptions option_descriptions(std::string_view command, const std::string& option) {
@@ -37,6 +37,7 @@ OptionDescriptions option_descriptions(std::string_view command, const std::stri
   if (command == "evaluate") return described(eval::evaluation_option_table());
   if (command == "northfind") return described(eval::finding_option_table());
   if (command == "paper") return described(paper_option_table());
+  if (command == "plan") return described(sim::chamber_option_table());
   throw OptionError(option, fmt::format("'{}' is not one of {}", command, described_commands()));
 }
 

@@ -189,7 +189,58 @@ OptionTable<NorthfindOptions> make_northfind() {
   return t;
 }
 
+OptionTable<ChamberOptions> make_chamber() {
+  using O = ChamberOptions;
+  OptionTable<O> t;
+  t.push_back(number_option<O>(
+      {"start_degc",
+       "--start-degc",
+       {},
+       "°C",
+       "-70 … 100",
+       "The unit's temperature, at equilibrium, when the chamber starts",
+       {}},
+      [](auto& o) -> auto& { return o.start_degc; }));
+  t.push_back(number_option<O>(
+      {"chamber_ramp_degc_per_min",
+       "--chamber-ramp-degc-per-min",
+       {},
+       "°C/min",
+       "> 0, ≤ 100",
+       "How fast the chamber moves between set points (a ramping start-up's own ramp is "
+       "--ramp-degc-per-min)",
+       {}},
+      [](auto& o) -> auto& { return o.chamber_ramp_degc_per_min; }));
+  t.push_back(number_option<O>(
+      {"settled_within_degc",
+       "--settled-within-degc",
+       {},
+       "°C",
+       "0.001 … 10",
+       "Equilibrium, which soaked, warm and ramping start-ups begin from: every node of the "
+       "instrument this close to the air",
+       {}},
+      [](auto& o) -> auto& { return o.settled_within_degc; }));
+  t.push_back(on_off_option<O>(
+      {"chain_warm",
+       "--chain-warm",
+       {},
+       "",
+       "",
+       "Run each warm repetition's start-up right after a soaked repetition's at the same set "
+       "point (off, then on again): the history the simulator gives it, without a soak of its "
+       "own",
+       {}},
+      [](auto& o) -> auto& { return o.chain_warm; }));
+  return t;
+}
+
 }  // namespace
+
+const OptionTable<ChamberOptions>& chamber_option_table() {
+  static const OptionTable<ChamberOptions> table = make_chamber();
+  return table;
+}
 
 const OptionTable<CalibrationOptions>& calibration_option_table() {
   static const OptionTable<CalibrationOptions> table = make_calibration();

@@ -15,6 +15,24 @@ check "no subcommand is a usage error" run 106 "$fd"
 
 # --- simulate + inspect ---------------------------------------------------------------------
 check "simulate calibration" run 0 "$fd" simulate calibration --out "$work/cal" --seed 1
+
+# --- plan: a protocol's chamber hours (docs/field.md, "Chamber hours") -------------------------
+check "plan the seven-sweep protocol" run 0 "$fd" plan --repetitions 7 --approach calibration,soaked,warm,ramping,warm,warm,calibration
+check "plan says the hours" out_has "chamber hours: 222.7 (9.3 days)"
+check "plan chains the first warm sweep" out_has "11 warm start-ups chained to soaked ones"
+check "plan --json --schedule" run 0 "$fd" plan --json --schedule --temps 0,10
+check "plan's steps add up" python3 -c '
+import json, sys
+d = json.load(open(sys.argv[1]))
+steps = sum(s["seconds"] for s in d["steps"]) / 3600
+parts = d["move_hours"] + sum(r["hours"] for r in d["repetitions"])
+assert abs(steps - d["hours"]) < 1e-9 and abs(parts - d["hours"]) < 1e-9, d
+assert [r["role"] for r in d["repetitions"]] == ["train", "train", "train", "test"], d
+assert sum(s["action"] == "powered (recorded)" for s in d["steps"]) == 8, d' "$work/out"
+check "plan refuses a chamber that does not move" run 1 "$fd" plan --chamber-ramp-degc-per-min 0
+check "plan names the chamber's flag" err_has "option --chamber-ramp-degc-per-min: 0 °C/min is outside (0, 100]"
+check "plan refuses a protocol simulate refuses" run 1 "$fd" plan --repetitions 0
+check "plan names the protocol's flag" err_has "option --repetitions: 0 is outside [1, 100]"
 check "44 recordings" test "$(ls "$work/cal"/*.csv | wc -l)" -eq 44
 check "manifest written" test -f "$work/cal/campaign.json"
 check "inspect accepts the campaign" run 0 "$fd" inspect "$work/cal"

@@ -5,6 +5,7 @@
 #pragma once
 
 #include "fogdrift/base/option_table.hpp"
+#include "fogdrift/sim/chamber.hpp"
 #include "fogdrift/sim/scenarios.hpp"
 
 namespace fogdrift::sim {
@@ -14,5 +15,7 @@ const OptionTable<CalibrationOptions>& calibration_option_table();
 /// `simulate northfind`'s and `simulate stable`'s options; stable's defaults are
 /// stable_defaults()'s.
 const OptionTable<NorthfindOptions>& northfind_option_table();
+/// The chamber a protocol's hours are counted in (`fogdrift plan`; chamber.hpp).
+const OptionTable<ChamberOptions>& chamber_option_table();
 
 }  // namespace fogdrift::sim
