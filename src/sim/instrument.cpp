@@ -117,7 +117,9 @@ std::vector<InstrumentField> instrument_fields(Instrument& in) {
   f.push_back({"fog.quantization_arcsec", "″", 0, 100, false,
                "angle quantum of the output (0: none)", &g.quantization_arcsec});
   f.push_back({"fog.fine_step_s", "s", 0, 1, true,
-               "integration step; must divide the output interval", &g.fine_step_s});
+               "integration step; must divide the output interval, or exceed it (a logger above "
+               "10 Hz is then integrated at its interval)",
+               &g.fine_step_s});
   add_accel(f, "accel_x", in.accel_x);
   add_accel(f, "accel_y", in.accel_y);
   TurntableParams& tt = in.turntable;

@@ -43,10 +43,13 @@ constexpr double kChamberResolutionDegc = 1e-3;
 constexpr double kTableResolutionDeg = 1e-6;
 
 // Number of fine steps in one output interval; the interval must be a whole number of steps.
+// An interval shorter than the fine step (a kilohertz logger over the default 0.1 s step) is one
+// step: the integration is then finer than asked, never coarser.
 int substeps(double interval_s, double fine_step_s) {
   const double ratio = interval_s / fine_step_s;
+  if (ratio <= 1.0) return 1;
   const double whole = std::round(ratio);
-  if (whole < 1.0 || std::abs(ratio - whole) > 1e-6 * ratio) {
+  if (std::abs(ratio - whole) > 1e-6 * ratio) {
     throw OptionError("output_rate_hz",
                       fmt::format("the output interval {} s is not a whole number of fine steps "
                                   "of {} s (instrument.fog.fine_step_s)",

@@ -46,8 +46,9 @@ void add_site_and_start_up(OptionTable<O>& t, std::initializer_list<const char*>
        "--rate-hz",
        {},
        "Hz",
-       "> 0, ≤ 1000",
-       "Logger output rate",
+       "> 0, ≤ 2000",
+       "Logger output rate (an interval shorter than the instrument's fine step, 0.1 s by "
+       "default, is integrated at the interval)",
        in(scenarios, "output_rate_hz")},
       [](auto& o) -> auto& { return o.output_rate_hz; }));
   t.push_back(number_option<O>(

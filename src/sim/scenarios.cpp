@@ -66,8 +66,10 @@ void check_temps(const std::vector<double>& temps, const std::string& option) {
 }
 
 void check_rate(double rate_hz, const std::string& field) {
-  if (!std::isfinite(rate_hz) || rate_hz <= 0.0 || rate_hz > 1000.0) {
-    throw OptionError(field, fmt::format("{} is outside (0, 1000] Hz", rate_hz));
+  if (!std::isfinite(rate_hz) || rate_hz <= 0.0 || rate_hz > 2000.0) {
+    throw OptionError(field, fmt::format("{} is outside (0, 2000] Hz: north-finders log at up to "
+                                         "2 kHz",
+                                         rate_hz));
   }
 }
 

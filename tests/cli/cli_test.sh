@@ -523,6 +523,17 @@ check "evaluate at 10 Hz: rows at the model's rate" python3 -c 'import json,sys;
 check "stream at 10 Hz" run 0 "$fd" stream "$work/causal.json" "$work/nf10/nf_20C.csv" --rate-hz 10
 check "stream at 10 Hz equals compensate" bash -c "cut -d, -f1-14 '$work/out' | cmp -s - '$work/comp10.csv'"
 check "stream at 10 Hz unflagged" bash -c "awk -F, 'NR>1 && \$15!=0{bad=1} END{exit bad}' '$work/out'"
+# A kilohertz logger from the default instrument: its 0.1 s step is finer than asked no more, so
+# the simulator integrates at the interval; 2 kHz is the highest rate.
+check "simulate at 2 kHz" run 0 "$fd" simulate northfind --out "$work/nf2k" --temps 20 --findings 1 --rate-hz 2000 --position-s 20
+check "2 kHz rows" python3 -c '
+import csv, sys
+rows = list(csv.reader(open(sys.argv[1])))
+t = [float(r[0]) for r in rows[1:]]
+assert len(t) == 2000 * 80, len(t)
+assert all(abs(b - a - 0.0005) < 1e-9 for a, b in zip(t, t[1:])), "not every 0.5 ms"' "$work/nf2k/nf_20C.csv"
+check "simulate above 2 kHz" run 1 "$fd" simulate northfind --out "$work/nf3k" --temps 20 --findings 1 --rate-hz 3000
+check "above 2 kHz message" err_has "option --rate-hz: 3000 is outside (0, 2000] Hz"
 check "stream slower than the model" run 1 "$fd" stream "$work/causal.json" "$rec20" --rate-hz 0.5
 check "stream slower message" err_has "option --rate-hz: the data come every 2 s (0.5 Hz), slower than the model's 1 s (1 Hz)"
 check "stream not a whole fraction" run 1 "$fd" stream "$work/causal.json" "$rec20" --rate-hz 1.5

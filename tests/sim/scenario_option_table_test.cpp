@@ -107,7 +107,7 @@ TEST(ScenarioOptionTable, ValidationErrorsAreAnsweredByAnOption) {
                                                           {"position_s", "5"},
                                                           {"soak_s", "-1"},
                                                           {"latitude_deg", "-86"},
-                                                          {"output_rate_hz", "2000"},
+                                                          {"output_rate_hz", "2001"},
                                                           {"warm_off_s", "2e6"},
                                                           {"ramp_degc_per_min", "500"}}) {
       NorthfindOptions o;
