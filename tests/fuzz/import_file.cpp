@@ -10,6 +10,7 @@
 
 #include "fogdrift/io/import.hpp"
 #include "fogdrift/io/join.hpp"
+#include "fogdrift/io/timestamp.hpp"
 #include "fuzz_util.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {

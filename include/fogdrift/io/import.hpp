@@ -43,14 +43,6 @@ struct LinearConversion {
   bool clock = false;
 };
 
-/// Seconds since 1970-01-01 00:00:00 UTC of "YYYY-MM-DD[T| ]HH:MM[:SS[.fraction]][Z|±HH:MM]"
-/// (no zone: read as UTC); nothing for any other text.
-std::optional<double> parse_datetime(std::string_view text);
-
-/// Seconds since midnight of a time of day "H:MM", "HH:MM", "HH:MM:SS" or "HH:MM:SS.fraction"
-/// (hours 0-23); nothing for any other text.
-std::optional<double> parse_clock(std::string_view text);
-
 /// The conversion named by `unit` for fogdrift column `column` (e.g. "gyro_dph", "rad/s").
 /// Throws OptionError naming "--unit COLUMN=UNIT" and the units that column accepts.
 LinearConversion parse_unit(std::string_view column, std::string_view unit);
