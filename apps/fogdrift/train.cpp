@@ -92,6 +92,23 @@ void print_summary(const TrainArgs& a, const CampaignTrainResult& trained,
           "  search: {}; {} distinct candidates ({} stopped early by "
           "racing), {} SVR fits\n",
           s.tuning.optimizer.brief_report(), s.tuning.candidates, s.tuning.raced, s.tuning.fits);
+    if (s.tuning.optimizer.status == opt::Status::converged)
+      std::cout << fmt::format(
+          "  stopped learning: less than {:g} % better over its last {} iterations "
+          "(--stall-iterations, --stall-tolerance)\n",
+          100 * a.options.train.tune.optimizer.run.stall_tolerance,
+          a.options.train.tune.optimizer.run.stall_iterations);
+    if (s.tuning.stride > 1) {
+      std::string rescored;
+      for (const tune::Candidate& c : s.tuning.rescored)
+        rescored +=
+            fmt::format("{}C = {:.4g}, sigma = {:.3g}: {:.5f}", rescored.empty() ? "" : "; ",
+                        c.params.c, c.params.kernel.sigma(), c.loss);
+      std::cout << fmt::format(
+          "  searched on one training row in {} (C x {}), the best {} rescored on all rows: {} "
+          "(--search-rows)\n",
+          s.tuning.stride, s.tuning.stride, s.tuning.rescored.size(), rescored);
+    }
     if (s.boxes.size() > 1) {
       const auto& b = s.boxes.back();
       std::cout << fmt::format(
