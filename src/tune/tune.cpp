@@ -179,6 +179,7 @@ TuneSummary tune_svr(const Dataset& data, const TuneOptions& options) {
   out.stride = stride;
   if (stride > 1) {
     out.rescored = rescored(data, options, out.history);
+    out.fits += out.rescored.size() * std::max<std::size_t>(1, out.folds.size());
     const auto best =
         std::min_element(out.rescored.begin(), out.rescored.end(),
                          [](const Candidate& a, const Candidate& b) { return a.loss < b.loss; });

@@ -30,7 +30,7 @@ inline constexpr std::size_t kTrainStallIterations = 10;
 inline constexpr std::size_t kTrainSearchRows = 2500;
 
 /// The search train runs unless told otherwise: TuneOptions' defaults, stopping on a stall and
-/// fitting at most kTrainSearchRows training rows per fold.
+/// thinning a large campaign's folds to no fewer than kTrainSearchRows training rows.
 inline tune::TuneOptions train_search_defaults() {
   tune::TuneOptions t;
   t.optimizer.run.stall_iterations = kTrainStallIterations;

@@ -129,7 +129,7 @@ struct TuneSummary {
   std::vector<std::string> folds;  ///< fold names (empty for the training loss)
   std::size_t candidates = 0;      ///< distinct candidates evaluated
   std::size_t repeats = 0;         ///< evaluations answered from the memo
-  std::size_t fits = 0;            ///< SVR fits made
+  std::size_t fits = 0;            ///< SVR fits made, the rescored candidates' included
   std::size_t warm_fits = 0;       ///< of which warm-started
   std::size_t raced = 0;           ///< candidates stopped by racing before their last fold
   double fit_seconds = 0;          ///< sum of the fits' own times (over all threads)
