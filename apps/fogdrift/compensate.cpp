@@ -64,10 +64,9 @@ void run(const CompensateArgs& a) {
   check_output_not_input(a.output, "--output");
   std::vector<Axis> axes;
   for (CompensatedAxis& c : compensate_file(set, a.input, a.output, !a.no_guard)) {
-    Axis x;
-    static_cast<CompensatedAxis&>(x) = std::move(c);
-    x.metrics = eval::compensation_metrics(x.reading, x.prediction.drift_dph);
-    axes.push_back(std::move(x));
+    const eval::CompensationMetrics metrics =
+        eval::compensation_metrics(c.reading, c.prediction.drift_dph);
+    axes.push_back({std::move(c), metrics});
   }
 
   if (a.json) {

@@ -2,7 +2,9 @@
 // train`, `simulate`'s protocols, `stream`'s fault policy, `denoise`, `evaluate`, `northfind`,
 // `paper`, `plan`'s chamber) and of their Python
 // functions, as that one description gives them (option_table.hpp, docs/options.md).
-#include <algorithm>
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
 #include <iostream>
 #include <nlohmann/json.hpp>
 
@@ -29,7 +31,7 @@ void add_options(CLI::App& app) {
       "  fogdrift options --json | python3 -c 'import json,sys; print(len(json.load(sys.stdin)))'");
   auto command = std::make_shared<std::string>("train");
   cmd->add_option("COMMAND", *command,
-                  std::string("Whose options: ") + std::string(report::described_commands()))
+                  fmt::format("Whose options: {}", fmt::join(report::described_commands(), ", ")))
       ->capture_default_str();
   auto json = std::make_shared<bool>(false);
   cmd->add_flag("--json", *json,
@@ -41,11 +43,7 @@ void add_options(CLI::App& app) {
                 "Print the commands whose options are described, one a line (what COMMAND takes)");
   cmd->callback([command, json, list] {
     if (*list) {
-      std::string names(report::described_commands());
-      for (char& c : names)
-        if (c == ',') c = '\n';
-      names.erase(std::remove(names.begin(), names.end(), ' '), names.end());
-      std::cout << names << "\n";
+      for (std::string_view name : report::described_commands()) std::cout << name << "\n";
       return;
     }
     const report::OptionDescriptions described = report::option_descriptions(*command);

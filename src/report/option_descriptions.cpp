@@ -2,6 +2,9 @@
 #include "fogdrift/report/option_descriptions.hpp"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
+
+#include <array>
 
 #include "fogdrift/base/error.hpp"
 #include "fogdrift/eval/eval_option_table.hpp"
@@ -19,26 +22,39 @@ OptionDescriptions described(const OptionTable<O>& table, const O& defaults = O(
   return {specs_of(table), defaults_of(table, defaults)};
 }
 
+/// Each command whose options are described, and its table: the one list `fogdrift options`,
+/// its --list and docs/options.md (scripts/options_doc.py) go by.
+struct Command {
+  std::string_view name;
+  OptionDescriptions (*describe)();
+};
+const std::array<Command, 10> kCommands = {{
+    {"train", [] { return described(train_option_table()); }},
+    {"simulate-calibration", [] { return described(sim::calibration_option_table()); }},
+    {"simulate-northfind", [] { return described(sim::northfind_option_table()); }},
+    {"simulate-stable",
+     [] { return described(sim::northfind_option_table(), sim::stable_defaults()); }},
+    {"stream", [] { return described(fault_option_table()); }},
+    {"denoise", [] { return described(signal::denoise_option_table()); }},
+    {"evaluate", [] { return described(eval::evaluation_option_table()); }},
+    {"northfind", [] { return described(eval::finding_option_table()); }},
+    {"paper", [] { return described(paper_option_table()); }},
+    {"plan", [] { return described(sim::chamber_option_table()); }},
+}};
+
 }  // namespace
 
-std::string_view described_commands() {
-  return "train, simulate-calibration, simulate-northfind, simulate-stable, stream, denoise, "
-         "evaluate, northfind, paper, plan";
+std::vector<std::string_view> described_commands() {
+  std::vector<std::string_view> names;
+  for (const Command& c : kCommands) names.push_back(c.name);
+  return names;
 }
 
 OptionDescriptions option_descriptions(std::string_view command, const std::string& option) {
-  if (command == "train") return described(train_option_table());
-  if (command == "simulate-calibration") return described(sim::calibration_option_table());
-  if (command == "simulate-northfind") return described(sim::northfind_option_table());
-  if (command == "simulate-stable")
-    return described(sim::northfind_option_table(), sim::stable_defaults());
-  if (command == "stream") return described(fault_option_table());
-  if (command == "denoise") return described(signal::denoise_option_table());
-  if (command == "evaluate") return described(eval::evaluation_option_table());
-  if (command == "northfind") return described(eval::finding_option_table());
-  if (command == "paper") return described(paper_option_table());
-  if (command == "plan") return described(sim::chamber_option_table());
-  throw OptionError(option, fmt::format("'{}' is not one of {}", command, described_commands()));
+  for (const Command& c : kCommands)
+    if (c.name == command) return c.describe();
+  throw OptionError(
+      option, fmt::format("'{}' is not one of {}", command, fmt::join(described_commands(), ", ")));
 }
 
 nlohmann::ordered_json options_json(const OptionDescriptions& d) {

@@ -6,17 +6,11 @@
 #include <array>
 #include <chrono>
 #include <cmath>
-#include <functional>
 #include <limits>
-#include <map>
-#include <memory>
-#include <mutex>
 #include <numeric>
-#include <set>
 
 #include "fogdrift/base/enum_names.hpp"
 #include "fogdrift/base/error.hpp"
-#include "fogdrift/base/thread_pool.hpp"
 #include "tune/svr_objective.hpp"
 
 namespace fogdrift::tune {

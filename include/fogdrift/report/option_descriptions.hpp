@@ -18,9 +18,9 @@ struct OptionDescriptions {
   std::vector<std::string> defaults;
 };
 
-/// The commands described: "train, simulate-calibration, simulate-northfind, simulate-stable,
-/// stream, denoise, evaluate, northfind, paper".
-std::string_view described_commands();
+/// The commands described, in order: train, simulate-calibration, simulate-northfind,
+/// simulate-stable, stream, denoise, evaluate, northfind, paper, plan.
+std::vector<std::string_view> described_commands();
 
 /// The options of `command` (one of described_commands()); OptionError(`option`) naming the
 /// commands for another.
