@@ -24,10 +24,6 @@ struct PlanArgs {
   bool schedule = false;
 };
 
-std::string role_of(const sim::CalibrationOptions& p, int repetition) {
-  return repetition > p.repetitions - p.test_repetitions ? "test" : "train";
-}
-
 nlohmann::ordered_json to_json(const sim::CalibrationOptions& p, const sim::ChamberSchedule& s,
                                bool with_steps) {
   nlohmann::ordered_json j;
@@ -39,12 +35,10 @@ nlohmann::ordered_json to_json(const sim::CalibrationOptions& p, const sim::Cham
   j["chained_warm_start_ups"] = s.chained_warm_start_ups;
   j["repetitions"] = nlohmann::ordered_json::array();
   for (int r = 1; r <= p.repetitions; ++r)
-    j["repetitions"].push_back(
-        {{"repetition", r},
-         {"approach",
-          sim::to_string(p.approaches[static_cast<std::size_t>(r - 1) % p.approaches.size()])},
-         {"role", role_of(p, r)},
-         {"hours", s.repetition_hours[static_cast<std::size_t>(r - 1)]}});
+    j["repetitions"].push_back({{"repetition", r},
+                                {"approach", sim::to_string(sim::approach_of(p, r))},
+                                {"role", to_string(sim::role_of(p, r))},
+                                {"hours", s.repetition_hours[static_cast<std::size_t>(r - 1)]}});
   if (with_steps) {
     j["steps"] = nlohmann::ordered_json::array();
     for (const sim::ChamberStep& st : s.steps)
@@ -67,10 +61,9 @@ void print(const sim::CalibrationOptions& p, const sim::ChamberSchedule& s, bool
       p.temps_degc.front(), p.temps_degc.back(), s.settle_10degc_s / 3600);
   std::cout << "| repetition | approach | role | chamber hours |\n|---|---|---|---|\n";
   for (int r = 1; r <= p.repetitions; ++r)
-    std::cout << fmt::format(
-        "| {} | {} | {} | {:.1f} |\n", r,
-        sim::to_string(p.approaches[static_cast<std::size_t>(r - 1) % p.approaches.size()]),
-        role_of(p, r), s.repetition_hours[static_cast<std::size_t>(r - 1)]);
+    std::cout << fmt::format("| {} | {} | {} | {:.1f} |\n", r,
+                             sim::to_string(sim::approach_of(p, r)), to_string(sim::role_of(p, r)),
+                             s.repetition_hours[static_cast<std::size_t>(r - 1)]);
   std::cout << fmt::format("| moves between passes | | | {:.1f} |\n\n", s.move_hours);
   if (with_steps) {
     std::cout << "| repetition | approach | set point °C | action | air °C | minutes |\n"

@@ -47,7 +47,9 @@ class Chamber {
       if (t >= kLongestSettleS)
         throw OptionError("settled_within_degc",
                           fmt::format("the instrument comes no closer than {:.3g} °C to the "
-                                      "air in 7 days; a larger margin settles sooner",
+                                      "air in 7 days, longer than any chamber waits: check "
+                                      "its thermal capacities and conductances, or give a "
+                                      "larger margin",
                                       distance()));
       network_.step(temps_, dt_s_, air_, air_, false);
       t += dt_s_;
@@ -137,9 +139,6 @@ ChamberSchedule chamber_schedule(const Instrument& instrument, const Calibration
   validate(instrument);
   validate(p);
   validate(o);
-  const auto approach_of = [&p](int r) {
-    return p.approaches[static_cast<std::size_t>(r - 1) % p.approaches.size()];
-  };
   // A warm repetition rides on a soaked one when the soaked start-up's powered time is the warm
   // history's first run: each soaked repetition takes the first warm one not yet taken.
   std::vector<Pass> passes;
@@ -147,10 +146,10 @@ ChamberSchedule chamber_schedule(const Instrument& instrument, const Calibration
   const bool chain = o.chain_warm && p.powered_s == kWarmFirstRunS;
   for (int r = 1; r <= p.repetitions; ++r) {
     if (taken[static_cast<std::size_t>(r)]) continue;
-    Pass pass{r, approach_of(r), 0};
+    Pass pass{r, approach_of(p, r), 0};
     if (chain && pass.approach == Approach::soaked)
       for (int w = 1; w <= p.repetitions; ++w)
-        if (approach_of(w) == Approach::warm && !taken[static_cast<std::size_t>(w)]) {
+        if (approach_of(p, w) == Approach::warm && !taken[static_cast<std::size_t>(w)]) {
           pass.chained_warm = w;
           taken[static_cast<std::size_t>(w)] = 1;
           break;
@@ -188,8 +187,10 @@ ChamberSchedule chamber_schedule(const Instrument& instrument, const Calibration
         for (double t : temps) {
           move(c, t == temps.front() ? 0 : r, a, t, t, o);
           settle(c, r, a, t);
-          if (a == Approach::warm) hold(c, r, a, t, "powered", kWarmFirstRunS, true);
-          if (a == Approach::warm) hold(c, r, a, t, "off", p.warm_off_s, false);
+          if (a == Approach::warm) {
+            hold(c, r, a, t, "powered", kWarmFirstRunS, true);
+            hold(c, r, a, t, "off", p.warm_off_s, false);
+          }
           hold(c, r, a, t, "powered (recorded)", p.powered_s, true);
           if (pass.chained_warm != 0) {
             hold(c, pass.chained_warm, Approach::warm, t, "off", p.warm_off_s, false);
@@ -216,7 +217,6 @@ ChamberSchedule chamber_schedule(const Instrument& instrument, const Calibration
 
   ChamberSchedule& s = c.schedule;
   s.repetition_hours.assign(static_cast<std::size_t>(p.repetitions), 0.0);
-  const int first_test = p.repetitions - p.test_repetitions + 1;
   for (const ChamberStep& step : s.steps) {
     const double h = step.seconds / 3600.0;
     s.hours += h;
@@ -225,7 +225,7 @@ ChamberSchedule chamber_schedule(const Instrument& instrument, const Calibration
       continue;
     }
     s.repetition_hours[static_cast<std::size_t>(step.repetition - 1)] += h;
-    if (step.repetition >= first_test) s.test_hours += h;
+    if (role_of(p, step.repetition) == Role::test) s.test_hours += h;
   }
   s.settle_10degc_s = settle_seconds(instrument, 0.0, kStepDegc, o.settled_within_degc);
   return s;

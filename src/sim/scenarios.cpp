@@ -279,6 +279,14 @@ void validate(const NorthfindOptions& o, const std::string& name) {
   check_latitude(o.latitude_deg, name + ".latitude_deg");
 }
 
+Approach approach_of(const CalibrationOptions& o, int repetition) {
+  return o.approaches[static_cast<std::size_t>(repetition - 1) % o.approaches.size()];
+}
+
+Role role_of(const CalibrationOptions& o, int repetition) {
+  return repetition > o.repetitions - o.test_repetitions ? Role::test : Role::train;
+}
+
 SimulatedCampaign simulate_calibration(const Instrument& instrument, const CalibrationOptions& o) {
   validate(instrument);
   validate(o);
@@ -306,7 +314,7 @@ SimulatedCampaign simulate_calibration(const Instrument& instrument, const Calib
       const double f = std::min(1.0, (into - hold) / o.ramp_s);
       return reached[i] + f * (reached[i + 1] - reached[i]);
     };
-    const Approach approach = o.approaches[static_cast<std::size_t>(rep - 1) % o.approaches.size()];
+    const Approach approach = approach_of(o, rep);
     // Each sweep starts from equilibrium at its first temperature: between sweeps the chamber
     // returns to it and soaks the instrument completely.
     NodeTemps start;
@@ -341,7 +349,7 @@ SimulatedCampaign simulate_calibration(const Instrument& instrument, const Calib
       CampaignEntry e;
       e.file = fmt::format("cal_r{}_{}.csv", rep, temperature_tag(o.temps_degc[i]));
       e.scenario = Scenario::calibration;
-      e.role = rep > o.repetitions - o.test_repetitions ? Role::test : Role::train;
+      e.role = role_of(o, rep);
       e.repetition = rep;
       e.initial_temp_degc = o.temps_degc[i];
       e.true_azimuth_deg = setup.platform.true_azimuth_deg();

@@ -33,6 +33,12 @@ check "plan refuses a chamber that does not move" run 1 "$fd" plan --chamber-ram
 check "plan names the chamber's flag" err_has "option --chamber-ramp-degc-per-min: 0 °C/min is outside (0, 100]"
 check "plan refuses a protocol simulate refuses" run 1 "$fd" plan --repetitions 0
 check "plan names the protocol's flag" err_has "option --repetitions: 0 is outside [1, 100]"
+check "plan refuses a missing instrument" run 1 "$fd" plan --instrument "$work/no_such_unit.json"
+check "plan names the missing file" err_has "$work/no_such_unit.json"
+printf '{"thermal": {"capacity_j_per_k": {"housing": 1e7}}}' >"$work/slow_unit.json"
+check "plan refuses a unit that never settles" run 1 "$fd" plan --instrument "$work/slow_unit.json"
+check "plan says why" err_has "option --settled-within-degc: the instrument comes no closer than"
+rm -f "$work/slow_unit.json"
 check "44 recordings" test "$(ls "$work/cal"/*.csv | wc -l)" -eq 44
 check "manifest written" test -f "$work/cal/campaign.json"
 check "inspect accepts the campaign" run 0 "$fd" inspect "$work/cal"

@@ -148,6 +148,17 @@ TEST(Chamber, ImpossibleSettingsNameTheirOption) {
   o = {};
   o.start_degc = NAN;
   expect_option(o, "start_degc");
+  // A unit that would take months to settle is refused, not scheduled for a week and called
+  // settled.
+  Instrument slow;
+  slow.thermal.capacity_j_per_k[0] = 1e7;  // the housing: τ ≈ 1e7 J/K / 1.2 W/K, some 96 days
+  try {
+    chamber_schedule(slow, CalibrationOptions{});
+    ADD_FAILURE() << "no error for an instrument that does not settle";
+  } catch (const OptionError& e) {
+    EXPECT_EQ(e.option(), "settled_within_degc");
+    EXPECT_NE(std::string(e.what()).find("in 7 days"), std::string::npos) << e.what();
+  }
   CalibrationOptions p;
   p.repetitions = 0;
   try {

@@ -67,6 +67,12 @@ struct CalibrationOptions {
   std::uint64_t seed = 1;
 };
 
+/// The approach repetition `repetition` (1 …) starts up by: approaches[(repetition − 1) mod
+/// their count].
+Approach approach_of(const CalibrationOptions& options, int repetition);
+/// Role::test for the last test_repetitions repetitions, Role::train for the others.
+Role role_of(const CalibrationOptions& options, int repetition);
+
 std::string_view to_string(Approach approach);
 /// Throws OptionError naming `option` for an unknown name.
 Approach approach_from_string(std::string_view name, const std::string& option);
