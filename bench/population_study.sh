@@ -18,7 +18,10 @@
 # the summary covers every instrument with a row in $POPULATION_OUT.
 # $POPULATION_CAL_APPROACHES and $POPULATION_CAL_REPETITIONS, if set, replace the calibration
 # protocol (default calibration,soaked,warm,ramping over 5 repetitions; docs/field.md, "Three
-# warm sweeps", ran calibration,soaked,warm,ramping,warm,warm,calibration over 7).
+# warm sweeps", ran calibration,soaked,warm,ramping,warm,warm,calibration over 7);
+# $POPULATION_CAL_TEMPS, if set, replaces its set points (°C, comma-separated; default the
+# paper's eleven, -40 to 60 by 10), and $POPULATION_CAL_START_UP_TEMPS those of its soaked, warm
+# and ramping sweeps alone (default: the same; docs/field.md, "Protocols worth their hours").
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 fd=${1:-$root/build}/apps/fogdrift/fogdrift
@@ -42,6 +45,8 @@ out=${POPULATION_OUT:-$work/results}
 nf_temps=${POPULATION_NF_TEMPS:--38,-32,-27,-21,-16,-10,-5,1,6,12,17,23,28,34,39,45,50,56}
 cal_approaches=${POPULATION_CAL_APPROACHES:-calibration,soaked,warm,ramping}
 cal_repetitions=${POPULATION_CAL_REPETITIONS:-5}
+cal_temps=${POPULATION_CAL_TEMPS:--40,-30,-20,-10,0,10,20,30,40,50,60}
+cal_start_up_temps=${POPULATION_CAL_START_UP_TEMPS:-$cal_temps}
 if ! [[ $cal_repetitions =~ ^[0-9]+$ ]] || ((cal_repetitions < 2)); then
   echo "population_study.sh: POPULATION_CAL_REPETITIONS: '$cal_repetitions' is not a whole number ≥ 2" >&2
   exit 2
@@ -57,7 +62,8 @@ one() { # one instrument: $1 = its number; a failed step fails the instrument, n
   mkdir -p "$d"
   local inst="$work/units/$unit.json" start=$SECONDS
   "$fd" simulate calibration --force --out "$d/cal" --seed "$k" --repetitions "$cal_repetitions" \
-    --approach "$cal_approaches" --instrument "$inst" >/dev/null
+    --approach "$cal_approaches" --temps="$cal_temps" \
+    --start-up-temps="$cal_start_up_temps" --instrument "$inst" >/dev/null
   for a in calibration soaked warm ramping; do
     "$fd" simulate northfind --force --out "$d/nf_$a" --seed "$k" --approach "$a" \
       --temps "$nf_temps" --instrument "$inst" >/dev/null
@@ -103,7 +109,7 @@ PY
   echo "unit $k done" >&2
 }
 export -f one
-export fd work out nf_temps cal_approaches cal_repetitions
+export fd work out nf_temps cal_approaches cal_repetitions cal_temps cal_start_up_temps
 TRAIN_FLAGS=("$@")
 export TRAIN_FLAGS_STR="${*:-}"
 units=${POPULATION_UNITS:-$(seq -s ' ' "$count")}

@@ -23,8 +23,8 @@ def _value(option):
         return int(text)
     if kind in ("number", "seconds or auto") and text != "auto":
         return float(text)
-    if kind == "numbers":
-        return [float(v) for v in text.split(",")]
+    if kind == "numbers":  # "" is an empty list (simulate's start_up_temps_degc: the temps)
+        return [float(v) for v in text.split(",")] if text else []
     if kind == "mapping":
         return {}
     return text

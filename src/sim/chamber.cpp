@@ -161,7 +161,7 @@ ChamberSchedule chamber_schedule(const Instrument& instrument, const Calibration
   for (const Pass& pass : passes) {
     const int r = pass.repetition;
     const Approach a = pass.approach;
-    std::vector<double> temps = p.temps_degc;
+    std::vector<double> temps = temps_of(p, r);
     // Soaked and warm start-ups begin at equilibrium: either way round gives them their
     // history, so the pass starts at the end nearer the chamber.
     if ((a == Approach::soaked || a == Approach::warm) &&

@@ -76,6 +76,23 @@ OptionTable<CalibrationOptions> make_calibration() {
   using O = CalibrationOptions;
   OptionTable<O> t;
   t.push_back(temps_option<O>("Chamber temperatures of the cycles, in order", kCalibration));
+  {
+    const OptionSpec spec{"start_up_temps_degc",
+                          "--start-up-temps",
+                          OptionType::numbers,
+                          "°C",
+                          "-70 … 100; empty: --temps",
+                          "Set points of the soaked, warm and ramping repetitions, in order "
+                          "(default: --temps; a calibration repetition always sweeps --temps). "
+                          "Fewer of them save most of a protocol's chamber hours (docs/field.md, "
+                          "\"Protocols worth their hours\")",
+                          in(kCalibration, "start_up_temps_degc")};
+    t.push_back({spec, [](const O& o) { return option_numbers_text(o.start_up_temps_degc); },
+                 [spec](O& o, const std::string& text) {
+                   o.start_up_temps_degc =
+                       text.empty() ? std::vector<double>{} : parse_numbers_option(spec, text);
+                 }});
+  }
   t.push_back(whole_option<O>(
       {"repetitions",
        "--repetitions",

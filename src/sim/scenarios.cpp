@@ -52,6 +52,8 @@ std::string generator_json(std::string_view scenario, std::uint64_t seed, double
     g["approaches"] = list;
     g["warm_off_s"] = calibration->warm_off_s;
     g["ramp_degc_per_min"] = calibration->ramp_degc_per_min;
+    if (!calibration->start_up_temps_degc.empty())
+      g["start_up_temps_degc"] = calibration->start_up_temps_degc;
   }
   return g.dump();
 }
@@ -232,6 +234,8 @@ NorthfindOptions stable_defaults() {
 
 void validate(const CalibrationOptions& o) {
   check_temps(o.temps_degc, "calibration.temps_degc");
+  if (!o.start_up_temps_degc.empty())
+    check_temps(o.start_up_temps_degc, "calibration.start_up_temps_degc");
   if (o.repetitions < 1 || o.repetitions > 100) {
     throw OptionError("calibration.repetitions",
                       fmt::format("{} is outside [1, 100]", o.repetitions));
@@ -287,6 +291,11 @@ Role role_of(const CalibrationOptions& o, int repetition) {
   return repetition > o.repetitions - o.test_repetitions ? Role::test : Role::train;
 }
 
+const std::vector<double>& temps_of(const CalibrationOptions& o, int repetition) {
+  const bool afresh = approach_of(o, repetition) != Approach::calibration;
+  return afresh && !o.start_up_temps_degc.empty() ? o.start_up_temps_degc : o.temps_degc;
+}
+
 SimulatedCampaign simulate_calibration(const Instrument& instrument, const CalibrationOptions& o) {
   validate(instrument);
   validate(o);
@@ -295,17 +304,18 @@ SimulatedCampaign simulate_calibration(const Instrument& instrument, const Calib
   out.campaign.generator_json =
       generator_json("calibration", o.seed, o.output_rate_hz, nullptr, &o);
   const double cycle_s = o.soak_s + o.powered_s + o.ramp_s;
-  const std::size_t n_temps = o.temps_degc.size();
 
   for (int rep = 1; rep <= o.repetitions; ++rep) {
+    const std::vector<double>& temps = temps_of(o, rep);
+    const std::size_t n_temps = temps.size();
     // The chamber reaches each set point within its own control error, drawn per cycle.
     Rng chamber_rng(derive_seed(o.seed, kChamberStream + static_cast<std::uint64_t>(rep)));
     std::vector<double> reached(n_temps);
     for (std::size_t i = 0; i < n_temps; ++i) {
-      reached[i] = o.temps_degc[i] + o.chamber_setpoint_sd_degc * chamber_rng.normal();
+      reached[i] = temps[i] + o.chamber_setpoint_sd_degc * chamber_rng.normal();
     }
     // Air profile of one sweep: hold for soak + powered time, then ramp to the next set point.
-    const AirProfile air = [&, cycle_s](double t) {
+    const AirProfile air = [&, cycle_s, n_temps](double t) {
       const double c = std::floor(t / cycle_s);
       const std::size_t i = static_cast<std::size_t>(std::clamp(c, 0.0, double(n_temps - 1)));
       const double into = t - static_cast<double>(i) * cycle_s;
@@ -347,11 +357,11 @@ SimulatedCampaign simulate_calibration(const Instrument& instrument, const Calib
       if (approach == Approach::calibration) nfs.advance(o.ramp_s, air, false);
 
       CampaignEntry e;
-      e.file = fmt::format("cal_r{}_{}.csv", rep, temperature_tag(o.temps_degc[i]));
+      e.file = fmt::format("cal_r{}_{}.csv", rep, temperature_tag(temps[i]));
       e.scenario = Scenario::calibration;
       e.role = role_of(o, rep);
       e.repetition = rep;
-      e.initial_temp_degc = o.temps_degc[i];
+      e.initial_temp_degc = temps[i];
       e.true_azimuth_deg = setup.platform.true_azimuth_deg();
       rec.source = e.file;
       out.campaign.recordings.push_back(e);

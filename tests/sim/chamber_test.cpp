@@ -130,6 +130,26 @@ TEST(Chamber, ARampingStartUpBeginsTenDegreesBelow) {
   EXPECT_EQ(recorded[1]->air_to_degc, 20.0);
 }
 
+// A soaked start-up costs its settling; on fewer set points the soaked and warm sweeps cost
+// fewer hours, and the calibration sweep keeps its own set points and hours.
+TEST(Chamber, FewerStartUpSetPointsCostFewerHours) {
+  CalibrationOptions p;
+  p.repetitions = 3;
+  p.test_repetitions = 0;
+  p.approaches = {Approach::calibration, Approach::soaked, Approach::warm};
+  const ChamberSchedule full = chamber_schedule(Instrument{}, p);
+  p.start_up_temps_degc = {-40, -7, 27, 60};
+  const ChamberSchedule sparse = chamber_schedule(Instrument{}, p);
+  EXPECT_NEAR(sparse.repetition_hours[0], full.repetition_hours[0], 1e-9);
+  EXPECT_LT(sparse.repetition_hours[1], full.repetition_hours[1] * 0.5);
+  EXPECT_EQ(sparse.chained_warm_start_ups, 4u);
+  std::vector<double> soaked;
+  for (const ChamberStep& st : sparse.steps)
+    if (st.repetition == 2 && st.action == "powered (recorded)")
+      soaked.push_back(st.set_point_degc);
+  EXPECT_EQ(soaked, (std::vector<double>{60, 27, -7, -40}));  // from the sweep's end, 60 °C
+}
+
 TEST(Chamber, ImpossibleSettingsNameTheirOption) {
   auto expect_option = [](ChamberOptions o, const std::string& option) {
     try {

@@ -86,6 +86,7 @@ TEST(ScenarioOptionTable, ValidationErrorsAreAnsweredByAnOption) {
   const auto check_cal = [](const CalibrationOptions& o) { validate(o); };
   for (const auto& [keyword, text] :
        std::vector<std::pair<std::string, std::string>>{{"temps_degc", "150"},
+                                                        {"start_up_temps_degc", "0,150"},
                                                         {"repetitions", "0"},
                                                         {"test_repetitions", "9"},
                                                         {"soak_s", "-1"},

@@ -68,6 +68,34 @@ TEST(Calibration, SameSeedSameBytesOtherSeedOtherNoise) {
   EXPECT_EQ(manifest_json(a.campaign), manifest_json(b.campaign));
 }
 
+// Start-ups that begin afresh may visit fewer set points than the calibration sweep: each
+// repetition's recordings are at its own set points, and a start-up recording is the one the
+// full protocol makes at that set point (its seed is its repetition's and place's).
+TEST(Calibration, StartUpRepetitionsVisitTheirOwnSetPoints) {
+  CalibrationOptions o;
+  o.temps_degc = {-40, -30, -20};
+  o.repetitions = 2;
+  o.test_repetitions = 0;
+  o.approaches = {Approach::calibration, Approach::soaked};
+  o.powered_s = 120;
+  const auto full = simulate_calibration(Instrument{}, o);
+  o.start_up_temps_degc = {-40, -20};
+  const auto sparse = simulate_calibration(Instrument{}, o);
+  ASSERT_EQ(full.recordings.size(), 6u);
+  ASSERT_EQ(sparse.recordings.size(), 5u);
+  std::vector<double> first, second;
+  for (const CampaignEntry& e : sparse.campaign.recordings)
+    (e.repetition == 1 ? first : second).push_back(e.initial_temp_degc);
+  EXPECT_EQ(first, o.temps_degc);
+  EXPECT_EQ(second, o.start_up_temps_degc);
+  for (std::size_t i = 0; i < 4; ++i)  // the calibration sweep and the first start-up
+    EXPECT_EQ(to_csv(sparse.recordings[i]), to_csv(full.recordings[i])) << i;
+  EXPECT_EQ(sparse.campaign.recordings[4].file, "cal_r2_m20C.csv");
+  EXPECT_NE(manifest_json(sparse.campaign), manifest_json(full.campaign));  // says so
+  o.start_up_temps_degc = {-40, 150};
+  EXPECT_THROW(validate(o), OptionError);
+}
+
 // The default instrument is paper-like (denoised start-up STD 0.01–0.02 °/h, paper 0.0134;
 // docs/simulator.md §5).
 TEST(Calibration, StartUpDriftStatisticsArePaperLike) {

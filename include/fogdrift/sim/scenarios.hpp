@@ -48,6 +48,12 @@ enum class Approach {
 struct CalibrationOptions {
   /// Chamber temperatures of the cycles, °C, in order (default −40, −30, …, 60).
   std::vector<double> temps_degc{-40, -30, -20, -10, 0, 10, 20, 30, 40, 50, 60};
+  /// Set points of the repetitions that start each cycle afresh (soaked, warm, ramping), °C, in
+  /// order; empty: temps_degc. A calibration repetition keeps temps_degc: its start-ups' history
+  /// is the sweep's steps between them. A soaked start-up costs hours of settling a set point,
+  /// so fewer of them is most of what a cheaper protocol saves (docs/field.md, "Protocols worth
+  /// their hours").
+  std::vector<double> start_up_temps_degc;
   int repetitions = 4;        ///< whole temperature sweeps, >= 1
   int test_repetitions = 1;   ///< the last this many repetitions get role "test", >= 0
   double soak_s = 1200.0;     ///< unpowered soak at the cycle temperature before power-on, s
@@ -72,6 +78,9 @@ struct CalibrationOptions {
 Approach approach_of(const CalibrationOptions& options, int repetition);
 /// Role::test for the last test_repetitions repetitions, Role::train for the others.
 Role role_of(const CalibrationOptions& options, int repetition);
+/// The set points repetition `repetition` (1 …) visits, in order: start_up_temps_degc for a
+/// soaked, warm or ramping one where given, else temps_degc.
+const std::vector<double>& temps_of(const CalibrationOptions& options, int repetition);
 
 std::string_view to_string(Approach approach);
 /// Throws OptionError naming `option` for an unknown name.
