@@ -2,16 +2,22 @@
 // (docs/field.md, "Chamber hours").
 #include <fmt/format.h>
 
+#include <cmath>
 #include <iostream>
 #include <memory>
 #include <nlohmann/json.hpp>
+#include <optional>
 
 #include "cli_util.hpp"
 #include "commands.hpp"
+#include "fogdrift/base/atomic_file.hpp"
 #include "fogdrift/base/error.hpp"
+#include "fogdrift/base/run_files.hpp"
 #include "fogdrift/base/text_file.hpp"
+#include "fogdrift/report/protocol_figure.hpp"
 #include "fogdrift/sim/chamber.hpp"
 #include "fogdrift/sim/instrument.hpp"
+#include "fogdrift/sim/protocol_front.hpp"
 #include "fogdrift/sim/scenario_option_table.hpp"
 #include "option_flags.hpp"
 
@@ -22,7 +28,50 @@ struct PlanArgs {
   std::string instrument_file;
   bool json = false;
   bool schedule = false;
+  std::optional<double> hours;
+  std::string service = "calibration,soaked,warm,ramping";
+  std::string figures;  ///< with --hours: the front as PNG and JSON here; empty: none
+  bool force = false;
 };
+
+/// `fogdrift simulate calibration` with the flags that make `p`: those not at their default.
+std::string simulate_command(const sim::CalibrationOptions& p) {
+  const auto& table = sim::calibration_option_table();
+  const std::vector<std::string> defaults = defaults_of(table, sim::CalibrationOptions{});
+  std::string cmd = "fogdrift simulate calibration";
+  for (std::size_t i = 0; i < table.size(); ++i) {
+    const std::string text = table[i].text_of(p);
+    if (text != defaults[i]) cmd += " " + table[i].spec.flag + "=" + text;
+  }
+  return cmd;
+}
+
+nlohmann::ordered_json shares_json(const std::array<sim::PopulationShare, 4>& shares) {
+  nlohmann::ordered_json j;
+  for (std::size_t c = 0; c < shares.size(); ++c)
+    j[std::string(sim::to_string(sim::kServiceConditions[c]))] = {
+        {"median_pct", shares[c].median_pct},
+        {"p10_pct", shares[c].p10_pct},
+        {"worst_pct", shares[c].worst_pct}};
+  return j;
+}
+
+nlohmann::ordered_json priced_json(const sim::PricedProtocol& p) {
+  return {{"name", p.studied->name},
+          {"service_hours", p.service_hours},
+          {"hours", p.schedule.hours},
+          {"simulate", simulate_command(p.studied->protocol)},
+          {"worst_median_pct", p.worst_median_pct},
+          {"worst_p10_pct", p.worst_p10_pct},
+          {"worst_pct", p.worst_worst_pct},
+          {"on_front", p.on_front},
+          {"meets_goal", p.meets_goal},
+          {"batch", shares_json(p.studied->batch)},
+          {"causal", shares_json(p.studied->causal)},
+          {"instruments", p.studied->instruments},
+          {"worse_than_raw", p.studied->worse_than_raw},
+          {"train_median_s", p.studied->train_median_s}};
+}
 
 nlohmann::ordered_json to_json(const sim::CalibrationOptions& p, const sim::ChamberSchedule& s,
                                bool with_steps) {
@@ -59,6 +108,10 @@ void print(const sim::CalibrationOptions& p, const sim::ChamberSchedule& s, bool
       "equilibrium after a 10 °C step: {:.1f} h (this instrument's thermal network)\n\n",
       p.repetitions, sim::approaches_to_string(p.approaches), p.temps_degc.size(),
       p.temps_degc.front(), p.temps_degc.back(), s.settle_10degc_s / 3600);
+  if (!p.start_up_temps_degc.empty())
+    std::cout << fmt::format("soaked, warm and ramping sweeps at {} set points: {} °C\n\n",
+                             p.start_up_temps_degc.size(),
+                             option_numbers_text(p.start_up_temps_degc));
   std::cout << "| repetition | approach | role | chamber hours |\n|---|---|---|---|\n";
   for (int r = 1; r <= p.repetitions; ++r)
     std::cout << fmt::format("| {} | {} | {} | {:.1f} |\n", r,
@@ -85,6 +138,93 @@ void print(const sim::CalibrationOptions& p, const sim::ChamberSchedule& s, bool
       s.hours, s.hours / 24, s.test_hours, s.chained_warm_start_ups);
 }
 
+std::string share_cells(const std::array<sim::PopulationShare, 4>& shares) {
+  std::string row;
+  for (const sim::PopulationShare& x : shares)
+    row += fmt::format(" {:g} / {:g} / {:g} |", x.median_pct, x.p10_pct, x.worst_pct);
+  return row;
+}
+
+/// What --hours prints: the chosen protocol, what it removed on the population, and the others.
+void print_choice(const sim::PricedProtocol& chosen, const std::vector<sim::PricedProtocol>& all,
+                  double budget, const std::string& service) {
+  const sim::StudiedProtocol& s = *chosen.studied;
+  std::cout << fmt::format(
+      "{:g} chamber hours for a unit that will meet {} start-ups buy: {}, {:.1f} h ({:.1f} days) "
+      "in this chamber, the test sweep left out\n"
+      "run it (the last sweep is the test a unit calibrated for service does without):\n"
+      "  {}\n\n"
+      "what it removed on the population (docs/field.md, \"Protocols worth their hours\"), "
+      "% of the removable north-finding error, median / 10th percentile / worst, guard on:\n"
+      "| path | calibration | soaked | warm | ramping |\n|---|---|---|---|---|\n"
+      "| batch |{}\n| causal |{}\n"
+      "worst over {}, batch and causal: median {:g} %, 10th percentile {:g} %; of {} "
+      "instruments × 4 conditions × 2 paths, {} worse than raw\n\n",
+      budget, service, s.name, chosen.service_hours, chosen.service_hours / 24,
+      simulate_command(s.protocol), share_cells(s.batch), share_cells(s.causal), service,
+      chosen.worst_median_pct, chosen.worst_p10_pct, s.instruments, s.worse_than_raw);
+  if (!chosen.meets_goal) {
+    const auto goal = sim::cheapest_meeting_goal(all);
+    std::cout << fmt::format(
+        "note: this protocol misses the goal on the population (every median ≥ {:g} % and every "
+        "10th percentile ≥ {:g} %); {}\n\n",
+        sim::kGoalMedianPct, sim::kGoalP10Pct,
+        goal ? fmt::format("the cheapest that meets it, {}, needs {:.1f} h here",
+                           goal->studied->name, goal->service_hours)
+             : std::string("none studied meets it under these conditions"));
+  }
+  std::cout << "every studied protocol in this chamber, cheapest first (* on the front: no "
+               "cheaper one has as high a worst 10th percentile):\n"
+               "| protocol | service hours | worst median / 10th percentile / worst, % | |\n"
+               "|---|---|---|---|\n";
+  for (const sim::PricedProtocol& p : all)
+    std::cout << fmt::format("| {} | {:.1f} | {:g} / {:g} / {:g} | {}{} |\n", p.studied->name,
+                             p.service_hours, p.worst_median_pct, p.worst_p10_pct,
+                             p.worst_worst_pct, p.on_front ? "*" : "",
+                             p.studied == chosen.studied ? " chosen" : "");
+  std::cout << "\n";
+}
+
+/// --hours: the protocol the budget buys, its figures first (a folder that cannot be written
+/// fails the command before anything is printed), then the choice as text or JSON.
+void choose(const PlanArgs& a, const sim::Instrument& instrument, const sim::ChamberOptions& c) {
+  if (!a.figures.empty()) check_output_not_input(a.figures, "--figures");
+  const auto priced =
+      sim::price_protocols(instrument, c, sim::approaches_from_string(a.service, "service"));
+  const auto chosen = sim::choose_protocol(priced, *a.hours);
+  if (!chosen)
+    throw OptionError(
+        "--hours", fmt::format("{:g} h buys no studied protocol: the cheapest, {}, "
+                               "needs {:.1f} h in this chamber; give --hours {:.0f} "
+                               "or more",
+                               *a.hours, priced.front().studied->name, priced.front().service_hours,
+                               std::ceil(priced.front().service_hours)));
+  if (!a.figures.empty()) {
+    std::vector<std::string> problems;
+    fill_directory_atomically(a.figures, a.force, [&](const std::filesystem::path& folder) {
+      problems = report::write_figures({report::protocol_front_figure(priced, *a.hours)}, folder);
+    });
+    std::cerr << "Wrote protocol_front (PNG and JSON) to " << a.figures << "/\n";
+    for (const std::string& p : problems) std::cerr << "fogdrift plan: no PNG: " << p << "\n";
+  }
+  if (!a.json) {
+    print_choice(*chosen, priced, *a.hours, a.service);
+    print(chosen->studied->protocol, chosen->schedule, a.schedule);
+    return;
+  }
+  nlohmann::ordered_json j;
+  j["budget_hours"] = *a.hours;
+  j["service"] = a.service;
+  j["chosen"] = priced_json(*chosen);
+  const auto goal = sim::cheapest_meeting_goal(priced);
+  j["goal_needs_hours"] =
+      goal ? nlohmann::ordered_json(goal->service_hours) : nlohmann::ordered_json(nullptr);
+  j["protocol"] = to_json(chosen->studied->protocol, chosen->schedule, a.schedule);
+  j["studied"] = nlohmann::ordered_json::array();
+  for (const auto& p : priced) j["studied"].push_back(priced_json(p));
+  std::cout << j.dump(2) << "\n";
+}
+
 }  // namespace
 
 void add_plan(CLI::App& app) {
@@ -96,9 +236,11 @@ void add_plan(CLI::App& app) {
       "(equilibrium where a start-up needs it) and the chamber's ramp rate. The protocol is "
       "given as to 'fogdrift simulate calibration', which runs it (docs/field.md, \"Chamber "
       "hours\").\n"
-      "Example, the protocol docs/field.md recommends for a unit of unknown physics:\n"
+      "Examples: the protocol docs/field.md recommends for a unit of unknown physics, and the "
+      "one 60 chamber hours buy (\"Protocols worth their hours\"):\n"
       "  fogdrift plan --repetitions 7 "
-      "--approach calibration,soaked,warm,ramping,warm,warm,calibration");
+      "--approach calibration,soaked,warm,ramping,warm,warm,calibration\n"
+      "  fogdrift plan --hours 60 --schedule");
   const auto protocol = std::make_shared<OptionFlags>(
       cmd, specs_of(sim::calibration_option_table()),
       defaults_of(sim::calibration_option_table(), sim::CalibrationOptions{}),
@@ -112,9 +254,29 @@ void add_plan(CLI::App& app) {
   cmd->add_flag("--schedule", args->schedule,
                 "Also list every step of the chamber in order (set point, action, air, minutes)");
   cmd->add_flag("--json", args->json, "Print JSON (with --schedule, every step) instead of text");
-  cmd->callback([args, protocol, chamber] {
-    sim::CalibrationOptions p;
-    protocol->apply(sim::calibration_option_table(), p);
+  cmd->add_option("--hours", args->hours,
+                  "Instead of pricing the protocol given, choose one: of the protocols studied on "
+                  "the population, the one whose worst 10th percentile under --service is "
+                  "highest within this many service chamber hours (the test sweep left out), "
+                  "priced for this instrument and chamber (docs/field.md, \"Protocols worth "
+                  "their hours\")")
+      ->check(CLI::PositiveNumber);
+  auto* service =
+      cmd->add_option("--service", args->service,
+                      "With --hours: the start-up conditions the unit will meet in service, "
+                      "comma-separated (calibration, soaked, warm, ramping)")
+          ->capture_default_str();
+  cmd->add_option("--figures", args->figures,
+                  "With --hours: write the studied protocols against their hours "
+                  "(protocol_front.png for people, .json for machines) into this new folder");
+  cmd->add_flag("--force", args->force, "Replace the --figures folder if it exists");
+  cmd->callback([args, protocol, chamber, service] {
+    if (service->count() > 0 && !args->hours)
+      throw OptionError("--service", "names the conditions --hours chooses for; give --hours H");
+    if (!args->figures.empty() && !args->hours)
+      throw OptionError("--figures", "draws the protocols --hours chooses among; give --hours H");
+    if (args->force && args->figures.empty())
+      throw OptionError("--force", "replaces the folder of --figures; give --figures DIR with it");
     sim::ChamberOptions c;
     chamber->apply(sim::chamber_option_table(), c);
     const sim::Instrument instrument =
@@ -122,6 +284,26 @@ void add_plan(CLI::App& app) {
             ? sim::Instrument{}
             : sim::instrument_from_json(read_text_file(args->instrument_file),
                                         args->instrument_file);
+    if (args->hours) {
+      if (!protocol->given().empty()) {
+        const std::string keyword = protocol->given().front().first;
+        std::string flag = keyword;
+        for (const OptionSpec& spec : specs_of(sim::calibration_option_table()))
+          if (spec.keyword == keyword) flag = spec.flag;
+        throw OptionError("--hours", fmt::format("chooses the protocol, and {} gives one: drop "
+                                                 "one of them",
+                                                 flag));
+      }
+      try {
+        choose(*args, instrument, c);
+      } catch (const OptionError& e) {
+        if (e.option() == "service") throw OptionError("--service", e.message());
+        throw e.option().rfind("--", 0) == 0 ? e : chamber->named(e);
+      }
+      return;
+    }
+    sim::CalibrationOptions p;
+    protocol->apply(sim::calibration_option_table(), p);
     sim::ChamberSchedule s;
     try {
       s = sim::chamber_schedule(instrument, p, c);

@@ -39,6 +39,39 @@ printf '{"thermal": {"capacity_j_per_k": {"housing": 1e7}}}' >"$work/slow_unit.j
 check "plan refuses a unit that never settles" run 1 "$fd" plan --instrument "$work/slow_unit.json"
 check "plan says why" err_has "option --settled-within-degc: the instrument comes no closer than"
 rm -f "$work/slow_unit.json"
+# --- plan --hours: a protocol for a chamber budget (docs/field.md, "Protocols worth their hours")
+check "plan --hours 60" run 0 "$fd" plan --hours 60 --json
+check "plan --hours keeps to the budget and its command runs" python3 -c '
+import json, shlex, subprocess, sys
+d = json.load(open(sys.argv[1]))
+c = d["chosen"]
+assert c["service_hours"] <= 60 and c["worst_median_pct"] >= 85 and c["worst_p10_pct"] >= 60, c
+assert c["instruments"] == 20 and c["on_front"], c
+assert abs(d["protocol"]["hours"] - c["hours"]) < 1e-9, d["protocol"]
+args = shlex.split(c["simulate"])
+assert args[:3] == ["fogdrift", "simulate", "calibration"], args
+out = sys.argv[3]
+subprocess.run([sys.argv[2]] + args[1:] + ["--out", out], check=True, stdout=subprocess.DEVNULL)
+m = json.load(open(out + "/campaign.json"))
+reps = d["protocol"]["repetitions"]
+assert max(r["repetition"] for r in m["recordings"]) == len(reps), m["recordings"][-1]
+' "$work/out" "$fd" "$work/planned"
+rm -rf "$work/planned"
+check "plan --hours prints its command" run 0 "$fd" plan --hours 60
+check "plan --hours names its choice" out_has "run it (the last sweep is the test"
+check "plan --hours 30" run 0 "$fd" plan --hours 30
+check "plan says a cheap choice misses the goal" out_has "note: this protocol misses the goal on the population"
+check "plan says what meets it" out_has "the cheapest that meets it, four start-up set points, needs 57.9 h here"
+check "plan --service alone is refused" run 1 "$fd" plan --service soaked
+check "plan says --service needs --hours" err_has "option --service: names the conditions --hours chooses for"
+check "plan refuses a budget nothing fits" run 1 "$fd" plan --hours 5
+check "plan says what it would take" err_has "option --hours: 5 h buys no studied protocol: the cheapest"
+check "plan refuses a protocol and a budget" run 1 "$fd" plan --hours 60 --approach soaked
+check "plan says which to drop" err_has "option --hours: chooses the protocol, and --approach gives one"
+check "plan refuses a service condition that is not one" run 1 "$fd" plan --hours 60 --service warm,sweep
+check "plan names --service" err_has "option --service: sweep is not a start-up condition"
+check "simulate refuses a start-up set point out of range" run 1 "$fd" simulate calibration --out "$work/bad_cal" --start-up-temps=0,150
+check "simulate names --start-up-temps" err_has "option --start-up-temps: 150 °C is outside [-70, 100]"
 check "44 recordings" test "$(ls "$work/cal"/*.csv | wc -l)" -eq 44
 check "manifest written" test -f "$work/cal/campaign.json"
 check "inspect accepts the campaign" run 0 "$fd" inspect "$work/cal"

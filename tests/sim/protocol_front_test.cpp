@@ -1,0 +1,103 @@
+// The studied protocols, priced and chosen: each is a protocol the simulator runs, the front is
+// the running best of the worst 10th percentile, and the choice keeps to the budget.
+#include "fogdrift/sim/protocol_front.hpp"
+
+#include <gtest/gtest.h>
+
+#include "fogdrift/base/error.hpp"
+
+namespace fogdrift::sim {
+namespace {
+
+const std::vector<Approach> kAll(kServiceConditions.begin(), kServiceConditions.end());
+
+TEST(ProtocolFront, EveryStudiedProtocolIsOneTheSimulatorRuns) {
+  ASSERT_FALSE(studied_protocols().empty());
+  for (const StudiedProtocol& s : studied_protocols()) {
+    EXPECT_NO_THROW(validate(s.protocol)) << s.name;
+    // The last sweep is the test, begun as the paper's cycle; every other one is trained on.
+    EXPECT_EQ(s.protocol.test_repetitions, 1) << s.name;
+    EXPECT_EQ(approach_of(s.protocol, s.protocol.repetitions), Approach::calibration) << s.name;
+    for (const auto* path : {&s.batch, &s.causal})
+      for (const PopulationShare& x : *path) {
+        EXPECT_LE(x.worst_pct, x.p10_pct) << s.name;
+        EXPECT_LE(x.p10_pct, x.median_pct) << s.name;
+      }
+  }
+}
+
+TEST(ProtocolFront, PricedCheapestFirstWithTheFrontMarked) {
+  const auto priced = price_protocols(Instrument{}, ChamberOptions{}, kAll);
+  ASSERT_EQ(priced.size(), studied_protocols().size());
+  double best = -1e300;
+  for (std::size_t i = 0; i < priced.size(); ++i) {
+    const PricedProtocol& p = priced[i];
+    if (i > 0) EXPECT_LE(priced[i - 1].service_hours, p.service_hours);
+    EXPECT_NEAR(p.service_hours, p.schedule.hours - p.schedule.test_hours, 1e-9);
+    EXPECT_EQ(p.on_front, p.worst_p10_pct > best) << p.studied->name;
+    best = std::max(best, p.worst_p10_pct);
+    // The worst over all four conditions is no better than over any one of them.
+    for (Approach a : kAll) {
+      const auto one = price_protocols(Instrument{}, ChamberOptions{}, {a});
+      for (const PricedProtocol& q : one)
+        if (q.studied == p.studied) EXPECT_GE(q.worst_p10_pct, p.worst_p10_pct);
+    }
+  }
+}
+
+TEST(ProtocolFront, TheChoiceKeepsToTheBudgetAndTakesTheHighestTenthPercentile) {
+  const auto priced = price_protocols(Instrument{}, ChamberOptions{}, kAll);
+  EXPECT_FALSE(choose_protocol(priced, priced.front().service_hours - 0.1));
+  for (double budget : {20.0, 40.0, 60.0, 100.0, 250.0}) {
+    const auto chosen = choose_protocol(priced, budget);
+    if (!chosen) {
+      EXPECT_GT(priced.front().service_hours, budget);
+      continue;
+    }
+    EXPECT_LE(chosen->service_hours, budget);
+    EXPECT_TRUE(chosen->on_front) << budget;
+    for (const PricedProtocol& p : priced)
+      if (p.service_hours <= budget) EXPECT_LE(p.worst_p10_pct, chosen->worst_p10_pct);
+  }
+  // The cheapest meeting the goal is the first that does.
+  const auto goal = cheapest_meeting_goal(priced);
+  ASSERT_TRUE(goal);
+  EXPECT_TRUE(goal->meets_goal);
+  EXPECT_GE(goal->worst_median_pct, kGoalMedianPct);
+  EXPECT_GE(goal->worst_p10_pct, kGoalP10Pct);
+  for (const PricedProtocol& p : priced)
+    if (p.service_hours < goal->service_hours) EXPECT_FALSE(p.meets_goal) << p.studied->name;
+  // A tie goes to the cheaper.
+  std::vector<PricedProtocol> tie(2, priced.front());
+  tie[1].service_hours += 5;
+  EXPECT_EQ(choose_protocol(tie, 1e9)->service_hours, tie[0].service_hours);
+}
+
+// The goal of docs/field.md, "Protocols worth their hours": within 60 chamber hours on the
+// default instrument, a protocol whose population study has every median ≥ 85 % and every 10th
+// percentile ≥ 60 %, batch and causal, on all 20 instruments. (Its cells worse than raw are
+// the one part of the goal it misses; the page says which and why.)
+TEST(ProtocolFront, SixtyHoursBuyTheGoalOnThePopulation) {
+  const auto chosen = choose_protocol(price_protocols(Instrument{}, ChamberOptions{}, kAll), 60);
+  ASSERT_TRUE(chosen);
+  EXPECT_LE(chosen->service_hours, 60.0);
+  EXPECT_GE(chosen->worst_median_pct, 85.0) << chosen->studied->name;
+  EXPECT_GE(chosen->worst_p10_pct, 60.0) << chosen->studied->name;
+  EXPECT_TRUE(chosen->meets_goal);
+  EXPECT_EQ(chosen->studied->instruments, 20) << chosen->studied->name;
+}
+
+TEST(ProtocolFront, ServiceConditionsAreStartUps) {
+  for (const std::vector<Approach>& bad :
+       {std::vector<Approach>{}, std::vector<Approach>{Approach::soaked, Approach::sweep}}) {
+    try {
+      price_protocols(Instrument{}, ChamberOptions{}, bad);
+      ADD_FAILURE() << "accepted";
+    } catch (const OptionError& e) {
+      EXPECT_EQ(e.option(), "service");
+    }
+  }
+}
+
+}  // namespace
+}  // namespace fogdrift::sim
