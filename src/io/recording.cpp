@@ -155,7 +155,9 @@ std::vector<double> Recording::numeric_column(std::string_view name) const {
 
 namespace {
 
-Recording read_table(const std::filesystem::path& path, bool partial) {
+/// `keep_extra`: the columns beyond the known ones to hold; null: every one.
+Recording read_table(const std::filesystem::path& path, bool partial,
+                     const std::vector<std::string>* keep_extra = nullptr) {
   // Row by row: a kilohertz log costs its numbers, not a string per field (csv_rows.hpp).
   std::ifstream in = open_text_file(path);
   csv::RowReader table(in, path.string());
@@ -181,10 +183,14 @@ Recording read_table(const std::filesystem::path& path, bool partial) {
   std::vector<std::vector<double>*> numbers(header.size(), nullptr);
   std::vector<std::optional<Plausible>> ranges(header.size());
   std::vector<std::size_t> extra_of(header.size(), 0);
+  std::vector<char> left(header.size(), 0);  // an extra column not held
   for (std::size_t c = 0; c < header.size(); ++c) {
     numbers[c] = known_column(rec, header[c], true);
     if (numbers[c]) {
       ranges[c] = plausible_range(header[c]);
+    } else if (keep_extra &&
+               std::find(keep_extra->begin(), keep_extra->end(), header[c]) == keep_extra->end()) {
+      left[c] = 1;
     } else {
       extra_of[c] = rec.extra.size();
       rec.extra.push_back({header[c], {}});
@@ -200,6 +206,7 @@ Recording read_table(const std::filesystem::path& path, bool partial) {
     row_line.push_back(line);
     for (std::size_t c = 0; c < fields.size(); ++c) {
       const std::string_view cell = fields[c];
+      if (left[c]) continue;
       if (numbers[c] == nullptr) {
         if (true_drift == c && !csv::parse_number(cell))
           throw InputError(file, line, c + 1,
@@ -234,6 +241,11 @@ Recording read_table(const std::filesystem::path& path, bool partial) {
 
 Recording read_recording(const std::filesystem::path& path) {
   return read_table(path, false);
+}
+
+Recording read_recording(const std::filesystem::path& path,
+                         const std::vector<std::string>& keep_extra) {
+  return read_table(path, false, &keep_extra);
 }
 
 Recording read_log(const std::filesystem::path& path) {

@@ -23,7 +23,13 @@ std::vector<CompensatedAxis> compensate_file(const ModelSet& set,
                                              const std::filesystem::path& input,
                                              const std::filesystem::path& output, bool guarded) {
   const std::string source = input.string();
-  const Recording recording = read_recording(input);
+  // Only the columns a model reads are held; the others are copied from the file as they are.
+  std::vector<std::string> needed;
+  for (const CompensationModel& model : set.models) {
+    needed.push_back(model.dataset.target_column);
+    for (const std::string& c : model.dataset.features.thermometer_columns()) needed.push_back(c);
+  }
+  const Recording recording = read_recording(input, needed);
   // The input again, row by row, to copy each row's fields as they are beside the new columns
   // (csv_rows.hpp: no second copy of the file in memory).
   std::ifstream in = open_text_file(input);
@@ -42,8 +48,6 @@ std::vector<CompensatedAxis> compensate_file(const ModelSet& set,
     x.prediction = model.predict(recording, guarded);
     const std::vector<double>& drift = x.prediction.drift_dph;
     x.novelty = summarize_novelty(x.prediction.novelty, x.prediction.weight);
-    x.compensated.resize(drift.size());
-    for (std::size_t i = 0; i < drift.size(); ++i) x.compensated[i] = x.reading[i] - drift[i];
     axes.push_back(std::move(x));
   }
 
@@ -68,8 +72,9 @@ std::vector<CompensatedAxis> compensate_file(const ModelSet& set,
       line.clear();
       for (std::string_view f : fields) add_field(f);
       for (const CompensatedAxis& x : axes) {
-        for (double v : {x.prediction.drift_dph[i], x.compensated[i], x.prediction.novelty[i],
-                         x.prediction.weight[i]}) {
+        const double drift = x.prediction.drift_dph[i];
+        for (double v :
+             {drift, x.reading[i] - drift, x.prediction.novelty[i], x.prediction.weight[i]}) {
           line += csv::format_number(v);
           line += ',';
         }

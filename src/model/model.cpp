@@ -111,14 +111,13 @@ RecordingPrediction CompensationModel::predict(const Recording& recording, bool 
   }
   if (k > 1) {
     const RecordingPrediction blocks = predict(decimate(recording, k), guarded);
-    RecordingPrediction out;
-    for (std::size_t i = 0; i < recording.size(); ++i) {
-      out.drift_dph.push_back(blocks.drift_dph[i / k]);
-      out.model_drift_dph.push_back(blocks.model_drift_dph[i / k]);
-      out.novelty.push_back(blocks.novelty[i / k]);
-      out.weight.push_back(blocks.weight[i / k]);
-    }
-    return out;
+    const auto held = [&](const std::vector<double>& per_block) {  // sized once: a kHz log
+      std::vector<double> v(recording.size());
+      for (std::size_t i = 0; i < v.size(); ++i) v[i] = per_block[i / k];
+      return v;
+    };
+    return {held(blocks.drift_dph), held(blocks.model_drift_dph), held(blocks.novelty),
+            held(blocks.weight)};
   }
   FeatureOptions options = dataset.preprocessing;
   options.block.block_s = sample_interval_s(recording);

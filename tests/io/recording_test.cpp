@@ -65,6 +65,29 @@ TEST(Recording, ColumnsInAnyOrderAndExtrasKept) {
   EXPECT_THROW(r.numeric_column("absent"), std::out_of_range);
 }
 
+// A reader that holds only the extra columns asked for: the known ones always, the rest left in
+// the file, still checked as CSV (a short row is an error whichever columns are held).
+TEST(Recording, OnlyTheExtraColumnsAskedForAreHeld) {
+  test::TempDir dir;
+  const std::string header = "logger_id,time_s,gyro_dph,temp_fog_degc,gyro_y_dph,drift_true_dph\n";
+  test::write_file(dir / "all.csv", header + "A7,0.5,3,4,1.25,0.1\nA7,1.5,3.5,4,1.5,0.2\n");
+  const Recording all =
+      read_recording(dir / "all.csv", {"gyro_y_dph", "logger_id", "drift_true_dph", "absent"});
+  EXPECT_EQ(all.extra.size(), 3u);
+  test::write_file(dir / "r.csv", header + "A7,0.5,3,4,1.25,x\nA7,1.5,3.5,4,1.5,y\n");
+  EXPECT_THROW(read_recording(dir / "r.csv"), InputError);  // the true drift is numbers
+  const Recording r = read_recording(dir / "r.csv", {"gyro_y_dph"});
+  EXPECT_EQ(r.gyro_dph, (std::vector<double>{3, 3.5}));
+  EXPECT_EQ(r.time_s, all.time_s);
+  ASSERT_EQ(r.extra.size(), 1u);
+  EXPECT_EQ(r.numeric_column("gyro_y_dph"), (std::vector<double>{1.25, 1.5}));
+  EXPECT_FALSE(r.has_column("logger_id"));
+  EXPECT_FALSE(r.has_column("drift_true_dph"));  // not held, so not checked as numbers
+  test::write_file(dir / "short.csv",
+                   "logger_id,time_s,gyro_dph,temp_fog_degc\nA7,0.5,3,4\nA7,1.5,3.5\n");
+  EXPECT_THROW(read_recording(dir / "short.csv", {}), InputError);
+}
+
 TEST(Recording, ValidateRejectsInconsistentMemoryRecordings) {
   Recording r = example(10, 1);
   r.gyro_dph.pop_back();

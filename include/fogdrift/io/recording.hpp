@@ -83,6 +83,11 @@ double median_time_step_s(const std::vector<double>& time_s);
 /// required column, a non-number, NaN or Inf in a known column, a time that does not strictly
 /// increase, a negative time, fewer than 2 samples, and every CSV-level fault of csv::read.
 Recording read_recording(const std::filesystem::path& path);
+/// The same, holding of the columns beyond the known ones only those named in `keep_extra`:
+/// every other is checked as the CSV is, and left on disk (a kilohertz log's text columns cost
+/// a string a sample; compensate copies them from the file as they are).
+Recording read_recording(const std::filesystem::path& path,
+                         const std::vector<std::string>& keep_extra);
 
 /// Reads a log to join (Recording::partial): time_s is the one required column, and it may be
 /// negative; everything else read_recording() checks is checked the same way.

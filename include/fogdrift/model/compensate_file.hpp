@@ -24,8 +24,8 @@ struct CompensatedAxis {
   const CompensationModel* model = nullptr;  ///< into the set given
   std::vector<std::string> columns;          ///< the columns added (compensated_columns)
   RecordingPrediction prediction;
-  std::vector<double> reading;      ///< the target's values as recorded (target_values)
-  std::vector<double> compensated;  ///< reading − drift
+  std::vector<double> reading;  ///< the target's values as recorded (target_values); the
+                                ///< compensated column is reading − prediction.drift_dph
   NoveltySummary novelty;
 };
 
