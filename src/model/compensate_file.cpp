@@ -46,7 +46,6 @@ std::vector<CompensatedAxis> compensate_file(const ModelSet& set,
             fmt::format("already has a {} column; compensate the original recording", name));
     x.reading = target_values(recording, model.dataset.target_column);
     x.prediction = model.predict(recording, guarded);
-    const std::vector<double>& drift = x.prediction.drift_dph;
     x.novelty = summarize_novelty(x.prediction.novelty, x.prediction.weight);
     axes.push_back(std::move(x));
   }

@@ -48,7 +48,7 @@ struct StudiedProtocol {
   double train_median_s = 0;  ///< train's median time on one thread over the population
 };
 
-/// Every studied protocol, cheapest first on the default instrument.
+/// Every studied protocol, in no order that matters (price_protocols sorts them by hours).
 const std::vector<StudiedProtocol>& studied_protocols();
 
 /// A studied protocol priced for one instrument and chamber.
