@@ -285,15 +285,10 @@ void add_plan(CLI::App& app) {
             : sim::instrument_from_json(read_text_file(args->instrument_file),
                                         args->instrument_file);
     if (args->hours) {
-      if (!protocol->given().empty()) {
-        const std::string keyword = protocol->given().front().first;
-        std::string flag = keyword;
-        for (const OptionSpec& spec : specs_of(sim::calibration_option_table()))
-          if (spec.keyword == keyword) flag = spec.flag;
-        throw OptionError("--hours", fmt::format("chooses the protocol, and {} gives one: drop "
-                                                 "one of them",
-                                                 flag));
-      }
+      if (!protocol->given().empty())
+        throw OptionError("--hours", protocol->words("chooses the protocol, and {" +
+                                                     protocol->given().front().first +
+                                                     "} gives one: drop one of them"));
       try {
         choose(*args, instrument, c);
       } catch (const OptionError& e) {

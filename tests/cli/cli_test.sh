@@ -64,6 +64,16 @@ check "plan says a cheap choice misses the goal" out_has "note: this protocol mi
 check "plan says what meets it" out_has "the cheapest that meets it, four start-up set points, needs 57.9 h here"
 check "plan --service alone is refused" run 1 "$fd" plan --service soaked
 check "plan says --service needs --hours" err_has "option --service: names the conditions --hours chooses for"
+check "plan --figures alone is refused" run 1 "$fd" plan --figures "$work/front"
+check "plan says --figures needs --hours" err_has "option --figures: draws the protocols --hours chooses among"
+"$fd" simulate --print-instrument >"$work/unit.json"
+check "plan --figures will not replace its instrument" run 1 "$fd" plan --hours 60 --instrument "$work/unit.json" --figures "$work/unit.json" --force
+check "plan names the instrument it would destroy" err_has "option --figures: '$work/unit.json' is the input"
+check "the instrument is still there" python3 -c 'import json, sys; json.load(open(sys.argv[1]))' "$work/unit.json"
+check "plan --figures writes the front" run 0 "$fd" plan --hours 60 --figures "$work/front" --json
+check "the front as JSON" python3 -c 'import json, sys; f = json.load(open(sys.argv[1])); assert f["name"] == "protocol_front", f' "$work/front/protocol_front.json"
+check "plan --figures will not replace a folder unasked" run 1 "$fd" plan --hours 60 --figures "$work/front"
+rm -rf "$work/front" "$work/unit.json"
 check "plan refuses a budget nothing fits" run 1 "$fd" plan --hours 5
 check "plan says what it would take" err_has "option --hours: 5 h buys no studied protocol: the cheapest"
 check "plan refuses a protocol and a budget" run 1 "$fd" plan --hours 60 --approach soaked
