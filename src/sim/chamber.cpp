@@ -12,7 +12,6 @@
 namespace fogdrift::sim {
 namespace {
 
-constexpr double kStepDegc = 10.0;         // a ramping start-up begins this far below
 constexpr double kWarmFirstRunS = 1800.0;  // the run before a warm restart (scenarios.cpp)
 constexpr double kLongestSettleS = 7 * 86400.0;
 

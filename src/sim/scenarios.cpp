@@ -93,10 +93,6 @@ void check_start_up(double warm_off_s, double ramp_degc_per_min, const std::stri
   }
 }
 
-// The calibration's step between set points, and how far below the initial temperature the
-// ramping approach begins, °C.
-constexpr double kStepDegc = 10.0;
-
 // The instrument at power-on for a start-up at chamber temperature t0 under an approach that
 // does not depend on the previous recording (all but sweep), and the chamber air from then on.
 // The simulator's clock reads 0 at power-on. The whole simulator is handed over, not only its

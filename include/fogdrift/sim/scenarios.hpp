@@ -97,6 +97,10 @@ std::string approach_names(bool with_sweep);
 /// repetition (the chamber's protocol again) to test on.
 CalibrationOptions field_calibration();
 
+/// The calibration's step between set points, and how far below the initial temperature a
+/// ramping start-up begins, °C: the simulator and the chamber's schedule (chamber.hpp) both.
+inline constexpr double kStepDegc = 10.0;
+
 /// Every approach, in the order reports list them.
 inline constexpr std::array<Approach, 5> kApproaches = {
     Approach::calibration, Approach::soaked, Approach::warm, Approach::ramping, Approach::sweep};
