@@ -27,6 +27,7 @@
 #include "fogdrift/base/thread_pool.hpp"
 #include "fogdrift/model/dataset.hpp"
 #include "fogdrift/model/features.hpp"
+#include "fogdrift/model/gp.hpp"
 #include "fogdrift/sim/scenarios.hpp"
 #include "fogdrift/tune/train.hpp"
 
@@ -108,14 +109,14 @@ int main(int argc, char** argv) try {
         build_dataset(recording_inputs(cal.campaign, cal.recordings, Role::train), dataset);
     TrainOptions to;
     to.method = parse_method("gp");
-    to.gp.max_points = points;
+    to.trainers.get<GpOptions>().max_points = points;
     to.tune.optimizer.run.population = population;
     to.tune.optimizer.run.iterations = iterations;
     to.tune.optimizer.run.seed = seed;
     to.tune.pool = &pool;
     to.held_out = false;
     const CompensationModel model = fogdrift::train(train, dataset, to).model;
-    const GpPosterior posterior = factor(std::get<Gp>(model.regressor));
+    const GpPosterior posterior = factor(model.regressor.get<Gp>());
     const double prior_sd = std::sqrt(posterior.gp.hyper.signal_variance);
     for (std::size_t a = 0; a < field.size(); ++a) {
       sim::NorthfindOptions no;

@@ -16,7 +16,10 @@
 
 #include "fogdrift/model/compensator.hpp"
 #include "fogdrift/model/dataset.hpp"
+#include "fogdrift/model/mlp.hpp"
+#include "fogdrift/model/poly.hpp"
 #include "fogdrift/sim/scenarios.hpp"
+#include "fogdrift/svr/svr.hpp"
 #include "fogdrift/tune/train.hpp"
 
 namespace {
@@ -93,12 +96,12 @@ int main(int argc, char** argv) {
     to.method = c.method;
     const CompensationModel model = train(build_dataset(train_inputs, dataset), dataset, to).model;
     std::string size;
-    if (const auto* m = std::get_if<svr::Model>(&model.regressor))
+    if (const auto* m = model.regressor.get_if<svr::Model>())
       size = std::to_string(m->size()) + " support vectors";
-    else if (const auto* m = std::get_if<Mlp>(&model.regressor))
+    else if (const auto* m = model.regressor.get_if<Mlp>())
       size = std::to_string(m->hidden) + " hidden units";
     else
-      size = std::to_string(std::get<Poly>(model.regressor).terms()) + " terms";
+      size = std::to_string(model.regressor.get<Poly>().terms()) + " terms";
     // Without the guard: the same model with its guard removed (a version 1 model), so that
     // neither the novelty nor the weight is computed.
     CompensationModel unguarded = model;

@@ -1,9 +1,8 @@
+// The registry's lookups by type (regressors.hpp); the list itself is src/tune/registry.cpp.
 #include "fogdrift/model/regressors.hpp"
 
 #include <fmt/format.h>
 
-#include <algorithm>
-#include <array>
 #include <cctype>
 #include <nlohmann/json.hpp>
 #include <stdexcept>
@@ -11,57 +10,25 @@
 #include "fogdrift/base/error.hpp"
 
 namespace fogdrift {
-namespace {
-
-// One entry per registered type, in AnyRegressor's order.
-template <class T>
-struct Types;
-template <class... R>
-struct Types<std::variant<R...>> {
-  static constexpr std::array<std::string_view, sizeof...(R)> names = {R::kType...};
-
-  static AnyRegressor parse(const std::string& type, const std::string& text,
-                            const std::string& source) {
-    AnyRegressor out;
-    const bool found =
-        ((type == R::kType
-              ? (out = regressor_from_json(std::type_identity<R>{}, text, source), true)
-              : false) ||
-         ...);
-    if (!found)
-      throw InputError(source, 0, 0,
-                       fmt::format("regressor.type: '{}' is not {}", type, regressor_types()));
-    return out;
-  }
-};
-using Registered = Types<AnyRegressor>;
-
-}  // namespace
-
-std::string_view regressor_type(const AnyRegressor& regressor) {
-  return std::visit([](const auto& r) -> std::string_view { return r.kType; }, regressor);
-}
 
 bool is_regressor_type(std::string_view type) {
-  const auto& names = Registered::names;
-  return std::find(names.begin(), names.end(), type) != names.end();
+  for (const RegressorEntry& e : regressor_entries())
+    if (e.type == type) return true;
+  return false;
 }
 
 std::string regressor_types() {
   std::string out;
-  const auto& names = Registered::names;
-  for (std::size_t i = 0; i < names.size(); ++i)
-    out += fmt::format("{}{}", i == 0 ? "" : (i + 1 == names.size() ? " or " : ", "), names[i]);
+  const auto entries = regressor_entries();
+  for (std::size_t i = 0; i < entries.size(); ++i)
+    out += fmt::format("{}{}", i == 0 ? "" : (i + 1 == entries.size() ? " or " : ", "),
+                       entries[i].type);
   return out;
-}
-
-std::size_t input_count(const AnyRegressor& regressor) {
-  return std::visit([](const auto& r) { return input_count(r); }, regressor);
 }
 
 std::string to_json(const AnyRegressor& regressor) {
   // The regressor's own object with "type" written first, as text: no parse and dump again.
-  std::string own = std::visit([](const auto& r) { return to_json(r); }, regressor);
+  std::string own = regressor.own_json();
   while (!own.empty() && std::isspace(static_cast<unsigned char>(own.back()))) own.pop_back();
   const std::size_t open = own.find('{');
   if (open == std::string::npos || own.back() != '}')
@@ -73,11 +40,10 @@ std::string to_json(const AnyRegressor& regressor) {
 
 AnyRegressor regressor_from_json(const std::string& type, const std::string& text,
                                  const std::string& source) {
-  return Registered::parse(type, text, source);
-}
-
-CRegressor to_c(const AnyRegressor& regressor, const CNames& names) {
-  return std::visit([&](const auto& r) { return to_c(r, names); }, regressor);
+  for (const RegressorEntry& e : regressor_entries())
+    if (e.type == type) return e.from_json(text, source);
+  throw InputError(source, 0, 0,
+                   fmt::format("regressor.type: '{}' is not {}", type, regressor_types()));
 }
 
 }  // namespace fogdrift

@@ -1,4 +1,6 @@
 #include "fogdrift/report/paper.hpp"
+#include "fogdrift/tune/bp_trainer.hpp"
+#include "fogdrift/tune/svr_trainer.hpp"
 
 #include <fmt/format.h>
 
@@ -90,7 +92,7 @@ TrainOptions train_options(const PaperOptions& o, Method method, std::uint64_t s
   to.tune.pool = o.pool;
   to.tune.space.epsilon = o.epsilon;
   to.tune.space.search_epsilon = o.search_epsilon;
-  to.mlp = o.mlp;
+  to.trainers.get<BpTrainer::Options>() = o.mlp;
   to.held_out = false;  // the paper scores its models on its own test data
   return to;
 }
@@ -216,7 +218,7 @@ double run_method(const PaperOptions& o, std::size_t method_index, Stages& stage
     DatasetOptions causal = dataset;
     causal.preprocessing.rates = signal::recommended_rates(signal::Causality::causal);
     TrainOptions to = train_options(o, Method::svr, seed, o.fitness);
-    to.svr_params = svr_params_of(m);
+    to.trainers.get<SvrTrainer::Options>().params = svr_params_of(m);
     const CompensationModel streamed =
         fogdrift::train(
             build_dataset(recording_inputs(c.cal.campaign, c.cal.recordings, Role::train), causal),
@@ -275,7 +277,8 @@ LotoRow loto_row(const PaperOptions& o, const SeedRun& run, const FirstSeed& f,
     else
       to.tune.cv = tune::CvOptions{};
   }
-  if (method != Method::bp) to.svr_params = svr_params_of(run.method(method));
+  if (method != Method::bp)
+    to.trainers.get<SvrTrainer::Options>().params = svr_params_of(run.method(method));
   const TrainResult loto = fogdrift::train(train, f.dataset, to);
   const eval::CompensationMetrics all = table2_of(f.models.at(method), test);
   const eval::CompensationMetrics left = table2_of(loto.model, test);

@@ -14,8 +14,14 @@ Search BpTrainer::search(Search requested, const TrainOptions&) {
   return Search::own;
 }
 
+OptionTable<BpTrainer::Options> BpTrainer::option_table() {
+  return {whole_option<Options>(
+      {"hidden", "--hidden", {}, "", "1 … 1000", "bp: hidden tanh units", {}},
+      [](auto& o) -> auto& { return o.hidden; })};
+}
+
 void BpTrainer::validate(const TrainOptions& options) {
-  fogdrift::validate(options.mlp);
+  fogdrift::validate(options.trainers.get<Options>());
 }
 
 Trained BpTrainer::train(const TrainContext& c) {
@@ -34,7 +40,7 @@ Trained BpTrainer::train(const TrainContext& c) {
   const auto folds = tune::grouped_folds(c.data, stop);
   const tune::Fold& f = folds.back();
   const tune::ScaledSplit split = tune::scale_split(c.data, f.train_rows, f.test_rows);
-  MlpOptions mo = options.mlp;
+  MlpOptions mo = options.trainers.get<Options>();
   mo.seed = options.tune.optimizer.run.seed;
   const MlpFit fit = fit_mlp(split.train, split.test, mo);
   out.x_scaler = split.x_scaler;

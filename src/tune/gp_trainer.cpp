@@ -10,8 +10,52 @@
 
 namespace fogdrift {
 
+OptionTable<GpTrainer::Options> GpTrainer::option_table() {
+  OptionTable<Options> t;
+  t.push_back(whole_option<Options>(
+      {"gp_points",
+       "--gp-points",
+       {},
+       "",
+       "10 … 4000",
+       "gp: training rows the Gaussian process keeps, evenly spaced; its time grows "
+       "as the cube, its C header's work per sample linearly",
+       {}},
+      [](auto& o) -> auto& { return o.max_points; }));
+  t.push_back({{"gp_fit",
+                "--gp-fit",
+                OptionType::choice,
+                "",
+                gp_selection_names(),
+                "gp: how the hyperparameters are chosen: cv, the length scale and the noise "
+                "ratio by the search over the folds of {cv}, as the SVR's C and σ ({population}, "
+                "{iterations} and {seed} as above); likelihood, all of them by the marginal "
+                "likelihood, which favours short length scales on start-up data (docs/gp.md)",
+                {}},
+               [](const Options& o) { return std::string(to_string(o.selection)); },
+               [](Options& o, const std::string& text) {
+                 o.selection = parse_gp_selection(text, "gp_fit");
+               }});
+  t.push_back({{"gp_kernel",
+                "--gp-kernel",
+                OptionType::choice,
+                "",
+                "rbf, ard",
+                "gp: rbf, one length scale for all features, or ard, one per feature (with "
+                "{gp_fit} likelihood)",
+                {}},
+               [](const Options& o) { return std::string(o.ard ? "ard" : "rbf"); },
+               [](Options& o, const std::string& text) {
+                 if (text != "rbf" && text != "ard")
+                   throw OptionError("gp_kernel", fmt::format("'{}' is not rbf or ard", text));
+                 o.ard = text == "ard";
+               }});
+  return t;
+}
+
 Search GpTrainer::search(Search requested, const TrainOptions& options) {
-  if (options.gp.selection == GpSelection::likelihood) {
+  const GpOptions& gp = options.trainers.get<Options>();
+  if (gp.selection == GpSelection::likelihood) {
     if (requested != Search::own)
       throw OptionError("search", fmt::format("'{}': {{gp_fit}} likelihood chooses by the "
                                               "likelihood's gradient, not by a search",
@@ -25,12 +69,14 @@ Search GpTrainer::search(Search requested, const TrainOptions& options) {
 }
 
 void GpTrainer::validate(const TrainOptions& options) {
-  fogdrift::validate(options.gp);
-  if (options.gp.selection == GpSelection::cv) opt::validate(options.tune.optimizer.run);
+  const GpOptions& gp = options.trainers.get<Options>();
+  fogdrift::validate(gp);
+  if (gp.selection == GpSelection::cv) opt::validate(options.tune.optimizer.run);
 }
 
 Trained GpTrainer::train(const TrainContext& c) {
   const TrainOptions& options = c.options;
+  const GpOptions& gp = options.trainers.get<Options>();
   Trained out;
   TrainSummary& s = out.summary;
   out.held_folds = tune::grouped_folds(c.data, options.tune.cv);
@@ -38,15 +84,14 @@ Trained GpTrainer::train(const TrainContext& c) {
   for (const auto& f : out.held_folds)
     splits.push_back(tune::scale_split(c.data, f.train_rows, f.test_rows));
   GpFit fit;
-  if (options.gp.selection == GpSelection::cv) {
-    fit =
-        search_gp(splits, c.full.train, options.gp, options.tune.optimizer, options.tune.pool).fit;
+  if (gp.selection == GpSelection::cv) {
+    fit = search_gp(splits, c.full.train, gp, options.tune.optimizer, options.tune.pool).fit;
     out.population = options.tune.optimizer.run.population;
     out.iterations = options.tune.optimizer.run.iterations;
     // The model file says a search other than the default; ssa-svr's is in its name.
     if (options.method.search != Search::ssa) out.search = to_string(options.method.search);
   } else {
-    fit = train_gp(c.full.train, options.gp);
+    fit = train_gp(c.full.train, gp);
   }
   out.regressor = fit.posterior.gp;
   const GpHyper hyper = fit.posterior.gp.hyper;
@@ -56,11 +101,11 @@ Trained GpTrainer::train(const TrainContext& c) {
   double sse = 0;
   std::size_t n = 0;
   for (const tune::ScaledSplit& split : splits) {
-    const Gp gp =
-        fit_gp(split.train.subset(gp_rows(split.train.rows, options.gp.max_points)), hyper).gp;
+    const Gp fold_gp =
+        fit_gp(split.train.subset(gp_rows(split.train.rows, gp.max_points)), hyper).gp;
     std::vector<double>& predicted = predictions->emplace_back(split.test.rows);
     for (std::size_t r = 0; r < split.test.rows; ++r) {
-      predicted[r] = gp.predict(split.test.row(r));
+      predicted[r] = fold_gp.predict(split.test.row(r));
       sse += (predicted[r] - split.test.y[r]) * (predicted[r] - split.test.y[r]);
     }
     n += split.test.rows;
@@ -75,7 +120,7 @@ Trained GpTrainer::train(const TrainContext& c) {
   s.hyperparameters = {{"signal_variance", hyper.signal_variance},
                        {"noise_variance", hyper.noise_variance},
                        {"points", static_cast<double>(fit.summary.points)}};
-  if (options.gp.ard) {
+  if (gp.ard) {
     for (std::size_t k = 0; k < hyper.length_scale.size(); ++k)
       s.hyperparameters.emplace_back("length_scale:" + c.data.feature_names[k],
                                      hyper.length_scale[k]);

@@ -43,7 +43,7 @@ std::string to_string(const Method& method) {
 }
 
 Method parse_method(std::string_view text, std::string_view option) {
-  for (const TrainerEntry& t : kTrainers)
+  for (const TrainerEntry& t : trainer_entries())
     for (const MethodName& m : t.methods)
       if (m.name == text) return {t.name, m.search};
   throw OptionError(std::string(option),
@@ -52,14 +52,14 @@ Method parse_method(std::string_view text, std::string_view option) {
 
 std::string method_names() {
   std::string out;
-  for (const TrainerEntry& t : kTrainers)
+  for (const TrainerEntry& t : trainer_entries())
     for (const MethodName& m : t.methods) out += (out.empty() ? "" : ", ") + std::string(m.name);
   return out;
 }
 
 std::string method_docs() {
   std::string out;
-  for (const TrainerEntry& t : kTrainers)
+  for (const TrainerEntry& t : trainer_entries())
     for (const MethodName& m : t.methods)
       out += fmt::format("{}{} {}", out.empty() ? "" : "; ", m.name, m.doc);
   return out;

@@ -15,9 +15,16 @@ Search PolyTrainer::search(Search requested, const TrainOptions&) {
   return Search::own;
 }
 
+OptionTable<PolyTrainer::Options> PolyTrainer::option_table() {
+  return {whole_option<Options>(
+      {"max_degree", "--max-degree", {}, "", "1 … 6", "poly: highest degree tried", {"degree"}},
+      [](auto& o) -> auto& { return o.max_degree; })};
+}
+
 void PolyTrainer::validate(const TrainOptions& options) {
-  if (options.poly_max_degree < 1 || options.poly_max_degree > 6)
-    throw OptionError("degree", fmt::format("{} is outside 1 … 6", options.poly_max_degree));
+  const std::size_t max_degree = options.trainers.get<Options>().max_degree;
+  if (max_degree < 1 || max_degree > 6)
+    throw OptionError("degree", fmt::format("{} is outside 1 … 6", max_degree));
 }
 
 Trained PolyTrainer::train(const TrainContext& c) {
@@ -33,7 +40,8 @@ Trained PolyTrainer::train(const TrainContext& c) {
   for (const auto& sp : splits) min_rows = std::min(min_rows, sp.train.rows);
   std::vector<double> cv_rmse;  // of degree 1, 2, …
   std::size_t best = 1;
-  for (std::size_t degree = 1; degree <= c.options.poly_max_degree; ++degree) {
+  const std::size_t max_degree = c.options.trainers.get<Options>().max_degree;
+  for (std::size_t degree = 1; degree <= max_degree; ++degree) {
     if (degree > 1 && monomials(c.data.cols(), degree).size() / c.data.cols() > min_rows) break;
     double sse = 0;
     std::size_t n = 0;

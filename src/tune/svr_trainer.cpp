@@ -21,8 +21,8 @@ Trained SvrTrainer::train(const TrainContext& c) {
   svr::Params params;
   tune::TuneOptions t = options.tune;
   if (!is_optimizer(options.method.search)) {
-    if (options.svr_params)
-      params = *options.svr_params;
+    if (const auto& given = options.trainers.get<Options>().params)
+      params = *given;
     else
       params.kernel = svr::Kernel::rbf_gamma(1.0 / static_cast<double>(c.data.cols()));
     params.tolerance = t.tolerance;

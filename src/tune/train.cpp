@@ -17,7 +17,7 @@ namespace {
 
 // A polynomial of degree 1 in one input: the straight line held_out.hpp compares models with.
 bool is_a_line_in_one_input(const CompensationModel& m) {
-  const Poly* poly = std::get_if<Poly>(&m.regressor);
+  const Poly* poly = m.regressor.get_if<Poly>();
   return poly != nullptr && poly->degree <= 1 && poly->inputs == 1;
 }
 

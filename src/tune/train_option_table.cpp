@@ -6,8 +6,8 @@
 #include <fmt/format.h>
 
 #include "fogdrift/model/features.hpp"
-#include "fogdrift/model/gp.hpp"
 #include "fogdrift/signal/differentiate.hpp"
+#include "fogdrift/tune/trainers.hpp"
 
 namespace fogdrift {
 namespace {
@@ -313,50 +313,11 @@ OptionTable<O> make_table() {
        "fits",
        {}},
       [](auto& o) -> auto& { return o.train.tune.cache_mb; }));
-  t.push_back(whole_option<O>(
-      {"hidden", "--hidden", {}, "", "1 … 1000", "bp: hidden tanh units", {}},
-      [](auto& o) -> auto& { return o.train.mlp.hidden; }));
-  t.push_back(whole_option<O>(
-      {"max_degree", "--max-degree", {}, "", "1 … 6", "poly: highest degree tried", {"degree"}},
-      [](auto& o) -> auto& { return o.train.poly_max_degree; }));
-  t.push_back(whole_option<O>(
-      {"gp_points",
-       "--gp-points",
-       {},
-       "",
-       "10 … 4000",
-       "gp: training rows the Gaussian process keeps, evenly spaced; its time grows "
-       "as the cube, its C header's work per sample linearly",
-       {}},
-      [](auto& o) -> auto& { return o.train.gp.max_points; }));
-  t.push_back({{"gp_fit",
-                "--gp-fit",
-                OptionType::choice,
-                "",
-                gp_selection_names(),
-                "gp: how the hyperparameters are chosen: cv, the length scale and the noise "
-                "ratio by the search over the folds of {cv}, as the SVR's C and σ ({population}, "
-                "{iterations} and {seed} as above); likelihood, all of them by the marginal "
-                "likelihood, which favours short length scales on start-up data (docs/gp.md)",
-                {}},
-               [](const O& o) { return std::string(to_string(o.train.gp.selection)); },
-               [](O& o, const std::string& text) {
-                 o.train.gp.selection = parse_gp_selection(text, "gp_fit");
-               }});
-  t.push_back({{"gp_kernel",
-                "--gp-kernel",
-                OptionType::choice,
-                "",
-                "rbf, ard",
-                "gp: rbf, one length scale for all features, or ard, one per feature (with "
-                "{gp_fit} likelihood)",
-                {}},
-               [](const O& o) { return std::string(o.train.gp.ard ? "ard" : "rbf"); },
-               [](O& o, const std::string& text) {
-                 if (text != "rbf" && text != "ard")
-                   throw OptionError("gp_kernel", fmt::format("'{}' is not rbf or ard", text));
-                 o.train.gp.ard = text == "ard";
-               }});
+  // Each trainer's own options, in the registry's order (trainers.hpp).
+  for (const TrainerEntry& trainer : trainer_entries())
+    for (Option<O>& o : lifted<O>(
+             trainer.options(), [](auto& c) -> auto& { return c.train; }))
+      t.push_back(std::move(o));
   return t;
 }
 

@@ -1,5 +1,6 @@
-// The C99 header export (c_header.hpp): compiled with the C compiler in a small program, whose
-// predictions must be the library's, for every registered regressor.
+// The C99 header export (c_header.hpp): its names, prefixes and float checks. That every
+// registered regressor's header compiles and predicts as the library is the registry's suite
+// (tests/tune/registry_test.cpp).
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 #include <gtest/gtest.h>
@@ -17,54 +18,6 @@
 
 namespace fogdrift {
 namespace {
-
-constexpr const char* kDriver = R"(#include <stdio.h>
-#include "model.h"
-int main(void) {
-  double f[FD_MODEL_N_FEATURES];
-  int k;
-  for (;;) {
-    for (k = 0; k < FD_MODEL_N_FEATURES; ++k)
-      if (scanf("%lf", &f[k]) != 1) return 0;
-    printf("%.17g\n", fd_model_predict_dph(f));
-  }
-}
-)";
-
-TEST(CHeader, CompilesAndPredictsAsTheLibrary) {
-  const Dataset d = test::synthetic();
-  for (Method method : {Method::ssa_svr, Method::bp, Method::poly, Method{"gp"}}) {
-    TrainOptions o;
-    o.method = method;
-    o.gp.max_points = 150;
-    o.gp.max_iterations = 20;
-    o.tune.optimizer.run.population = 6;
-    o.tune.optimizer.run.iterations = 2;
-    o.tune.space.c_max = 10;
-    o.mlp.max_epochs = 200;
-    const CompensationModel model = train(d, test::kDefaultDataset, o).model;
-    test::TempDir dir;
-    test::write_file(dir / "model.h", to_c_header(model, "fd_model"));
-    test::write_file(dir / "driver.c", kDriver);
-    std::ostringstream rows;
-    rows.precision(17);
-    for (std::size_t i = 0; i < d.rows; ++i) {
-      for (double v : d.row(i)) rows << v << ' ';
-      rows << '\n';
-    }
-    std::istringstream out(test::compile_and_run_c(dir, rows.str()));
-    const std::vector<double> expected = model.predict_dph(d);
-    double worst = 0, scale = 0;
-    std::size_t n = 0;
-    for (double v; out >> v; ++n) {
-      ASSERT_LT(n, expected.size());
-      worst = std::max(worst, std::abs(v - expected[n]));
-      scale = std::max(scale, std::abs(expected[n]));
-    }
-    EXPECT_EQ(n, d.rows) << to_string(method);
-    EXPECT_LE(worst, 1e-13 * scale) << to_string(method);
-  }
-}
 
 TEST(CHeader, NamesTheFeaturesAndRejectsBadPrefixes) {
   TrainOptions o;

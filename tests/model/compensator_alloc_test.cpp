@@ -9,6 +9,7 @@
 #include <new>
 
 #include "fogdrift/model/compensator.hpp"
+#include "fogdrift/model/mlp.hpp"
 #include "fogdrift/tune/train.hpp"
 #include "synthetic_dataset.hpp"
 
@@ -68,7 +69,7 @@ TEST(StreamingCompensator, AllocatesNothingPerSample) {
   for (Method method : {Method::svr, Method::bp, Method::poly}) {
     TrainOptions o;
     o.method = method;
-    o.mlp.max_epochs = 50;
+    o.trainers.get<MlpOptions>().max_epochs = 50;
     const CompensationModel model = train(data, dataset, o).model;
     StreamingCompensator stream(model, 1.0);
     double sum = 0;

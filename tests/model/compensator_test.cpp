@@ -2,6 +2,7 @@
 // for sample. (No allocation per sample is proved in compensator_alloc_test.cpp, a program of
 // its own because it replaces the global operator new.)
 #include "fogdrift/model/compensator.hpp"
+#include "fogdrift/model/mlp.hpp"
 
 #include <gtest/gtest.h>
 
@@ -117,7 +118,7 @@ TEST(StreamingCompensator, EqualsTheBatchPath) {
   for (Method method : {Method::svr, Method::bp, Method::poly}) {
     TrainOptions o;
     o.method = method;
-    o.mlp.max_epochs = 100;
+    o.trainers.get<MlpOptions>().max_epochs = 100;
     const CompensationModel model = train(data, dataset, o).model;
     const Recording& test = sc.recordings.back();
     const std::vector<double> batch = model.predict_dph(test);

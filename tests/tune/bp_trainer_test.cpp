@@ -32,7 +32,7 @@ TEST(BpTrainer, StopsEarlyOnOneFoldAndKeepsItsScalers) {
   const tune::ScaledSplit full = tune::scale_split(d, rows, {});
   TrainOptions o;
   o.method = Method::bp;
-  o.mlp.max_epochs = 300;
+  o.trainers.get<MlpOptions>().max_epochs = 300;
   const Trained t = BpTrainer::train({d, full, o});
   ASSERT_EQ(t.held_folds.size(), 1u);
   EXPECT_EQ(t.held_description, t.held_folds.front().name);
@@ -47,7 +47,7 @@ TEST(BpTrainer, StopsEarlyOnOneFoldAndKeepsItsScalers) {
   EXPECT_LE(t.summary.record["bp"]["best_epoch"].get<std::size_t>(),
             t.summary.record["bp"]["epochs"].get<std::size_t>());
   EXPECT_EQ(t.held_predict(split, 0).size(), f.test_rows.size());
-  o.mlp.hidden = 0;
+  o.trainers.get<MlpOptions>().hidden = 0;
   EXPECT_THROW(BpTrainer::validate(o), OptionError);
 }
 

@@ -17,7 +17,7 @@ TEST(GpTrainer, TheCvFitIsSearchedTheLikelihoodIsNot) {
   EXPECT_EQ(GpTrainer::search(Search::own, o), Search::ssa);
   EXPECT_EQ(GpTrainer::search(Search::gwo, o), Search::gwo);
   EXPECT_THROW(GpTrainer::search(Search::none, o), OptionError);
-  o.gp.selection = GpSelection::likelihood;
+  o.trainers.get<GpOptions>().selection = GpSelection::likelihood;
   EXPECT_EQ(GpTrainer::search(Search::own, o), Search::own);
   EXPECT_THROW(GpTrainer::search(Search::none, o), OptionError);
   EXPECT_THROW(GpTrainer::search(Search::ssa, o), OptionError);
@@ -34,7 +34,7 @@ TEST(GpTrainer, ASearchOtherThanSsaIsSaid) {
   o.tune.optimizer.run.population = 5;
   o.tune.optimizer.run.iterations = 2;
   o.tune.cv = {tune::CvScheme::repetition};
-  o.gp.max_points = 60;
+  o.trainers.get<GpOptions>().max_points = 60;
   const Trained t = GpTrainer::train({d, full, o});
   EXPECT_EQ(t.search, "pso");
   EXPECT_EQ(t.population, 5u);

@@ -1,6 +1,7 @@
 // The held-out report against closed-form cases: a drift that is a line in one temperature, a
 // drift with no temperature signal, and a model known to be worse than the mean.
 #include "fogdrift/tune/held_out.hpp"
+#include "fogdrift/model/mlp.hpp"
 
 #include <gtest/gtest.h>
 
@@ -230,7 +231,7 @@ TEST(HeldOut, TrainReportsItForEveryMethodOnTheFoldsItScoredOn) {
     o.tune.cv = {tune::CvScheme::temperature, 4};
     o.tune.optimizer.run.population = 5;
     o.tune.optimizer.run.iterations = 2;
-    o.mlp.max_epochs = 50;
+    o.trainers.get<MlpOptions>().max_epochs = 50;
     const TrainResult r = train(d, test::kDefaultDataset, o);
     ASSERT_TRUE(r.summary.held_out) << to_string(m);
     const HeldOutReport& h = *r.summary.held_out;

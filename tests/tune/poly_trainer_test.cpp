@@ -24,7 +24,7 @@ TEST(PolyTrainer, PicksTheDegreeTheFoldsScoreBest) {
   const tune::ScaledSplit full = tune::scale_split(d, rows, {});
   TrainOptions o;
   o.method = Method::poly;
-  o.poly_max_degree = 3;
+  o.trainers.get<PolyTrainer::Options>().max_degree = 3;
   o.tune.cv = {tune::CvScheme::repetition};
   const Trained t = PolyTrainer::train({d, full, o});
   const auto rmse = t.summary.record["poly_cv_rmse_by_degree"].get<std::vector<double>>();
@@ -32,9 +32,9 @@ TEST(PolyTrainer, PicksTheDegreeTheFoldsScoreBest) {
   const auto best = std::min_element(rmse.begin(), rmse.end());
   EXPECT_EQ(t.summary.hyperparameters[0].second, static_cast<double>(best - rmse.begin() + 1));
   EXPECT_EQ(t.summary.fitness_value, *best);
-  EXPECT_EQ(std::get<Poly>(t.regressor).degree, static_cast<std::size_t>(best - rmse.begin() + 1));
+  EXPECT_EQ(t.regressor.get<Poly>().degree, static_cast<std::size_t>(best - rmse.begin() + 1));
   EXPECT_EQ(t.held_description, t.cv);
-  o.poly_max_degree = 7;
+  o.trainers.get<PolyTrainer::Options>().max_degree = 7;
   EXPECT_THROW(PolyTrainer::validate(o), OptionError);
 }
 

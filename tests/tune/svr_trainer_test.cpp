@@ -32,7 +32,7 @@ TEST(SvrTrainer, WithoutASearchItFitsLibsvmsDefaults) {
   o.method = Method::svr;
   o.tune.cv = {tune::CvScheme::repetition};
   const Trained t = SvrTrainer::train({d, full, o});
-  const auto& model = std::get<svr::Model>(t.regressor);
+  const auto& model = t.regressor.get<svr::Model>();
   EXPECT_DOUBLE_EQ(model.kernel.gamma, 1.0 / static_cast<double>(d.cols()));
   EXPECT_EQ(t.summary.hyperparameters[0], (std::pair<std::string, double>{"C", 1.0}));
   EXPECT_TRUE(t.summary.record.empty());  // nothing searched

@@ -2,6 +2,7 @@
 // rule, defaults that are the library's, setters that set their own field and nothing else, and
 // the library's field names answered by the option that sets them.
 #include "fogdrift/tune/train_option_table.hpp"
+#include "fogdrift/model/gp.hpp"
 
 #include <gtest/gtest.h>
 
@@ -115,7 +116,7 @@ TEST(TrainOptionTable, ValuesReachTheLibrarysFields) {
   // The thermometers set first are what a term without its own list reads.
   EXPECT_EQ(o.dataset.features.to_string(),
             FeatureSpec::parse("T,dT(fog)", {"fog", "acc1"}).to_string());
-  EXPECT_TRUE(o.train.gp.ard);
+  EXPECT_TRUE(o.train.trainers.get<GpOptions>().ard);
 }
 
 TEST(TrainOptionTable, ErrorsNameTheOption) {

@@ -1,6 +1,9 @@
 // Every training method on a small grouped dataset, and the model file: exact round trips,
 // one seed one file, and clear errors for files fogdrift cannot read.
 #include "fogdrift/tune/train.hpp"
+#include "fogdrift/tune/bp_trainer.hpp"
+#include "fogdrift/tune/gp_trainer.hpp"
+#include "fogdrift/tune/poly_trainer.hpp"
 
 #include <gtest/gtest.h>
 
@@ -22,7 +25,7 @@ TrainOptions quick(Method method, ThreadPool* pool = nullptr) {
   o.tune.space.c_max = 10;
   o.tune.cv = {tune::CvScheme::repetition};  // the synthetic data's repetitions, as written
   o.tune.pool = pool;
-  o.mlp.max_epochs = 500;
+  o.trainers.get<MlpOptions>().max_epochs = 500;
   return o;
 }
 
@@ -54,7 +57,7 @@ TEST(Train, EveryMethodExplainsTheDrift) {
   }
   // The untuned SVR is LIBSVM's default: C = 1, γ = 1/3.
   const TrainResult svr = train(d, test::kDefaultDataset, quick(Method::svr));
-  const auto& model = std::get<svr::Model>(svr.model.regressor);
+  const auto& model = svr.model.regressor.get<svr::Model>();
   EXPECT_DOUBLE_EQ(model.kernel.gamma, 1.0 / 3);
   EXPECT_EQ(svr.model.provenance.hyperparameters[0], (std::pair<std::string, double>{"C", 1.0}));
 }
@@ -231,7 +234,7 @@ TEST(ModelFile, ADriftThatIsNotFiniteIsAnErrorNotAnOutput) {
 TEST(Train, RejectsImpossibleOptions) {
   const Dataset d = test::synthetic();
   TrainOptions o = quick(Method::poly);
-  o.poly_max_degree = 9;
+  o.trainers.get<PolyTrainer::Options>().max_degree = 9;
   EXPECT_THROW(train(d, test::kDefaultDataset, o), OptionError);
   EXPECT_THROW(parse_method("rf"), OptionError);
   EXPECT_EQ(parse_method("gwo-svr"), Method::gwo_svr);
@@ -260,7 +263,7 @@ TEST(Train, AMethodIsARegressorAndASearch) {
   EXPECT_EQ(resolved(none).method, Method::svr);
 
   TrainOptions gp = quick(Method{"gp"});
-  gp.gp.max_points = 60;
+  gp.trainers.get<GpOptions>().max_points = 60;
   gp.search = Search::pso;
   EXPECT_EQ(resolved(gp).tune.optimizer.algorithm, opt::Algorithm::pso);
   const CompensationModel by_pso = train(d, test::kDefaultDataset, gp).model;

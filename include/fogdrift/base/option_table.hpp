@@ -82,6 +82,18 @@ std::vector<OptionSpec> specs_of(const OptionTable<O>& table) {
   return specs;
 }
 
+/// The options of `table`, which describe a part of `Outer` (`part(o)` returns a reference to
+/// it, for a const and a non-const `o`), as options of `Outer`: how a trainer's own table
+/// joins train's (trainers.hpp).
+template <class Outer, class Inner, class Part>
+OptionTable<Outer> lifted(const OptionTable<Inner>& table, Part part) {
+  OptionTable<Outer> out;
+  for (const Option<Inner>& o : table)
+    out.push_back({o.spec, [text_of = o.text_of, part](const Outer& v) { return text_of(part(v)); },
+                   [set = o.set, part](Outer& v, const std::string& text) { set(part(v), text); }});
+  return out;
+}
+
 /// Each option's value in `defaults` (a default-constructed `O` unless given): the defaults
 /// users see.
 template <class O>

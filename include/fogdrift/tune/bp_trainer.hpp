@@ -7,11 +7,17 @@
 
 #include <array>
 
+#include "fogdrift/base/option_table.hpp"
+#include "fogdrift/model/mlp.hpp"
 #include "fogdrift/tune/trainer.hpp"
 
 namespace fogdrift {
 
 struct BpTrainer {
+  using Regressor = Mlp;       ///< what it fits
+  using Options = MlpOptions;  ///< its seed is set from the search's (tune.optimizer.run.seed)
+  /// {hidden}.
+  static OptionTable<Options> option_table();
   static constexpr std::string_view kName = "bp";
   static constexpr std::array<MethodName, 1> kMethods = {{
       {"bp", Search::own,

@@ -6,11 +6,17 @@
 
 #include <array>
 
+#include "fogdrift/base/option_table.hpp"
+#include "fogdrift/model/gp.hpp"
 #include "fogdrift/tune/trainer.hpp"
 
 namespace fogdrift {
 
 struct GpTrainer {
+  using Regressor = Gp;  ///< what it fits
+  using Options = GpOptions;
+  /// {gp_points}, {gp_fit}, {gp_kernel}.
+  static OptionTable<Options> option_table();
   static constexpr std::string_view kName = "gp";
   static constexpr std::array<MethodName, 1> kMethods = {{
       {"gp", Search::own,

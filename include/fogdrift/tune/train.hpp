@@ -2,19 +2,18 @@
 // the registry in trainers.hpp) fits its regressor and reports a fitness on the standardised
 // target; what every method shares is here: method and search made one, the scalers of all
 // training rows, the novelty guard over them, the held-out report and the provenance. The
-// regressor-specific options (the SVR's search box, the network's, the degree, the GP's) are
-// fields of TrainOptions, each read only by its trainer.
+// regressor-specific options are each trainer's own (TrainOptions::trainers), declared in its
+// own option table; the search's box and budget (tune) are shared with fogdrift paper.
 #pragma once
 
 #include <nlohmann/json.hpp>
 
 #include <optional>
 
-#include "fogdrift/model/gp.hpp"
-#include "fogdrift/model/mlp.hpp"
 #include "fogdrift/model/model.hpp"
 #include "fogdrift/tune/held_out.hpp"
 #include "fogdrift/tune/method.hpp"
+#include "fogdrift/tune/trainer_options.hpp"
 #include "fogdrift/tune/tune.hpp"
 
 namespace fogdrift {
@@ -45,12 +44,9 @@ struct TrainOptions {
   Search search = Search::own;
   /// fitness, folds, search box, optimizer budget and stall rule, seed, pool
   tune::TuneOptions tune = train_search_defaults();
-  MlpOptions mlp;                   ///< BP settings; its seed is set from tune.optimizer.run.seed
-  std::size_t poly_max_degree = 3;  ///< highest polynomial degree tried, 1 … 6
-  GpOptions gp;                     ///< gp: rows kept and the likelihood search
-  /// svr: fit with these instead of LIBSVM's defaults (a study refitting a tuned SVR on other
-  /// rows); the tolerance is tune.tolerance.
-  std::optional<svr::Params> svr_params;
+  /// Each trainer's own options, by their type (T::Options; trainer_options.hpp):
+  /// trainers.get<PolyTrainer::Options>().max_degree.
+  TrainerOptions trainers;
   /// The novelty guard fitted to the training rows and stored in the model (guard.hpp).
   GuardSettings guard;
   /// Tuned SVRs: when the best C, σ or ε lies on an edge of its box, widen the box by a decade

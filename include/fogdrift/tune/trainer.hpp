@@ -1,5 +1,9 @@
 // One shape for every way of training a regressor (docs/architecture.md, "Adding a regressor"). A
 // trainer is a type T with
+//   T::Regressor                the regressor it fits (a Regressor, base/regressor.hpp)
+//   T::Options                  its own options, kept in TrainOptions::trainers by their type
+//   T::option_table()           their table (base/option_table.hpp): train's flags, Python's
+//                               and Octave's keywords and docs/options.md take them from it
 //   T::kName                    its name, the method's when it has no search ("svr", "gp")
 //   T::kMethods                 the method names it answers to, each with the search it implies
 //                               and what it is (method.hpp); one of them implies Search::own
@@ -10,8 +14,9 @@
 //   T::train(context)           its regressor fitted on the context's rows: the fitness, the
 //                               hyperparameters and the folds the held-out report refits it on
 // train() (train.hpp) does what is the same for all: method and search made one, the scalers,
-// the novelty guard, the held-out report, the provenance. The registry (trainers.hpp) lists the
-// trainers and checks each against the concept: a trainer that lacks a part does not compile.
+// the novelty guard, the held-out report, the provenance. The registry (src/tune/registry.cpp)
+// lists the trainers and checks each against the concept: a trainer that lacks a part does not
+// compile.
 #pragma once
 
 #include <concepts>
@@ -21,6 +26,7 @@
 #include <string_view>
 #include <vector>
 
+#include "fogdrift/base/option_table.hpp"
 #include "fogdrift/tune/train.hpp"
 
 namespace fogdrift {
@@ -52,8 +58,10 @@ struct Trained {
 };
 
 template <class T>
-concept Trainer = requires(Search s, const TrainOptions& o, const TrainContext& c) {
+concept Trainer = Regressor<typename T::Regressor> &&
+    requires(Search s, const TrainOptions& o, const TrainContext& c) {
   { T::kName } -> std::convertible_to<std::string_view>;
+  { T::option_table() } -> std::same_as<OptionTable<typename T::Options>>;
   {std::span<const MethodName>(T::kMethods)};
   { T::search(s, o) } -> std::same_as<Search>;
   { T::validate(o) } -> std::same_as<void>;
