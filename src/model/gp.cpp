@@ -34,7 +34,7 @@ double correlation(const double* a, const double* b, const std::vector<double>& 
 }
 
 // K + σn² I over the rows of `data` (eq. 1).
-Matrix covariance(const svr::Data& data, const GpHyper& h) {
+Matrix covariance(const Data& data, const GpHyper& h) {
   const auto n = static_cast<Eigen::Index>(data.rows);
   Matrix k(n, n);
   for (Eigen::Index i = 0; i < n; ++i) {
@@ -67,7 +67,7 @@ Eigen::LLT<Matrix> factor_of(const Matrix& k, const GpHyper& h) {
   return llt;
 }
 
-Eigen::LLT<Matrix> cholesky(const svr::Data& data, const GpHyper& h) {
+Eigen::LLT<Matrix> cholesky(const Data& data, const GpHyper& h) {
   check_hyper(h, data.cols);
   return factor_of(covariance(data, h), h);
 }
@@ -145,8 +145,8 @@ double GpPosterior::variance(const double* x) const {
   return std::max(0.0, gp.hyper.signal_variance - vv);
 }
 
-GpPosterior fit_gp(const svr::Data& train, const GpHyper& hyper) {
-  svr::validate(train, "Gaussian-process training data");
+GpPosterior fit_gp(const Data& train, const GpHyper& hyper) {
+  validate(train, "Gaussian-process training data");
   const Eigen::LLT<Matrix> llt = cholesky(train, hyper);
   const auto n = static_cast<Eigen::Index>(train.rows);
   const Eigen::VectorXd a = llt.solve(Eigen::Map<const Eigen::VectorXd>(train.y.data(), n));
@@ -161,7 +161,7 @@ GpPosterior fit_gp(const svr::Data& train, const GpHyper& hyper) {
 }
 
 GpPosterior factor(const Gp& gp) {
-  svr::Data data;
+  Data data;
   data.rows = gp.size();
   data.cols = gp.inputs;
   data.x = gp.points;
@@ -177,7 +177,7 @@ double GpPosterior::log_likelihood(std::span<const double> y) const {
   return likelihood_of(y, gp.alpha, diagonal);
 }
 
-GpLikelihood log_marginal_likelihood(const svr::Data& train, const GpHyper& h, bool ard) {
+GpLikelihood log_marginal_likelihood(const Data& train, const GpHyper& h, bool ard) {
   const std::size_t n = train.rows, d = train.cols;
   check_hyper(h, d);
   const Matrix cov = covariance(train, h);
@@ -225,11 +225,11 @@ std::vector<std::size_t> gp_rows(std::size_t rows, std::size_t max_points) {
   return out;
 }
 
-GpFit train_gp(const svr::Data& train, const GpOptions& o) {
+GpFit train_gp(const Data& train, const GpOptions& o) {
   validate(o);
-  svr::validate(train, "Gaussian-process training data");
+  validate(train, "Gaussian-process training data");
   const std::vector<std::size_t> kept = gp_rows(train.rows, o.max_points);
-  const svr::Data data = train.subset(kept);
+  const Data data = train.subset(kept);
   const std::size_t d = train.cols, m = o.ard ? d : 1, p = m + 2;
   const GpBounds& b = o.bounds;
   // θ = (log s², log ℓ, log σn²) and its box.

@@ -61,9 +61,9 @@ double rmse(const Layout& l, const Vector& theta, const Matrix& x, const Vector&
 
 }  // namespace
 
-MlpFit fit_mlp(const svr::Data& train, const svr::Data& validation, const MlpOptions& options) {
+MlpFit fit_mlp(const Data& train, const Data& validation, const MlpOptions& options) {
   validate(options);
-  svr::validate(train, "BP training data");
+  validate(train, "BP training data");
   if (validation.rows > 0 && validation.cols != train.cols)
     throw std::invalid_argument("fit_mlp: validation data has other columns");
   const auto start = std::chrono::steady_clock::now();

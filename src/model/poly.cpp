@@ -46,10 +46,10 @@ double Poly::predict(const double* x) const noexcept {
   return y;
 }
 
-Poly fit_poly(const svr::Data& train, std::size_t degree, double ridge) {
+Poly fit_poly(const Data& train, std::size_t degree, double ridge) {
   if (degree < 1 || degree > 6)
     throw OptionError("degree", fmt::format("{} is outside 1 … 6", degree));
-  svr::validate(train, "polynomial training data");
+  validate(train, "polynomial training data");
   Poly p;
   p.inputs = train.cols;
   p.degree = degree;

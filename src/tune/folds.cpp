@@ -133,7 +133,7 @@ ScaledSplit scale_split(const Dataset& data, std::span<const std::size_t> train_
                         std::span<const std::size_t> test_rows) {
   const std::size_t d = data.cols();
   auto gather = [&](std::span<const std::size_t> rows) {
-    svr::Data out;
+    Data out;
     out.rows = rows.size();
     out.cols = d;
     out.x.reserve(rows.size() * d);

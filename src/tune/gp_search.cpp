@@ -27,9 +27,9 @@ struct FoldDistances {
   Matrix cross;  // m × n
   Eigen::VectorXd y_train, y_test;
 
-  FoldDistances(const svr::Data& tr, const svr::Data& te, std::size_t max_points) {
-    const svr::Data a = tr.subset(gp_rows(tr.rows, max_points));
-    const svr::Data b = te.subset(gp_rows(te.rows, max_points));
+  FoldDistances(const Data& tr, const Data& te, std::size_t max_points) {
+    const Data a = tr.subset(gp_rows(tr.rows, max_points));
+    const Data b = te.subset(gp_rows(te.rows, max_points));
     const auto n = static_cast<Eigen::Index>(a.rows), m = static_cast<Eigen::Index>(b.rows);
     train.resize(n, n);
     cross.resize(m, n);
@@ -60,7 +60,7 @@ struct FoldDistances {
 
 }  // namespace
 
-GpSearch search_gp(std::span<const tune::ScaledSplit> splits, const svr::Data& all,
+GpSearch search_gp(std::span<const tune::ScaledSplit> splits, const Data& all,
                    const GpOptions& options, const opt::OptimizerOptions& optimizer,
                    ThreadPool* pool) {
   validate(options);
@@ -117,7 +117,7 @@ GpSearch search_gp(std::span<const tune::ScaledSplit> splits, const svr::Data& a
   const double ratio = std::pow(10.0, out.search.best_point[1]);
   // The scale by eq. 7 on the rows the model keeps, then the GP of (s², ℓ, λ s²).
   const std::vector<std::size_t> kept_rows = gp_rows(all.rows, options.max_points);
-  const svr::Data kept = all.subset(kept_rows);
+  const Data kept = all.subset(kept_rows);
   GpHyper unit{1.0, std::vector<double>(all.cols, length), ratio};
   const GpPosterior correlation = fit_gp(kept, unit);  // α' = (E + λI)⁻¹ y
   double y_alpha = 0;

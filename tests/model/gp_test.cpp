@@ -26,8 +26,8 @@ const nlohmann::json& gp_reference() {
   return reference;
 }
 
-svr::Data data_of(const nlohmann::json& c) {
-  svr::Data d;
+Data data_of(const nlohmann::json& c) {
+  Data d;
   d.rows = c.at("rows").get<std::size_t>();
   d.cols = c.at("cols").get<std::size_t>();
   d.x = c.at("x").get<std::vector<double>>();
@@ -44,7 +44,7 @@ TEST(Gp, AgreesWithScikitLearnAtGivenHyperparameters) {
   for (const auto& c : gp_reference().at("cases")) {
     const std::string name = c.at("name").get<std::string>();
     const bool ard = c.at("ard").get<bool>();
-    const svr::Data data = data_of(c);
+    const Data data = data_of(c);
     const GpHyper hyper = hyper_of(c);
     const GpLikelihood l = log_marginal_likelihood(data, hyper, ard);
     const double expected = c.at("log_likelihood").get<double>();
@@ -75,7 +75,7 @@ TEST(Gp, AgreesWithScikitLearnAtGivenHyperparameters) {
 TEST(Gp, FindsScikitLearnsOptimum) {
   for (const auto& c : gp_reference().at("cases")) {
     const std::string name = c.at("name").get<std::string>();
-    const svr::Data data = data_of(c);
+    const Data data = data_of(c);
     GpOptions o;
     o.selection = GpSelection::likelihood;
     o.ard = c.at("ard").get<bool>();
@@ -102,7 +102,7 @@ TEST(Gp, FindsScikitLearnsOptimum) {
 // The likelihood's gradient against central differences of the likelihood itself.
 TEST(Gp, GradientIsTheLikelihoodsSlope) {
   const auto& c = gp_reference().at("cases").at(0);
-  const svr::Data data = data_of(c);
+  const Data data = data_of(c);
   const GpHyper h0 = hyper_of(c);
   const GpLikelihood l = log_marginal_likelihood(data, h0);
   const std::size_t p = l.gradient.size();
@@ -177,7 +177,7 @@ TEST(Gp, RejectsBadFilesAndOptionsByName) {
   o.max_iterations = 0;
   EXPECT_THROW(validate(o), OptionError);
   // Repeated rows without noise cannot be factored: an error that says so, not a NaN model.
-  svr::Data twice;
+  Data twice;
   twice.rows = 2, twice.cols = 1, twice.x = {1, 1}, twice.y = {0, 1};
   EXPECT_THROW(fit_gp(twice, {1, {1}, 1e-300}), OptionError);
 }

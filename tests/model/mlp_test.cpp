@@ -10,8 +10,8 @@
 namespace fogdrift {
 namespace {
 
-svr::Data smooth(std::uint64_t seed, std::size_t rows, double noise) {
-  svr::Data d;
+Data smooth(std::uint64_t seed, std::size_t rows, double noise) {
+  Data d;
   d.cols = 2;
   Rng rng(seed);
   for (std::size_t i = 0; i < rows; ++i) {
@@ -23,7 +23,7 @@ svr::Data smooth(std::uint64_t seed, std::size_t rows, double noise) {
   return d;
 }
 
-double rmse(const Mlp& m, const svr::Data& d) {
+double rmse(const Mlp& m, const Data& d) {
   double s = 0;
   for (std::size_t i = 0; i < d.rows; ++i) s += std::pow(m.predict(d.row(i)) - d.y[i], 2);
   return std::sqrt(s / d.rows);
@@ -31,7 +31,7 @@ double rmse(const Mlp& m, const svr::Data& d) {
 
 // The target's standard deviation is about 0.8; a trained network gets within a few hundredths.
 TEST(Mlp, LearnsASmoothFunction) {
-  const svr::Data train = smooth(1, 400, 0), valid = smooth(2, 200, 0);
+  const Data train = smooth(1, 400, 0), valid = smooth(2, 200, 0);
   MlpOptions o;
   o.max_epochs = 4000;
   const MlpFit fit = fit_mlp(train, valid, o);
@@ -43,7 +43,7 @@ TEST(Mlp, LearnsASmoothFunction) {
 // On noisy data with many units, the validation error stops improving and training stops early;
 // the kept weights are those of the best epoch.
 TEST(Mlp, StopsEarlyOnHeldOutData) {
-  const svr::Data train = smooth(3, 60, 0.3), valid = smooth(4, 200, 0.3);
+  const Data train = smooth(3, 60, 0.3), valid = smooth(4, 200, 0.3);
   MlpOptions o;
   o.hidden = 40;
   o.learning_rate = 0.05;
@@ -57,7 +57,7 @@ TEST(Mlp, StopsEarlyOnHeldOutData) {
 }
 
 TEST(Mlp, SameSeedSameWeights) {
-  const svr::Data train = smooth(5, 100, 0.1), valid = smooth(6, 50, 0.1);
+  const Data train = smooth(5, 100, 0.1), valid = smooth(6, 50, 0.1);
   MlpOptions o;
   o.max_epochs = 300;
   const MlpFit a = fit_mlp(train, valid, o), b = fit_mlp(train, valid, o);
@@ -68,7 +68,7 @@ TEST(Mlp, SameSeedSameWeights) {
 }
 
 TEST(Mlp, RejectsImpossibleOptions) {
-  const svr::Data train = smooth(5, 10, 0.1);
+  const Data train = smooth(5, 10, 0.1);
   MlpOptions o;
   o.hidden = 0;
   EXPECT_THROW(fit_mlp(train, {}, o), OptionError);

@@ -38,7 +38,7 @@ TEST(Poly, MonomialsAreEveryExponentVectorOnce) {
 
 // A noise-free cubic in two variables is recovered exactly (closed form: the data lie on it).
 TEST(Poly, RecoversAKnownPolynomial) {
-  svr::Data data;
+  Data data;
   data.cols = 2;
   Rng rng(3);
   for (int i = 0; i < 200; ++i) {
@@ -63,7 +63,7 @@ TEST(Poly, RecoversAKnownPolynomial) {
 }
 
 TEST(Poly, RejectsImpossibleDegrees) {
-  svr::Data data{3, 2, {0, 1, 1, 0, 1, 1}, {1, 2, 3}, {}};
+  Data data{3, 2, {0, 1, 1, 0, 1, 1}, {1, 2, 3}, {}};
   EXPECT_THROW(fit_poly(data, 0), OptionError);
   EXPECT_THROW(fit_poly(data, 7), OptionError);
   EXPECT_THROW(fit_poly(data, 2), OptionError);  // 6 terms, 3 rows

@@ -30,7 +30,7 @@ cat >"$tree/include/fogdrift/model/lsq.hpp" <<'EOF'
 #include <vector>
 
 #include "fogdrift/base/regressor.hpp"
-#include "fogdrift/svr/kernel.hpp"
+#include "fogdrift/base/data.hpp"
 
 namespace fogdrift {
 
@@ -51,7 +51,7 @@ std::string to_json(const Lsq& r);
 Lsq regressor_from_json(std::type_identity<Lsq>, const std::string& text,
                         const std::string& source);
 CRegressor to_c(const Lsq& r, const CNames& names);
-Lsq fit_lsq(const svr::Data& data, double ridge);
+Lsq fit_lsq(const Data& data, double ridge);
 
 }  // namespace fogdrift
 EOF
@@ -99,7 +99,7 @@ CRegressor to_c(const Lsq& r, const CNames& names) {
   return out;
 }
 
-Lsq fit_lsq(const svr::Data& data, double ridge) {
+Lsq fit_lsq(const Data& data, double ridge) {
   const auto n = static_cast<Eigen::Index>(data.rows), d = static_cast<Eigen::Index>(data.cols);
   Eigen::MatrixXd a(n, d + 1);
   for (Eigen::Index i = 0; i < n; ++i) {

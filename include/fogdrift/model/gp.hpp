@@ -19,8 +19,8 @@
 #include <type_traits>
 #include <vector>
 
+#include "fogdrift/base/data.hpp"
 #include "fogdrift/base/regressor.hpp"
-#include "fogdrift/svr/kernel.hpp"
 
 namespace fogdrift {
 
@@ -95,7 +95,7 @@ struct GpPosterior {
 
 /// The GP of `train` with the given hyperparameters (no search). Throws OptionError when
 /// K + σn² I is not positive definite in floating point.
-GpPosterior fit_gp(const svr::Data& train, const GpHyper& hyper);
+GpPosterior fit_gp(const Data& train, const GpHyper& hyper);
 /// The factor of a Gp read from a file.
 GpPosterior factor(const Gp& gp);
 
@@ -105,7 +105,7 @@ struct GpLikelihood {
   double value = 0;
   std::vector<double> gradient;
 };
-GpLikelihood log_marginal_likelihood(const svr::Data& train, const GpHyper& hyper, bool ard = true);
+GpLikelihood log_marginal_likelihood(const Data& train, const GpHyper& hyper, bool ard = true);
 
 /// The rows a GP of at most `max_points` keeps from `rows`: all of them, or max_points evenly
 /// spaced, row ⌊i·rows / max_points⌋.
@@ -126,7 +126,7 @@ struct GpFit {
 };
 /// Chooses the hyperparameters on gp_rows(train.rows, max_points) by the likelihood search,
 /// starting from s² = 1, ℓ_k = √d, σn² = 0.1, and fits the GP there.
-GpFit train_gp(const svr::Data& train, const GpOptions& options);
+GpFit train_gp(const Data& train, const GpOptions& options);
 
 /// The GP as JSON text, the regressor object of a model file without its "type": {"inputs",
 /// "signal_variance", "length_scale", "noise_variance", "points", "alpha"}.

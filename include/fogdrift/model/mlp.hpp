@@ -12,8 +12,8 @@
 #include <string>
 #include <vector>
 
+#include "fogdrift/base/data.hpp"
 #include "fogdrift/base/regressor.hpp"
-#include "fogdrift/svr/kernel.hpp"
 
 namespace fogdrift {
 
@@ -74,6 +74,6 @@ struct MlpFit {
 
 /// Trains on `train`, stopping early on `validation` (same columns; when it has no rows, the
 /// training error decides and the run ends at max_epochs or when it stalls for `patience`).
-MlpFit fit_mlp(const svr::Data& train, const svr::Data& validation, const MlpOptions& options);
+MlpFit fit_mlp(const Data& train, const Data& validation, const MlpOptions& options);
 
 }  // namespace fogdrift

@@ -9,8 +9,8 @@
 #include <string>
 #include <vector>
 
+#include "fogdrift/base/data.hpp"
 #include "fogdrift/base/regressor.hpp"
-#include "fogdrift/svr/kernel.hpp"
 
 namespace fogdrift {
 
@@ -48,6 +48,6 @@ std::vector<std::uint8_t> monomials(std::size_t inputs, std::size_t degree);
 
 /// Least-squares fit. Throws OptionError("degree", …) for degree 0 or above 6, or when the data
 /// has fewer rows than terms.
-Poly fit_poly(const svr::Data& train, std::size_t degree, double ridge = 1e-10);
+Poly fit_poly(const Data& train, std::size_t degree, double ridge = 1e-10);
 
 }  // namespace fogdrift

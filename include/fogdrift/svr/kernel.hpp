@@ -13,6 +13,7 @@
 #include <string_view>
 #include <vector>
 
+#include "fogdrift/base/data.hpp"
 #include "fogdrift/svr/workspace.hpp"
 
 namespace fogdrift {
@@ -46,27 +47,9 @@ struct Kernel {
   bool operator==(const Kernel&) const = default;
 };
 
-/// Dense regression data: `rows` samples of `cols` features, row-major, one target each, and
-/// optionally a weight each.
-struct Data {
-  std::size_t rows = 0;
-  std::size_t cols = 0;
-  std::vector<double> x;  ///< rows × cols, row-major
-  std::vector<double> y;  ///< rows
-  /// rows weights > 0, or empty for all 1: sample i's variables are bounded by C·weight_i
-  /// instead of C, as LIBSVM's and scikit-learn's sample weights (a weight of 2 acts as the
-  /// sample twice). Samples of weight 0 are to be left out of the data.
-  std::vector<double> weight;
-
-  const double* row(std::size_t i) const { return x.data() + i * cols; }
-  double weight_of(std::size_t i) const { return weight.empty() ? 1.0 : weight[i]; }
-  /// The rows whose indices are given, in that order (for cross-validation folds).
-  Data subset(std::span<const std::size_t> indices) const;
-};
-
-/// Checks shapes, that every value is finite and every weight > 0, and that there is at least
-/// one sample. Throws InputError whose file is `what` and whose line is the 1-based sample.
-void validate(const Data& data, std::string_view what = "training data");
+/// The engine's training data is fogdrift's (base/data.hpp).
+using Data = fogdrift::Data;
+using fogdrift::validate;
 
 /// A data set prepared once for many fits: a feature-major copy for vectorised kernel rows, the
 /// squared norms, and, when it fits the memory budget and pays off, the matrix of pairwise

@@ -56,8 +56,8 @@ std::vector<Fold> grouped_folds(const Dataset& data, const CvOptions& options = 
 struct ScaledSplit {
   Standardizer x_scaler;
   Standardizer y_scaler;
-  svr::Data train;
-  svr::Data test;  ///< empty when no test rows are given
+  Data train;
+  Data test;  ///< empty when no test rows are given
 };
 ScaledSplit scale_split(const Dataset& data, std::span<const std::size_t> train_rows,
                         std::span<const std::size_t> test_rows);

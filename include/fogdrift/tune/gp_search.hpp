@@ -33,7 +33,7 @@ struct GpSearch {
 /// Searches (ℓ, λ) in options.box by the RMSE over `splits` (scaled folds), then fits the GP of
 /// the best on gp_rows(all.rows, options.max_points) of `all` (every training row, scaled).
 /// Throws OptionError for options validate(GpOptions) or the optimizer refuses.
-GpSearch search_gp(std::span<const tune::ScaledSplit> splits, const svr::Data& all,
+GpSearch search_gp(std::span<const tune::ScaledSplit> splits, const Data& all,
                    const GpOptions& options, const opt::OptimizerOptions& optimizer,
                    ThreadPool* pool = nullptr);
 
