@@ -157,4 +157,25 @@ ScaledSplit scale_split(const Dataset& data, std::span<const std::size_t> train_
   return s;
 }
 
+std::vector<ScaledSplit> scale_splits(const Dataset& data, std::span<const Fold> folds) {
+  std::vector<ScaledSplit> splits;
+  splits.reserve(folds.size());
+  for (const Fold& f : folds) splits.push_back(scale_split(data, f.train_rows, f.test_rows));
+  return splits;
+}
+
+double pooled_rmse(std::span<const ScaledSplit> splits, const FoldPredictions& predicted) {
+  double sse = 0;
+  std::size_t n = 0;
+  for (std::size_t k = 0; k < splits.size(); ++k) {
+    const Data& test = splits[k].test;
+    for (std::size_t r = 0; r < test.rows; ++r) {
+      const double e = predicted[k][r] - test.y[r];
+      sse += e * e;
+    }
+    n += test.rows;
+  }
+  return std::sqrt(sse / static_cast<double>(n));
+}
+
 }  // namespace fogdrift::tune

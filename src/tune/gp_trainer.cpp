@@ -80,9 +80,7 @@ Trained GpTrainer::train(const TrainContext& c) {
   Trained out;
   TrainSummary& s = out.summary;
   out.held_folds = tune::grouped_folds(c.data, options.tune.cv);
-  std::vector<tune::ScaledSplit> splits;
-  for (const auto& f : out.held_folds)
-    splits.push_back(tune::scale_split(c.data, f.train_rows, f.test_rows));
+  const std::vector<tune::ScaledSplit> splits = tune::scale_splits(c.data, out.held_folds);
   GpFit fit;
   if (gp.selection == GpSelection::cv) {
     fit = search_gp(splits, c.full.train, gp, options.tune.optimizer, options.tune.pool).fit;
@@ -97,24 +95,15 @@ Trained GpTrainer::train(const TrainContext& c) {
   const GpHyper hyper = fit.posterior.gp.hyper;
   // The GP of each fold, fitted once: its held-out predictions give the fitness here and the
   // held-out report (which splits the same folds the same way).
-  auto predictions = std::make_shared<std::vector<std::vector<double>>>();
-  double sse = 0;
-  std::size_t n = 0;
-  for (const tune::ScaledSplit& split : splits) {
-    const Gp fold_gp =
-        fit_gp(split.train.subset(gp_rows(split.train.rows, gp.max_points)), hyper).gp;
-    std::vector<double>& predicted = predictions->emplace_back(split.test.rows);
-    for (std::size_t r = 0; r < split.test.rows; ++r) {
-      predicted[r] = fold_gp.predict(split.test.row(r));
-      sse += (predicted[r] - split.test.y[r]) * (predicted[r] - split.test.y[r]);
-    }
-    n += split.test.rows;
-  }
+  auto predictions = std::make_shared<tune::FoldPredictions>(
+      tune::fold_predictions(splits, [&](const Data& train) {
+        return fit_gp(train.subset(gp_rows(train.rows, gp.max_points)), hyper).gp;
+      }));
   out.held_predict = [predictions](const tune::ScaledSplit&, std::size_t fold) {
     return (*predictions)[fold];
   };
   s.fitness = "cv";
-  s.fitness_value = std::sqrt(sse / static_cast<double>(n));
+  s.fitness_value = tune::pooled_rmse(splits, *predictions);
   out.cv = describe_folds(out.held_folds);
   out.held_description = out.cv;
   s.hyperparameters = {{"signal_variance", hyper.signal_variance},

@@ -92,17 +92,10 @@ std::vector<Baseline> baselines_of(const Dataset& data, std::span<const tune::Sc
   return out;
 }
 
-std::vector<tune::ScaledSplit> split_all(const Dataset& data, std::span<const tune::Fold> folds) {
-  std::vector<tune::ScaledSplit> splits;
-  for (const tune::Fold& f : folds)
-    splits.push_back(tune::scale_split(data, f.train_rows, f.test_rows));
-  return splits;
-}
-
 }  // namespace
 
 std::vector<Baseline> baseline_scores(const Dataset& data, std::span<const tune::Fold> folds) {
-  return baselines_of(data, split_all(data, folds));
+  return baselines_of(data, tune::scale_splits(data, folds));
 }
 
 HeldOutReport held_out_report(const Dataset& data, std::span<const tune::Fold> folds,
@@ -115,7 +108,7 @@ HeldOutReport held_out_report(const Dataset& data, std::span<const tune::Fold> f
   double sse = 0, within_error = 0, within_target = 0;
   std::size_t count = 0;
   // Each fold split and standardised once, for the model and the baselines alike.
-  const std::vector<tune::ScaledSplit> splits = split_all(data, folds);
+  const std::vector<tune::ScaledSplit> splits = tune::scale_splits(data, folds);
   for (std::size_t k = 0; k < folds.size(); ++k) {
     const tune::ScaledSplit& split = splits[k];
     const std::vector<double> p = predict(split, k);

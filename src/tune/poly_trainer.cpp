@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <cmath>
+#include <memory>
 
 #include "fogdrift/base/error.hpp"
 
@@ -31,30 +32,24 @@ Trained PolyTrainer::train(const TrainContext& c) {
   Trained out;
   TrainSummary& s = out.summary;
   const auto folds = tune::grouped_folds(c.data, c.options.tune.cv);
-  std::vector<tune::ScaledSplit> splits;
-  for (const auto& f : folds)
-    splits.push_back(tune::scale_split(c.data, f.train_rows, f.test_rows));
+  const std::vector<tune::ScaledSplit> splits = tune::scale_splits(c.data, folds);
   // Degrees with more terms than a fold has training rows cannot be fitted: the search stops
   // below them.
   std::size_t min_rows = c.data.rows;
   for (const auto& sp : splits) min_rows = std::min(min_rows, sp.train.rows);
   std::vector<double> cv_rmse;  // of degree 1, 2, …
   std::size_t best = 1;
+  auto best_predictions = std::make_shared<tune::FoldPredictions>();
   const std::size_t max_degree = c.options.trainers.get<Options>().max_degree;
   for (std::size_t degree = 1; degree <= max_degree; ++degree) {
     if (degree > 1 && monomials(c.data.cols(), degree).size() / c.data.cols() > min_rows) break;
-    double sse = 0;
-    std::size_t n = 0;
-    for (const auto& sp : splits) {
-      const Poly poly = fit_poly(sp.train, degree);
-      for (std::size_t r = 0; r < sp.test.rows; ++r) {
-        const double e = poly.predict(sp.test.row(r)) - sp.test.y[r];
-        sse += e * e;
-      }
-      n += sp.test.rows;
+    tune::FoldPredictions predicted = tune::fold_predictions(
+        splits, [degree](const Data& train) { return fit_poly(train, degree); });
+    cv_rmse.push_back(tune::pooled_rmse(splits, predicted));
+    if (degree == 1 || cv_rmse.back() < cv_rmse[best - 1]) {
+      best = degree;
+      *best_predictions = std::move(predicted);
     }
-    cv_rmse.push_back(std::sqrt(sse / static_cast<double>(n)));
-    if (cv_rmse.back() < cv_rmse[best - 1]) best = degree;
   }
   out.regressor = fit_poly(c.full.train, best);
   s.fitness = "cv";
@@ -62,12 +57,9 @@ Trained PolyTrainer::train(const TrainContext& c) {
   out.cv = describe_folds(folds);
   out.held_folds = folds;
   out.held_description = out.cv;
-  out.held_predict = [best](const tune::ScaledSplit& split, std::size_t) {
-    const Poly poly = fit_poly(split.train, best);
-    std::vector<double> predicted(split.test.rows);
-    for (std::size_t r = 0; r < split.test.rows; ++r)
-      predicted[r] = poly.predict(split.test.row(r));
-    return predicted;
+  // The held-out report splits the same folds the same way: the best degree's fits, reused.
+  out.held_predict = [best_predictions](const tune::ScaledSplit&, std::size_t fold) {
+    return (*best_predictions)[fold];
   };
   s.hyperparameters = {{"degree", static_cast<double>(best)}};
   s.record["poly_cv_rmse_by_degree"] = cv_rmse;

@@ -61,5 +61,32 @@ struct ScaledSplit {
 };
 ScaledSplit scale_split(const Dataset& data, std::span<const std::size_t> train_rows,
                         std::span<const std::size_t> test_rows);
+/// Every fold split and standardised (scale_split), in the folds' order.
+std::vector<ScaledSplit> scale_splits(const Dataset& data, std::span<const Fold> folds);
+
+/// Held-out predictions per fold: what a candidate fitted on the fold's training rows predicts
+/// for its test rows.
+using FoldPredictions = std::vector<std::vector<double>>;
+
+/// A candidate over the grouped folds, as every trainer that cross-validates fits it: `fit`
+/// (const Data& train → a regressor with predict(const double*)) on each split's training rows,
+/// its predictions for the split's test rows. The held-out report may reuse them (held_out.hpp:
+/// it splits the same folds the same way).
+template <class Fit>
+FoldPredictions fold_predictions(std::span<const ScaledSplit> splits, Fit&& fit) {
+  FoldPredictions out;
+  out.reserve(splits.size());
+  for (const ScaledSplit& split : splits) {
+    const auto regressor = fit(split.train);
+    std::vector<double>& predicted = out.emplace_back(split.test.rows);
+    for (std::size_t r = 0; r < split.test.rows; ++r)
+      predicted[r] = regressor.predict(split.test.row(r));
+  }
+  return out;
+}
+
+/// The RMSE of `predicted` against the splits' held-out targets, pooled over every held-out row
+/// (a trainer's "cv" fitness).
+double pooled_rmse(std::span<const ScaledSplit> splits, const FoldPredictions& predicted);
 
 }  // namespace fogdrift::tune
