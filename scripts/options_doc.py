@@ -13,17 +13,49 @@ option of `fogdrift train` and Python's fogdrift.train (src/tune/train_option_ta
 `fogdrift plan` (src/sim/scenario_option_table.cpp): every command `fogdrift options --list`
 names. This
 script puts each between its two marker lines on the page, so that the page cannot fall behind
-the code.
+the code. It also writes the `--method a|b|…` lists of README.md and docs/tuning.md from the
+registry's methods (`--method`'s allowed values), so a regressor added by docs/architecture.md's
+recipe reaches them by running this script, not by hand.
 
 Usage:
     python3 scripts/options_doc.py FOGDRIFT            # rewrite the table (FOGDRIFT: the tool)
     python3 scripts/options_doc.py FOGDRIFT --check    # exit 1 if the page differs
 """
+import json
 import os
+import re
 import subprocess
 import sys
 
-PAGE = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "docs", "options.md")
+ROOT = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
+PAGE = os.path.join(ROOT, "docs", "options.md")
+# The pages whose synopses list the methods, and how each writes the bar between them (README's
+# is inside a Markdown table, where a bare | would end the cell).
+METHOD_LISTS = {os.path.join(ROOT, "README.md"): "\\|", os.path.join(ROOT, "docs", "tuning.md"): "|"}
+
+
+def method_lists(tool, check):
+    """Rewrites (or checks) every `--method a|b|…` of METHOD_LISTS; returns the pages that
+    differ."""
+    options = json.loads(subprocess.run([tool, "options", "train", "--json"], check=True,
+                                        capture_output=True, text=True).stdout)
+    allowed = next(o["allowed"] for o in options if o["keyword"] == "method").split(", ")
+    stale = []
+    for path, bar in METHOD_LISTS.items():
+        with open(path, encoding="utf-8") as f:
+            text = f.read()
+        pattern = re.compile(r"--method [a-z][a-z-]*(?:" + re.escape(bar) + r"[a-z][a-z-]*)+")
+        if not pattern.search(text):
+            sys.exit(f"{path}: no `--method a{bar}b` list to keep")
+        wanted = pattern.sub(lambda m: "--method " + bar.join(allowed), text)
+        if wanted == text:
+            continue
+        stale.append(path)
+        if not check:
+            with open(path + ".tmp", "w", encoding="utf-8") as f:
+                f.write(wanted)
+            os.replace(path + ".tmp", path)
+    return stale
 
 
 def markers(command):
@@ -50,9 +82,13 @@ def main(argv):
         head, rest = wanted.split(begin, 1)
         _, tail = rest.split(end, 1)
         wanted = head + begin + "\n" + table + end + tail
+    stale = method_lists(argv[1], check=len(argv) == 3)
     if len(argv) == 3:
         if wanted != page:
             sys.exit(f"{PAGE}: a table differs from `fogdrift options`; run "
+                     f"python3 scripts/options_doc.py {argv[1]}")
+        if stale:
+            sys.exit(f"{', '.join(stale)}: the --method list differs from the registry's; run "
                      f"python3 scripts/options_doc.py {argv[1]}")
         return
     with open(PAGE + ".tmp", "w", encoding="utf-8") as f:

@@ -17,7 +17,7 @@ fail() { echo "regressor_recipe: $*" >&2; exit 1; }
 
 # The library, its command line and what their build reads.
 mkdir -p "$tree"
-for part in CMakeLists.txt cmake include src apps; do cp -r "$src/$part" "$tree/"; done
+for part in CMakeLists.txt cmake include src apps README.md docs scripts; do cp -r "$src/$part" "$tree/"; done
 cp -r "$tree" "$work/before"
 
 # 1. The regressor: include/fogdrift/model/lsq.hpp and src/model/lsq.cpp.
@@ -277,4 +277,13 @@ if worst > 1e-12:
     sys.exit(f"worst relative difference {worst:.3g} exceeds 1e-12")
 print(f"lsq: C against stream, worst relative difference {worst:.3g}")
 PY
+# The generated docs take it from the registry: docs/options.md's train table gets --lsq-ridge,
+# README's and tuning.md's --method lists get lsq, and the check then passes.
+python3 "$tree/scripts/options_doc.py" "$fd" --check 2>/dev/null &&
+  fail "options_doc --check passed with a method the docs do not list"
+python3 "$tree/scripts/options_doc.py" "$fd" || fail "options_doc could not write the docs"
+python3 "$tree/scripts/options_doc.py" "$fd" --check || fail "options_doc --check fails after writing"
+grep -q -- "--lsq-ridge" "$tree/docs/options.md" || fail "docs/options.md does not list --lsq-ridge"
+grep -q -- '--method ssa-svr\\|pso-svr\\|gwo-svr\\|svr\\|bp\\|poly\\|gp\\|lsq' "$tree/README.md" ||
+  fail "README's --method list does not end with lsq"
 echo "regressor_recipe: lsq added by four files and two registry lines; train, evaluate, stream and export-c take it"
