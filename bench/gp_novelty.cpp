@@ -29,7 +29,7 @@
 #include "fogdrift/model/features.hpp"
 #include "fogdrift/model/gp.hpp"
 #include "fogdrift/sim/scenarios.hpp"
-#include "fogdrift/tune/train.hpp"
+#include "fogdrift/train/train.hpp"
 
 namespace {
 

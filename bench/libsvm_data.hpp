@@ -15,7 +15,7 @@
 #include "fogdrift/svr/kernel.hpp"
 #include "fogdrift/svr/svr.hpp"
 #include "fogdrift/svr/workspace.hpp"
-#include "fogdrift/tune/tune.hpp"
+#include "fogdrift/train/tune.hpp"
 
 namespace fogdrift::bench {
 

@@ -20,7 +20,7 @@
 #include "fogdrift/model/poly.hpp"
 #include "fogdrift/sim/scenarios.hpp"
 #include "fogdrift/svr/svr.hpp"
-#include "fogdrift/tune/train.hpp"
+#include "fogdrift/train/train.hpp"
 
 namespace {
 

@@ -36,8 +36,8 @@
 #include "fogdrift/model/dataset.hpp"
 #include "fogdrift/model/features.hpp"
 #include "fogdrift/sim/scenarios.hpp"
-#include "fogdrift/tune/train.hpp"
-#include "fogdrift/tune/tune.hpp"
+#include "fogdrift/train/train.hpp"
+#include "fogdrift/train/tune.hpp"
 #include "libsvm_data.hpp"
 
 namespace {

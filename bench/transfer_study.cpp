@@ -23,7 +23,7 @@
 #include "fogdrift/eval/field.hpp"
 #include "fogdrift/model/dataset.hpp"
 #include "fogdrift/sim/scenarios.hpp"
-#include "fogdrift/tune/train.hpp"
+#include "fogdrift/train/train.hpp"
 
 namespace {
 

@@ -26,7 +26,7 @@
 #include "fogdrift/base/thread_pool.hpp"
 #include "fogdrift/io/campaign.hpp"
 #include "fogdrift/model/features.hpp"
-#include "fogdrift/tune/tune.hpp"
+#include "fogdrift/train/tune.hpp"
 #include "libsvm_data.hpp"
 
 namespace {

@@ -2,7 +2,7 @@
 """Writes (or checks) the tables of options in docs/options.md.
 
 Each table is what `fogdrift options COMMAND` prints: the one description fogdrift keeps of each
-option of `fogdrift train` and Python's fogdrift.train (src/tune/train_option_table.cpp), and of
+option of `fogdrift train` and Python's fogdrift.train (src/train/train_option_table.cpp), and of
 `fogdrift simulate`'s protocols and Python's fogdrift.simulate
 (src/sim/scenario_option_table.cpp), and of the streaming fault policy of `fogdrift stream`,
 `fogdrift export-c` and Python's StreamingCompensator (src/model/fault_option_table.cpp), and of

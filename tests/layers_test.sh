@@ -28,15 +28,15 @@ expect_failure() { # $1: what the message must say
   }
 }
 fresh
-sed -i '0,/^#include "/s//#include "fogdrift\/tune\/tune.hpp"\n#include "/' "$work/t/src/svr/smo.hpp"
+sed -i '0,/^#include "/s//#include "fogdrift\/train\/tune.hpp"\n#include "/' "$work/t/src/svr/smo.hpp"
 expect_failure "src/svr/smo.hpp:"
-expect_failure "layer svr includes fogdrift/tune/tune.hpp (layer tune)"
+expect_failure "layer svr includes fogdrift/train/tune.hpp (layer train)"
 fresh
 mkdir "$work/t/src/stray" "$work/t/include/fogdrift/stray"
 expect_failure "src/stray/: a folder of the library with no row"
 fresh
-sed -i 's/^| `svr\/` | \(.*\) | base |$/| `svr\/` | \1 | base, tune |/' "$work/t/docs/architecture.md"
-expect_failure "layer svr may include tune, drawn at or below it"
+sed -i 's/^| `svr\/` | \(.*\) | base |$/| `svr\/` | \1 | base, train |/' "$work/t/docs/architecture.md"
+expect_failure "layer svr may include train, drawn at or below it"
 fresh
 sed -i '0,/^#include "/s//#include "apps\/fogdrift\/command.hpp"\n#include "/' "$work/t/src/base/error.cpp"
 expect_failure "a front end"

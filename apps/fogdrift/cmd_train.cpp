@@ -16,9 +16,9 @@
 #include "fogdrift/base/thread_pool.hpp"
 #include "fogdrift/io/campaign.hpp"
 #include "fogdrift/model/model_set.hpp"
-#include "fogdrift/tune/train_campaign.hpp"
-#include "fogdrift/tune/train_option_table.hpp"
-#include "fogdrift/tune/train_summary.hpp"
+#include "fogdrift/train/train_campaign.hpp"
+#include "fogdrift/train/train_option_table.hpp"
+#include "fogdrift/train/train_summary.hpp"
 #include "option_flags.hpp"
 
 namespace fogdrift::app {

@@ -24,9 +24,9 @@
 #include "fogdrift/sim/instrument.hpp"
 #include "fogdrift/sim/scenario_option_table.hpp"
 #include "fogdrift/sim/scenarios.hpp"
-#include "fogdrift/tune/train_campaign.hpp"
-#include "fogdrift/tune/train_option_table.hpp"
-#include "fogdrift/tune/train_summary.hpp"
+#include "fogdrift/train/train_campaign.hpp"
+#include "fogdrift/train/train_option_table.hpp"
+#include "fogdrift/train/train_summary.hpp"
 
 namespace fogdrift::matlab {
 namespace {

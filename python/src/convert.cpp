@@ -10,7 +10,7 @@
 #include "fogdrift/base/csv.hpp"
 #include "fogdrift/base/error.hpp"
 #include "fogdrift/model/features.hpp"
-#include "fogdrift/tune/train_option_table.hpp"
+#include "fogdrift/train/train_option_table.hpp"
 
 namespace py = pybind11;
 

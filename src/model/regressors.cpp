@@ -1,4 +1,4 @@
-// The registry's lookups by type (regressors.hpp); the list itself is src/tune/registry.cpp.
+// The registry's lookups by type (regressors.hpp); the list itself is src/train/registry.cpp.
 #include "fogdrift/model/regressors.hpp"
 
 #include <fmt/format.h>

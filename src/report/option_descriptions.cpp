@@ -12,7 +12,7 @@
 #include "fogdrift/report/paper_option_table.hpp"
 #include "fogdrift/signal/denoise_option_table.hpp"
 #include "fogdrift/sim/scenario_option_table.hpp"
-#include "fogdrift/tune/train_option_table.hpp"
+#include "fogdrift/train/train_option_table.hpp"
 
 namespace fogdrift::report {
 namespace {

@@ -1,6 +1,6 @@
 #include "fogdrift/report/paper.hpp"
-#include "fogdrift/tune/bp_trainer.hpp"
-#include "fogdrift/tune/svr_trainer.hpp"
+#include "fogdrift/train/bp_trainer.hpp"
+#include "fogdrift/train/svr_trainer.hpp"
 
 #include <fmt/format.h>
 
@@ -19,7 +19,7 @@
 #include "fogdrift/eval/startup.hpp"
 #include "fogdrift/model/dataset.hpp"
 #include "fogdrift/model/features.hpp"
-#include "fogdrift/tune/train.hpp"
+#include "fogdrift/train/train.hpp"
 #include "report/paper_figures.hpp"
 
 namespace fogdrift::report {

@@ -7,8 +7,8 @@
 #include <vector>
 
 #include "fogdrift/sim/scenarios.hpp"
-#include "fogdrift/tune/folds.hpp"
-#include "fogdrift/tune/tune.hpp"
+#include "fogdrift/train/folds.hpp"
+#include "fogdrift/train/tune.hpp"
 
 namespace fogdrift::report {
 namespace {

@@ -7,7 +7,7 @@
 #include "fogdrift/signal/differentiate.hpp"
 #include "fogdrift/signal/dwt.hpp"
 #include "fogdrift/sim/scenarios.hpp"
-#include "fogdrift/tune/tune.hpp"
+#include "fogdrift/train/tune.hpp"
 
 namespace fogdrift {
 namespace {

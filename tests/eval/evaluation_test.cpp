@@ -10,7 +10,7 @@
 
 #include "fogdrift/base/error.hpp"
 #include "fogdrift/sim/scenarios.hpp"
-#include "fogdrift/tune/train_campaign.hpp"
+#include "fogdrift/train/train_campaign.hpp"
 #include "test_util.hpp"
 
 namespace fogdrift::eval {

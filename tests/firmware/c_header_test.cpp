@@ -1,6 +1,6 @@
 // The C99 header export (c_header.hpp): its names, prefixes and float checks. That every
 // registered regressor's header compiles and predicts as the library is the registry's suite
-// (tests/tune/registry_test.cpp).
+// (tests/train/registry_test.cpp).
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 #include <gtest/gtest.h>
@@ -12,7 +12,7 @@
 #include "fogdrift/firmware/c_header.hpp"
 #include "fogdrift/io/target.hpp"
 #include "fogdrift/model/model.hpp"
-#include "fogdrift/tune/train.hpp"
+#include "fogdrift/train/train.hpp"
 #include "synthetic_dataset.hpp"
 #include "test_util.hpp"
 

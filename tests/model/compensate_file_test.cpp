@@ -10,7 +10,7 @@
 #include "fogdrift/base/csv.hpp"
 #include "fogdrift/base/error.hpp"
 #include "fogdrift/sim/scenarios.hpp"
-#include "fogdrift/tune/train.hpp"
+#include "fogdrift/train/train.hpp"
 #include "test_util.hpp"
 
 namespace fogdrift {

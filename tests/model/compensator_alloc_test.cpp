@@ -10,7 +10,7 @@
 
 #include "fogdrift/model/compensator.hpp"
 #include "fogdrift/model/mlp.hpp"
-#include "fogdrift/tune/train.hpp"
+#include "fogdrift/train/train.hpp"
 #include "synthetic_dataset.hpp"
 
 namespace {

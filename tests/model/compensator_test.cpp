@@ -18,7 +18,7 @@
 #include "fogdrift/firmware/c_header.hpp"
 #include "fogdrift/model/model_set.hpp"
 #include "fogdrift/sim/scenarios.hpp"
-#include "fogdrift/tune/train.hpp"
+#include "fogdrift/train/train.hpp"
 #include "test_util.hpp"
 
 namespace fogdrift {

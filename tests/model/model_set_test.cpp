@@ -6,7 +6,7 @@
 #include <string>
 
 #include "fogdrift/base/error.hpp"
-#include "fogdrift/tune/train.hpp"
+#include "fogdrift/train/train.hpp"
 #include "synthetic_dataset.hpp"
 #include "test_util.hpp"
 

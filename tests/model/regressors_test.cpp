@@ -1,6 +1,6 @@
 // AnyRegressor and the registry's lookups (regressors.hpp): a type missing a part does not model
 // Regressor, any registered one is held and named, and a type not registered is refused by name.
-// Every registered regressor's fit, file and C is the registry's suite (tune/registry_test.cpp).
+// Every registered regressor's fit, file and C is the registry's suite (train/registry_test.cpp).
 #include "fogdrift/model/regressors.hpp"
 
 #include <gtest/gtest.h>

@@ -119,8 +119,8 @@ Lsq fit_lsq(const Data& data, double ridge) {
 }  // namespace fogdrift
 EOF
 
-# 2. Its trainer: include/fogdrift/tune/lsq_trainer.hpp and src/tune/lsq_trainer.cpp.
-cat >"$tree/include/fogdrift/tune/lsq_trainer.hpp" <<'EOF'
+# 2. Its trainer: include/fogdrift/train/lsq_trainer.hpp and src/train/lsq_trainer.cpp.
+cat >"$tree/include/fogdrift/train/lsq_trainer.hpp" <<'EOF'
 // The throw-away regressor's trainer: the plane fitted on every training row.
 #pragma once
 
@@ -128,7 +128,7 @@ cat >"$tree/include/fogdrift/tune/lsq_trainer.hpp" <<'EOF'
 
 #include "fogdrift/base/option_table.hpp"
 #include "fogdrift/model/lsq.hpp"
-#include "fogdrift/tune/trainer.hpp"
+#include "fogdrift/train/trainer.hpp"
 
 namespace fogdrift {
 
@@ -149,8 +149,8 @@ struct LsqTrainer {
 
 }  // namespace fogdrift
 EOF
-cat >"$tree/src/tune/lsq_trainer.cpp" <<'EOF'
-#include "fogdrift/tune/lsq_trainer.hpp"
+cat >"$tree/src/train/lsq_trainer.cpp" <<'EOF'
+#include "fogdrift/train/lsq_trainer.hpp"
 
 #include <cmath>
 
@@ -194,8 +194,8 @@ Trained LsqTrainer::train(const TrainContext& c) {
 EOF
 
 # 3. The registry's two lines: the trainer's include and its name in the list.
-registry=$tree/src/tune/registry.cpp
-sed -i 's|^#include "fogdrift/tune/gp_trainer.hpp"$|&\n#include "fogdrift/tune/lsq_trainer.hpp"|' "$registry"
+registry=$tree/src/train/registry.cpp
+sed -i 's|^#include "fogdrift/train/gp_trainer.hpp"$|&\n#include "fogdrift/train/lsq_trainer.hpp"|' "$registry"
 sed -i 's|^\(using Registered = Registry<.*\)>;$|\1, LsqTrainer>;|' "$registry"
 
 # Outside its own four files, two lines changed, both in the registry.
@@ -204,10 +204,10 @@ diff -rq "$work/before" "$tree" >"$work/tree.files" || true
 changed=$(grep -c '^[<>]' "$work/tree.diff" || true)
 only=$(grep -v '^Only in' "$work/tree.files" || true)
 news=$(grep -c '^Only in' "$work/tree.files" || true)
-[ "$only" = "Files $work/before/src/tune/registry.cpp and $tree/src/tune/registry.cpp differ" ] ||
+[ "$only" = "Files $work/before/src/train/registry.cpp and $tree/src/train/registry.cpp differ" ] ||
   fail "files outside the regressor's own changed: $only"
 # One line added (the include) and one replaced (the list): 1 + 2 diff lines.
-[ "$changed" -eq 3 ] || { diff "$work/before/src/tune/registry.cpp" "$registry" >&2; fail "the registry changed by $changed diff lines, not the recipe's two lines"; }
+[ "$changed" -eq 3 ] || { diff "$work/before/src/train/registry.cpp" "$registry" >&2; fail "the registry changed by $changed diff lines, not the recipe's two lines"; }
 [ "$news" -eq 4 ] || fail "$news new files, not the regressor's four"
 grep -q 'LsqTrainer>;' "$registry" || fail "the registry's list did not take LsqTrainer"
 

@@ -33,7 +33,7 @@ struct SourceFile {
 };
 
 struct Provenance {
-  /// The method's name as train gives it ("ssa-svr", "gp"; tune/method.hpp).
+  /// The method's name as train gives it ("ssa-svr", "gp"; train/method.hpp).
   std::string method;
   std::string fitness;       ///< "cv", "train", "validation" (BP's early-stopping set)
   double fitness_value = 0;  ///< RMSE on the standardised target

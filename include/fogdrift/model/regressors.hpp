@@ -1,7 +1,7 @@
 // Whichever regressor a compensation model holds (regressor.hpp), and the registry of the types a
 // model file can hold. `AnyRegressor` holds any type that models `Regressor` behind one small
 // interface, so no file but the registry's list names every type: the list itself is
-// `src/tune/registry.cpp`, one line per method with its trainer and regressor (docs/
+// `src/train/registry.cpp`, one line per method with its trainer and regressor (docs/
 // architecture.md, "Adding a regressor"); it defines `regressor_entries()` below.
 #pragma once
 
@@ -118,7 +118,7 @@ constexpr RegressorEntry regressor_entry_of() {
           }};
 }
 
-/// Every registered regressor, in the registry's order (defined by src/tune/registry.cpp).
+/// Every registered regressor, in the registry's order (defined by src/train/registry.cpp).
 std::span<const RegressorEntry> regressor_entries();
 
 /// The model file's type of the regressor held: "svr", "mlp", "poly", "gp".

@@ -26,8 +26,8 @@
 #include "fogdrift/report/figure.hpp"
 #include "fogdrift/sim/instrument.hpp"
 #include "fogdrift/sim/scenarios.hpp"
-#include "fogdrift/tune/method.hpp"
-#include "fogdrift/tune/tune.hpp"
+#include "fogdrift/train/method.hpp"
+#include "fogdrift/train/tune.hpp"
 
 namespace fogdrift::report {
 

@@ -1,0 +1,113 @@
+// Training a compensation model (docs/method.md §2, §3): the method's trainer (trainer.hpp,
+// the registry in trainers.hpp) fits its regressor and reports a fitness on the standardised
+// target; what every method shares is here: method and search made one, the scalers of all
+// training rows, the novelty guard over them, the held-out report and the provenance. The
+// regressor-specific options are each trainer's own (TrainOptions::trainers), declared in its
+// own option table; the search's box and budget (tune) are shared with fogdrift paper.
+#pragma once
+
+#include <nlohmann/json.hpp>
+
+#include <optional>
+
+#include "fogdrift/model/model.hpp"
+#include "fogdrift/train/held_out.hpp"
+#include "fogdrift/train/method.hpp"
+#include "fogdrift/train/trainer_options.hpp"
+#include "fogdrift/train/tune.hpp"
+
+namespace fogdrift {
+
+/// Iterations without a 0.1 % gain after which train's search stops (opt::RunOptions; docs/
+/// tuning.md, "A search that stops when it stops learning"). fogdrift paper keeps the paper's
+/// fixed budget.
+inline constexpr std::size_t kTrainStallIterations = 10;
+/// The fewest training rows a fold is thinned to for train's search (tune::TuneOptions::
+/// search_rows; docs/tuning.md, "A search on fewer rows"): the paper's 3 × 11 start-ups (at
+/// most 4,320 a fold) are searched on all their rows, the five-sweep protocol's 5,760 on every
+/// second row, the seven-sweep protocol's 8,640 on every third.
+inline constexpr std::size_t kTrainSearchRows = 2500;
+
+/// The search train runs unless told otherwise: TuneOptions' defaults, stopping on a stall and
+/// thinning a large campaign's folds to no fewer than kTrainSearchRows training rows.
+inline tune::TuneOptions train_search_defaults() {
+  tune::TuneOptions t;
+  t.optimizer.run.stall_iterations = kTrainStallIterations;
+  t.search_rows = kTrainSearchRows;
+  return t;
+}
+
+struct TrainOptions {
+  Method method = Method::ssa_svr;
+  /// A search for a method whose name implies none (svr with pso is pso-svr, gp's cv fit with
+  /// gwo searches by gwo); own: the method's own (resolved()).
+  Search search = Search::own;
+  /// fitness, folds, search box, optimizer budget and stall rule, seed, pool
+  tune::TuneOptions tune = train_search_defaults();
+  /// Each trainer's own options, by their type (T::Options; trainer_options.hpp):
+  /// trainers.get<PolyTrainer::Options>().max_degree.
+  TrainerOptions trainers;
+  /// The novelty guard fitted to the training rows and stored in the model (guard.hpp).
+  GuardSettings guard;
+  /// Tuned SVRs: when the best C, σ or ε lies on an edge of its box, widen the box by a decade
+  /// there and search again, at most this many times (0: never; tune::box_edges()).
+  std::size_t auto_box_rounds = 0;
+  /// The rounds `train --auto-box` and Python's `auto_box=True` ask for.
+  static constexpr std::size_t kAutoBoxRounds = 3;
+  /// Score the model and the baselines on held-out rows (TrainSummary::held_out).
+  bool held_out = true;
+};
+
+struct TrainSummary {
+  Method method = Method::ssa_svr;  ///< resolved(): the search it ran is its own
+  std::string fitness;              ///< "cv", "train" or "validation"
+  double fitness_value = 0;         ///< RMSE on the standardised target
+  std::vector<std::pair<std::string, double>> hyperparameters;
+  tune::TuneSummary tuning;  ///< SVR methods with a search (the last, with auto-box)
+  /// Tuned SVRs: the boxes searched, in order (more than one with auto-box), and the edges the
+  /// last search's best lies on.
+  std::vector<tune::SearchSpace> boxes;
+  std::vector<tune::BoxEdge> box_edges;
+  /// The trainer's own record, under `fogdrift train --json`'s keys: "search" for a searched
+  /// SVR, "bp" (epochs, best_epoch, early_stopped, train_rmse), "poly_cv_rmse_by_degree",
+  /// "gp" (points, log_likelihood, iterations, evaluations, fold_fits, raced, converged).
+  nlohmann::ordered_json record = nlohmann::ordered_json::object();
+  /// How sure train is (held_out.hpp): the model's held-out RMSE beside the baselines' on the
+  /// same folds, and the share it is expected to remove. SVRs searched on the training loss are
+  /// scored on the grouped folds for it (one more fit per fold); absent, with the reason in
+  /// held_out_missing, when the data cannot be split into folds.
+  std::optional<HeldOutReport> held_out;
+  std::string held_out_missing;
+  std::size_t rows = 0;
+  double seconds = 0;
+};
+
+struct TrainResult {
+  CompensationModel model;
+  TrainSummary summary;
+};
+
+/// The options with method and search made one: the method's search is the one its name implies
+/// or `search` asks for, as its trainer resolves it (trainer.hpp); search is then own, and the
+/// optimizer is the search's. Throws OptionError("search") for a method and a search that
+/// contradict (pso-svr with ssa) or a trainer with no use for the search (bp with pso, none for
+/// gp's cv fit), and OptionError("method") for a trainer not registered.
+TrainOptions resolved(const TrainOptions& options);
+
+/// Checks what can be checked without data, by the method's trainer: the search's box, budget
+/// and folds for a tuned SVR, the network's for bp, the degree for poly. Throws OptionError naming
+/// the field (train_fleet checks a line's options once before any unit runs).
+void validate(const TrainOptions& options);
+
+/// Trains on every row of `data`, built with `dataset` (recorded in the model).
+TrainResult train(const Dataset& data, const DatasetOptions& dataset, const TrainOptions& options);
+
+/// One warning for each best value on the edge of its box (summary.box_edges): the box, not the
+/// data, may have stopped the search. The advice names what the user sets, in their own words:
+/// `name_of` turns a field (c_min, c_max, sigma_min, sigma_max, search_epsilon, auto_box) into a
+/// flag (--c-max) or a keyword (c_max); `auto_box` says whether the box was widened already.
+std::vector<std::string> box_edge_warnings(
+    const TrainSummary& summary, bool auto_box,
+    const std::function<std::string(const std::string&)>& name_of);
+
+}  // namespace fogdrift

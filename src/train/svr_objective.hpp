@@ -1,0 +1,300 @@
+// The loss of SVR candidates over grouped folds (or the training rows), as tune_svr's searches
+// evaluate it: each fold prepared once, a memo of candidates, warm starts from the nearest solved
+// candidate, racing, and vectorised scoring (fogdrift/train/tune.hpp, docs/tuning.md "Speed").
+// Private to train/: the searches build one per campaign, or two when the search fits every k-th
+// training row (docs/tuning.md, "A search on fewer rows").
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <map>
+#include <memory>
+#include <numeric>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "fogdrift/base/thread_pool.hpp"
+#include "fogdrift/svr/fold_paths.hpp"
+#include "fogdrift/train/tune.hpp"
+
+namespace fogdrift::tune {
+
+// The loss of SVR candidates over the folds (or the training data), with the memo and the warm
+// starts described in the header.
+class SvrObjective {
+ public:
+  using ToParams = std::function<svr::Params(std::span<const double>)>;
+
+  /// `stride` k > 1 (cv only) fits each fold on every k-th of its training rows with C × k, so
+  /// that the fit keeps the full data's balance of margin and errors, and scores every held-out
+  /// row as before: losses stay comparable with a search on all rows (docs/tuning.md).
+  SvrObjective(const Dataset& data, const TuneOptions& options, ToParams to_params,
+               std::size_t stride = 1)
+      : options_(options), to_params_(std::move(to_params)) {
+    auto add = [this](ScaledSplit s) {
+      std::vector<std::size_t> rows(s.test.rows);
+      std::iota(rows.begin(), rows.end(), 0);
+      folds_.push_back({std::make_unique<svr::TrainingSet>(std::move(s.train)),
+                        std::move(s.test),
+                        std::move(rows),
+                        {}});
+    };
+    if (options.fitness == Fitness::cv) {
+      c_scale_ = static_cast<double>(stride);
+      for (const Fold& f : grouped_folds(data, options.cv)) {
+        std::vector<std::size_t> kept;
+        for (std::size_t i = 0; i < f.train_rows.size(); i += stride)
+          kept.push_back(f.train_rows[i]);
+        add(scale_split(data, kept, f.test_rows));
+        fold_names_.push_back(f.name);
+      }
+    } else {
+      std::vector<std::size_t> all(data.rows);
+      std::iota(all.begin(), all.end(), 0);
+      add(scale_split(data, all, all));
+    }
+    for (const FoldState& f : folds_) {
+      test_rows_ += f.test.rows;
+      scoring_.push_back({f.set.get(), &f.test, f.test_rows, {}});
+    }
+    // Every thread may run a fit of the largest fold at once: checked once, here, so that a
+    // search too large for this machine fails before its first batch.
+    const auto largest = std::max_element(folds_.begin(), folds_.end(), [](auto& a, auto& b) {
+      return a.set->size() < b.set->size();
+    });
+    svr::Params p;
+    p.cache_mb = options.cache_mb;
+    svr::require_fit_memory(*largest->set, p, options.pool ? options.pool->size() : 1);
+  }
+
+  const std::vector<std::string>& fold_names() const { return fold_names_; }
+
+  void evaluate(std::span<const double> points, std::span<double> fitness, std::size_t dims) {
+    const std::size_t n = fitness.size(), folds = folds_.size();
+    // New distinct candidates of this batch, in order of first appearance.
+    std::vector<std::vector<double>> fresh;
+    std::vector<std::size_t> slot(n);
+    std::map<std::vector<double>, std::size_t> in_batch;
+    for (std::size_t i = 0; i < n; ++i) {
+      std::vector<double> key(points.begin() + static_cast<std::ptrdiff_t>(i * dims),
+                              points.begin() + static_cast<std::ptrdiff_t>((i + 1) * dims));
+      if (memo_.contains(key)) {
+        ++repeats_;
+        slot[i] = SIZE_MAX;
+        continue;
+      }
+      auto [it, inserted] = in_batch.try_emplace(key, fresh.size());
+      if (inserted)
+        fresh.push_back(key);
+      else
+        ++repeats_;
+      slot[i] = it->second;
+    }
+
+    // One path task of one C per (candidate, fold) on the engine every search runs on
+    // (fold_paths.hpp); warm starts only from earlier batches. Tasks are handed out longest
+    // first (LPT), the length guessed from the nearest solved candidate's fit time, so that both
+    // threads finish a stage together; the order never changes a result.
+    const std::size_t tasks = fresh.size() * folds;
+    std::vector<double> sse(tasks, 0.0), seconds(tasks, 0.0);
+    std::vector<std::shared_ptr<const svr::DualSolution>> duals(tasks);
+    std::vector<char> warm(tasks, 0), ran(tasks, 0);
+    auto run = [&](const std::vector<std::size_t>& stage) {
+      std::vector<svr::PathTask> paths(stage.size());
+      for (std::size_t k = 0; k < stage.size(); ++k) {
+        const std::size_t t = stage[k], c = t / folds, f = t % folds;
+        svr::PathTask& p = paths[k];
+        p.fold = f;
+        p.params = to_params_(fresh[c]);
+        p.params.c *= c_scale_;
+        p.c_values = {p.params.c};
+        if (options_.warm_start) p.warm = warm_start_for(folds_[f], fresh[c]);
+        p.keep_duals = true;
+        p.guess_seconds = guessed_seconds(folds_[f], fresh[c]);
+        warm[t] = p.warm != nullptr;
+      }
+      const std::vector<svr::PathScores> scores =
+          svr::run_paths(scoring_, paths, options_.pool, workspaces_);
+      for (std::size_t k = 0; k < stage.size(); ++k) {
+        const std::size_t t = stage[k];
+        sse[t] = scores[k].sse[0];
+        seconds[t] = scores[k].seconds[0];
+        duals[t] = scores[k].duals[0];
+        ran[t] = 1;
+      }
+    };
+
+    // Racing (header): once a complete candidate is known, the folds run in stages, the fold
+    // where the best candidate errs most first, and a candidate whose squared errors so far
+    // already exceed the best's total leaves the race. Before that, one stage holds every fold.
+    const double stop_above = options_.racing && folds > 1 && std::isfinite(best_loss_)
+                                  ? best_loss_ * best_loss_ * static_cast<double>(test_rows_)
+                                  : INFINITY;
+    std::vector<double> partial(fresh.size(), 0.0);
+    std::vector<char> alive(fresh.size(), 1);
+    if (!std::isfinite(stop_above)) {
+      std::vector<std::size_t> all(tasks);
+      std::iota(all.begin(), all.end(), 0);
+      run(all);
+    } else {
+      const std::vector<std::size_t> order = fold_order();
+      for (std::size_t stage = 0; stage < folds; ++stage) {
+        const std::size_t f = order[stage];
+        std::vector<std::size_t> these;
+        for (std::size_t c = 0; c < fresh.size(); ++c)
+          if (alive[c]) these.push_back(c * folds + f);
+        run(these);
+        for (std::size_t c = 0; c < fresh.size(); ++c) {
+          if (!alive[c]) continue;
+          partial[c] += sse[c * folds + f];
+          if (stage + 1 < folds && partial[c] > stop_above) alive[c] = 0;
+        }
+      }
+    }
+
+    std::vector<double> loss(fresh.size());
+    for (std::size_t c = 0; c < fresh.size(); ++c) {
+      double s = 0;
+      bool complete = true;
+      for (std::size_t f = 0; f < folds; ++f) {
+        const std::size_t t = c * folds + f;
+        if (!ran[t]) {
+          complete = false;
+          continue;
+        }
+        s += sse[t];
+        fit_seconds_ += seconds[t];
+        warm_fits_ += warm[t] ? 1 : 0;
+        ++fits_;
+      }
+      // A candidate out of the race: its squared errors so far, scaled to all folds as the best
+      // candidate's errors spread over them; above the best loss, since they alone exceed it.
+      double scale = 1;
+      if (!complete) {
+        double all = 0, run_part = 0;
+        for (std::size_t f = 0; f < folds; ++f) {
+          all += best_fold_sse_[f];
+          if (ran[c * folds + f]) run_part += best_fold_sse_[f];
+        }
+        if (run_part > 0) scale = all / run_part;
+      }
+      loss[c] = std::sqrt(s * scale / static_cast<double>(test_rows_));
+      memo_.emplace(fresh[c], loss[c]);
+      history_.push_back({to_params_(fresh[c]), loss[c], complete});
+      if (!complete) ++raced_;
+    }
+    // The best complete candidate so far bounds the next batches' races.
+    for (std::size_t c = 0; c < fresh.size(); ++c) {
+      if (!alive[c] || !(loss[c] < best_loss_)) continue;
+      best_loss_ = loss[c];
+      best_fold_sse_.assign(sse.begin() + static_cast<std::ptrdiff_t>(c * folds),
+                            sse.begin() + static_cast<std::ptrdiff_t>((c + 1) * folds));
+    }
+    // Keep the most recent solutions of each fold as warm starts for later batches.
+    for (std::size_t f = 0; f < folds; ++f) {
+      auto& kept = folds_[f].solved;
+      std::size_t solved_here = 0;
+      for (std::size_t c = 0; c < fresh.size(); ++c) {
+        if (!ran[c * folds + f]) continue;
+        kept.push_back({fresh[c], duals[c * folds + f], seconds[c * folds + f]});
+        ++solved_here;
+      }
+      const std::size_t keep = std::max<std::size_t>(2 * solved_here, 8);
+      if (kept.size() > keep)
+        kept.erase(kept.begin(), kept.end() - static_cast<std::ptrdiff_t>(keep));
+    }
+    for (std::size_t i = 0; i < n; ++i) {
+      if (slot[i] == SIZE_MAX) {
+        std::vector<double> key(points.begin() + static_cast<std::ptrdiff_t>(i * dims),
+                                points.begin() + static_cast<std::ptrdiff_t>((i + 1) * dims));
+        fitness[i] = memo_.at(key);
+      } else {
+        fitness[i] = loss[slot[i]];
+      }
+    }
+    candidates_ += fresh.size();
+  }
+
+  std::size_t candidates_ = 0, repeats_ = 0, fits_ = 0, warm_fits_ = 0, raced_ = 0;
+  std::vector<Candidate> history_;
+  double fit_seconds_ = 0;
+
+ private:
+  struct Solved {
+    std::vector<double> point;
+    std::shared_ptr<const svr::DualSolution> dual;
+    double seconds;
+  };
+  struct FoldState {
+    std::unique_ptr<svr::TrainingSet> set;
+    svr::Data test;
+    std::vector<std::size_t> test_rows;  // 0 … test.rows − 1
+    std::vector<Solved> solved;          // read concurrently during a batch, changed only between
+  };
+
+  // The solved candidate nearest to `point` in log coordinates (ties: the latest), optionally
+  // only among those with the same kernel (σ).
+  static const Solved* nearest(const FoldState& fold, const std::vector<double>& point,
+                               bool same_kernel) {
+    const Solved* best = nullptr;
+    double best_d = INFINITY;
+    for (const Solved& s : fold.solved) {
+      if (same_kernel && s.point[1] != point[1]) continue;
+      double d = 0;
+      for (std::size_t j = 0; j < point.size(); ++j)
+        d += (s.point[j] - point[j]) * (s.point[j] - point[j]);
+      if (d <= best_d) best_d = d, best = &s;
+    }
+    return best;
+  }
+
+  // The warm start of a fit (docs/tuning.md, "Speed"): the nearest solved candidate with the same
+  // kernel, whose gradient is rescaled rather than rebuilt; else the nearest of all when it lies
+  // within a tenth of a decade in both C and σ. Rebuilding the gradient for another σ costs about
+  // one pass over the kernel, which only a near solution's saved iterations repay: from any
+  // candidate it made a search slower, from a near one it halves the fits on the C = 1000 edge.
+  static constexpr double kNearLog10 = 0.1;
+  static const svr::DualSolution* warm_start_for(const FoldState& fold,
+                                                 const std::vector<double>& point) {
+    if (const Solved* s = nearest(fold, point, true)) return s->dual.get();
+    const Solved* s = nearest(fold, point, false);
+    if (s == nullptr || std::fabs(s->point[0] - point[0]) > kNearLog10 ||
+        std::fabs(s->point[1] - point[1]) > kNearLog10)
+      return nullptr;
+    return s->dual.get();
+  }
+
+  static double guessed_seconds(const FoldState& fold, const std::vector<double>& point) {
+    const Solved* s = nearest(fold, point, false);
+    return s ? s->seconds : INFINITY;
+  }
+
+  // The folds by the best candidate's squared error on them, largest first (ties: in order):
+  // the fold most likely to take a poor candidate past the bound runs first.
+  std::vector<std::size_t> fold_order() const {
+    std::vector<std::size_t> order(folds_.size());
+    std::iota(order.begin(), order.end(), 0);
+    std::stable_sort(order.begin(), order.end(), [this](std::size_t a, std::size_t b) {
+      return best_fold_sse_[a] > best_fold_sse_[b];
+    });
+    return order;
+  }
+
+  const TuneOptions& options_;
+  ToParams to_params_;
+  double c_scale_ = 1;  // the stride: C of every fit on every k-th training row
+  std::vector<FoldState> folds_;
+  std::vector<svr::ScoringFold> scoring_;  // folds_ as the engine sees them
+  std::size_t test_rows_ = 0;              // held-out rows over all folds
+  double best_loss_ = INFINITY;            // of the complete candidates of earlier batches
+  std::vector<double> best_fold_sse_;      // its squared error on each fold
+  // One workspace per fit running at once, kept for the whole search: each fit reuses the
+  // memory of an earlier one instead of new pages.
+  svr::WorkspacePool workspaces_;
+  std::vector<std::string> fold_names_;
+  std::map<std::vector<double>, double> memo_;
+};
+
+}  // namespace fogdrift::tune
