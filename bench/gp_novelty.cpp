@@ -27,7 +27,7 @@
 #include "fogdrift/base/thread_pool.hpp"
 #include "fogdrift/model/dataset.hpp"
 #include "fogdrift/model/features.hpp"
-#include "fogdrift/model/gp.hpp"
+#include "fogdrift/regress/gp.hpp"
 #include "fogdrift/sim/scenarios.hpp"
 #include "fogdrift/train/train.hpp"
 

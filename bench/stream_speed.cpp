@@ -16,8 +16,8 @@
 
 #include "fogdrift/model/compensator.hpp"
 #include "fogdrift/model/dataset.hpp"
-#include "fogdrift/model/mlp.hpp"
-#include "fogdrift/model/poly.hpp"
+#include "fogdrift/regress/mlp.hpp"
+#include "fogdrift/regress/poly.hpp"
 #include "fogdrift/sim/scenarios.hpp"
 #include "fogdrift/svr/svr.hpp"
 #include "fogdrift/train/train.hpp"

@@ -1,6 +1,6 @@
 // The registry: the one list of the methods `fogdrift train` knows, each a trainer with the
 // regressor it fits, which is the list of regressors a model file can hold (trainers.hpp,
-// model/regressors.hpp). Adding a regressor adds its trainer's include and its name in
+// regress/regressors.hpp). Adding a regressor adds its trainer's include and its name in
 // Registered below, nothing else here (docs/architecture.md, "Adding a regressor").
 #include "fogdrift/train/bp_trainer.hpp"
 #include "fogdrift/train/gp_trainer.hpp"

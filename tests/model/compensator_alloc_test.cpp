@@ -9,7 +9,7 @@
 #include <new>
 
 #include "fogdrift/model/compensator.hpp"
-#include "fogdrift/model/mlp.hpp"
+#include "fogdrift/regress/mlp.hpp"
 #include "fogdrift/train/train.hpp"
 #include "synthetic_dataset.hpp"
 

@@ -2,7 +2,7 @@
 // for sample. (No allocation per sample is proved in compensator_alloc_test.cpp, a program of
 // its own because it replaces the global operator new.)
 #include "fogdrift/model/compensator.hpp"
-#include "fogdrift/model/mlp.hpp"
+#include "fogdrift/regress/mlp.hpp"
 
 #include <gtest/gtest.h>
 

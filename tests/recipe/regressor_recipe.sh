@@ -20,8 +20,8 @@ mkdir -p "$tree"
 for part in CMakeLists.txt cmake include src apps README.md docs scripts; do cp -r "$src/$part" "$tree/"; done
 cp -r "$tree" "$work/before"
 
-# 1. The regressor: include/fogdrift/model/lsq.hpp and src/model/lsq.cpp.
-cat >"$tree/include/fogdrift/model/lsq.hpp" <<'EOF'
+# 1. The regressor: include/fogdrift/regress/lsq.hpp and src/regress/lsq.cpp.
+cat >"$tree/include/fogdrift/regress/lsq.hpp" <<'EOF'
 // A throw-away regressor of the recipe test: z = b + Σ w_k x_k, least squares with a ridge
 // λ·n on the weights.
 #pragma once
@@ -55,8 +55,8 @@ Lsq fit_lsq(const Data& data, double ridge);
 
 }  // namespace fogdrift
 EOF
-cat >"$tree/src/model/lsq.cpp" <<'EOF'
-#include "fogdrift/model/lsq.hpp"
+cat >"$tree/src/regress/lsq.cpp" <<'EOF'
+#include "fogdrift/regress/lsq.hpp"
 
 #include <fmt/format.h>
 
@@ -127,7 +127,7 @@ cat >"$tree/include/fogdrift/train/lsq_trainer.hpp" <<'EOF'
 #include <array>
 
 #include "fogdrift/base/option_table.hpp"
-#include "fogdrift/model/lsq.hpp"
+#include "fogdrift/regress/lsq.hpp"
 #include "fogdrift/train/trainer.hpp"
 
 namespace fogdrift {

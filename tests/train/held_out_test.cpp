@@ -1,7 +1,7 @@
 // The held-out report against closed-form cases: a drift that is a line in one temperature, a
 // drift with no temperature signal, and a model known to be worse than the mean.
 #include "fogdrift/train/held_out.hpp"
-#include "fogdrift/model/mlp.hpp"
+#include "fogdrift/regress/mlp.hpp"
 
 #include <gtest/gtest.h>
 

@@ -4,7 +4,7 @@
 
 #include <gtest/gtest.h>
 
-#include "fogdrift/model/mlp.hpp"
+#include "fogdrift/regress/mlp.hpp"
 #include "fogdrift/train/poly_trainer.hpp"
 
 namespace fogdrift {

@@ -23,7 +23,7 @@
 #include "fogdrift/model/baselines.hpp"
 #include "fogdrift/model/dataset.hpp"
 #include "fogdrift/model/guard.hpp"
-#include "fogdrift/model/regressors.hpp"
+#include "fogdrift/regress/regressors.hpp"
 
 namespace fogdrift {
 

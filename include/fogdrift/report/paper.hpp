@@ -21,8 +21,8 @@
 
 #include "fogdrift/base/thread_pool.hpp"
 #include "fogdrift/eval/metrics.hpp"
-#include "fogdrift/model/mlp.hpp"
 #include "fogdrift/model/model.hpp"
+#include "fogdrift/regress/mlp.hpp"
 #include "fogdrift/report/figure.hpp"
 #include "fogdrift/sim/instrument.hpp"
 #include "fogdrift/sim/scenarios.hpp"

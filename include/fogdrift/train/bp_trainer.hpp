@@ -8,7 +8,7 @@
 #include <array>
 
 #include "fogdrift/base/option_table.hpp"
-#include "fogdrift/model/mlp.hpp"
+#include "fogdrift/regress/mlp.hpp"
 #include "fogdrift/train/trainer.hpp"
 
 namespace fogdrift {

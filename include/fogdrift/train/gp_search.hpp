@@ -17,8 +17,8 @@
 
 #include <span>
 
-#include "fogdrift/model/gp.hpp"
 #include "fogdrift/opt/optimizer.hpp"
+#include "fogdrift/regress/gp.hpp"
 #include "fogdrift/train/tune.hpp"
 
 namespace fogdrift {

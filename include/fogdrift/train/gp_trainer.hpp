@@ -7,7 +7,7 @@
 #include <array>
 
 #include "fogdrift/base/option_table.hpp"
-#include "fogdrift/model/gp.hpp"
+#include "fogdrift/regress/gp.hpp"
 #include "fogdrift/train/trainer.hpp"
 
 namespace fogdrift {

@@ -6,7 +6,7 @@
 #include <array>
 
 #include "fogdrift/base/option_table.hpp"
-#include "fogdrift/model/poly.hpp"
+#include "fogdrift/regress/poly.hpp"
 #include "fogdrift/train/trainer.hpp"
 
 namespace fogdrift {

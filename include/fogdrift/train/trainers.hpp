@@ -1,6 +1,6 @@
 // The registry of methods (trainer.hpp): each registered trainer with the regressor it fits. The
 // one list is src/train/registry.cpp, `Registry<…>` over the trainers in `--method`'s order; it
-// defines trainer_entries() here and regressor_entries() (model/regressors.hpp), so the
+// defines trainer_entries() here and regressor_entries() (regress/regressors.hpp), so the
 // methods train knows and the regressors a model file can hold come from one line each. Adding a
 // regressor is its own files, their tests, and two lines there (docs/architecture.md, "Adding a
 // regressor").
@@ -10,7 +10,7 @@
 #include <span>
 #include <string_view>
 
-#include "fogdrift/model/regressors.hpp"
+#include "fogdrift/regress/regressors.hpp"
 #include "fogdrift/train/trainer.hpp"
 
 namespace fogdrift {

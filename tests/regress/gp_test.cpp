@@ -1,6 +1,6 @@
 // The Gaussian process against scikit-learn's GaussianProcessRegressor on the same kernel
 // (tests/data/gp/make_gp_reference.py, written at build time), scored in agreeing digits.
-#include "fogdrift/model/gp.hpp"
+#include "fogdrift/regress/gp.hpp"
 
 #include <gtest/gtest.h>
 

@@ -1,16 +1,16 @@
 // AnyRegressor and the registry's lookups (regressors.hpp): a type missing a part does not model
 // Regressor, any registered one is held and named, and a type not registered is refused by name.
 // Every registered regressor's fit, file and C is the registry's suite (train/registry_test.cpp).
-#include "fogdrift/model/regressors.hpp"
+#include "fogdrift/regress/regressors.hpp"
 
 #include <gtest/gtest.h>
 
 #include <nlohmann/json.hpp>
 
 #include "fogdrift/base/error.hpp"
-#include "fogdrift/model/gp.hpp"
-#include "fogdrift/model/mlp.hpp"
-#include "fogdrift/model/poly.hpp"
+#include "fogdrift/regress/gp.hpp"
+#include "fogdrift/regress/mlp.hpp"
+#include "fogdrift/regress/poly.hpp"
 #include "fogdrift/svr/svr.hpp"
 
 namespace fogdrift {

@@ -1,4 +1,4 @@
-#include "fogdrift/model/mlp.hpp"
+#include "fogdrift/regress/mlp.hpp"
 
 #include <gtest/gtest.h>
 

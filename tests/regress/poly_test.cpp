@@ -1,4 +1,4 @@
-#include "fogdrift/model/poly.hpp"
+#include "fogdrift/regress/poly.hpp"
 
 #include <gtest/gtest.h>
 

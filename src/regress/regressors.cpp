@@ -1,5 +1,5 @@
 // The registry's lookups by type (regressors.hpp); the list itself is src/train/registry.cpp.
-#include "fogdrift/model/regressors.hpp"
+#include "fogdrift/regress/regressors.hpp"
 
 #include <fmt/format.h>
 

@@ -1,4 +1,4 @@
-#include "fogdrift/model/gp.hpp"
+#include "fogdrift/regress/gp.hpp"
 
 #include <fmt/format.h>
 
