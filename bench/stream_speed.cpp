@@ -14,11 +14,11 @@
 #include <string>
 #include <vector>
 
-#include "fogdrift/model/compensator.hpp"
 #include "fogdrift/model/dataset.hpp"
 #include "fogdrift/regress/mlp.hpp"
 #include "fogdrift/regress/poly.hpp"
 #include "fogdrift/sim/scenarios.hpp"
+#include "fogdrift/stream/compensator.hpp"
 #include "fogdrift/svr/svr.hpp"
 #include "fogdrift/train/train.hpp"
 

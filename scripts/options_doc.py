@@ -5,7 +5,7 @@ Each table is what `fogdrift options COMMAND` prints: the one description fogdri
 option of `fogdrift train` and Python's fogdrift.train (src/train/train_option_table.cpp), and of
 `fogdrift simulate`'s protocols and Python's fogdrift.simulate
 (src/sim/scenario_option_table.cpp), and of the streaming fault policy of `fogdrift stream`,
-`fogdrift export-c` and Python's StreamingCompensator (src/model/fault_option_table.cpp), and of
+`fogdrift export-c` and Python's StreamingCompensator (src/stream/fault_option_table.cpp), and of
 `fogdrift denoise` and Python's fogdrift.denoise (src/signal/denoise_option_table.cpp), of
 `fogdrift evaluate` and `fogdrift northfind` and their Python functions
 (src/eval/eval_option_table.cpp), and of

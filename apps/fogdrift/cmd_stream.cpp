@@ -20,12 +20,12 @@
 #include "fogdrift/firmware/c_header.hpp"
 #include "fogdrift/io/recording.hpp"
 #include "fogdrift/model/compensate_file.hpp"
-#include "fogdrift/model/compensator.hpp"
 #include "fogdrift/model/decimate.hpp"
 #include "fogdrift/model/features.hpp"
 #include "fogdrift/model/model.hpp"
 #include "fogdrift/model/model_set.hpp"
-#include "fogdrift/model/stream_faults.hpp"
+#include "fogdrift/stream/compensator.hpp"
+#include "fogdrift/stream/stream_faults.hpp"
 
 namespace fogdrift::app {
 namespace {

@@ -1,7 +1,7 @@
 #include "fault_options.hpp"
 
-#include "fogdrift/model/compensator.hpp"
-#include "fogdrift/model/fault_option_table.hpp"
+#include "fogdrift/stream/compensator.hpp"
+#include "fogdrift/stream/fault_option_table.hpp"
 
 namespace fogdrift::app {
 

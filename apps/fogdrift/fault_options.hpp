@@ -5,7 +5,7 @@
 #include <memory>
 
 #include "fogdrift/model/model.hpp"
-#include "fogdrift/model/stream_faults.hpp"
+#include "fogdrift/stream/stream_faults.hpp"
 #include "option_flags.hpp"
 
 namespace fogdrift::app {

@@ -11,11 +11,11 @@
 #include "fogdrift/io/recording.hpp"
 #include "fogdrift/io/target.hpp"
 #include "fogdrift/model/compensate_file.hpp"
-#include "fogdrift/model/compensator.hpp"
-#include "fogdrift/model/fault_option_table.hpp"
 #include "fogdrift/model/model.hpp"
 #include "fogdrift/model/model_set.hpp"
 #include "fogdrift/signal/differentiate.hpp"
+#include "fogdrift/stream/compensator.hpp"
+#include "fogdrift/stream/fault_option_table.hpp"
 
 namespace fogdrift::matlab {
 namespace {

@@ -17,8 +17,8 @@
 #include "bindings.hpp"
 #include "convert.hpp"
 #include "fogdrift/base/error.hpp"
-#include "fogdrift/model/compensator.hpp"
-#include "fogdrift/model/fault_option_table.hpp"
+#include "fogdrift/stream/compensator.hpp"
+#include "fogdrift/stream/fault_option_table.hpp"
 #include "option_keywords.hpp"
 
 namespace py = pybind11;

@@ -7,7 +7,7 @@
 #include <string>
 
 #include "fogdrift/model/model.hpp"
-#include "fogdrift/model/stream_faults.hpp"
+#include "fogdrift/stream/stream_faults.hpp"
 
 namespace fogdrift::detail {
 

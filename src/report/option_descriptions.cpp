@@ -8,10 +8,10 @@
 
 #include "fogdrift/base/error.hpp"
 #include "fogdrift/eval/eval_option_table.hpp"
-#include "fogdrift/model/fault_option_table.hpp"
 #include "fogdrift/report/paper_option_table.hpp"
 #include "fogdrift/signal/denoise_option_table.hpp"
 #include "fogdrift/sim/scenario_option_table.hpp"
+#include "fogdrift/stream/fault_option_table.hpp"
 #include "fogdrift/train/train_option_table.hpp"
 
 namespace fogdrift::report {

@@ -6,7 +6,7 @@
 
 #include "fogdrift/model/model.hpp"
 #include "fogdrift/model/model_set.hpp"
-#include "fogdrift/model/stream_faults.hpp"
+#include "fogdrift/stream/stream_faults.hpp"
 
 namespace fogdrift {
 

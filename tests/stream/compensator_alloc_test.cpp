@@ -8,8 +8,8 @@
 #include <cstdlib>
 #include <new>
 
-#include "fogdrift/model/compensator.hpp"
 #include "fogdrift/regress/mlp.hpp"
+#include "fogdrift/stream/compensator.hpp"
 #include "fogdrift/train/train.hpp"
 #include "synthetic_dataset.hpp"
 

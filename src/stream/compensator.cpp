@@ -1,4 +1,4 @@
-#include "fogdrift/model/compensator.hpp"
+#include "fogdrift/stream/compensator.hpp"
 
 #include <algorithm>
 #include <cmath>

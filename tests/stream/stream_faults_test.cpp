@@ -2,7 +2,7 @@
 // each rule of the policy on a hand-made fault, random faults injected into long simulated
 // streams (finite output, every faulty sample flagged, recovery to the fault-free output bit for
 // bit), and the C header of export-c running the same policy.
-#include "fogdrift/model/stream_faults.hpp"
+#include "fogdrift/stream/stream_faults.hpp"
 
 #include <gtest/gtest.h>
 
@@ -14,8 +14,8 @@
 #include "fogdrift/base/error.hpp"
 #include "fogdrift/base/random.hpp"
 #include "fogdrift/firmware/c_header.hpp"
-#include "fogdrift/model/compensator.hpp"
 #include "fogdrift/sim/scenarios.hpp"
+#include "fogdrift/stream/compensator.hpp"
 #include "fogdrift/train/train.hpp"
 #include "test_util.hpp"
 

@@ -1,6 +1,6 @@
 // The fault policy's options (fault_option_table.hpp). Defaults are FaultPolicy's; validate()
 // (stream_faults.hpp) checks the ranges and names "faults.FIELD", which each option lists.
-#include "fogdrift/model/fault_option_table.hpp"
+#include "fogdrift/stream/fault_option_table.hpp"
 
 namespace fogdrift {
 namespace {

@@ -1,4 +1,4 @@
-#include "fogdrift/model/stream_faults.hpp"
+#include "fogdrift/stream/stream_faults.hpp"
 
 #include <fmt/format.h>
 

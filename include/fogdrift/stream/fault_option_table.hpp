@@ -5,7 +5,7 @@
 #pragma once
 
 #include "fogdrift/base/option_table.hpp"
-#include "fogdrift/model/stream_faults.hpp"
+#include "fogdrift/stream/stream_faults.hpp"
 
 namespace fogdrift {
 

@@ -1,7 +1,7 @@
 // The fault policy's options, described once (fault_option_table.hpp): defaults that are
 // FaultPolicy's, setters that set their own field only, and every field validate() names
 // answered by the option that sets it.
-#include "fogdrift/model/fault_option_table.hpp"
+#include "fogdrift/stream/fault_option_table.hpp"
 
 #include <gtest/gtest.h>
 

@@ -1,7 +1,7 @@
 // The streaming compensator: the causal differentiator bit for bit, and the batch path sample
 // for sample. (No allocation per sample is proved in compensator_alloc_test.cpp, a program of
 // its own because it replaces the global operator new.)
-#include "fogdrift/model/compensator.hpp"
+#include "fogdrift/stream/compensator.hpp"
 #include "fogdrift/regress/mlp.hpp"
 
 #include <gtest/gtest.h>

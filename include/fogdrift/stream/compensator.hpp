@@ -27,8 +27,8 @@
 
 #include "fogdrift/model/decimate.hpp"
 #include "fogdrift/model/model.hpp"
-#include "fogdrift/model/stream_faults.hpp"
 #include "fogdrift/signal/differentiate.hpp"
+#include "fogdrift/stream/stream_faults.hpp"
 
 namespace fogdrift {
 
