@@ -25,8 +25,8 @@
 
 #include "fogdrift/base/error.hpp"
 #include "fogdrift/base/thread_pool.hpp"
+#include "fogdrift/features/features.hpp"
 #include "fogdrift/model/dataset.hpp"
-#include "fogdrift/model/features.hpp"
 #include "fogdrift/regress/gp.hpp"
 #include "fogdrift/sim/scenarios.hpp"
 #include "fogdrift/train/train.hpp"

@@ -33,8 +33,8 @@
 #include <vector>
 
 #include "fogdrift/base/thread_pool.hpp"
+#include "fogdrift/features/features.hpp"
 #include "fogdrift/model/dataset.hpp"
-#include "fogdrift/model/features.hpp"
 #include "fogdrift/sim/scenarios.hpp"
 #include "fogdrift/train/train.hpp"
 #include "fogdrift/train/tune.hpp"

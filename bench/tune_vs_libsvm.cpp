@@ -24,8 +24,8 @@
 #include <vector>
 
 #include "fogdrift/base/thread_pool.hpp"
+#include "fogdrift/features/features.hpp"
 #include "fogdrift/io/campaign.hpp"
-#include "fogdrift/model/features.hpp"
 #include "fogdrift/train/tune.hpp"
 #include "libsvm_data.hpp"
 

@@ -9,11 +9,11 @@
 
 #include "commands.hpp"
 #include "fogdrift/base/error.hpp"
+#include "fogdrift/features/features.hpp"
 #include "fogdrift/io/campaign.hpp"
 #include "fogdrift/io/inspect.hpp"
 #include "fogdrift/io/recording.hpp"
 #include "fogdrift/io/target.hpp"
-#include "fogdrift/model/features.hpp"
 
 namespace fs = std::filesystem;
 

@@ -10,7 +10,7 @@
 
 #include "fogdrift/base/csv.hpp"
 #include "fogdrift/base/error.hpp"
-#include "fogdrift/model/features.hpp"
+#include "fogdrift/features/features.hpp"
 
 namespace fogdrift::matlab {
 namespace {

@@ -9,7 +9,7 @@
 
 #include "fogdrift/base/csv.hpp"
 #include "fogdrift/base/error.hpp"
-#include "fogdrift/model/features.hpp"
+#include "fogdrift/features/features.hpp"
 #include "fogdrift/train/train_option_table.hpp"
 
 namespace py = pybind11;

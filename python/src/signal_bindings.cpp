@@ -10,7 +10,7 @@
 #include "bindings.hpp"
 #include "convert.hpp"
 #include "fogdrift/base/error.hpp"
-#include "fogdrift/model/features.hpp"
+#include "fogdrift/features/features.hpp"
 #include "fogdrift/model/model.hpp"
 #include "fogdrift/signal/denoise.hpp"
 #include "fogdrift/signal/denoise_option_table.hpp"

@@ -8,7 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "fogdrift/base/error.hpp"
-#include "fogdrift/model/features.hpp"
+#include "fogdrift/features/features.hpp"
 
 namespace fogdrift::eval {
 namespace {

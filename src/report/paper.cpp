@@ -17,8 +17,8 @@
 #include "fogdrift/eval/field.hpp"
 #include "fogdrift/eval/northfind.hpp"
 #include "fogdrift/eval/startup.hpp"
+#include "fogdrift/features/features.hpp"
 #include "fogdrift/model/dataset.hpp"
-#include "fogdrift/model/features.hpp"
 #include "fogdrift/train/train.hpp"
 #include "report/paper_figures.hpp"
 

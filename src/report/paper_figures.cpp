@@ -6,7 +6,7 @@
 #include <string_view>
 
 #include "fogdrift/eval/startup.hpp"
-#include "fogdrift/model/features.hpp"
+#include "fogdrift/features/features.hpp"
 
 namespace fogdrift::report {
 namespace {

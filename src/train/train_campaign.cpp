@@ -6,7 +6,7 @@
 
 #include "fogdrift/base/error.hpp"
 #include "fogdrift/base/sha256.hpp"
-#include "fogdrift/model/features.hpp"
+#include "fogdrift/features/features.hpp"
 
 namespace fogdrift {
 

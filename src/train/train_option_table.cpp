@@ -5,7 +5,7 @@
 
 #include <fmt/format.h>
 
-#include "fogdrift/model/features.hpp"
+#include "fogdrift/features/features.hpp"
 #include "fogdrift/signal/differentiate.hpp"
 #include "fogdrift/train/trainers.hpp"
 

@@ -2,7 +2,7 @@
 // parse(to_string()) must give the same spec.
 #include <cstdlib>
 
-#include "fogdrift/model/features.hpp"
+#include "fogdrift/features/features.hpp"
 #include "fuzz_util.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {

@@ -23,10 +23,10 @@
 #include <string_view>
 #include <vector>
 
+#include "fogdrift/features/features.hpp"
 #include "fogdrift/io/campaign.hpp"
 #include "fogdrift/io/recording.hpp"
 #include "fogdrift/io/target.hpp"
-#include "fogdrift/model/features.hpp"
 #include "fogdrift/signal/denoise.hpp"
 
 namespace fogdrift {

@@ -21,8 +21,8 @@
 #include <string>
 #include <vector>
 
+#include "fogdrift/features/features.hpp"
 #include "fogdrift/io/recording.hpp"
-#include "fogdrift/model/features.hpp"
 
 namespace fogdrift {
 

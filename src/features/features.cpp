@@ -1,4 +1,4 @@
-#include "fogdrift/model/features.hpp"
+#include "fogdrift/features/features.hpp"
 
 #include <fmt/format.h>
 #include <algorithm>

@@ -1,4 +1,4 @@
-#include "fogdrift/model/features.hpp"
+#include "fogdrift/features/features.hpp"
 
 #include <gtest/gtest.h>
 
