@@ -1,6 +1,4 @@
 #include "fogdrift/report/paper.hpp"
-#include "fogdrift/train/bp_trainer.hpp"
-#include "fogdrift/train/svr_trainer.hpp"
 
 #include <fmt/format.h>
 
@@ -19,6 +17,8 @@
 #include "fogdrift/eval/startup.hpp"
 #include "fogdrift/features/features.hpp"
 #include "fogdrift/model/dataset.hpp"
+#include "fogdrift/train/bp_trainer.hpp"
+#include "fogdrift/train/svr_trainer.hpp"
 #include "fogdrift/train/train.hpp"
 #include "report/paper_figures.hpp"
 

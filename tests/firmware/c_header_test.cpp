@@ -5,9 +5,6 @@
 #include <fmt/ranges.h>
 #include <gtest/gtest.h>
 
-#include <cstdio>
-#include <sstream>
-
 #include "fogdrift/base/error.hpp"
 #include "fogdrift/firmware/c_header.hpp"
 #include "fogdrift/io/target.hpp"

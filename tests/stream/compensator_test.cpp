@@ -2,7 +2,6 @@
 // for sample. (No allocation per sample is proved in compensator_alloc_test.cpp, a program of
 // its own because it replaces the global operator new.)
 #include "fogdrift/stream/compensator.hpp"
-#include "fogdrift/regress/mlp.hpp"
 
 #include <gtest/gtest.h>
 
@@ -17,6 +16,7 @@
 #include "fogdrift/base/random.hpp"
 #include "fogdrift/firmware/c_header.hpp"
 #include "fogdrift/model/model_set.hpp"
+#include "fogdrift/regress/mlp.hpp"
 #include "fogdrift/sim/scenarios.hpp"
 #include "fogdrift/train/train.hpp"
 #include "test_util.hpp"

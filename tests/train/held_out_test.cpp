@@ -1,7 +1,6 @@
 // The held-out report against closed-form cases: a drift that is a line in one temperature, a
 // drift with no temperature signal, and a model known to be worse than the mean.
 #include "fogdrift/train/held_out.hpp"
-#include "fogdrift/regress/mlp.hpp"
 
 #include <gtest/gtest.h>
 
@@ -10,6 +9,7 @@
 
 #include "fogdrift/base/error.hpp"
 #include "fogdrift/base/random.hpp"
+#include "fogdrift/regress/mlp.hpp"
 #include "fogdrift/train/train.hpp"
 #include "synthetic_dataset.hpp"
 

@@ -2,11 +2,12 @@
 // rule, defaults that are the library's, setters that set their own field and nothing else, and
 // the library's field names answered by the option that sets them.
 #include "fogdrift/train/train_option_table.hpp"
-#include "fogdrift/regress/gp.hpp"
 
 #include <gtest/gtest.h>
 
 #include <set>
+
+#include "fogdrift/regress/gp.hpp"
 
 namespace fogdrift {
 namespace {

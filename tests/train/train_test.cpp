@@ -1,9 +1,6 @@
 // Every training method on a small grouped dataset, and the model file: exact round trips,
 // one seed one file, and clear errors for files fogdrift cannot read.
 #include "fogdrift/train/train.hpp"
-#include "fogdrift/train/bp_trainer.hpp"
-#include "fogdrift/train/gp_trainer.hpp"
-#include "fogdrift/train/poly_trainer.hpp"
 
 #include <gtest/gtest.h>
 
@@ -11,6 +8,9 @@
 
 #include "fogdrift/base/error.hpp"
 #include "fogdrift/base/thread_pool.hpp"
+#include "fogdrift/train/bp_trainer.hpp"
+#include "fogdrift/train/gp_trainer.hpp"
+#include "fogdrift/train/poly_trainer.hpp"
 #include "synthetic_dataset.hpp"
 #include "test_util.hpp"
 
