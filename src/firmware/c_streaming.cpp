@@ -1,5 +1,6 @@
 // The causal streaming compensator of the C header (c_parts.hpp, compensator.hpp): the model's
-// part written here around the compensator's C code, src/firmware/compensator.h.
+// part written here around the streaming step's C code, src/stream/step_state.h and step.h, the
+// code the library runs too.
 #include "firmware/c_parts.hpp"
 
 #include <fmt/format.h>
@@ -33,17 +34,24 @@ std::string thermometers_read(const CompensationModel& model) {
   return read.empty() ? std::string("none") : fmt::format("{}", fmt::join(read, ", "));
 }
 
-#include "c_compensator.inc"  // kCompensatorC: src/firmware/compensator.h, embedded at build time
+// kStepStateC and kStepC: src/stream/step_state.h and step.h, embedded at build time.
+#include "c_step.inc"
+#include "c_step_state.inc"
 
-/// The compensator's code with its names fds_ and FDS_ given the header's prefix: every
-/// identifier that starts with them, in code and comments alike.
+/// The step's code with its names fds_ and FDS_ given the header's prefix: every identifier that
+/// starts with them, in code and comments alike. Its state first, then its functions.
 constexpr std::string_view kCodeStarts = "/* fogdrift: the header's code starts here. */\n";
-static_assert(kCompensatorC.find(kCodeStarts) != std::string_view::npos,
-              "src/firmware/compensator.h lost the line its embedded code starts after");
+static_assert(kStepStateC.find(kCodeStarts) != std::string_view::npos,
+              "src/stream/step_state.h lost the line its embedded code starts after");
+static_assert(kStepC.find(kCodeStarts) != std::string_view::npos,
+              "src/stream/step.h lost the line its embedded code starts after");
 
 std::string renamed_compensator(const std::string& prefix, const std::string& upper) {
-  const std::string_view code =
-      kCompensatorC.substr(kCompensatorC.find(kCodeStarts) + kCodeStarts.size());
+  const auto after_start = [](std::string_view file) {
+    return file.substr(file.find(kCodeStarts) + kCodeStarts.size());
+  };
+  const std::string code =
+      std::string(after_start(kStepStateC)) + "\n" + std::string(after_start(kStepC));
   const auto identifier = [](char c) {
     return std::isalnum(static_cast<unsigned char>(c)) || c == '_';
   };
@@ -64,7 +72,7 @@ std::string renamed_compensator(const std::string& prefix, const std::string& up
 }
 
 // The header's streaming part, around the compensator's code: the user's guide, the model's
-// constants and tables the code reads (src/firmware/compensator.h lists them), the features in
+// constants and tables the code reads (src/stream/step.h lists them), the features in
 // compute_features()'s order, and the entry points under the names of the model's
 // thermometers and target.
 constexpr std::string_view kStreamingC =

@@ -1,8 +1,18 @@
+// StreamingCompensator: the streaming step of src/stream/step.h, compiled here as C++ with the
+// model's tables and sizes read from the state at run time (docs/architecture.md, "One streaming
+// step"). The C headers export-c writes run the same code with them as constants.
 #include "fogdrift/stream/compensator.hpp"
 
-#include <algorithm>
+#include <math.h>  // NOLINT: step.h's own include, resolved before its namespace opens
 #include <cmath>
 #include <limits>
+#include <span>
+#include <utility>
+#include <vector>
+
+#include "fogdrift/features/features.hpp"
+#include "fogdrift/model/decimate.hpp"
+#include "fogdrift/signal/differentiate.hpp"
 
 namespace fogdrift {
 
@@ -14,305 +24,315 @@ FaultPolicy fault_policy_of(const CompensationModel& model) {
                                                    f.sample_interval_s);
 }
 
+namespace detail {
+namespace step {
+
+using fds_real = double;
+
+// step_state.h's members under the same names, each array the memory of a StepCore, with the
+// model's constants beside them: what a C header fixes at compile time, read here through `s`.
+struct fds_state {
+  // The model (step.h lists what a header defines).
+  int n_thermometers = 0, n_lags = 0;
+  long rate_window = 0, block = 0;
+  double data_dt_s = 0, dt_s = 0;
+  const int* reads = nullptr;
+  const double* rate_taps = nullptr;
+  const int* lag_thermometer = nullptr;
+  const double* lag_gain = nullptr;
+  const double* lag_tau_s = nullptr;
+  FaultPolicy faults;
+  double reading_limit = 0, drift_mean = 0, recover_s = 0;
+  bool guarded = false;
+  StepCore* core = nullptr;  // the model's features and prediction (features_of, predict_of)
+  // The step's state.
+  double** buffer = nullptr;
+  long size = 0, count = 0;
+  double weight = 1;
+  int guard_started = 0;
+  double last_time_s = 0, novelty = 0;
+  unsigned flags = 0;
+  int started = 0;
+  double previous_time_s = 0;
+  long refill = 0;
+  int has_good_drift = 0;
+  double good_drift = 0, last_drift = 0, last_comp = 0, good_drift_time_s = 0;
+  int *seen_good = nullptr, *out = nullptr, *tracking = nullptr;
+  double *good_degc = nullptr, *good_rate = nullptr, *pushed_degc = nullptr;
+  double *good_time_s = nullptr, *unchanged_degc = nullptr, *unchanged_since_s = nullptr;
+  double** others_degc = nullptr;
+  int data_started = 0;
+  long sum_count = 0;
+  double data_time_s = 0;
+  double* sum = nullptr;
+  double *lag_degc = nullptr, *lag_rate = nullptr;
+  int* lag_started = nullptr;
+  double *mean = nullptr, *temp = nullptr, *rate = nullptr, *f = nullptr;
+  int *good = nullptr, *stuck = nullptr;
+};
+
+void features_of(const fds_state* s, const double* temp, const double* rate, double t,
+                 const double* lag_rate, double* f) noexcept;
+double predict_of(fds_state* s, const double* f) noexcept;
+double novelty_of(const fds_state* s) noexcept;
+double target_weight_of(const fds_state* s) noexcept;
+
+}  // namespace step
+
+// What the step reads through `s` (step.h's list), as the run-time values above.
+#define FDS_N_THERMOMETERS (s->n_thermometers)
+#define FDS_RATE_WINDOW (s->rate_window)
+#define FDS_BLOCK (s->block)
+#define FDS_N_LAGS (s->n_lags)
+#define FDS_LAGS 1
+#define fds_data_dt_s (s->data_dt_s)
+#define fds_dt_s (s->dt_s)
+#define fds_reads (s->reads)
+#define fds_rate_taps (s->rate_taps)
+#define fds_lag_thermometer (s->lag_thermometer)
+#define fds_lag_gain (s->lag_gain)
+#define fds_lag_tau_s (s->lag_tau_s)
+#define FDS_TEMP_MIN_DEGC (s->faults.temp_min_degc)
+#define FDS_TEMP_MAX_DEGC (s->faults.temp_max_degc)
+#define FDS_READING_LIMIT (s->reading_limit)
+#define FDS_BRIDGE_S (s->faults.bridge_s)
+#define FDS_HOLD_S (s->faults.hold_s)
+#define FDS_STUCK_S (s->faults.stuck_s)
+#define FDS_STUCK_DELTA_DEGC (s->faults.stuck_delta_degc)
+#define FDS_TEMP_JUMP_DEGC (s->faults.temp_jump_degc)
+#define FDS_FAULT_TEMP_BAD fault::temp_bad
+#define FDS_FAULT_TEMP_JUMP fault::temp_jump
+#define FDS_FAULT_TEMP_STUCK fault::temp_stuck
+#define FDS_FAULT_GYRO_BAD fault::gyro_bad
+#define FDS_FAULT_TIME_BAD fault::time_bad
+#define FDS_FAULT_GAP fault::gap
+#define FDS_FAULT_OUT_OF_ORDER fault::out_of_order
+#define FDS_FAULT_BRIDGED fault::bridged
+#define FDS_FAULT_HELD fault::held
+#define FDS_FAULT_STOPPED fault::stopped
+#define FDS_FAULT_RESTART fault::restart
+#define FDS_FAULT_OFF_INTERVAL fault::off_interval
+#define FDS_INTERVAL_TOLERANCE kIntervalTolerance
+#define FDS_DRIFT_MEAN (s->drift_mean)
+// CompensationModel::predict() has made a drift beyond its limit a NaN already (model.hpp).
+#define FDS_DRIFT_LIMIT HUGE_VAL
+#define FDS_FABS std::fabs
+#define FDS_DIFFERENCE_FROM_NEWEST 0
+#define fds_features_(temp, rate, t, lag_rate, f) features_of(s, temp, rate, t, lag_rate, f)
+#define fds_predict_(f) predict_of(s, f)
+#define FDS_GUARD 1
+#define FDS_GUARDED (s->guarded)
+#define fds_guard_recover_s (s->recover_s)
+// predict_of() has computed ν and the target weight with the drift.
+#define fds_novelty_of(f, warming) ((void)(f), (void)(warming), novelty_of(s))
+#define fds_target_weight(nu) ((void)(nu), target_weight_of(s))
+
+namespace step {
+#include "stream/step.h"
+}  // namespace step
+
+#undef FDS_N_THERMOMETERS
+#undef FDS_RATE_WINDOW
+#undef FDS_BLOCK
+#undef FDS_N_LAGS
+#undef FDS_LAGS
+#undef fds_data_dt_s
+#undef fds_dt_s
+#undef fds_reads
+#undef fds_rate_taps
+#undef fds_lag_thermometer
+#undef fds_lag_gain
+#undef fds_lag_tau_s
+#undef FDS_TEMP_MIN_DEGC
+#undef FDS_TEMP_MAX_DEGC
+#undef FDS_READING_LIMIT
+#undef FDS_BRIDGE_S
+#undef FDS_HOLD_S
+#undef FDS_STUCK_S
+#undef FDS_STUCK_DELTA_DEGC
+#undef FDS_TEMP_JUMP_DEGC
+#undef FDS_FAULT_TEMP_BAD
+#undef FDS_FAULT_TEMP_JUMP
+#undef FDS_FAULT_TEMP_STUCK
+#undef FDS_FAULT_GYRO_BAD
+#undef FDS_FAULT_TIME_BAD
+#undef FDS_FAULT_GAP
+#undef FDS_FAULT_OUT_OF_ORDER
+#undef FDS_FAULT_BRIDGED
+#undef FDS_FAULT_HELD
+#undef FDS_FAULT_STOPPED
+#undef FDS_FAULT_RESTART
+#undef FDS_FAULT_OFF_INTERVAL
+#undef FDS_INTERVAL_TOLERANCE
+#undef FDS_DRIFT_MEAN
+#undef FDS_DRIFT_LIMIT
+#undef FDS_FABS
+#undef FDS_DIFFERENCE_FROM_NEWEST
+#undef fds_features_
+#undef fds_predict_
+#undef FDS_GUARD
+#undef FDS_GUARDED
+#undef fds_guard_recover_s
+#undef fds_novelty_of
+#undef fds_target_weight
+
+// The memory of one compensator's step and the model's tables, sized once.
+struct StepCore {
+  const CompensationModel& model;
+  std::vector<FeatureColumn> columns;  // the model's inputs (FeatureSpec::columns())
+  std::vector<double> work;            // the standardised inputs
+  DriftPrediction last;                // at the last sample the model was evaluated on
+  std::vector<int> reads, lag_thermometer;
+  std::vector<double> taps, lag_gain, lag_tau_s;
+  std::vector<double> buffer, others;  // rows of 2W and of one per thermometer
+  std::vector<double*> buffer_rows, others_rows;
+  std::vector<double> reals;  // every other array of reals, one after another
+  std::vector<int> ints;
+  std::vector<double> raw;  // one sample's readings
+  step::fds_state state;
+
+  StepCore(const CompensationModel& m, double dt_s, const StreamOptions& options);
+  StepCore(const StepCore&) = delete;
+  StepCore& operator=(const StepCore&) = delete;
+};
+
+StepCore::StepCore(const CompensationModel& m, double dt_s, const StreamOptions& options)
+    : model(m), columns(m.dataset.features.columns()), work(m.inputs()) {
+  step::fds_state& s = state;
+  const FeatureOptions& pre = m.dataset.preprocessing;
+  // The data's interval as the model's interval / k (decimate.hpp), and the model's.
+  const std::size_t k = decimation_factor(pre, dt_s, "rate");
+  s.block = static_cast<long>(k);
+  s.data_dt_s = streaming_interval_s(pre, dt_s, k);
+  s.dt_s = static_cast<double>(k) * s.data_dt_s;
+  const signal::CausalDifferentiator rates(pre.rates, s.dt_s);
+  validate(options.faults);
+  s.faults = options.faults;
+  const std::size_t nt = m.dataset.features.thermometer_count();
+  const std::size_t w = rates.window();
+  s.n_thermometers = static_cast<int>(nt);
+  s.rate_window = static_cast<long>(w);
+  for (std::size_t j = 1; j <= w; ++j)
+    taps.insert(taps.end(), rates.taps(j).begin(), rates.taps(j).end());
+  for (std::size_t t = 0; t < nt; ++t)
+    reads.push_back(m.dataset.features.reads(static_cast<Thermometer>(t)) ? 1 : 0);
+  for (const FeatureColumn& c : columns)
+    if (c.lagged()) {
+      lag_thermometer.push_back(static_cast<int>(c.a));
+      lag_gain.push_back(LaggedRate(c.tau_s, s.dt_s).gain());
+      lag_tau_s.push_back(c.tau_s);
+    }
+  const std::size_t nl = lag_gain.size();
+  s.n_lags = static_cast<int>(nl);
+  s.reads = reads.data();
+  s.rate_taps = taps.data();
+  s.lag_thermometer = lag_thermometer.data();
+  s.lag_gain = lag_gain.data();
+  s.lag_tau_s = lag_tau_s.data();
+  // A gyro's readings beyond the limit are faults; another target's only when not a number
+  // (stream_faults.hpp).
+  s.reading_limit = target_of(m.dataset.target_column).kind == TargetKind::gyro
+                        ? s.faults.gyro_limit_dph
+                        : std::numeric_limits<double>::infinity();
+  s.drift_mean = m.guarded_dph(0.0, 0.0);
+  s.guarded = options.guarded && !m.guard.empty();
+  s.recover_s = m.guard.settings.recover_s;
+  s.core = this;
+
+  buffer.assign(nt * 2 * w, 0.0);
+  others.assign(nt * nt, 0.0);
+  for (std::size_t t = 0; t < nt; ++t) {
+    buffer_rows.push_back(buffer.data() + t * 2 * w);
+    others_rows.push_back(others.data() + t * nt);
+  }
+  s.buffer = buffer_rows.data();
+  s.others_degc = others_rows.data();
+  // The arrays of reals: 10 per thermometer, 2 per lag, 1 per input.
+  reals.assign(10 * nt + 2 * nl + columns.size(), 0.0);
+  double* r = reals.data();
+  const auto take = [&r](std::size_t n) { return std::exchange(r, r + n); };
+  s.good_degc = take(nt), s.good_rate = take(nt), s.pushed_degc = take(nt);
+  s.good_time_s = take(nt), s.unchanged_degc = take(nt), s.unchanged_since_s = take(nt);
+  s.sum = take(nt), s.mean = take(nt), s.temp = take(nt), s.rate = take(nt);
+  s.lag_degc = take(nl), s.lag_rate = take(nl);
+  s.f = take(columns.size());
+  raw.assign(nt, 0.0);
+  ints.assign(5 * nt + nl, 0);
+  int* i = ints.data();
+  const auto take_int = [&i](std::size_t n) { return std::exchange(i, i + n); };
+  s.seen_good = take_int(nt), s.out = take_int(nt), s.tracking = take_int(nt);
+  s.good = take_int(nt), s.stuck = take_int(nt);
+  s.lag_started = take_int(nl);
+  step::fds_reset(&s);
+}
+
+namespace step {
+
+// The model's inputs, as compute_features() forms them: each column's value, a lagged rate from
+// its lag's term (the lags in the order of their columns).
+void features_of(const fds_state* s, const double* temp, const double* rate, double t,
+                 const double* lag_rate, double* f) noexcept {
+  const std::vector<FeatureColumn>& columns = s->core->columns;
+  const auto n = static_cast<std::size_t>(s->n_thermometers);
+  const std::span<const double> temps(temp, n), rates(rate, n);
+  std::size_t lag = 0;
+  for (std::size_t c = 0; c < columns.size(); ++c)
+    f[c] = columns[c].lagged() ? lag_rate[lag++] : columns[c].value(temps, rates, t);
+}
+
+// The drift, with ν and the guard's target weight kept for the step's guard: while the rate
+// window fills, novelty leaves the rates out (guard.hpp, "Warm-up").
+double predict_of(fds_state* s, const double* f) noexcept {
+  StepCore& core = *s->core;
+  const bool warming = s->count < s->rate_window;
+  core.last =
+      core.model.predict(std::span<const double>(f, core.columns.size()), core.work, warming);
+  return core.last.drift_dph;
+}
+
+double novelty_of(const fds_state* s) noexcept {
+  return s->core->last.novelty;
+}
+double target_weight_of(const fds_state* s) noexcept {
+  return s->core->last.target_weight;
+}
+
+}  // namespace step
+}  // namespace detail
+
 StreamingCompensator::StreamingCompensator(const CompensationModel& model, double dt_s,
                                            const StreamOptions& options)
-    : model_(model),
-      k_(decimation_factor(model.dataset.preprocessing, dt_s, "rate")),
-      data_dt_s_(streaming_interval_s(model.dataset.preprocessing, dt_s, k_)),
-      dt_s_(static_cast<double>(k_) * data_dt_s_),
-      faults_(options.faults),
-      reading_limit_(target_of(model.dataset.target_column).kind == TargetKind::gyro
-                         ? faults_.gyro_limit_dph
-                         : std::numeric_limits<double>::infinity()),
-      nt_(model.dataset.features.thermometer_count()),
-      rates_(nt_, signal::CausalDifferentiator(model.dataset.preprocessing.rates, dt_s_)),
-      columns_(model.dataset.features.columns()),
-      features_(model.inputs()),
-      work_(model.inputs()),
-      guarded_(options.guarded && !model.guard.empty()),
-      thermometers_(nt_),
-      raw_(nt_),
-      temp_(nt_),
-      rate_(nt_),
-      good_(nt_),
-      stuck_(nt_),
-      block_(nt_) {
-  validate(faults_);
-  for (std::size_t c = 0; c < columns_.size(); ++c)
-    if (columns_[c].lagged()) lags_.push_back({c, LaggedRate(columns_[c].tau_s, dt_s_)});
-  for (std::size_t k = 0; k < nt_; ++k) {
-    thermometers_[k].read = model.dataset.features.reads(static_cast<Thermometer>(k));
-    thermometers_[k].others_degc.assign(nt_, 0.0);
-  }
-}
+    : core_(std::make_unique<detail::StepCore>(model, dt_s, options)) {}
 
-void StreamingCompensator::ThermometerState::clear() noexcept {
-  seen_good = out = tracking = false;
-  good_degc = good_time_s = good_rate = pushed_degc = 0;
-  unchanged_degc = unchanged_since_s = 0;
-  std::fill(others_degc.begin(), others_degc.end(), 0.0);
-}
+StreamingCompensator::~StreamingCompensator() = default;
+StreamingCompensator::StreamingCompensator(StreamingCompensator&&) noexcept = default;
+StreamingCompensator& StreamingCompensator::operator=(StreamingCompensator&&) noexcept = default;
 
 void StreamingCompensator::reset() noexcept {
-  for (auto& r : rates_) r.reset();
-  for (Lag& lag : lags_) lag.rate.reset();
-  filter_.reset();
-  weight_ = 1.0;
-  for (ThermometerState& th : thermometers_) th.clear();
-  started_ = false;
-  refill_ = 0;
-  has_good_drift_ = false;
-  last_drift_dph_ = last_comp_dph_ = 0;
-  block_.clear();
-  data_started_ = false;
+  detail::step::fds_reset(&core_->state);
 }
 
-// Which thermometers the model reads give a good reading at this sample: a number inside the
-// policy's range, no jump from its last good reading continued along its rate (judged within
-// bridge_s of that reading: a step that lasts longer is real), and not stuck
-// (stream_faults.hpp). Raises temp_bad, temp_jump and temp_stuck.
-void StreamingCompensator::check_thermometers(double time_s, std::uint32_t& flags) noexcept {
-  const std::vector<double>& raw = raw_;
-  std::vector<char>& good = good_;
-  for (std::size_t k = 0; k < nt_; ++k) {
-    good[k] = false;
-    if (!thermometers_[k].read) continue;
-    good[k] =
-        std::isfinite(raw[k]) && raw[k] >= faults_.temp_min_degc && raw[k] <= faults_.temp_max_degc;
-    if (!good[k]) {
-      flags |= fault::temp_bad;
-      continue;
-    }
-    const ThermometerState& th = thermometers_[k];
-    if (faults_.temp_jump_degc > 0 && th.seen_good && time_s - th.good_time_s <= faults_.bridge_s &&
-        std::abs(raw[k] - substitute(k, time_s)) > faults_.temp_jump_degc) {
-      good[k] = false;
-      flags |= fault::temp_jump;
-    }
-  }
-  if (faults_.stuck_s <= 0) return;
-  const double nan = std::numeric_limits<double>::quiet_NaN();
-  std::fill(stuck_.begin(), stuck_.end(), false);
-  for (std::size_t k = 0; k < nt_; ++k) {
-    ThermometerState& th = thermometers_[k];
-    if (!good[k]) continue;
-    if (!th.tracking || raw[k] != th.unchanged_degc) {
-      th.tracking = true;
-      th.unchanged_degc = raw[k];
-      th.unchanged_since_s = time_s;
-      for (std::size_t j = 0; j < nt_; ++j) th.others_degc[j] = good[j] ? raw[j] : nan;
-      continue;
-    }
-    for (std::size_t j = 0; j < nt_; ++j) {
-      if (j == k || !good[j]) continue;
-      if (std::isnan(th.others_degc[j])) th.others_degc[j] = raw[j];  // known from now on
-      if (time_s - th.unchanged_since_s >= faults_.stuck_s &&
-          std::abs(raw[j] - th.others_degc[j]) >= faults_.stuck_delta_degc)
-        stuck_[k] = true;
-    }
-  }
-  for (std::size_t k = 0; k < nt_; ++k)
-    if (stuck_[k]) {
-      good[k] = false;
-      flags |= fault::temp_stuck;
-    }
+double StreamingCompensator::novelty() const noexcept {
+  return core_->last.novelty;
+}
+double StreamingCompensator::weight() const noexcept {
+  return core_->state.weight;
 }
 
-// Thermometer k's value for one sample into the lags that read it.
-void StreamingCompensator::push_lags(std::size_t k, double temp_degc) noexcept {
-  for (Lag& lag : lags_)
-    if (static_cast<std::size_t>(columns_[lag.column].a) == k) lag.value = lag.rate.push(temp_degc);
-}
-
-// The sample's further thermometers into raw_[3…]; one the sample does not hold is a reading
-// that is not a number, a fault as any other (stream_faults.hpp).
-void StreamingCompensator::further_into_raw(const Sample& s) noexcept {
-  for (std::size_t k = 3; k < nt_; ++k)
-    raw_[k] = k - 3 < s.further_degc.size() ? s.further_degc[k - 3]
-                                            : std::numeric_limits<double>::quiet_NaN();
-}
-
-// A faulty thermometer's stand-in: its last good reading continued along its last good rate,
-// kept inside the policy's range.
-double StreamingCompensator::substitute(std::size_t k, double time_s) const noexcept {
-  const ThermometerState& th = thermometers_[k];
-  if (!th.seen_good) return std::clamp(0.0, faults_.temp_min_degc, faults_.temp_max_degc);
-  const double v = th.good_degc + th.good_rate * (time_s - th.good_time_s);
-  return std::clamp(v, faults_.temp_min_degc, faults_.temp_max_degc);
-}
-
-// The drift where the model cannot be evaluated: the last good drift for up to hold_s after it,
-// then the model's mean drift (the correction stopped, as the guard at weight 0).
-double StreamingCompensator::degraded(double time_s, std::uint32_t& flags) const noexcept {
-  if (has_good_drift_ && time_s - good_drift_time_s_ <= faults_.hold_s) {
-    flags |= fault::held;
-    return good_drift_dph_;
-  }
-  flags |= fault::stopped;
-  return model_.guarded_dph(0.0, 0.0);
-}
-
-StreamOutput StreamingCompensator::finish(const Sample& s, double drift_dph,
-                                          std::uint32_t flags) noexcept {
-  StreamOutput out{drift_dph, last_comp_dph_, flags};
-  if (std::isfinite(s.gyro_dph) && std::abs(s.gyro_dph) <= reading_limit_)
-    out.gyro_comp_dph = last_comp_dph_ = s.gyro_dph - drift_dph;
-  else
-    out.flags |= fault::gyro_bad;
+StreamOutput StreamingCompensator::update(const Sample& x) noexcept {
+  detail::StepCore& core = *core_;
+  std::vector<double>& raw = core.raw;
+  raw[0] = x.temp_fog_degc, raw[1] = x.temp_acc1_degc, raw[2] = x.temp_acc2_degc;
+  // A further thermometer the sample does not hold is a reading that is not a number, a fault as
+  // any other (stream_faults.hpp).
+  for (std::size_t k = 3; k < raw.size(); ++k)
+    raw[k] = k - 3 < x.further_degc.size() ? x.further_degc[k - 3]
+                                           : std::numeric_limits<double>::quiet_NaN();
+  StreamOutput out;
+  out.drift_dph = detail::step::fds_update_(&core.state, x.time_s, raw.data());
+  out.gyro_comp_dph = detail::step::fds_compensated_(&core.state, x.gyro_dph);
+  out.flags = core.state.flags;
   return out;
-}
-
-StreamOutput StreamingCompensator::update(const Sample& s) noexcept {
-  if (k_ == 1) return step(s, 0);
-  // Blocks of k_ samples (decimate.hpp); time is checked here at the data's interval as step()
-  // checks it at the model's.
-  std::uint32_t flags = 0;
-  double t = s.time_s;
-  if (!std::isfinite(t)) {
-    flags |= fault::time_bad;
-    t = data_started_ ? data_time_s_ + data_dt_s_ : 0.0;
-  }
-  if (data_started_) {
-    const double gap = t - data_time_s_;
-    if (gap < -faults_.bridge_s) {
-      reset();
-      flags |= fault::restart;
-    } else if (gap < 0.5 * data_dt_s_) {
-      return finish(s, last_drift_dph_, flags | fault::out_of_order);
-    } else if (gap <= 1.5 * data_dt_s_ && off_interval(gap, data_dt_s_)) {
-      flags |= fault::off_interval;
-    }
-  }
-  const bool first = !data_started_;
-  data_started_ = true;
-  data_time_s_ = t;
-  raw_[0] = s.temp_fog_degc, raw_[1] = s.temp_acc1_degc, raw_[2] = s.temp_acc2_degc;
-  further_into_raw(s);
-  block_.add(raw_, 0.0);
-  if (!first && block_.count < k_) return finish(s, last_drift_dph_, flags);
-  const auto c = static_cast<double>(block_.count);
-  for (std::size_t k = 0; k < nt_; ++k) temp_[k] = block_.temp[k] / c;
-  const Sample mean{t,        s.gyro_dph, temp_[0],
-                    temp_[1], temp_[2],   std::span<const double>(temp_).subspan(3)};
-  block_.clear();
-  return step(mean, flags);
-}
-
-StreamOutput StreamingCompensator::step(const Sample& s, std::uint32_t flags) noexcept {
-  double t = s.time_s;
-  if (!std::isfinite(t)) {
-    flags |= fault::time_bad;
-    t = started_ ? previous_time_s_ + dt_s_ : 0.0;
-  }
-  // Time: a restart, a sample that does not advance, or a gap before this sample.
-  std::size_t missing = 0;
-  bool long_gap = false;
-  if (started_) {
-    const double step = t - previous_time_s_;
-    if (step < -faults_.bridge_s) {
-      reset();
-      flags |= fault::restart;
-    } else if (step < 0.5 * dt_s_) {
-      return finish(s, last_drift_dph_, flags | fault::out_of_order);
-    } else if (step > 1.5 * dt_s_) {
-      flags |= fault::gap;
-      if (step - dt_s_ > faults_.bridge_s)
-        long_gap = true;
-      else
-        missing = static_cast<std::size_t>(std::lround(step / dt_s_)) - 1;
-    } else if (off_interval(step, dt_s_)) {
-      flags |= fault::off_interval;
-    }
-  }
-  // raw_ from the sample first: step() may be given the block means held in temp_.
-  further_into_raw(s);
-  raw_[0] = s.temp_fog_degc, raw_[1] = s.temp_acc1_degc, raw_[2] = s.temp_acc2_degc;
-  check_thermometers(t, flags);
-  const std::vector<double>& raw = raw_;
-  const std::vector<char>& good = good_;
-  // Outages: bridged up to bridge_s, out beyond; a thermometer back from being out, or a gap
-  // too long to bridge, starts the rate filters again.
-  bool restart_rates = long_gap, any_out = false, any_bridged = false;
-  for (std::size_t k = 0; k < nt_; ++k) {
-    ThermometerState& th = thermometers_[k];
-    if (!th.read) continue;
-    if (good[k]) {
-      restart_rates |= th.out;
-      th.out = false;
-      continue;
-    }
-    if (!th.seen_good || t - th.good_time_s > faults_.bridge_s) th.out = true;
-    (th.out ? any_out : any_bridged) = true;
-  }
-  if (restart_rates) {
-    // The lags start again with the rates, as at rest (features.hpp, LaggedRate).
-    for (auto& r : rates_) r.reset();
-    for (Lag& lag : lags_) lag.rate.reset();
-    // At power-on (no drift given yet) the short windows are those the model was trained with.
-    refill_ = has_good_drift_ ? rates_[0].window() - 1 : 0;
-    missing = 0;
-  }
-  std::vector<double>&temp = temp_, &rate = rate_;
-  std::fill(temp.begin(), temp.end(), 0.0);
-  std::fill(rate.begin(), rate.end(), 0.0);
-  for (std::size_t k = 0; k < nt_; ++k) {
-    ThermometerState& th = thermometers_[k];
-    if (!th.read) continue;
-    temp[k] = good[k] ? raw[k] : substitute(k, t);
-    // The missing samples of a bridged gap, on the interval: interpolated towards this sample.
-    for (std::size_t m = 1; m <= missing; ++m) {
-      const double tm = previous_time_s_ + static_cast<double>(m) * dt_s_;
-      const double v = good[k]
-                           ? th.pushed_degc + (temp[k] - th.pushed_degc) * static_cast<double>(m) /
-                                                  static_cast<double>(missing + 1)
-                           : substitute(k, tm);
-      rates_[k].push(v);
-      push_lags(k, v);
-    }
-    rate[k] = rates_[k].push(temp[k]);
-    push_lags(k, temp[k]);
-    th.pushed_degc = temp[k];
-    if (good[k]) {
-      th.seen_good = true;
-      th.good_degc = raw[k];
-      th.good_time_s = t;
-      th.good_rate = rate[k];
-    }
-  }
-  started_ = true;
-  previous_time_s_ = t;
-  const bool refilling = refill_ > 0;
-  if (refilling) --refill_;
-
-  double drift = 0;
-  if (any_out || refilling) {
-    drift = degraded(t, flags);
-  } else {
-    for (std::size_t c = 0; c < columns_.size(); ++c)
-      features_[c] = columns_[c].value(temp, rate, t);
-    for (const Lag& lag : lags_) features_[lag.column] = lag.value;
-    // While the rate window fills, novelty leaves the rates out (guard.hpp, "Warm-up").
-    bool warming = false;
-    for (std::size_t k = 0; k < nt_; ++k) warming |= thermometers_[k].read && !rates_[k].settled();
-    last_ = model_.predict(features_, work_, warming);
-    drift = last_.drift_dph;
-    if (any_bridged) flags |= fault::bridged;
-    if (guarded_) {
-      // Substituted temperatures say nothing about novelty: the weight waits for real ones.
-      if (!any_bridged)
-        weight_ = filter_.update(t, last_.target_weight, model_.guard.settings.recover_s);
-      drift = model_.guarded_dph(drift, weight_);
-    }
-    if (std::isfinite(drift)) {
-      has_good_drift_ = true;
-      good_drift_dph_ = drift;
-      good_drift_time_s_ = t;
-    } else {
-      drift = degraded(t, flags);
-    }
-  }
-  last_drift_dph_ = drift;
-  return finish(s, drift, flags);
 }
 
 }  // namespace fogdrift

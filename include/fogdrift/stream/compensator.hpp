@@ -6,6 +6,11 @@
 // (signal::CausalDifferentiator), forms the model's features exactly as compute_features() does
 // at the sample rate, and returns the predicted drift. Nothing is allocated per sample.
 //
+// The step is written once, in C (src/stream/step.h; docs/architecture.md, "One streaming
+// step"): this class runs it with the model's tables sized at run time, and every C header
+// `export-c --stream-rate-hz` writes embeds the same code with the tables as constants. A fault
+// rule is changed in that one file.
+//
 // With a model trained on causal features (`fogdrift train --differentiator causal`) the
 // result equals the batch path, CompensationModel::predict_dph(Recording), sample for sample.
 // A model trained on centred (offline) features can be streamed too, but its rate features then
@@ -22,12 +27,10 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <span>
-#include <vector>
 
-#include "fogdrift/model/decimate.hpp"
 #include "fogdrift/model/model.hpp"
-#include "fogdrift/signal/differentiate.hpp"
 #include "fogdrift/stream/stream_faults.hpp"
 
 namespace fogdrift {
@@ -62,6 +65,12 @@ struct StreamOutput {
   std::uint32_t flags = 0;   ///< fault:: flags of this sample, 0 for a good one
 };
 
+namespace detail {
+struct StepCore;
+}
+
+/// The one streaming step (src/stream/step.h, C99 compiled here with run-time tables, and
+/// embedded in every C header export-c writes), wrapped for the library.
 class StreamingCompensator {
  public:
   /// `dt_s` is the logger's sample interval. Throws OptionError for an invalid FaultPolicy, and
@@ -70,76 +79,21 @@ class StreamingCompensator {
   /// it lacks is a faulty reading (temp_bad).
   StreamingCompensator(const CompensationModel& model, double dt_s,
                        const StreamOptions& options = {});
+  ~StreamingCompensator();
+  StreamingCompensator(StreamingCompensator&&) noexcept;
+  StreamingCompensator& operator=(StreamingCompensator&&) noexcept;
 
   /// The drift and compensated gyro at this sample, guarded unless the options said otherwise.
   StreamOutput update(const Sample& s) noexcept;
   /// Starts again, as at power-on.
   void reset() noexcept;
   /// ν and w of the last sample the model was evaluated on (NaN and 1 without a guard).
-  double novelty() const noexcept { return last_.novelty; }
-  double weight() const noexcept { return weight_; }
+  double novelty() const noexcept;
+  double weight() const noexcept;
 
  private:
-  // What the fault policy keeps of one thermometer the model reads.
-  struct ThermometerState {
-    bool read = false;
-    bool seen_good = false;  // a good reading since power-on
-    bool out = false;        // its outage has lasted longer than bridge_s
-    double good_degc = 0, good_time_s = 0, good_rate = 0;  // the last good reading
-    double pushed_degc = 0;  // the last value given to its differentiator
-    // The stuck check: the reading, since when it has not changed, and the other thermometers'
-    // readings then (NaN: not known).
-    bool tracking = false;
-    double unchanged_degc = 0, unchanged_since_s = 0;
-    std::vector<double> others_degc;  // one per thermometer, sized once
-    void clear() noexcept;            // as at power-on, keeping `read` and the memory
-  };
-
-  const CompensationModel& model_;
-  std::size_t k_;     // data samples per model sample (decimate.hpp)
-  double data_dt_s_;  // the logger's interval
-  double dt_s_;       // the model's: k_ · data_dt_s_
-  FaultPolicy faults_;
-  double reading_limit_;  // gyro_limit_dph for a gyro target, ∞ for another (stream_faults.hpp)
-  std::size_t nt_;        // thermometers numbered in the model's spec
-  std::vector<signal::CausalDifferentiator> rates_;
-  std::vector<FeatureColumn> columns_;  // the model's inputs (FeatureSpec::columns())
-  // The lagged rates (dT@τ) among them: the input each fills and its lag.
-  struct Lag {
-    std::size_t column;
-    LaggedRate rate;
-    double value = 0;  // its term at the last sample pushed, °C/s
-  };
-  std::vector<Lag> lags_;
-  std::vector<double> features_, work_;
-  bool guarded_;
-  GuardFilter filter_;
-  DriftPrediction last_;
-  double weight_ = 1.0;
-  // Fault policy state (see stream_faults.hpp).
-  std::vector<ThermometerState> thermometers_;
-  // One sample's thermometers: raw, good and stuck, and the values and rates the model reads.
-  std::vector<double> raw_, temp_, rate_;
-  std::vector<char> good_, stuck_;
-  bool started_ = false;
-  double previous_time_s_ = 0;
-  std::size_t refill_ = 0;  // samples until the rate filters have a full window again
-  bool has_good_drift_ = false;
-  double good_drift_dph_ = 0, good_drift_time_s_ = 0;
-  double last_drift_dph_ = 0, last_comp_dph_ = 0;
-  // The block being filled (k_ > 1), and the time of the last data sample taken.
-  BlockSum block_;
-  bool data_started_ = false;
-  double data_time_s_ = 0;
-
-  // One sample at the model's interval: the fault policy, the rates, the model and the guard.
-  StreamOutput step(const Sample& s, std::uint32_t flags) noexcept;
-  void check_thermometers(double time_s, std::uint32_t& flags) noexcept;
-  void further_into_raw(const Sample& s) noexcept;
-  void push_lags(std::size_t k, double temp_degc) noexcept;
-  double substitute(std::size_t k, double time_s) const noexcept;
-  double degraded(double time_s, std::uint32_t& flags) const noexcept;
-  StreamOutput finish(const Sample& s, double drift_dph, std::uint32_t flags) noexcept;
+  // The step's state and the model's tables, sized at run time (compensator.cpp).
+  std::unique_ptr<detail::StepCore> core_;
 };
 
 }  // namespace fogdrift

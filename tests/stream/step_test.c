@@ -1,9 +1,10 @@
-/* The C compensator (src/firmware/compensator.h) as C99 on its own, against a model small enough to
+/* The streaming step (src/stream/step.h) as C99 on its own, against a model small enough to
  * compute by hand: two thermometers, inputs T0, dT0/dt and T0 - T1, a linear drift, rates by a
  * three-sample central difference. Built twice (tests/CMakeLists.txt): in double with one
  * sample a block; with FDS_TEST_FLOAT, in float with two samples a block, a lagged rate and a
- * novelty guard the test drives. Every header fogdrift writes embeds this code; its agreement
- * with the library, sample by sample, is tested by compensator_test.cpp and firmware_qemu. */
+ * novelty guard the test drives. Every header fogdrift writes embeds this code, and the library
+ * runs it (compensator.cpp); their agreement, sample by sample, is tested by compensator_test.cpp
+ * and firmware_qemu. */
 #include <math.h>
 #include <stdio.h>
 
@@ -97,7 +98,10 @@ static fds_real fds_target_weight(fds_real nu) {
 }
 #endif
 
-#include "firmware/compensator.h"
+/* The state first: the step reads it. */
+#include "stream/step_state.h"
+
+#include "stream/step.h"
 
 static int failed = 0;
 #define CHECK(what, condition)                                                  \

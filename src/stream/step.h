@@ -1,13 +1,16 @@
-/* fogdrift's streaming compensator in C99: the causal temperature rates, the fault policy, the
- * novelty guard's weight and the model, one sample at a time, with the same steps in the same
- * order as StreamingCompensator::update() (fogdrift docs/compensation.md, docs/firmware.md).
+/* fogdrift's per-sample streaming step in C99: the causal temperature rates, the fault policy, the
+ * novelty guard's weight and the model, one sample at a time (fogdrift docs/compensation.md,
+ * docs/firmware.md, docs/architecture.md "One streaming step").
  *
- * This file is the code of every C header fogdrift writes (export-c --stream-rate-hz): the
- * library embeds it at build time and renames fds_ and FDS_ to the header's prefix (unit_,
- * UNIT_). It compiles and is tested on its own (tests/firmware/compensator_test.c), against a model
- * the includer defines first:
+ * This is the one implementation of the step. fogdrift's library compiles it as C++ with
+ * run-time tables for StreamingCompensator (src/stream/compensator.cpp), which `fogdrift stream`
+ * and Python's StreamingCompensator run; every C header fogdrift writes (export-c
+ * --stream-rate-hz) embeds it at build time after its state (step_state.h), with fds_ and FDS_
+ * renamed to the header's prefix (unit_, UNIT_). It compiles and is tested on its own as C99
+ * (tests/stream/step_test.c), against a model the includer defines first:
  *
  *   typedef double fds_real;          the arithmetic type (float for a 32-bit FPU)
+ *   fds_state                          the state: step_state.h's, or the library's
  *   FDS_N_THERMOMETERS, FDS_N_FEATURES, FDS_RATE_WINDOW (W), FDS_BLOCK (samples a model sample
  *     averages), FDS_N_LAGS (0: no input dT@tau)
  *   fds_data_dt_s, fds_dt_s            the data's and the model's sample intervals, s (double)
@@ -28,46 +31,22 @@
  *   fds_predict_(f)                    the drift for one row of inputs
  *   FDS_GUARD, fds_novelty_of(f, warming), fds_target_weight(nu), fds_guard_recover_s
  *                                      the novelty guard, when the model has one
+ * Each may read `s`, the state being stepped: the library's sizes and tables live there. Two
+ * have defaults: FDS_LAGS, whether the lags' code is compiled (FDS_N_LAGS > 0), and
+ * FDS_GUARDED, whether a compiled guard runs (1).
  *
- * It provides fds_state, fds_reset(s), fds_update_(s, time_s, raw[]) and
- * fds_compensated_(s, reading); the header wraps the last two under the names of its
- * thermometers and its target's unit (PREFIX_update, PREFIX_compensated_dph). */
+ * It provides fds_reset(s), fds_update_(s, time_s, raw) and fds_compensated_(s, reading); the
+ * header wraps the last two under the names of its thermometers and its target's unit
+ * (PREFIX_update, PREFIX_compensated_dph). */
 #include <math.h>
 
 /* fogdrift: the header's code starts here. */
-typedef struct {
-  fds_real buffer[FDS_N_THERMOMETERS][2 * FDS_RATE_WINDOW]; /* newest at size - 1 */
-  long size;                                                /* samples in the buffer */
-  long count;         /* samples since the rate filters started */
-  fds_real weight;    /* the guard's weight w, 1 at power-on */
-  int guard_started;  /* the guard has seen a sample */
-  double last_time_s; /* time of the guard's previous sample */
-  fds_real novelty;   /* nu of the last evaluated sample (0 without a guard) */
-  unsigned flags;     /* FDS_FAULT_* bits of the last sample */
-  /* the fault policy's state */
-  int started;
-  double previous_time_s;
-  long refill;
-  int has_good_drift;
-  fds_real good_drift, last_drift, last_comp;
-  double good_drift_time_s;
-  int seen_good[FDS_N_THERMOMETERS], out[FDS_N_THERMOMETERS], tracking[FDS_N_THERMOMETERS];
-  fds_real good_degc[FDS_N_THERMOMETERS], good_rate[FDS_N_THERMOMETERS];
-  fds_real pushed_degc[FDS_N_THERMOMETERS];
-  double good_time_s[FDS_N_THERMOMETERS];
-  fds_real unchanged_degc[FDS_N_THERMOMETERS], others_degc[FDS_N_THERMOMETERS][FDS_N_THERMOMETERS];
-  double unchanged_since_s[FDS_N_THERMOMETERS];
-  /* the block being averaged (FDS_BLOCK > 1) */
-  int data_started;
-  long sum_count;
-  double data_time_s;             /* time of the last data sample */
-  double sum[FDS_N_THERMOMETERS]; /* sums of a block in double: up to 2000 samples */
-#if FDS_N_LAGS > 0
-  /* the lags of the inputs dT@tau: state, deg C; term, deg C/s; started since power-on */
-  fds_real lag_degc[FDS_N_LAGS], lag_rate[FDS_N_LAGS];
-  int lag_started[FDS_N_LAGS];
+#ifndef FDS_LAGS
+#define FDS_LAGS (FDS_N_LAGS > 0)
 #endif
-} fds_state;
+#if defined(FDS_GUARD) && FDS_GUARD && !defined(FDS_GUARDED)
+#define FDS_GUARDED 1
+#endif
 
 static inline void fds_reset(fds_state* s) {
   int k;
@@ -91,12 +70,12 @@ static inline void fds_reset(fds_state* s) {
     s->seen_good[k] = s->out[k] = s->tracking[k] = 0;
     s->good_degc[k] = s->good_time_s[k] = s->good_rate[k] = s->pushed_degc[k] = 0.0;
   }
-#if FDS_N_LAGS > 0
+#if FDS_LAGS
   for (k = 0; k < FDS_N_LAGS; ++k) s->lag_started[k] = 0;
 #endif
 }
 
-#if FDS_N_LAGS > 0
+#if FDS_LAGS
 /* Thermometer k's sample into the lags that read it: s += g (T - s), the term (T - s) / tau.
  * A lag starts at its first sample, as at rest. */
 static inline void fds_lags_(fds_state* s, int k, fds_real v) {
@@ -149,7 +128,8 @@ static inline int fds_off_interval_(double step, double dt) {
   return step < (1 - FDS_INTERVAL_TOLERANCE) * dt || step > (1 + FDS_INTERVAL_TOLERANCE) * dt;
 }
 
-static inline fds_real fds_clamp_degc_(fds_real v) {
+static inline fds_real fds_clamp_degc_(const fds_state* s, fds_real v) {
+  (void)s; /* the library's policy lives in the state */
   return v < FDS_TEMP_MIN_DEGC ? FDS_TEMP_MIN_DEGC
                                : (v > FDS_TEMP_MAX_DEGC ? FDS_TEMP_MAX_DEGC : v);
 }
@@ -159,8 +139,8 @@ static inline fds_real fds_clamp_degc_(fds_real v) {
  * arithmetic would be emulated in software on every sample's jump check). */
 static inline fds_real fds_substitute_(const fds_state* s, int k, double time_s) {
   const fds_real elapsed_s = (fds_real)(time_s - s->good_time_s[k]);
-  if (!s->seen_good[k]) return fds_clamp_degc_(0.0);
-  return fds_clamp_degc_(s->good_degc[k] + s->good_rate[k] * elapsed_s);
+  if (!s->seen_good[k]) return fds_clamp_degc_(s, 0.0);
+  return fds_clamp_degc_(s, s->good_degc[k] + s->good_rate[k] * elapsed_s);
 }
 
 /* The drift where the model cannot be evaluated: held, then stopped. */
@@ -174,14 +154,20 @@ static inline fds_real fds_degraded_(fds_state* s, double time_s) {
 }
 
 /* One sample at the model's interval, fds_dt_s: the fault policy, the rates, the model. */
-static inline fds_real fds_step_(fds_state* s, double time_s,
-                                 const fds_real raw[FDS_N_THERMOMETERS]) {
-  fds_real temp[FDS_N_THERMOMETERS] = {0.0}, rate[FDS_N_THERMOMETERS] = {0.0}, f[FDS_N_FEATURES];
-  int good[FDS_N_THERMOMETERS] = {0}, stuck[FDS_N_THERMOMETERS] = {0};
+static inline fds_real fds_step_(fds_state* s, double time_s, const fds_real* raw) {
+  fds_real* const temp = s->temp;
+  fds_real* const rate = s->rate;
+  fds_real* const f = s->f;
+  int* const good = s->good;
+  int* const stuck = s->stuck;
   int k, j, long_gap = 0, restart_rates, any_out = 0, any_bridged = 0, refilling;
   long missing = 0, m;
   double t = time_s;
   fds_real drift;
+  for (k = 0; k < FDS_N_THERMOMETERS; ++k) {
+    temp[k] = rate[k] = 0.0;
+    good[k] = stuck[k] = 0;
+  }
   if (!isfinite(t)) {
     s->flags |= FDS_FAULT_TIME_BAD;
     t = s->started ? s->previous_time_s + fds_dt_s : 0.0;
@@ -261,7 +247,7 @@ static inline fds_real fds_step_(fds_state* s, double time_s,
     s->count = 0;
     s->refill = s->has_good_drift ? FDS_RATE_WINDOW - 1 : 0;
     missing = 0;
-#if FDS_N_LAGS > 0
+#if FDS_LAGS
     for (k = 0; k < FDS_N_LAGS; ++k) s->lag_started[k] = 0;
 #endif
   }
@@ -275,14 +261,14 @@ static inline fds_real fds_step_(fds_state* s, double time_s,
                                                              (fds_real)m / (fds_real)(missing + 1)
                                    : fds_substitute_(s, k, tm);
       (void)fds_push_(s, k, v);
-#if FDS_N_LAGS > 0
+#if FDS_LAGS
       fds_lags_(s, k, v);
 #endif
     }
   }
   for (k = 0; k < FDS_N_THERMOMETERS; ++k) {
     rate[k] = fds_push_(s, k, temp[k]);
-#if FDS_N_LAGS > 0
+#if FDS_LAGS
     fds_lags_(s, k, temp[k]);
 #endif
     if (!fds_reads[k]) continue;
@@ -301,7 +287,7 @@ static inline fds_real fds_step_(fds_state* s, double time_s,
   if (any_out || refilling) {
     drift = fds_degraded_(s, t);
   } else {
-#if FDS_N_LAGS > 0
+#if FDS_LAGS
     fds_features_(temp, rate, t, s->lag_rate, f);
 #else
     fds_features_(temp, rate, t, 0, f);
@@ -312,7 +298,7 @@ static inline fds_real fds_step_(fds_state* s, double time_s,
     if (!(FDS_FABS(drift - FDS_DRIFT_MEAN) <= FDS_DRIFT_LIMIT)) drift = (fds_real)NAN;
     if (any_bridged) s->flags |= FDS_FAULT_BRIDGED;
 #if defined(FDS_GUARD) && FDS_GUARD
-    {
+    if (FDS_GUARDED) {
       const fds_real v =
           fds_target_weight(s->novelty = fds_novelty_of(f, s->count < FDS_RATE_WINDOW));
       if (!any_bridged) {
@@ -343,9 +329,8 @@ static inline fds_real fds_step_(fds_state* s, double time_s,
 /* The drift for the newest sample (every fds_data_dt_s seconds since power-on), in the
  * target's unit, from the thermometers' readings: averaged over blocks of FDS_BLOCK samples, the
  * first sample a block of its own, and the model run once per block. */
-static inline fds_real fds_update_(fds_state* s, double time_s,
-                                   const fds_real raw[FDS_N_THERMOMETERS]) {
-  fds_real mean[FDS_N_THERMOMETERS];
+static inline fds_real fds_update_(fds_state* s, double time_s, const fds_real* raw) {
+  fds_real* const mean = s->mean;
   double t = time_s, c;
   int first, k;
   s->flags = 0;
