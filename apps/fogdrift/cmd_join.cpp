@@ -6,14 +6,15 @@
 #include <filesystem>
 #include <iostream>
 #include <memory>
-#include <optional>
 
 #include "cli_util.hpp"
 #include "commands.hpp"
 #include "fogdrift/base/error.hpp"
 #include "fogdrift/base/run_files.hpp"
 #include "fogdrift/io/join.hpp"
+#include "fogdrift/io/join_option_table.hpp"
 #include "fogdrift/io/recording.hpp"
+#include "option_flags.hpp"
 
 namespace fs = std::filesystem;
 
@@ -24,16 +25,8 @@ struct JoinArgs {
   std::string recording;
   std::string log;
   std::string out;
-  std::string columns;  ///< empty: every numeric column of the log
-  bool replace = false;
-  std::string method = "linear";
-  std::optional<double> offset_s;
-  std::vector<std::string> offset_from;
-  bool force = false;
-  double offset_range_s = 0;
-  double max_step_s = -1;
-  double max_age_s = -1;
   bool quiet = false;
+  std::shared_ptr<OptionFlags> flags;  // join's options (join_option_table.hpp)
 };
 
 /// "a=b", or "a" when both columns have one name.
@@ -112,7 +105,8 @@ void add_join(CLI::App& app) {
       "no farther apart than they vary, fix the offset sharply, and agree with each other;\n"
       "otherwise join refuses, printing the evidence (--force writes anyway, with warnings).\n"
       "Rows the log does not cover are dropped, and a gap in the log longer than the limit splits\n"
-      "the recording (out_1.csv, ...). See docs/logs.md, \"Temperatures from another file\".");
+      "the recording (out_1.csv, ...). See docs/logs.md, \"Temperatures from another file\";\n"
+      "docs/options.md describes the options.");
   auto a = std::make_shared<JoinArgs>();
   cmd->add_option("RECORDING", a->recording, "The recording (fogdrift format)")
       ->required()
@@ -123,84 +117,22 @@ void add_join(CLI::App& app) {
       ->required()
       ->check(CLI::ExistingFile);
   cmd->add_option("--out,-o", a->out, "The joined recording")->required();
-  cmd->add_option("--columns", a->columns,
-                  "The log's columns to bring in, comma-separated (default: every numeric one)");
-  cmd->add_flag("--replace", a->replace,
-                "A column the recording has already takes the log's values (default: an error)");
-  cmd->add_option("--method", a->method,
-                  "linear (interpolate between the log samples either side) or nearest (the "
-                  "nearest log sample)")
-      ->capture_default_str();
-  cmd->add_option("--offset-s", a->offset_s,
-                  "Clock offset, s: t_recording = t_log + offset (no default: nothing ties two "
-                  "clocks together); with --offset-from, the centre of the search (default 0)");
-  cmd->add_option("--offset-from", a->offset_from,
-                  "Estimate the offset from a column both files hold: RECORDING_COLUMN=LOG_COLUMN, "
-                  "or one name for both; the offset that minimises the variance of their "
-                  "difference. Repeat it for several pairs: each is judged, and they must agree")
-      ->take_all();
-  cmd->add_flag("--force", a->force,
-                "Write the join even when the evidence for its offset fails; the failures are "
-                "printed as warnings with the result");
-  cmd->add_option("--offset-range-s", a->offset_range_s,
-                  "With --offset-from: search --offset-s ± this, s (default 0: every offset that "
-                  "leaves half the shorter file overlapping)")
-      ->capture_default_str();
-  cmd->add_option("--max-step-s", a->max_step_s,
-                  "linear: the longest step between two log samples interpolated across, s "
-                  "(default: 1.5 × the log's median step)");
-  cmd->add_option("--max-age-s", a->max_age_s,
-                  "nearest: the farthest a log sample may be from the row, s (default: the log's "
-                  "median step)");
+  const auto& table = join_option_table();
+  a->flags = std::make_shared<OptionFlags>(cmd, specs_of(table), defaults_of(table));
   cmd->add_flag("-q,--quiet", a->quiet, "Print nothing on success");
   cmd->callback([a] {
     JoinOptions o;
-    if (!a->columns.empty()) o.columns = split_list(a->columns);
-    o.replace = a->replace;
-    try {
-      o.method = join_method_from_string(a->method);
-    } catch (const OptionError& e) {
-      throw OptionError("--method", e.message());
-    }
-    o.offset_s = a->offset_s;
-    o.max_step_s = a->max_step_s;
-    o.max_age_s = a->max_age_s;
-    for (const std::string& pair : a->offset_from) {
-      const auto eq = pair.find('=');
-      OffsetSearch search;
-      search.recording_column = pair.substr(0, eq);
-      search.log_column = eq == std::string::npos ? search.recording_column : pair.substr(eq + 1);
-      if (search.recording_column.empty() || search.log_column.empty())
-        throw OptionError("--offset-from",
-                          fmt::format("'{}' is not COLUMN or RECORDING_COLUMN=LOG_COLUMN", pair));
-      search.range_s = a->offset_range_s;
-      o.estimates.push_back(search);
-    }
-    if (a->offset_from.empty() && a->offset_range_s != 0)
-      throw OptionError("--offset-range-s", "has no effect without --offset-from");
-    o.force = a->force;
+    a->flags->apply(join_option_table(), o);
     const Recording recording = read_log(a->recording);
     const Recording log = read_log(a->log);
     check_output_not_input(a->out, "--output");
-    // Each library option in its flag's words.
-    auto in_flag_words = [](const OptionError& e) {
-      const std::string& n = e.option();
-      return OptionError(n == "columns"      ? "--columns"
-                         : n == "method"     ? "--method"
-                         : n == "offset_s"   ? "--offset-s"
-                         : n == "estimate"   ? "--offset-from"
-                         : n == "max_step_s" ? "--max-step-s"
-                         : n == "max_age_s"  ? "--max-age-s"
-                                             : n,
-                         e.message());
-    };
     JoinResult r;
     try {
       const JoinEvidence evidence = judge_alignment(recording, log, o);
       if (!a->quiet || !evidence.founded()) print_evidence(evidence);
       r = join(recording, log, o, evidence);
     } catch (const OptionError& e) {
-      throw in_flag_words(e);
+      throw a->flags->named(e);  // each library option in its flag's words
     }
     for (std::size_t k = 0; k < r.segments.size(); ++k) {
       const fs::path path = piece_path(a->out, k, r.segments.size());

@@ -24,8 +24,9 @@ void add_options(CLI::App& app) {
       "stream' and 'fogdrift export-c', Python's StreamingCompensator) or denoise ('fogdrift\n"
       "denoise', Python's fogdrift.denoise) or evaluate or northfind (the commands and their\n"
       "Python functions, find_north too) or paper ('fogdrift paper' and, with its own\n"
-      "defaults, 'fogdrift demo') or plan (the chamber of 'fogdrift plan'; --list lists\n"
-      "them all). The tables in docs/options.md are this output\n"
+      "defaults, 'fogdrift demo') or plan (the chamber of 'fogdrift plan') or join\n"
+      "('fogdrift join'; --list lists them all). Each option's bounds are checked when it is\n"
+      "parsed (--json: minimum, maximum). The tables in docs/options.md are this output\n"
       "(scripts/options_doc.py writes them there).\n"
       "Example:\n"
       "  fogdrift options --json | python3 -c 'import json,sys; print(len(json.load(sys.stdin)))'");

@@ -65,6 +65,8 @@ OptionFlags::OptionFlags(CLI::App* cmd, std::vector<OptionSpec> specs,
       options_.push_back(cmd->add_option(s.flag, *texts_.back(), help)
                              ->type_name(type_name(s))
                              ->default_str(defaults_[i]));
+      // A list may be given in pieces: --offset-from a=b --offset-from c=d is a=b,c=d.
+      if (s.type == OptionType::names || s.type == OptionType::numbers) options_.back()->join(',');
     }
     as_default_.push_back(as_default);
     if (!group.empty()) options_.back()->group(group);

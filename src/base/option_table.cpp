@@ -67,7 +67,8 @@ std::string cell(const std::string& text) {
 std::string option_help(const OptionSpec& spec, const std::vector<OptionSpec>& specs, bool flag) {
   std::string what;
   if (!spec.unit.empty()) what = spec.unit;
-  if (!spec.range.empty()) what += (what.empty() ? "" : "; ") + spec.range;
+  const std::string allowed = spec.range.text();
+  if (!allowed.empty()) what += (what.empty() ? "" : "; ") + allowed;
   return in_option_words(what.empty() ? spec.doc : fmt::format("{} ({})", spec.doc, what), specs,
                          flag);
 }
@@ -79,25 +80,40 @@ std::string options_markdown(const std::vector<OptionSpec>& specs,
       "|---|---|---|---|---|---|---|\n";
   for (std::size_t i = 0; i < specs.size(); ++i) {
     const OptionSpec& s = specs[i];
-    out += fmt::format(
-        "| `{}` | `{}` | {} | {} | `{}` | {} | {} |\n", s.keyword, s.flag, to_string(s.type),
-        cell(s.unit), cell(i < defaults.size() ? defaults[i] : ""),
-        cell(in_option_words(s.range, specs, false)), cell(in_option_words(s.doc, specs, false)));
+    out +=
+        fmt::format("| `{}` | `{}` | {} | {} | `{}` | {} | {} |\n", s.keyword, s.flag,
+                    to_string(s.type), cell(s.unit), cell(i < defaults.size() ? defaults[i] : ""),
+                    cell(in_option_words(s.range.text(), specs, false)),
+                    cell(in_option_words(s.doc, specs, false)));
   }
   return out;
 }
+
+namespace {
+
+/// A parsed value checked against the option's bounds: "-1 s must be ≥ 0", the value written as
+/// every front end writes it (5.0 on a command line and 5 from Python both read "5").
+double in_range(const OptionSpec& spec, double value) {
+  if (!spec.range.contains(value))
+    throw OptionError(spec.keyword, fmt::format("{}{} must be {}", option_number_text(value),
+                                                spec.unit.empty() ? "" : " " + spec.unit,
+                                                spec.range.bounds_text()));
+  return value;
+}
+
+}  // namespace
 
 std::uint64_t parse_whole_option(const OptionSpec& spec, const std::string& text) {
   const auto v = csv::parse_number(text);
   if (!v || *v < 0 || *v != std::floor(*v) || *v > 9.007199254740992e15)
     throw OptionError(spec.keyword, fmt::format("'{}' is not a whole number ≥ 0", text));
-  return static_cast<std::uint64_t>(*v);
+  return static_cast<std::uint64_t>(in_range(spec, *v));
 }
 
 double parse_number_option(const OptionSpec& spec, const std::string& text) {
   const auto v = csv::parse_number(text);
   if (!v) throw OptionError(spec.keyword, fmt::format("'{}' is not a finite number", text));
-  return *v;
+  return in_range(spec, *v);
 }
 
 std::optional<double> parse_seconds_or_auto_option(const OptionSpec& spec,
@@ -107,7 +123,7 @@ std::optional<double> parse_seconds_or_auto_option(const OptionSpec& spec,
   if (!v || !(*v > 0))
     throw OptionError(spec.keyword,
                       fmt::format("'{}' is neither auto nor a number of seconds > 0", text));
-  return v;
+  return in_range(spec, *v);
 }
 
 std::optional<std::uint64_t> parse_whole_or_auto_option(const OptionSpec& spec,
@@ -116,7 +132,7 @@ std::optional<std::uint64_t> parse_whole_or_auto_option(const OptionSpec& spec,
   const auto v = csv::parse_number(text);
   if (!v || *v < 0 || *v != std::floor(*v) || *v > 9.007199254740992e15)
     throw OptionError(spec.keyword, fmt::format("'{}' is neither auto nor a whole number", text));
-  return static_cast<std::uint64_t>(*v);
+  return static_cast<std::uint64_t>(in_range(spec, *v));
 }
 
 std::vector<std::string> option_items(std::string_view text) {
@@ -138,7 +154,7 @@ std::vector<double> parse_numbers_option(const OptionSpec& spec, const std::stri
       throw OptionError(spec.keyword, fmt::format("'{}' in '{}' is not a finite number (give a "
                                                   "comma-separated list such as -40,-30,25)",
                                                   item, text));
-    values.push_back(*v);
+    values.push_back(in_range(spec, *v));
   }
   return values;
 }

@@ -47,7 +47,7 @@ OptionTable<FindingOptions> make_finding() {
        "--tolerance-deg",
        {},
        "°",
-       "> 0, < 45",
+       above(0).below(45),
        "A sample is at a position when table_deg is this close to it",
        {}},
       [](auto& o) -> auto& { return o.segmentation.tolerance_deg; }));
@@ -56,7 +56,7 @@ OptionTable<FindingOptions> make_finding() {
        "--settle-s",
        {},
        "s",
-       "≥ 0",
+       at_least(0),
        "Samples this soon after the table arrives at a position are "
        "not used",
        {}},
@@ -66,7 +66,7 @@ OptionTable<FindingOptions> make_finding() {
        "--min-dwell-s",
        {},
        "s",
-       "> 0",
+       above(0),
        "A position held for less time than this is not used",
        {}},
       [](auto& o) -> auto& { return o.segmentation.min_dwell_s; }));

@@ -335,12 +335,12 @@ JoinResult join(const Recording& recording, const Recording& log, const JoinOpti
   validate(log);
   for (const auto& [value, name] :
        {std::pair{options.max_step_s, "max_step_s"}, std::pair{options.max_age_s, "max_age_s"}}) {
-    if (!std::isfinite(value) || (value < 0 && value != -1))
-      throw OptionError(name, fmt::format("{} s is not a duration", value));
+    if (value && !(std::isfinite(*value) && *value > 0))
+      throw OptionError(name, fmt::format("{} s must be > 0", *value));
   }
-  if (options.method == JoinMethod::linear && options.max_age_s != -1)
+  if (options.method == JoinMethod::linear && options.max_age_s)
     throw OptionError("max_age_s", "applies to the nearest method; linear takes max_step_s");
-  if (options.method == JoinMethod::nearest && options.max_step_s != -1)
+  if (options.method == JoinMethod::nearest && options.max_step_s)
     throw OptionError("max_step_s", "applies to the linear method; nearest takes max_age_s");
 
   JoinResult result;
@@ -401,9 +401,9 @@ JoinResult join(const Recording& recording, const Recording& log, const JoinOpti
                       recording.source, fmt::join(evidence.failures, "; ")));
     s.forced = true;
   }
-  const double requested =
+  const std::optional<double>& requested =
       options.method == JoinMethod::linear ? options.max_step_s : options.max_age_s;
-  s.limit_s = requested >= 0 ? requested : default_limit(log, options.method);
+  s.limit_s = requested ? *requested : default_limit(log, options.method);
   s.log_from_s = log.time_s.front() + s.offset_s;
   s.log_to_s = log.time_s.back() + s.offset_s;
   for (double tl : log.time_s) {

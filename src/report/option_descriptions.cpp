@@ -8,6 +8,7 @@
 
 #include "fogdrift/base/error.hpp"
 #include "fogdrift/eval/eval_option_table.hpp"
+#include "fogdrift/io/join_option_table.hpp"
 #include "fogdrift/report/paper_option_table.hpp"
 #include "fogdrift/signal/denoise_option_table.hpp"
 #include "fogdrift/sim/scenario_option_table.hpp"
@@ -28,7 +29,7 @@ struct Command {
   std::string_view name;
   OptionDescriptions (*describe)();
 };
-const std::array<Command, 10> kCommands = {{
+const std::array<Command, 11> kCommands = {{
     {"train", [] { return described(train_option_table()); }},
     {"simulate-calibration", [] { return described(sim::calibration_option_table()); }},
     {"simulate-northfind", [] { return described(sim::northfind_option_table()); }},
@@ -40,6 +41,7 @@ const std::array<Command, 10> kCommands = {{
     {"northfind", [] { return described(eval::finding_option_table()); }},
     {"paper", [] { return described(paper_option_table()); }},
     {"plan", [] { return described(sim::chamber_option_table()); }},
+    {"join", [] { return described(join_option_table()); }},
 }};
 
 }  // namespace
@@ -59,15 +61,25 @@ OptionDescriptions option_descriptions(std::string_view command, const std::stri
 
 nlohmann::ordered_json options_json(const OptionDescriptions& d) {
   nlohmann::ordered_json out = nlohmann::ordered_json::array();
-  for (std::size_t i = 0; i < d.specs.size(); ++i)
+  for (std::size_t i = 0; i < d.specs.size(); ++i) {
+    const OptionRange& r = d.specs[i].range;
+    // The bounds the option's parser checks, for a machine: null where there is none.
+    const auto bound = [](const std::optional<double>& b) {
+      return b ? nlohmann::ordered_json(*b) : nlohmann::ordered_json(nullptr);
+    };
     out.push_back({{"keyword", d.specs[i].keyword},
                    {"flag", d.specs[i].flag},
                    {"type", to_string(d.specs[i].type)},
                    {"unit", d.specs[i].unit},
                    {"default", d.defaults[i]},
-                   {"allowed", d.specs[i].range},
+                   {"allowed", r.text()},
+                   {"minimum", bound(r.min)},
+                   {"minimum_excluded", r.min_open},
+                   {"maximum", bound(r.max)},
+                   {"maximum_excluded", r.max_open},
                    {"doc", option_help(d.specs[i], d.specs, false)},
                    {"help", option_help(d.specs[i], d.specs, true)}});
+  }
   return out;
 }
 

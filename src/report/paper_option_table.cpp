@@ -21,7 +21,7 @@ OptionTable<PaperOptions> make_table() {
        "--seeds",
        {},
        "",
-       "1 … 1000",
+       between(1, 1000),
        "Independent repetitions of the whole experiment",
        {}},
       [](auto& o) -> auto& { return o.seeds; }));
@@ -55,7 +55,7 @@ OptionTable<PaperOptions> make_table() {
        "--population",
        {},
        "",
-       "5 … 10000",
+       between(5, 10000),
        "Optimizer population of the tuned SVRs",
        {}},
       [](auto& o) -> auto& { return o.population; }));
@@ -64,7 +64,7 @@ OptionTable<PaperOptions> make_table() {
        "--iterations",
        {},
        "",
-       "1 … 100000",
+       between(1, 100000),
        "Optimizer iterations of the tuned SVRs",
        {}},
       [](auto& o) -> auto& { return o.iterations; }));
@@ -102,7 +102,7 @@ OptionTable<PaperOptions> make_table() {
        "--folds",
        {},
        "",
-       "2 … the temperatures or recordings there are",
+       at_least(2).with("at most the temperatures or recordings there are"),
        "k, the folds of {cv} recording or temperature",
        {"cv.folds"}},
       [](auto& o) -> auto& { return o.cv.folds; }));
@@ -149,7 +149,7 @@ OptionTable<PaperOptions> make_table() {
        "--repetitions",
        {},
        "",
-       "2 … 100",
+       between(2, 100),
        "Calibration repetitions; the last one is the test repetition",
        {"calibration.repetitions"}},
       [](auto& o) -> auto& { return o.calibration.repetitions; }));
@@ -173,7 +173,7 @@ OptionTable<PaperOptions> make_table() {
        "--cal-temps",
        {},
        "°C",
-       "-70 … 100",
+       between(-70, 100),
        "Calibration chamber temperatures",
        {"calibration.temps_degc"}},
       [](auto& o) -> auto& { return o.calibration.temps_degc; }));
@@ -182,7 +182,7 @@ OptionTable<PaperOptions> make_table() {
        "--nf-temps",
        {},
        "°C",
-       "-70 … 100",
+       between(-70, 100),
        "North-finding initial temperatures",
        {"northfind.temps_degc"}},
       [](auto& o) -> auto& { return o.northfind.temps_degc; }));
@@ -191,7 +191,7 @@ OptionTable<PaperOptions> make_table() {
        "--findings",
        {},
        "",
-       "1 … 1000",
+       between(1, 1000),
        "North-findings per initial temperature",
        {"northfind.findings"}},
       [](auto& o) -> auto& { return o.northfind.findings; }));

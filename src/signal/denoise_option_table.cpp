@@ -23,26 +23,27 @@ OptionTable<DenoiseOptions> make_table() {
                [](const O& o) { return o.wavelet; },
                [](O& o, const std::string& text) { o.wavelet = text; }});
   // "max" is the word this option had before it was described here; it stays a synonym of auto.
-  OptionSpec level{"level",
-                   "--level",
-                   OptionType::whole_or_auto,
-                   "",
-                   "1 … floor(log2(N / (F − 1))) for N samples and a filter of F taps",
-                   "Decomposition levels; auto (or max): the largest the signal allows, "
-                   "PyWavelets' default",
-                   {}};
-  t.push_back({level,
-               [](const O& o) { return o.level ? std::to_string(*o.level) : std::string("auto"); },
-               [level](O& o, const std::string& text) {
-                 if (text == "max") {
-                   o.level.reset();
-                   return;
-                 }
-                 const auto v = parse_whole_or_auto_option(level, text);
-                 if (v && *v > static_cast<std::uint64_t>(std::numeric_limits<int>::max()))
-                   throw OptionError("level", text + " is too high: the maximum is " + level.range);
-                 o.level = v ? std::optional<int>(static_cast<int>(*v)) : std::nullopt;
-               }});
+  OptionSpec level{
+      "level",
+      "--level",
+      OptionType::whole_or_auto,
+      "",
+      at_least(1).with("at most floor(log2(N / (F − 1))) for N samples and a filter of F taps"),
+      "Decomposition levels; auto (or max): the largest the signal allows, "
+      "PyWavelets' default",
+      {}};
+  t.push_back(
+      {level, [](const O& o) { return o.level ? std::to_string(*o.level) : std::string("auto"); },
+       [level](O& o, const std::string& text) {
+         if (text == "max") {
+           o.level.reset();
+           return;
+         }
+         const auto v = parse_whole_or_auto_option(level, text);
+         if (v && *v > static_cast<std::uint64_t>(std::numeric_limits<int>::max()))
+           throw OptionError("level", text + " is too high: the maximum is " + level.range.text());
+         o.level = v ? std::optional<int>(static_cast<int>(*v)) : std::nullopt;
+       }});
   t.push_back(choice_option<O>(
       {"threshold",
        "--threshold",

@@ -25,7 +25,7 @@ const std::initializer_list<const char*> kFindings = {"northfind", "stable"};
 template <class O>
 Option<O> temps_option(const char* doc, std::initializer_list<const char*> scenarios) {
   return numbers_option<O>(
-      {"temps_degc", "--temps", {}, "°C", "-70 … 100", doc, in(scenarios, "temps_degc")},
+      {"temps_degc", "--temps", {}, "°C", between(-70, 100), doc, in(scenarios, "temps_degc")},
       [](auto& o) -> auto& { return o.temps_degc; });
 }
 
@@ -37,7 +37,7 @@ void add_site_and_start_up(OptionTable<O>& t, std::initializer_list<const char*>
        "--latitude",
        {},
        "°",
-       "-85 … 85",
+       between(-85, 85),
        "Site latitude",
        in(scenarios, "latitude_deg")},
       [](auto& o) -> auto& { return o.latitude_deg; }));
@@ -46,7 +46,7 @@ void add_site_and_start_up(OptionTable<O>& t, std::initializer_list<const char*>
        "--rate-hz",
        {},
        "Hz",
-       "> 0, ≤ 2000",
+       above(0).at_most(2000),
        "Logger output rate (an interval shorter than the instrument's fine step, 0.1 s by "
        "default, is integrated at the interval)",
        in(scenarios, "output_rate_hz")},
@@ -56,7 +56,7 @@ void add_site_and_start_up(OptionTable<O>& t, std::initializer_list<const char*>
        "--warm-off-s",
        {},
        "s",
-       "0 … 1e6",
+       between(0, 1e6),
        "Power-off before a warm restart (approach warm)",
        in(scenarios, "warm_off_s")},
       [](auto& o) -> auto& { return o.warm_off_s; }));
@@ -65,7 +65,7 @@ void add_site_and_start_up(OptionTable<O>& t, std::initializer_list<const char*>
        "--ramp-degc-per-min",
        {},
        "°C/min",
-       "> 0, ≤ 100",
+       above(0).at_most(100),
        "Chamber ramp for approach ramping (from 10 °C below, starting at power-on) and sweep "
        "(between temperatures)",
        in(scenarios, "ramp_degc_per_min")},
@@ -81,7 +81,7 @@ OptionTable<CalibrationOptions> make_calibration() {
                           "--start-up-temps",
                           OptionType::numbers,
                           "°C",
-                          "-70 … 100; empty: --temps",
+                          between(-70, 100).with("empty: --temps"),
                           "Set points of the soaked, warm and ramping repetitions, in order "
                           "(default: --temps; a calibration repetition always sweeps --temps). "
                           "Fewer of them save most of a protocol's chamber hours (docs/field.md, "
@@ -98,7 +98,7 @@ OptionTable<CalibrationOptions> make_calibration() {
        "--repetitions",
        {},
        "",
-       "1 … 100",
+       between(1, 100),
        "Whole temperature sweeps",
        in(kCalibration, "repetitions")},
       [](auto& o) -> auto& { return o.repetitions; }));
@@ -107,7 +107,7 @@ OptionTable<CalibrationOptions> make_calibration() {
        "--test-repetitions",
        {},
        "",
-       "0 … {repetitions}",
+       at_least(0).with("at most {repetitions}"),
        "The last this many sweeps get role 'test'",
        in(kCalibration, "test_repetitions")},
       [](auto& o) -> auto& { return o.test_repetitions; }));
@@ -124,22 +124,34 @@ OptionTable<CalibrationOptions> make_calibration() {
        "--soak-s",
        {},
        "s",
-       "≥ 0",
+       at_least(0),
        "Unpowered soak at each cycle's temperature before power-on",
        in(kCalibration, "soak_s")},
       [](auto& o) -> auto& { return o.soak_s; }));
   t.push_back(number_option<O>(
-      {"powered_s", "--powered-s", {}, "s", "> 0", "Powered and recorded time of each cycle", {}},
+      {"powered_s",
+       "--powered-s",
+       {},
+       "s",
+       above(0),
+       "Powered and recorded time of each cycle",
+       {}},
       [](auto& o) -> auto& { return o.powered_s; }));
   t.push_back(number_option<O>(
-      {"ramp_s", "--ramp-s", {}, "s", "≥ 0", "Unpowered ramp to the next cycle's temperature", {}},
+      {"ramp_s",
+       "--ramp-s",
+       {},
+       "s",
+       at_least(0),
+       "Unpowered ramp to the next cycle's temperature",
+       {}},
       [](auto& o) -> auto& { return o.ramp_s; }));
   t.push_back(number_option<O>(
       {"chamber_setpoint_sd_degc",
        "--chamber-setpoint-sd-degc",
        {},
        "°C",
-       "0 … 10",
+       between(0, 10),
        "σ of the set point the chamber reaches each cycle",
        in(kCalibration, "chamber_setpoint_sd_degc")},
       [](auto& o) -> auto& { return o.chamber_setpoint_sd_degc; }));
@@ -165,7 +177,7 @@ OptionTable<NorthfindOptions> make_northfind() {
        "--findings",
        {},
        "",
-       "1 … 1000",
+       between(1, 1000),
        "Four-position findings per recording, back to back",
        in(kFindings, "findings")},
       [](auto& o) -> auto& { return o.findings; }));
@@ -174,7 +186,7 @@ OptionTable<NorthfindOptions> make_northfind() {
        "--position-s",
        {},
        "s",
-       "20 … 36000",
+       between(20, 36000),
        "Time per position, the rotation into it included",
        in(kFindings, "position_s")},
       [](auto& o) -> auto& { return o.position_s; }));
@@ -183,7 +195,7 @@ OptionTable<NorthfindOptions> make_northfind() {
        "--warmup-s",
        {},
        "s",
-       "≥ 0",
+       at_least(0),
        "Powered time before recording starts (0: record the start-up)",
        in(kFindings, "warmup_s")},
       [](auto& o) -> auto& { return o.warmup_s; }));
@@ -199,7 +211,7 @@ OptionTable<NorthfindOptions> make_northfind() {
        "--soak-s",
        {},
        "s",
-       "0 … 1e6",
+       between(0, 1e6),
        "Unpowered soak at each temperature before power-on",
        in(kFindings, "soak_s")},
       [](auto& o) -> auto& { return o.soak_s; }));
@@ -215,7 +227,7 @@ OptionTable<ChamberOptions> make_chamber() {
        "--start-degc",
        {},
        "°C",
-       "-70 … 100",
+       between(-70, 100),
        "The unit's temperature, at equilibrium, when the chamber starts",
        {}},
       [](auto& o) -> auto& { return o.start_degc; }));
@@ -224,7 +236,7 @@ OptionTable<ChamberOptions> make_chamber() {
        "--chamber-ramp-degc-per-min",
        {},
        "°C/min",
-       "> 0, ≤ 100",
+       above(0).at_most(100),
        "How fast the chamber moves between set points (a ramping start-up's own ramp is "
        "--ramp-degc-per-min)",
        {}},
@@ -234,7 +246,7 @@ OptionTable<ChamberOptions> make_chamber() {
        "--settled-within-degc",
        {},
        "°C",
-       "0.001 … 10",
+       between(0.001, 10),
        "Equilibrium, which soaked, warm and ramping start-ups begin from: every node of the "
        "instrument this close to the air",
        {}},

@@ -31,7 +31,7 @@ OptionTable<FaultPolicy> make_table() {
        "--gyro-limit-dph",
        {},
        "°/h",
-       "> 0",
+       above(0),
        "Gyro readings beyond ± this are faults",
        {"faults.gyro_limit_dph"}},
       [](auto& o) -> auto& { return o.gyro_limit_dph; }));
@@ -40,7 +40,7 @@ OptionTable<FaultPolicy> make_table() {
        "--bridge-s",
        {},
        "s",
-       "≥ 0",
+       at_least(0),
        "Thermometer outages and time gaps up to this long are bridged with substituted samples; "
        "time going back further is a restart (default: fitted to the model's sampling)",
        {"faults.bridge_s"}},
@@ -60,7 +60,7 @@ OptionTable<FaultPolicy> make_table() {
        "--stuck-s",
        {},
        "s",
-       "≥ 0",
+       at_least(0),
        "A thermometer unchanged this long while another moved by {stuck_delta_degc} is stuck "
        "(0: no check; default: fitted to the model's rate window)",
        {"faults.stuck_s"}},
@@ -70,7 +70,7 @@ OptionTable<FaultPolicy> make_table() {
        "--stuck-delta-degc",
        {},
        "°C",
-       "> 0",
+       above(0),
        "How far another thermometer must move for {stuck_s} to apply",
        {"faults.stuck_delta_degc"}},
       [](auto& o) -> auto& { return o.stuck_delta_degc; }));
@@ -79,7 +79,7 @@ OptionTable<FaultPolicy> make_table() {
        "--temp-jump-degc",
        {},
        "°C",
-       "≥ 0",
+       at_least(0),
        "A thermometer reading this far from its last good value continued along its rate is a "
        "jump, bridged like a bad reading; one lasting beyond {bridge_s} is a real step (0: no "
        "check)",

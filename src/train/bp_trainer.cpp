@@ -16,7 +16,7 @@ Search BpTrainer::search(Search requested, const TrainOptions&) {
 
 OptionTable<BpTrainer::Options> BpTrainer::option_table() {
   return {whole_option<Options>(
-      {"hidden", "--hidden", {}, "", "1 … 1000", "bp: hidden tanh units", {}},
+      {"hidden", "--hidden", {}, "", between(1, 1000), "bp: hidden tanh units", {}},
       [](auto& o) -> auto& { return o.hidden; })};
 }
 

@@ -17,7 +17,7 @@ OptionTable<GpTrainer::Options> GpTrainer::option_table() {
        "--gp-points",
        {},
        "",
-       "10 … 4000",
+       between(10, 4000),
        "gp: training rows the Gaussian process keeps, evenly spaced; its time grows "
        "as the cube, its C header's work per sample linearly",
        {}},

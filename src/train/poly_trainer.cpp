@@ -18,7 +18,13 @@ Search PolyTrainer::search(Search requested, const TrainOptions&) {
 
 OptionTable<PolyTrainer::Options> PolyTrainer::option_table() {
   return {whole_option<Options>(
-      {"max_degree", "--max-degree", {}, "", "1 … 6", "poly: highest degree tried", {"degree"}},
+      {"max_degree",
+       "--max-degree",
+       {},
+       "",
+       between(1, 6),
+       "poly: highest degree tried",
+       {"degree"}},
       [](auto& o) -> auto& { return o.max_degree; })};
 }
 

@@ -10,6 +10,7 @@
 
 #include "fogdrift/base/error.hpp"
 #include "fogdrift/base/version.hpp"
+#include "fogdrift/regress/poly.hpp"
 #include "fogdrift/train/trainers.hpp"
 
 namespace fogdrift {

@@ -68,7 +68,7 @@ OptionTable<O> make_table() {
                  o.train.tune.cv.scheme = tune::parse_cv_scheme(text, "cv");
                }});
   t.push_back(whole_option<O>(
-      {"folds", "--folds", {}, "", "≥ 2", "k of {cv} recording or temperature", {}},
+      {"folds", "--folds", {}, "", at_least(2), "k of {cv} recording or temperature", {}},
       [](auto& o) -> auto& { return o.train.tune.cv.folds; }));
   t.push_back({{"thermometers",
                 "--thermometers",
@@ -127,7 +127,7 @@ OptionTable<O> make_table() {
        "--block-s",
        {},
        "",
-       "> 0, a whole number of samples",
+       above(0).with("a whole number of samples"),
        "Averaging block of the modelling rows; auto: 10 s, or the nearest whole number of samples "
        "for a log that 10 s does not divide (one sample for logs slower than 0.1 Hz)",
        {}},
@@ -137,7 +137,7 @@ OptionTable<O> make_table() {
        "--rate-window-s",
        {},
        "",
-       "> 0, at least 5 samples",
+       above(0).with("at least 5 samples"),
        "Window of the temperature-rate differentiator; auto: 121 s centred, 61 s causal, at least "
        "5 samples, and (centred) no longer than the shortest recording",
        {"window_s"}},
@@ -146,7 +146,7 @@ OptionTable<O> make_table() {
                 "--rate-degree",
                 OptionType::whole_or_auto,
                 "",
-                "1 … 4",
+                between(1, 4),
                 "Degree of the polynomial the differentiator fits; auto: 2 centred, 1 causal. For "
                 "causal rates 1 is the least noisy and lags by half the window, 2 does not lag a "
                 "steady curvature and is about four times noisier (docs/signal.md)",
@@ -178,7 +178,7 @@ OptionTable<O> make_table() {
        "--population",
        {},
        "",
-       "≥ 2; ssa-svr ≥ 5",
+       at_least(2).with("ssa-svr ≥ 5"),
        "Individuals of the search's optimizer",
        {}},
       [](auto& o) -> auto& { return o.train.tune.optimizer.run.population; }));
@@ -187,7 +187,7 @@ OptionTable<O> make_table() {
        "--iterations",
        {},
        "",
-       "≥ 1",
+       at_least(1),
        "Iterations of the search after its initial population",
        {}},
       [](auto& o) -> auto& { return o.train.tune.optimizer.run.iterations; }));
@@ -196,7 +196,7 @@ OptionTable<O> make_table() {
        "--stall-iterations",
        {},
        "",
-       "≥ 0; 0 runs every iteration",
+       at_least(0).with("0 runs every iteration"),
        "Stop the search early once its best fitness has improved by less than "
        "{stall_tolerance} over this many iterations: the search ends when it stops learning, "
        "and what it returns is what the full run had found by then (docs/tuning.md)",
@@ -207,7 +207,7 @@ OptionTable<O> make_table() {
        "--stall-tolerance",
        {},
        "",
-       "0 … 1, below 1",
+       at_least(0).below(1),
        "The relative improvement of the best fitness that counts as learning for "
        "{stall_iterations} (0.001: a tenth of a percent)",
        {}},
@@ -217,7 +217,7 @@ OptionTable<O> make_table() {
        "--search-rows",
        {},
        "",
-       "≥ 0; 0 fits every row",
+       at_least(0).with("0 fits every row"),
        "The fewest training rows of a fold the search may thin: a fold with k times as many "
        "is searched on every k-th row (C × k, every held-out row scored), and the best 3 "
        "candidates are scored again on all rows. A fit costs the square of its rows "
@@ -228,7 +228,7 @@ OptionTable<O> make_table() {
       {"seed", "--seed", {}, "", "", "Seed of the search (and of bp's weights)", {}},
       [](auto& o) -> auto& { return o.train.tune.optimizer.run.seed; }));
   t.push_back(number_option<O>(
-      {"c_min", "--c-min", {}, "", "> 0", "Smallest C searched", {}},
+      {"c_min", "--c-min", {}, "", above(0), "Smallest C searched", {}},
       [](auto& o) -> auto& { return o.train.tune.space.c_min; }));
   t.push_back(number_option<O>(
       {"c_max", "--c-max", {}, "", "> {c_min}", "Largest C searched", {}},
@@ -238,7 +238,7 @@ OptionTable<O> make_table() {
        "--sigma-min",
        {},
        "",
-       "> 0",
+       above(0),
        "Smallest σ searched, in standardised feature units",
        {}},
       [](auto& o) -> auto& { return o.train.tune.space.sigma_min; }));
@@ -261,7 +261,7 @@ OptionTable<O> make_table() {
        "--epsilon-min",
        {},
        "",
-       "> 0",
+       above(0),
        "Smallest ε searched with {search_epsilon}",
        {}},
       [](auto& o) -> auto& { return o.train.tune.space.epsilon_min; }));
@@ -308,7 +308,7 @@ OptionTable<O> make_table() {
        "--cache-mb",
        {},
        "MB",
-       "≥ 0",
+       at_least(0),
        "Kernel-row cache of each SVR fit (one fit per thread): less memory, slower "
        "fits",
        {}},

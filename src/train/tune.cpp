@@ -39,7 +39,7 @@ OptionSpec epsilon_option_spec() {
           "--epsilon",
           OptionType::number,
           "",
-          "0 … 10",
+          between(0, 10),
           "ε of the SVR's tube, in standardised drift units, when it is not searched",
           {}};
 }

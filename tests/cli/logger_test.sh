@@ -104,7 +104,7 @@ s = d["search"]
 assert s["row_stride"] == 2 and len(s["rescored"]) == 3 and s["status"] == "converged", s
 assert d["fitness_rmse"] == min(r["rmse"] for r in s["rescored"]), d' "$work/out"
 check "an impossible stall tolerance" run 1 "$fd" train "$work/camp" -o "$work/never.json" --features "T(fog),dT(fog)" --stall-tolerance 1
-check "stall tolerance message names its flag" err_has "option --stall-tolerance: 1 is outside [0, 1)"
+check "stall tolerance message names its flag" err_has "option --stall-tolerance: 1 must be ≥ 0, < 1"
 check "no model from an impossible option" test ! -e "$work/never.json"
 check "train --auto-box" run 0 "$fd" train "$work/camp" -o "$work/m.json" --features "T(fog),dT(fog)" --auto-box --json
 check "auto-box widened sigma" python3 -c 'import json,sys; d=json.load(open(sys.argv[1])); assert len(d["boxes_searched"]) >= 2 and d["hyperparameters"]["sigma"] > 20, d' "$work/out"

@@ -42,8 +42,9 @@ TEST(EvalOptionTable, SegmentationErrorsAreAnsweredByAnOption) {
                                                         {"settle_s", "-1"},
                                                         {"min_dwell_s", "0"}}) {
     FindingOptions o;
-    apply_option(finding_option_table(), o, keyword, text);
+    // Refused at parsing, by its bounds, or by the check below.
     try {
+      apply_option(finding_option_table(), o, keyword, text);
       validate(o.segmentation);
       ADD_FAILURE() << keyword << " = " << text << " passed";
     } catch (const OptionError& e) {

@@ -89,9 +89,9 @@ def test_options_are_checked_once_before_any_unit_runs(units, tmp_path):
     # had started.
     paths, _ = units
     for options, message in [(dict(method="svm"), "option method: 'svm' is not a method"),
-                             (dict(population=1), "option population: 1 is too small"),
+                             (dict(population=1), "option population: 1 must be ≥ 2"),
                              (dict(c_min=10.0, c_max=1.0), "option c_max"),
-                             (dict(method="poly", max_degree=9), "option max_degree: 9 is outside")]:
+                             (dict(method="poly", max_degree=9), "option max_degree: 9 must be 1 … 6")]:
         ran = []
         with pytest.raises(ValueError, match=message):
             train_fleet(paths, out=tmp_path / "models",

@@ -22,6 +22,7 @@
 #include <vector>
 
 #include "fogdrift/base/error.hpp"
+#include "fogdrift/base/option_range.hpp"
 
 namespace fogdrift {
 
@@ -48,8 +49,10 @@ struct OptionSpec {
   std::string keyword;  ///< the Python keyword, and the option's name in docs and messages
   std::string flag;     ///< the command line's flag, e.g. "--c-max" or "--no-racing"
   OptionType type = OptionType::text;
-  std::string unit;   ///< "s", "MB", …; empty for a pure number or a name
-  std::string range;  ///< the values allowed, as a user reads them ("1 … 4", "cv, train")
+  std::string unit;  ///< "s", "MB", …; empty for a pure number or a name
+  /// The values allowed (option_range.hpp): bounds the parser checks, between(1, 4), or a note
+  /// ("cv, train"); range.text() is how users read it.
+  OptionRange range;
   /// What it does, in a sentence or a few (the --help text). "{keyword}" names another option
   /// and is shown in each front end's own word for it (option_help).
   std::string doc;
@@ -155,7 +158,7 @@ std::string options_markdown(const std::vector<OptionSpec>& specs,
                              const std::vector<std::string>& defaults);
 
 // The parsers every table's setters use. Each throws OptionError(spec.keyword, …) naming the
-// text and what was expected.
+// text and what was expected: a text not of the type, or a number outside spec.range's bounds.
 std::uint64_t parse_whole_option(const OptionSpec& spec, const std::string& text);
 double parse_number_option(const OptionSpec& spec, const std::string& text);
 /// nullopt for "auto".

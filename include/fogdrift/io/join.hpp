@@ -72,11 +72,12 @@ struct JoinOptions {
   std::vector<OffsetSearch> estimates;
   /// Write the join even when the evidence fails (JoinEvidence::failures say why).
   bool force = false;
-  /// linear: the longest step between two log samples interpolated across, s; negative: 1.5 ×
-  /// the log's median step.
-  double max_step_s = -1;
-  /// nearest: the farthest a log sample may be from the row, s; negative: the log's median step.
-  double max_age_s = -1;
+  /// linear: the longest step between two log samples interpolated across, s, > 0; unset
+  /// (auto): 1.5 × the log's median step.
+  std::optional<double> max_step_s;
+  /// nearest: the farthest a log sample may be from the row, s, > 0; unset (auto): the log's
+  /// median step.
+  std::optional<double> max_age_s;
 };
 
 struct OffsetEstimate {

@@ -19,7 +19,7 @@ struct OptionDescriptions {
 };
 
 /// The commands described, in order: train, simulate-calibration, simulate-northfind,
-/// simulate-stable, stream, denoise, evaluate, northfind, paper, plan.
+/// simulate-stable, stream, denoise, evaluate, northfind, paper, plan, join.
 std::vector<std::string_view> described_commands();
 
 /// The options of `command` (one of described_commands()); OptionError(`option`) naming the
@@ -27,8 +27,10 @@ std::vector<std::string_view> described_commands();
 OptionDescriptions option_descriptions(std::string_view command,
                                        const std::string& option = "COMMAND");
 
-/// One object per option: keyword, flag, type, unit, default, allowed, doc (other options named
-/// by keyword) and help (as --help shows it, other options named by flag).
+/// One object per option: keyword, flag, type, unit, default, allowed (as docs/options.md shows
+/// it), the bounds the option's parser checks (minimum and maximum, null where there is none;
+/// minimum_excluded and maximum_excluded), doc (other options named by keyword) and help (as
+/// --help shows it, other options named by flag).
 nlohmann::ordered_json options_json(const OptionDescriptions& described);
 
 }  // namespace fogdrift::report
