@@ -17,7 +17,9 @@
 #include "fogdrift/base/version.hpp"
 #include "fogdrift/io/campaign.hpp"
 #include "fogdrift/io/cut.hpp"
+#include "fogdrift/io/cut_option_table.hpp"
 #include "fogdrift/io/recording.hpp"
+#include "option_flags.hpp"
 
 namespace fs = std::filesystem;
 
@@ -33,11 +35,7 @@ struct CampaignArgs {
   std::vector<std::string> references;
   std::optional<double> latitude_deg;
   std::optional<double> true_azimuth_deg;
-  double cut_gap_s = 0;
-  double cut_window_s = 0;
-  bool cut_plateaus = false;
-  double plateau_rate_degc_per_min = CutOptions{}.plateau_rate_degc_per_min;
-  double plateau_min_s = CutOptions{}.plateau_min_s;
+  std::shared_ptr<OptionFlags> cut;  // how one long log is cut (cut_option_table.hpp)
   bool force = false;
   bool quiet = false;
 };
@@ -73,11 +71,7 @@ void run(const CampaignArgs& a) {
   const std::map<std::string, double> references = parse_references(a.references, "--reference");
 
   CutOptions cut_options;
-  cut_options.gap_s = a.cut_gap_s;
-  cut_options.window_s = a.cut_window_s;
-  cut_options.plateaus = a.cut_plateaus;
-  cut_options.plateau_rate_degc_per_min = a.plateau_rate_degc_per_min;
-  cut_options.plateau_min_s = a.plateau_min_s;
+  a.cut->apply(cut_option_table(), cut_options);
   std::vector<Recording> pieces;
   std::size_t plateau_cuts = 0;
   for (const auto& input : a.inputs) {
@@ -94,23 +88,18 @@ void run(const CampaignArgs& a) {
             "fewest samples a recording needs)\n",
             input, from, to);
     } catch (const OptionError& e) {
-      const std::string flag = e.option() == "gap_s"      ? "--cut-gap-s"
-                               : e.option() == "window_s" ? "--cut-window-s"
-                               : e.option() == "plateau_rate_degc_per_min"
-                                   ? "--plateau-rate-degc-per-min"
-                                   : "--plateau-min-s";
-      throw OptionError(flag, e.message());
+      throw a.cut->named(e);
     }
   }
   const std::set<std::size_t> tests = test_positions(a.test, pieces.size());
   // Plateaus asked for and none found: the cut, not --test, is what left too few recordings.
-  const bool no_plateau = a.cut_plateaus && plateau_cuts == 0;
+  const bool no_plateau = cut_options.plateaus && plateau_cuts == 0;
   const std::string plateau_note = fmt::format(
       "no plateau ended in {} (a plateau: at least {} s with |rate| below {} °C/min, then a "
       "change); loosen --plateau-rate-degc-per-min or --plateau-min-s, or cut with --cut-gap-s "
       "or --cut-window-s",
       a.inputs.size() == 1 ? a.inputs.front() : fmt::format("any of the {} logs", a.inputs.size()),
-      a.plateau_min_s, a.plateau_rate_degc_per_min);
+      cut_options.plateau_min_s, cut_options.plateau_rate_degc_per_min);
   if (tests.size() == pieces.size()) {
     if (no_plateau)
       throw OptionError("--cut-plateaus",
@@ -232,18 +221,8 @@ void add_campaign(CLI::App& app) {
   cmd->add_option("--true-azimuth-deg", a->true_azimuth_deg,
                   "Azimuth of the horizontal sensitive axis, degrees from true north")
       ->check(CLI::Range(0.0, 360.0));
-  cmd->add_option("--cut-gap-s", a->cut_gap_s, "Cut at time steps longer than this, s (0: no)")
-      ->capture_default_str();
-  cmd->add_option("--cut-window-s", a->cut_window_s,
-                  "Cut into windows of this length, s (0: no); a last window under half is dropped")
-      ->capture_default_str();
-  cmd->add_flag("--cut-plateaus", a->cut_plateaus,
-                "Cut where each temperature plateau ends (chamber_degc, else temp_fog_degc)");
-  cmd->add_option("--plateau-rate-degc-per-min", a->plateau_rate_degc_per_min,
-                  "A plateau's |rate| stays below this, °C/min (slope over ±60 s)")
-      ->capture_default_str();
-  cmd->add_option("--plateau-min-s", a->plateau_min_s, "Shortest plateau, s")
-      ->capture_default_str();
+  const auto& cut = cut_option_table();
+  a->cut = std::make_shared<OptionFlags>(cmd, specs_of(cut), defaults_of(cut));
   cmd->add_flag("--force", a->force, "Replace OUT if it exists (only after success)");
   cmd->add_flag("-q,--quiet", a->quiet, "Print nothing on success");
   cmd->callback([a] { run(*a); });

@@ -80,7 +80,7 @@ check "no-plateau message names the cut" err_has "option --cut-plateaus: no plat
 check "campaign -q" run 0 "$fd" campaign "$work/quiet" "$work"/tvac_?.csv --input-rate-dph 0 -q
 check "campaign -q prints nothing" test ! -s "$work/out"
 check "an impossible plateau" run 1 "$fd" campaign "$work/bad_plateau" "$work"/tvac_?.csv --input-rate-dph 0 --cut-plateaus --plateau-min-s 0
-check "plateau message names the flag" err_has "option --plateau-min-s: 0 s is not a positive duration"
+check "plateau message names the flag" err_has "option --plateau-min-s: 0 s must be > 0"
 check "inspect accepts it" run 0 "$fd" inspect "$work/camp"
 check "inspect says valid" out_has "campaign is valid"
 check "no latitude needed" out_has "no latitude"
