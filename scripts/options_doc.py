@@ -12,7 +12,8 @@ option of `fogdrift train` and Python's fogdrift.train (src/train/train_option_t
 `fogdrift paper` and `fogdrift demo` (src/report/paper_option_table.cpp), and of the chamber of
 `fogdrift plan` (src/sim/scenario_option_table.cpp), and of `fogdrift join`
 (src/io/join_option_table.cpp), and of the cutting of `fogdrift campaign`
-(src/io/cut_option_table.cpp): every command `fogdrift options --list`
+(src/io/cut_option_table.cpp), and of `fogdrift import` (src/io/import_option_table.cpp): every
+command `fogdrift options --list`
 names. This
 script puts each between its two marker lines on the page, so that the page cannot fall behind
 the code. It also writes the `--method a|b|…` lists of README.md and docs/tuning.md from the

@@ -14,9 +14,11 @@
 #include "fogdrift/base/error.hpp"
 #include "fogdrift/base/run_files.hpp"
 #include "fogdrift/io/import.hpp"
+#include "fogdrift/io/import_option_table.hpp"
 #include "fogdrift/io/recording.hpp"
 #include "fogdrift/io/regrid.hpp"
 #include "fogdrift/signal/hampel.hpp"
+#include "option_flags.hpp"
 
 namespace fs = std::filesystem;
 
@@ -28,26 +30,8 @@ struct ImportArgs {
   std::string out;
   std::vector<std::string> maps;
   std::vector<std::string> units;
-  std::string delimiter = ",";
-  bool decimal_comma = false;
-  bool time_from_zero = false;
-  bool drop_extra = false;
-  std::size_t skip_lines = 0;
-  double time_from_rate_hz = 0;
-  std::string time_zero;
-  bool partial = false;
-  std::string comment;
-  bool hold_empty = false;
-  bool split_at_reset = false;
-  double rate_hz = 0;
-  double step_s = 0;
-  std::string method = "auto";
-  double max_gap_s = -1;
-  bool hampel = false;
-  std::size_t hampel_half_window = signal::HampelOptions{}.half_window;
-  double hampel_sigma = signal::HampelOptions{}.n_sigma;
-  std::string outlier_columns;  ///< empty: gyro_dph and every thermometer the file has
   bool quiet = false;
+  std::shared_ptr<OptionFlags> flags;  // import's options (import_option_table.hpp)
 };
 
 /// How import treated one file, for people: spikes, grid, gaps and segments.
@@ -127,12 +111,6 @@ std::pair<std::string, std::string> split_assignment(const std::string& text,
   return {text.substr(0, eq), text.substr(eq + 1)};
 }
 
-char parse_delimiter(const std::string& text) {
-  if (text == "," || text == ";" || text == "|") return text[0];
-  if (text == "\\t" || text == "\t" || text == "tab") return '\t';
-  throw OptionError("--delimiter", fmt::format("'{}' is not one of ',', ';', '|', tab", text));
-}
-
 }  // namespace
 
 void add_import(CLI::App& app) {
@@ -159,112 +137,28 @@ void add_import(CLI::App& app) {
       ->required();
   cmd->add_option("--map", a->maps, "FOGDRIFT_COLUMN=FOREIGN_COLUMN (repeatable)");
   cmd->add_option("--unit", a->units, "FOGDRIFT_COLUMN=UNIT (repeatable)");
-  cmd->add_option("--delimiter", a->delimiter, "Field separator: ',' ';' '|' or tab")
-      ->capture_default_str();
-  cmd->add_flag("--decimal-comma", a->decimal_comma, "Numbers use ',' as the decimal point");
-  cmd->add_flag("--time-from-zero", a->time_from_zero,
-                "Subtract the first time stamp (for loggers that count from their own boot)");
-  cmd->add_flag("--drop-extra", a->drop_extra, "Do not keep unmapped columns");
-  cmd->add_option("--skip-lines", a->skip_lines,
-                  "Lines before the header to skip (a logger's preamble of settings)")
-      ->capture_default_str();
-  cmd->add_option("--time-from-rate-hz", a->time_from_rate_hz,
-                  "The file has no time column: time_s = row index / this rate, Hz");
-  cmd->add_option("--time-zero", a->time_zero,
-                  "With --unit time_s=iso8601 or clock: time_s counts from this instant (e.g. "
-                  "the unit's power-on, '2020-03-07 15:41:07' or '15:41:07') instead of from the "
-                  "first stamp, so that logs of one test share a time axis");
-  cmd->add_flag("--partial", a->partial,
-                "The file lacks gyro_dph or temp_fog_degc (a chamber sheet, a thermometer "
-                "logger): write it as a log to join into a recording with 'fogdrift join'; its "
-                "time may start before --time-zero");
-  cmd->add_option("--comment", a->comment,
-                  "Lines starting with this character are comments, skipped (e.g. '#')");
-  cmd->add_flag("--hold-empty", a->hold_empty,
-                "An empty cell takes the value of the row before (a channel logged slower than "
-                "the others); the count per column is reported");
-  cmd->add_flag("--split-at-reset", a->split_at_reset,
-                "A time stamp smaller than the one before is a power cycle: write one recording "
-                "per cycle (out.csv -> out_1.csv, out_2.csv, ...)");
-  cmd->add_option("--rate-hz", a->rate_hz,
-                  "Put the recording on a uniform grid at this rate, Hz (0: keep the logger's "
-                  "time stamps); for bursts, the burst rate, e.g. 1/305 s = 0.0032787")
-      ->capture_default_str();
-  cmd->add_option("--step-s", a->step_s,
-                  "The same as --rate-hz, given as the grid step, s (e.g. 60 for bursts every "
-                  "minute); times are then whole multiples of it");
-  cmd->add_option("--method", a->method,
-                  "Grid filling: mean (bins of 1/rate; anti-aliasing for faster logs), linear "
-                  "(interpolation; jitter), auto (mean when the log is at least twice as fast)")
-      ->capture_default_str();
-  cmd->add_option("--max-gap-s", a->max_gap_s,
-                  "Longest gap bridged by interpolation, s; longer gaps split the recording "
-                  "(default: 10 grid steps)");
-  cmd->add_flag("--hampel", a->hampel,
-                "Replace spikes by the local median (Hampel filter), before --rate-hz");
-  cmd->add_option("--hampel-half-window", a->hampel_half_window,
-                  "Hampel window: this many samples either side")
-      ->capture_default_str();
-  cmd->add_option("--hampel-sigma", a->hampel_sigma,
-                  "Hampel threshold, local STDs (3, the textbook value, replaces 0.7-3 % of good "
-                  "samples; see docs/signal.md)")
-      ->capture_default_str();
-  cmd->add_option("--outlier-columns", a->outlier_columns,
-                  "Columns the Hampel filter looks at, comma-separated (default: gyro_dph and "
-                  "every thermometer the file has)");
+  const auto& table = import_option_table();
+  a->flags = std::make_shared<OptionFlags>(cmd, specs_of(table), defaults_of(table));
   cmd->add_flag("-q,--quiet", a->quiet, "Print nothing on success");
   cmd->callback([a] {
-    ImportOptions o;
+    ImportRunOptions given;
     for (const auto& m : a->maps) {
       auto [target, source] = split_assignment(m, "--map");
-      o.columns[target] = source;
+      given.read.columns[target] = source;
     }
     for (const auto& u : a->units) {
       auto [target, unit] = split_assignment(u, "--unit");
-      o.conversions[target] = parse_unit(target, unit);
+      given.read.conversions[target] = parse_unit(target, unit);
     }
-    o.delimiter = parse_delimiter(a->delimiter);
-    o.decimal_comma = a->decimal_comma;
-    o.time_from_zero = a->time_from_zero;
-    o.keep_extra = !a->drop_extra;
-    o.split_at_reset = a->split_at_reset;
-    o.skip_lines = a->skip_lines;
-    o.time_from_rate_hz = a->time_from_rate_hz;
-    o.time_zero = a->time_zero;
-    o.allow_partial = a->partial;
-    o.hold_empty = a->hold_empty;
-    if (a->comment.size() > 1)
-      throw OptionError("--comment", fmt::format("'{}' is not a single character", a->comment));
-    if (!a->comment.empty()) o.comment = a->comment[0];
-    if (a->hampel) {
-      o.outliers = signal::HampelOptions{a->hampel_half_window, a->hampel_sigma};
-      if (!a->outlier_columns.empty()) o.outlier_columns = split_list(a->outlier_columns);
-    } else if (a->hampel_sigma != signal::HampelOptions{}.n_sigma ||
-               a->hampel_half_window != signal::HampelOptions{}.half_window) {
-      throw OptionError(a->hampel_sigma != signal::HampelOptions{}.n_sigma ? "--hampel-sigma"
-                                                                           : "--hampel-half-window",
-                        "has no effect without --hampel");
+    a->flags->apply(import_option_table(), given);  // the table leaves the map and units be
+    ImportPlan plan;
+    try {
+      plan = import_plan(given);
+    } catch (const OptionError& e) {
+      throw a->flags->named(e);
     }
-    std::optional<RegridOptions> grid;
-    if (a->rate_hz != 0 && a->step_s != 0)
-      throw OptionError("--step-s", "give --rate-hz or --step-s, not both");
-    if (a->rate_hz < 0)
-      throw OptionError("--rate-hz", fmt::format("{} Hz is negative", a->rate_hz));
-    if (a->rate_hz != 0 || a->step_s != 0) {
-      grid.emplace();
-      grid->step_s = a->step_s != 0 ? a->step_s : 1.0 / a->rate_hz;
-      grid->max_gap_s = a->max_gap_s;
-      try {
-        grid->method = regrid_method_from_string(a->method);
-      } catch (const OptionError& e) {
-        throw OptionError("--method", e.message());
-      }
-      if (a->max_gap_s < 0 && a->max_gap_s != -1)
-        throw OptionError("--max-gap-s", fmt::format("{} s is negative", a->max_gap_s));
-    } else if (a->method != "auto" || a->max_gap_s != -1) {
-      throw OptionError(a->method != "auto" ? "--method" : "--max-gap-s",
-                        "has no effect without --rate-hz R or --step-s S");
-    }
+    const ImportOptions& o = plan.read;
+    const std::optional<RegridOptions>& grid = plan.grid;
     const bool to_folder = a->inputs.size() > 1 || fs::is_directory(a->out);
     if (to_folder && !fs::is_directory(a->out)) {
       throw OptionError("--out", fmt::format("'{}' must be an existing folder when importing "
@@ -292,7 +186,7 @@ void add_import(CLI::App& app) {
           r = regrid(rec, *grid);
         } catch (const OptionError& e) {
           throw OptionError(e.option() != "step_s" ? "--max-gap-s"
-                            : a->step_s != 0       ? "--step-s"
+                            : given.step_s != 0    ? "--step-s"
                                                    : "--rate-hz",
                             e.message());
         }

@@ -6,7 +6,7 @@
 namespace fogdrift {
 namespace {
 
-OptionTable<CutOptions> make_table() {
+OptionTable<CutOptions> make_cut_table() {
   using O = CutOptions;
   OptionTable<O> t;
   t.push_back(number_option<O>(
@@ -57,7 +57,7 @@ OptionTable<CutOptions> make_table() {
 }  // namespace
 
 const OptionTable<CutOptions>& cut_option_table() {
-  static const OptionTable<CutOptions> table = make_table();
+  static const OptionTable<CutOptions> table = make_cut_table();
   return table;
 }
 

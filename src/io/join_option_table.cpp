@@ -18,7 +18,7 @@ std::string pair_text(const OffsetSearch& s) {
                                             : s.recording_column + "=" + s.log_column;
 }
 
-OptionTable<JoinOptions> make_table() {
+OptionTable<JoinOptions> make_join_table() {
   using O = JoinOptions;
   OptionTable<O> t;
   const OptionSpec columns{"columns",
@@ -162,7 +162,7 @@ OptionTable<JoinOptions> make_table() {
 }  // namespace
 
 const OptionTable<JoinOptions>& join_option_table() {
-  static const OptionTable<JoinOptions> table = make_table();
+  static const OptionTable<JoinOptions> table = make_join_table();
   return table;
 }
 

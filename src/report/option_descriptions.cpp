@@ -9,6 +9,7 @@
 #include "fogdrift/base/error.hpp"
 #include "fogdrift/eval/eval_option_table.hpp"
 #include "fogdrift/io/cut_option_table.hpp"
+#include "fogdrift/io/import_option_table.hpp"
 #include "fogdrift/io/join_option_table.hpp"
 #include "fogdrift/report/paper_option_table.hpp"
 #include "fogdrift/signal/denoise_option_table.hpp"
@@ -30,7 +31,7 @@ struct Command {
   std::string_view name;
   OptionDescriptions (*describe)();
 };
-const std::array<Command, 12> kCommands = {{
+const std::array<Command, 13> kCommands = {{
     {"train", [] { return described(train_option_table()); }},
     {"simulate-calibration", [] { return described(sim::calibration_option_table()); }},
     {"simulate-northfind", [] { return described(sim::northfind_option_table()); }},
@@ -44,6 +45,7 @@ const std::array<Command, 12> kCommands = {{
     {"plan", [] { return described(sim::chamber_option_table()); }},
     {"join", [] { return described(join_option_table()); }},
     {"campaign", [] { return described(cut_option_table()); }},
+    {"import", [] { return described(import_option_table()); }},
 }};
 
 }  // namespace

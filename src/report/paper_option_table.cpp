@@ -13,7 +13,7 @@
 namespace fogdrift::report {
 namespace {
 
-OptionTable<PaperOptions> make_table() {
+OptionTable<PaperOptions> make_paper_table() {
   using O = PaperOptions;
   OptionTable<O> t;
   t.push_back(whole_option<O>(
@@ -211,7 +211,7 @@ OptionTable<PaperOptions> make_table() {
 }  // namespace
 
 const OptionTable<PaperOptions>& paper_option_table() {
-  static const OptionTable<PaperOptions> table = make_table();
+  static const OptionTable<PaperOptions> table = make_paper_table();
   return table;
 }
 

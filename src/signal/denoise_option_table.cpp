@@ -10,7 +10,7 @@
 namespace fogdrift::signal {
 namespace {
 
-OptionTable<DenoiseOptions> make_table() {
+OptionTable<DenoiseOptions> make_denoise_table() {
   using O = DenoiseOptions;
   OptionTable<O> t;
   t.push_back({{"wavelet",
@@ -89,7 +89,7 @@ OptionTable<DenoiseOptions> make_table() {
 }  // namespace
 
 const OptionTable<DenoiseOptions>& denoise_option_table() {
-  static const OptionTable<DenoiseOptions> table = make_table();
+  static const OptionTable<DenoiseOptions> table = make_denoise_table();
   return table;
 }
 

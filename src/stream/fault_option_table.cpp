@@ -5,7 +5,7 @@
 namespace fogdrift {
 namespace {
 
-OptionTable<FaultPolicy> make_table() {
+OptionTable<FaultPolicy> make_fault_table() {
   using O = FaultPolicy;
   OptionTable<O> t;
   t.push_back(number_option<O>(
@@ -91,7 +91,7 @@ OptionTable<FaultPolicy> make_table() {
 }  // namespace
 
 const OptionTable<FaultPolicy>& fault_option_table() {
-  static const OptionTable<FaultPolicy> table = make_table();
+  static const OptionTable<FaultPolicy> table = make_fault_table();
   return table;
 }
 

@@ -14,7 +14,7 @@ namespace {
 
 using O = CampaignTrainOptions;
 
-OptionTable<O> make_table() {
+OptionTable<O> make_train_table() {
   OptionTable<O> t;
   t.push_back(
       {{"method",
@@ -324,7 +324,7 @@ OptionTable<O> make_table() {
 }  // namespace
 
 const OptionTable<CampaignTrainOptions>& train_option_table() {
-  static const OptionTable<CampaignTrainOptions> table = make_table();
+  static const OptionTable<CampaignTrainOptions> table = make_train_table();
   return table;
 }
 

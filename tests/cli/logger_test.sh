@@ -191,7 +191,7 @@ check "comment message" err_has "option --comment: '//' is not a single characte
 check "hampel settings without hampel" run 1 "$fd" import "$raw" -o "$work/x.csv" "${map[@]}" --hampel-sigma 4
 check "hampel message" err_has "option --hampel-sigma: has no effect without --hampel"
 check "a hampel window of none" run 1 "$fd" import "$raw" -o "$work/x.csv" "${map[@]}" --split-at-reset --hampel --hampel-half-window 0
-check "hampel window message" err_has "option --hampel-half-window: the Hampel window's half-width must be at least 1 sample"
+check "hampel window message" err_has "option --hampel-half-window: 0 must be ≥ 1"
 check "block neither auto nor seconds" run 1 "$fd" train "$work/one" -o "$work/x.json" --block-s ten
 check "block message" err_has "option --block-s: 'ten' is neither auto nor a number of seconds > 0"
 check "rate and azimuth both" run 1 "$fd" campaign "$work/both" "$work"/one_?.csv --input-rate-dph 0 --latitude-deg 30 --true-azimuth-deg 90

@@ -19,7 +19,7 @@ struct OptionDescriptions {
 };
 
 /// The commands described, in order: train, simulate-calibration, simulate-northfind,
-/// simulate-stable, stream, denoise, evaluate, northfind, paper, plan, join, campaign.
+/// simulate-stable, stream, denoise, evaluate, northfind, paper, plan, join, campaign, import.
 std::vector<std::string_view> described_commands();
 
 /// The options of `command` (one of described_commands()); OptionError(`option`) naming the
