@@ -8,15 +8,6 @@
 namespace fogdrift {
 namespace {
 
-/// An on/off option that reads and writes a setting through `get` and `put`.
-template <class Get, class Put>
-Option<ImportRunOptions> import_switch(OptionSpec spec, Get get, Put put) {
-  using O = ImportRunOptions;
-  spec.type = OptionType::on_off;
-  return {spec, [get](const O& o) { return std::string(get(o) ? "true" : "false"); },
-          [put, spec](O& o, const std::string& text) { put(o, parse_on_off_option(spec, text)); }};
-}
-
 OptionTable<ImportRunOptions> make_import_table() {
   using O = ImportRunOptions;
   OptionTable<O> t;
@@ -37,11 +28,10 @@ OptionTable<ImportRunOptions> make_import_table() {
                    throw OptionError("delimiter",
                                      fmt::format("'{}' is not one of ',', ';', '|', tab", text));
                }});
-  t.push_back(import_switch(
+  t.push_back(on_off_option<O>(
       {"decimal_comma", "--decimal-comma", {}, "", "", "Numbers use ',' as the decimal point", {}},
-      [](const O& o) { return o.read.decimal_comma; },
-      [](O& o, bool v) { o.read.decimal_comma = v; }));
-  t.push_back(import_switch(
+      [](auto& o) -> auto& { return o.read.decimal_comma; }));
+  t.push_back(on_off_option<O>(
       {"time_from_zero",
        "--time-from-zero",
        {},
@@ -50,11 +40,15 @@ OptionTable<ImportRunOptions> make_import_table() {
        "Subtract the first time stamp (for loggers that count from their "
        "own boot)",
        {}},
-      [](const O& o) { return o.read.time_from_zero; },
-      [](O& o, bool v) { o.read.time_from_zero = v; }));
-  t.push_back(import_switch(
-      {"drop_extra", "--drop-extra", {}, "", "", "Do not keep unmapped columns", {"keep_extra"}},
-      [](const O& o) { return !o.read.keep_extra; }, [](O& o, bool v) { o.read.keep_extra = !v; }));
+      [](auto& o) -> auto& { return o.read.time_from_zero; }));
+  // keep_extra read the other way round: the flag drops what is kept by default.
+  const OptionSpec drop{
+      "drop_extra",  "--drop-extra", OptionType::on_off, "", "", "Do not keep unmapped columns",
+      {"keep_extra"}};
+  t.push_back({drop, [](const O& o) { return std::string(o.read.keep_extra ? "false" : "true"); },
+               [drop](O& o, const std::string& text) {
+                 o.read.keep_extra = !parse_on_off_option(drop, text);
+               }});
   t.push_back(whole_option<O>(
       {"skip_lines",
        "--skip-lines",
@@ -85,7 +79,7 @@ OptionTable<ImportRunOptions> make_import_table() {
                              {}};
   t.push_back({time_zero, [](const O& o) { return o.read.time_zero; },
                [](O& o, const std::string& text) { o.read.time_zero = text; }});
-  t.push_back(import_switch(
+  t.push_back(on_off_option<O>(
       {"partial",
        "--partial",
        {},
@@ -95,8 +89,7 @@ OptionTable<ImportRunOptions> make_import_table() {
        "thermometer logger): write it as a log to join into a recording with "
        "'fogdrift join'; its time may start before {time_zero}",
        {"allow_partial"}},
-      [](const O& o) { return o.read.allow_partial; },
-      [](O& o, bool v) { o.read.allow_partial = v; }));
+      [](auto& o) -> auto& { return o.read.allow_partial; }));
   const OptionSpec comment{"comment",
                            "--comment",
                            OptionType::text,
@@ -112,7 +105,7 @@ OptionTable<ImportRunOptions> make_import_table() {
            throw OptionError("comment", fmt::format("'{}' is not a single character", text));
          o.read.comment = text.empty() ? '\0' : text[0];
        }});
-  t.push_back(import_switch(
+  t.push_back(on_off_option<O>(
       {"hold_empty",
        "--hold-empty",
        {},
@@ -121,8 +114,8 @@ OptionTable<ImportRunOptions> make_import_table() {
        "An empty cell takes the value of the row before (a channel logged "
        "slower than the others); the count per column is reported",
        {}},
-      [](const O& o) { return o.read.hold_empty; }, [](O& o, bool v) { o.read.hold_empty = v; }));
-  t.push_back(import_switch(
+      [](auto& o) -> auto& { return o.read.hold_empty; }));
+  t.push_back(on_off_option<O>(
       {"split_at_reset",
        "--split-at-reset",
        {},
@@ -131,8 +124,7 @@ OptionTable<ImportRunOptions> make_import_table() {
        "A time stamp smaller than the one before is a power cycle: write "
        "one recording per cycle (out.csv -> out_1.csv, out_2.csv, ...)",
        {}},
-      [](const O& o) { return o.read.split_at_reset; },
-      [](O& o, bool v) { o.read.split_at_reset = v; }));
+      [](auto& o) -> auto& { return o.read.split_at_reset; }));
   t.push_back(on_off_option<O>(
       {"hampel",
        "--hampel",
@@ -241,7 +233,6 @@ ImportPlan import_plan(const ImportRunOptions& o) {
   if (o.hampel) {
     plan.read.outliers = o.hampel_options;
   } else {
-    plan.read.outlier_columns.clear();
     if (o.hampel_options.n_sigma != defaults.n_sigma)
       throw OptionError("hampel_sigma", "has no effect without {hampel}");
     if (o.hampel_options.half_window != defaults.half_window)

@@ -41,7 +41,7 @@ OptionTable<DenoiseOptions> make_denoise_table() {
          }
          const auto v = parse_whole_or_auto_option(level, text);
          if (v && *v > static_cast<std::uint64_t>(std::numeric_limits<int>::max()))
-           throw OptionError("level", text + " is too high: the maximum is " + level.range.text());
+           throw OptionError("level", text + " is too high: it must be " + level.range.note);
          o.level = v ? std::optional<int>(static_cast<int>(*v)) : std::nullopt;
        }});
   t.push_back(choice_option<O>(

@@ -233,6 +233,9 @@ TEST(Join, ImpossibleRequestsNameTheRuleBroken) {
   JoinOptions age = same_clock;
   age.max_age_s = 10;  // a nearest-method limit on the linear method
   EXPECT_EQ(option_of(age), "max_age_s");
+  JoinOptions no_step = same_clock;
+  no_step.max_step_s = 0.0;  // a limit must be a duration > 0; unset is auto
+  EXPECT_EQ(option_of(no_step), "max_step_s");
   JoinOptions bad_method = same_clock;
   bad_method.method = JoinMethod::nearest;
   bad_method.max_step_s = 10;

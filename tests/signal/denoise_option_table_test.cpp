@@ -56,8 +56,15 @@ TEST(DenoiseOptionTable, ChoicesListTheirNamesAndRefuseOthersByKeyword) {
     }
   }
   DenoiseOptions o;
-  for (const char* bad : {"-1", "three", "1.5", "99999999999"})
+  for (const char* bad : {"-1", "0", "three", "1.5", "99999999999"})
     EXPECT_THROW(apply_option(denoise_option_table(), o, "level", bad), OptionError) << bad;
+  try {
+    apply_option(denoise_option_table(), o, "level", "99999999999");
+  } catch (const OptionError& e) {
+    EXPECT_EQ(e.message(),
+              "99999999999 is too high: it must be at most floor(log2(N / (F − 1))) "
+              "for N samples and a filter of F taps");
+  }
 }
 
 TEST(DenoiseOptionTable, DenoisingErrorsAreAnsweredByAnOption) {

@@ -7,6 +7,8 @@
 
 #include <set>
 
+#include "option_values.hpp"
+
 namespace fogdrift::sim {
 namespace {
 
@@ -20,16 +22,11 @@ std::vector<std::string> texts_of(const OptionTable<O>& table, const O& o) {
 /// A value of the option other than `current`, as a user would write it, within its bounds.
 template <class O>
 std::string another_value(const Option<O>& option, const std::string& current) {
-  const auto allowed = [&](std::initializer_list<const char*> candidates) {
-    for (const char* c : candidates)
-      if (c != current && option.spec.range.contains(std::stod(c))) return std::string(c);
-    return current;
-  };
   switch (option.spec.type) {
     case OptionType::whole:
-      return allowed({"2", "3"});
+      return test::allowed_other(option.spec, current, {"2", "3"});
     case OptionType::number:
-      return allowed({"45", "50", "5", "6"});
+      return test::allowed_other(option.spec, current, {"45", "50", "5", "6"});
     case OptionType::numbers:
       return current == "-5,35" ? "20" : "-5,35";
     case OptionType::names:

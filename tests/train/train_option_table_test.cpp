@@ -8,6 +8,7 @@
 #include <set>
 
 #include "fogdrift/regress/gp.hpp"
+#include "option_values.hpp"
 
 namespace fogdrift {
 namespace {
@@ -22,16 +23,11 @@ std::vector<std::string> texts_of(const O& o) {
 
 /// A value of the option other than `current`, as a user would write it, within its bounds.
 std::string another_value(const Option<O>& option, const std::string& current) {
-  const auto allowed = [&](std::initializer_list<const char*> candidates) {
-    for (const char* c : candidates)
-      if (c != current && option.spec.range.contains(std::stod(c))) return std::string(c);
-    return current;
-  };
   switch (option.spec.type) {
     case OptionType::whole:
-      return allowed({"7", "8", "2", "3", "100", "200"});
+      return test::allowed_other(option.spec, current, {"7", "8", "2", "3", "100", "200"});
     case OptionType::number:
-      return allowed({"0.25", "0.5"});
+      return test::allowed_other(option.spec, current, {"0.25", "0.5"});
     case OptionType::seconds_or_auto:
       return current == "30" ? "40" : "30";
     case OptionType::whole_or_auto:
