@@ -36,6 +36,7 @@
 #include "fogdrift/features/features.hpp"
 #include "fogdrift/model/dataset.hpp"
 #include "fogdrift/sim/scenarios.hpp"
+#include "fogdrift/train/svr_trainer.hpp"
 #include "fogdrift/train/train.hpp"
 #include "fogdrift/train/tune.hpp"
 #include "libsvm_data.hpp"
@@ -187,19 +188,19 @@ int main(int argc, char** argv) {
         train_s += done->second;
       } else if (data.rows <= measure_up_to) {
         const TrainResult r = train(data, dataset_options(p, target), options);
+        const tune::TuneSummary& search = r.summary.record.get<SvrTrainer::Record>()->tuning;
         train_s += r.summary.seconds;
         trained_s[key] = r.summary.seconds;
         std::fprintf(stderr, "  train: %.1f s (search %.1f s, %zu candidates, %zu fits)\n",
-                     r.summary.seconds, r.summary.tuning.seconds, r.summary.tuning.candidates,
-                     r.summary.tuning.fits);
+                     r.summary.seconds, search.seconds, search.candidates, search.fits);
         if (pi == 0) {
           std::vector<const tune::Candidate*> complete;
-          for (const auto& c : r.summary.tuning.history)
+          for (const auto& c : search.history)
             if (c.complete) complete.push_back(&c);
           sample = std::min(sample, complete.size());
           for (std::size_t k = 0; k < sample; ++k)
             sampled.push_back(complete[k * complete.size() / sample]->params);
-          base_candidates = r.summary.tuning.candidates;
+          base_candidates = search.candidates;
         }
       } else {
         measured = false;

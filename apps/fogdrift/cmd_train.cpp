@@ -16,6 +16,7 @@
 #include "fogdrift/base/thread_pool.hpp"
 #include "fogdrift/io/campaign.hpp"
 #include "fogdrift/model/model_set.hpp"
+#include "fogdrift/train/svr_trainer.hpp"
 #include "fogdrift/train/train_campaign.hpp"
 #include "fogdrift/train/train_option_table.hpp"
 #include "fogdrift/train/train_summary.hpp"
@@ -87,34 +88,37 @@ void print_summary(const TrainArgs& a, const CampaignTrainResult& trained,
     std::cout << fmt::format("  {}\n", hyper);
     std::cout << fmt::format("  {} RMSE {:.5f} (standardised drift){}\n", s.fitness,
                              s.fitness_value, p.cv.empty() ? "" : ", " + p.cv);
-    if (!s.tuning.optimizer.log.empty())
+    // A searched SVR's record (svr_trainer.hpp): its search, rows and boxes.
+    const SvrTrainer::Record* svr = s.record.get<SvrTrainer::Record>();
+    if (svr && !svr->tuning.optimizer.log.empty())
       std::cout << fmt::format(
           "  search: {}; {} distinct candidates ({} stopped early by "
           "racing), {} SVR fits\n",
-          s.tuning.optimizer.brief_report(), s.tuning.candidates, s.tuning.raced, s.tuning.fits);
-    if (s.tuning.optimizer.status == opt::Status::converged)
+          svr->tuning.optimizer.brief_report(), svr->tuning.candidates, svr->tuning.raced,
+          svr->tuning.fits);
+    if (svr && svr->tuning.optimizer.status == opt::Status::converged)
       std::cout << fmt::format(
           "  stopped learning: less than {:g} % better over its last {} iterations "
           "(--stall-iterations, --stall-tolerance)\n",
           100 * a.options.train.tune.optimizer.run.stall_tolerance,
           a.options.train.tune.optimizer.run.stall_iterations);
-    if (s.tuning.stride > 1) {
+    if (svr && svr->tuning.stride > 1) {
       std::string rescored;
-      for (const tune::Candidate& c : s.tuning.rescored)
+      for (const tune::Candidate& c : svr->tuning.rescored)
         rescored +=
             fmt::format("{}C = {:.4g}, sigma = {:.3g}: {:.5f}", rescored.empty() ? "" : "; ",
                         c.params.c, c.params.kernel.sigma(), c.loss);
       std::cout << fmt::format(
           "  searched on one training row in {} (C x {}), the best {} rescored on all rows: {} "
           "(--search-rows)\n",
-          s.tuning.stride, s.tuning.stride, s.tuning.rescored.size(), rescored);
+          svr->tuning.stride, svr->tuning.stride, svr->tuning.rescored.size(), rescored);
     }
-    if (s.boxes.size() > 1) {
-      const auto& b = s.boxes.back();
+    if (svr && svr->boxes.size() > 1) {
+      const auto& b = svr->boxes.back();
       std::cout << fmt::format(
           "  auto-box: {} searches, last box C [{:.6g}, {:.6g}], sigma "
           "[{:.6g}, {:.6g}]\n",
-          s.boxes.size(), b.c_min, b.c_max, b.sigma_min, b.sigma_max);
+          svr->boxes.size(), b.c_min, b.c_max, b.sigma_min, b.sigma_max);
     }
     if (s.held_out) {
       const HeldOutReport& h = *s.held_out;

@@ -24,6 +24,7 @@
 #include "fogdrift/sim/instrument.hpp"
 #include "fogdrift/sim/scenario_option_table.hpp"
 #include "fogdrift/sim/scenarios.hpp"
+#include "fogdrift/train/svr_trainer.hpp"
 #include "fogdrift/train/train_campaign.hpp"
 #include "fogdrift/train/train_option_table.hpp"
 #include "fogdrift/train/train_summary.hpp"

@@ -18,6 +18,7 @@
 #include "fogdrift/io/campaign.hpp"
 #include "fogdrift/model/model_set.hpp"
 #include "fogdrift/signal/differentiate.hpp"
+#include "fogdrift/train/svr_trainer.hpp"
 #include "fogdrift/train/train_campaign.hpp"
 #include "fogdrift/train/train_option_table.hpp"
 #include "fogdrift/train/train_summary.hpp"

@@ -304,8 +304,9 @@ std::vector<FitnessRow> fitness_study(const PaperOptions& o, const SeedRun& run,
     } else {
       const TrainResult t =
           train(f.train, f.dataset, train_options(o, Method::ssa_svr, run.seed, fitness));
-      row.c = t.summary.tuning.best.c;
-      row.sigma = t.summary.tuning.best.kernel.sigma();
+      const tune::TuneSummary& search = t.summary.record.get<SvrTrainer::Record>()->tuning;
+      row.c = search.best.c;
+      row.sigma = search.best.kernel.sigma();
       row.fitness_value = t.summary.fitness_value;
       const eval::CompensationMetrics m = table2_of(t.model, f.test);
       row.std_dph = m.std_after_dph;

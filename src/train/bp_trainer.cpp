@@ -60,11 +60,18 @@ Trained BpTrainer::train(const TrainContext& c) {
   s.hyperparameters = {{"hidden", static_cast<double>(mo.hidden)},
                        {"learning_rate", mo.learning_rate},
                        {"epochs", static_cast<double>(fit.summary.best_epoch)}};
-  s.record["bp"] = {{"epochs", fit.summary.epochs},
-                    {"best_epoch", fit.summary.best_epoch},
-                    {"early_stopped", fit.summary.status == MlpStatus::early_stopped},
-                    {"train_rmse", fit.summary.train_rmse}};
+  s.record = TrainerRecord(Record{fit.summary});
   return out;
+}
+
+nlohmann::ordered_json to_json(const BpTrainer::Record& record) {
+  const MlpSummary& f = record.fit;
+  nlohmann::ordered_json j;
+  j["bp"] = {{"epochs", f.epochs},
+             {"best_epoch", f.best_epoch},
+             {"early_stopped", f.status == MlpStatus::early_stopped},
+             {"train_rmse", f.train_rmse}};
+  return j;
 }
 
 }  // namespace fogdrift

@@ -116,12 +116,18 @@ Trained GpTrainer::train(const TrainContext& c) {
   } else {
     s.hyperparameters.emplace_back("length_scale", hyper.length_scale[0]);
   }
-  const GpSummary& g = fit.summary;
-  s.record["gp"] = {{"points", g.points},         {"log_likelihood", g.log_likelihood},
-                    {"iterations", g.iterations}, {"evaluations", g.evaluations},
-                    {"fold_fits", g.fold_fits},   {"raced", g.raced},
-                    {"converged", g.converged}};
+  s.record = TrainerRecord(Record{fit.summary});
   return out;
+}
+
+nlohmann::ordered_json to_json(const GpTrainer::Record& record) {
+  const GpSummary& g = record.fit;
+  nlohmann::ordered_json j;
+  j["gp"] = {{"points", g.points},         {"log_likelihood", g.log_likelihood},
+             {"iterations", g.iterations}, {"evaluations", g.evaluations},
+             {"fold_fits", g.fold_fits},   {"raced", g.raced},
+             {"converged", g.converged}};
+  return j;
 }
 
 }  // namespace fogdrift

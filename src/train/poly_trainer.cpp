@@ -68,8 +68,14 @@ Trained PolyTrainer::train(const TrainContext& c) {
     return (*best_predictions)[fold];
   };
   s.hyperparameters = {{"degree", static_cast<double>(best)}};
-  s.record["poly_cv_rmse_by_degree"] = cv_rmse;
+  s.record = TrainerRecord(Record{cv_rmse});
   return out;
+}
+
+nlohmann::ordered_json to_json(const PolyTrainer::Record& record) {
+  nlohmann::ordered_json j;
+  j["poly_cv_rmse_by_degree"] = record.cv_rmse_by_degree;
+  return j;
 }
 
 }  // namespace fogdrift

@@ -110,33 +110,4 @@ TrainResult train(const Dataset& data, const DatasetOptions& dataset, const Trai
   return out;
 }
 
-std::vector<std::string> box_edge_warnings(
-    const TrainSummary& s, bool auto_box,
-    const std::function<std::string(const std::string&)>& name_of) {
-  std::vector<std::string> out;
-  for (const auto& e : s.box_edges) {
-    const std::string what = e.parameter == "C" ? name_of(e.upper ? "c_max" : "c_min")
-                             : e.parameter == "sigma"
-                                 ? name_of(e.upper ? "sigma_max" : "sigma_min")
-                                 : fmt::format("the ε bounds of {}", name_of("search_epsilon"));
-    // With auto-box the box was widened already: say how often, and only name what is left.
-    const std::size_t widenings = s.boxes.empty() ? 0 : s.boxes.size() - 1;
-    const std::string advice =
-        !auto_box ? fmt::format("a wider box may do better: {} or {}", what, name_of("auto_box"))
-        : !s.boxes.empty() && tune::widened(s.boxes.back(), {e}) == s.boxes.back()
-            ? fmt::format(
-                  "{} widened it {} times, to fogdrift's limit for {}: the data do not "
-                  "bound it",
-                  name_of("auto_box"), widenings, e.parameter)
-            : fmt::format("{} widened it {} times, its most; a wider box may still do better: {}",
-                          name_of("auto_box"), widenings, what);
-    out.push_back(fmt::format(
-        "{} = {:.6g} is at the {} edge of its box [{:.6g}, {:.6g}]; the fitness there is {:.1f} % "
-        "better than further inside; {}",
-        e.parameter, e.value, e.upper ? "upper" : "lower", e.low, e.high, 100.0 * e.improvement,
-        advice));
-  }
-  return out;
-}
-
 }  // namespace fogdrift

@@ -17,24 +17,18 @@ nlohmann::ordered_json summary_json(const CampaignTrainResult& trained, const Op
   j["training_rows"] = s.rows;
   j["recordings"] = data.groups.size();
   j["features"] = data.feature_names;
-  for (const auto& [key, value] : s.record.items()) j[key] = value;  // the trainer's own
+  // The trainer's own keys (its record, trainer_record.hpp); what a searched SVR records every
+  // summary has, empty for the others.
+  const nlohmann::ordered_json record = s.record.json();
+  for (const auto& [key, value] : record.items()) j[key] = value;
   if (!j.contains("search")) j["search"] = nullptr;
+  if (!j.contains("box_edges")) j["box_edges"] = nlohmann::ordered_json::array();
+  if (!j.contains("boxes_searched")) j["boxes_searched"] = nlohmann::ordered_json::array();
+  if (!j.contains("fits")) j["fits"] = 0;
   nlohmann::ordered_json notes = nlohmann::ordered_json::array();
   for (const CampaignNote& n : trained.notes)
     notes.push_back(n.text + " (" + words.field(n.field) + ")");
   j["notes"] = notes;
-  nlohmann::ordered_json edges = nlohmann::ordered_json::array();
-  for (const auto& e : s.box_edges)
-    edges.push_back({{"parameter", e.parameter},
-                     {"edge", e.upper ? "upper" : "lower"},
-                     {"value", e.value},
-                     {"box", {e.low, e.high}},
-                     {"improvement", e.improvement}});
-  j["box_edges"] = edges;
-  nlohmann::ordered_json boxes = nlohmann::ordered_json::array();
-  for (const auto& b : s.boxes)
-    boxes.push_back({{"c", {b.c_min, b.c_max}}, {"sigma", {b.sigma_min, b.sigma_max}}});
-  j["boxes_searched"] = boxes;
   nlohmann::ordered_json advice = nlohmann::ordered_json::array();
   if (s.held_out) {
     const HeldOutReport& h = *s.held_out;
@@ -56,7 +50,6 @@ nlohmann::ordered_json summary_json(const CampaignTrainResult& trained, const Op
   j["block_s"] = dataset.preprocessing.block.block_s;
   j["rate_window_s"] = dataset.preprocessing.rates.window_s;
   j["rate_degree"] = dataset.preprocessing.rates.poly_order;
-  j["fits"] = s.tuning.fits;
   j["seconds"] = s.seconds;
   return j;
 }

@@ -44,8 +44,10 @@ TEST(BpTrainer, StopsEarlyOnOneFoldAndKeepsItsScalers) {
   EXPECT_EQ(t.x_scaler->mean, split.x_scaler.mean);
   EXPECT_NE(t.x_scaler->mean, full.x_scaler.mean);
   EXPECT_EQ(t.summary.fitness, "validation");
-  EXPECT_LE(t.summary.record["bp"]["best_epoch"].get<std::size_t>(),
-            t.summary.record["bp"]["epochs"].get<std::size_t>());
+  const BpTrainer::Record* r = t.summary.record.get<BpTrainer::Record>();
+  ASSERT_NE(r, nullptr);
+  EXPECT_LE(r->fit.best_epoch, r->fit.epochs);
+  EXPECT_EQ(t.summary.record.json()["bp"]["epochs"], r->fit.epochs);
   EXPECT_EQ(t.held_predict(split, 0).size(), f.test_rows.size());
   o.trainers.get<MlpOptions>().hidden = 0;
   EXPECT_THROW(BpTrainer::validate(o), OptionError);

@@ -38,7 +38,9 @@ TEST(GpTrainer, ASearchOtherThanSsaIsSaid) {
   const Trained t = GpTrainer::train({d, full, o});
   EXPECT_EQ(t.search, "pso");
   EXPECT_EQ(t.population, 5u);
-  EXPECT_EQ(t.summary.record["gp"]["points"], 60);
+  ASSERT_NE(t.summary.record.get<GpTrainer::Record>(), nullptr);
+  EXPECT_EQ(t.summary.record.get<GpTrainer::Record>()->fit.points, 60u);
+  EXPECT_EQ(t.summary.record.json()["gp"]["points"], 60);
   EXPECT_EQ(t.held_folds.size(), 3u);
   // The held-out report takes the folds' predictions the fitness was computed from.
   double sse = 0;

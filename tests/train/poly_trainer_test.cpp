@@ -27,7 +27,9 @@ TEST(PolyTrainer, PicksTheDegreeTheFoldsScoreBest) {
   o.trainers.get<PolyTrainer::Options>().max_degree = 3;
   o.tune.cv = {tune::CvScheme::repetition};
   const Trained t = PolyTrainer::train({d, full, o});
-  const auto rmse = t.summary.record["poly_cv_rmse_by_degree"].get<std::vector<double>>();
+  ASSERT_NE(t.summary.record.get<PolyTrainer::Record>(), nullptr);
+  const std::vector<double> rmse = t.summary.record.get<PolyTrainer::Record>()->cv_rmse_by_degree;
+  EXPECT_EQ(t.summary.record.json()["poly_cv_rmse_by_degree"].get<std::vector<double>>(), rmse);
   ASSERT_EQ(rmse.size(), 3u);
   const auto best = std::min_element(rmse.begin(), rmse.end());
   EXPECT_EQ(t.summary.hyperparameters[0].second, static_cast<double>(best - rmse.begin() + 1));

@@ -36,7 +36,8 @@ TEST(SvrTrainer, WithoutASearchItFitsLibsvmsDefaults) {
   EXPECT_DOUBLE_EQ(model.kernel.gamma, 1.0 / static_cast<double>(d.cols()));
   EXPECT_EQ(t.summary.hyperparameters[0], (std::pair<std::string, double>{"C", 1.0}));
   EXPECT_TRUE(t.summary.record.empty());  // nothing searched
-  EXPECT_TRUE(t.summary.boxes.empty());
+  EXPECT_EQ(t.summary.record.get<SvrTrainer::Record>(), nullptr);
+  EXPECT_EQ(t.summary.record.json(), nlohmann::ordered_json::object());
   EXPECT_FALSE(t.x_scaler.has_value());  // every row's scalers
   EXPECT_EQ(t.cv, "leave one repetition out (3 folds)");
   EXPECT_EQ(t.held_folds.size(), 3u);
@@ -56,13 +57,20 @@ TEST(SvrTrainer, ASearchRecordsItsRunAndItsBox) {
   o.tune.optimizer.run.iterations = 3;
   o.tune.cv = {tune::CvScheme::repetition};
   const Trained t = SvrTrainer::train({d, full, o});
-  ASSERT_TRUE(t.summary.record.contains("search"));
-  EXPECT_EQ(t.summary.record["search"]["optimizer"], "pso");
-  EXPECT_EQ(t.summary.record["search"]["population"], 5);
-  EXPECT_EQ(t.summary.boxes.size(), 1u);
+  const SvrTrainer::Record* r = t.summary.record.get<SvrTrainer::Record>();
+  ASSERT_NE(r, nullptr);
+  EXPECT_EQ(r->population, 5u);
+  EXPECT_EQ(r->boxes.size(), 1u);
+  EXPECT_EQ(r->tuning.optimizer.algorithm, opt::Algorithm::pso);
+  // Serialised by itself, under train --json's keys.
+  const nlohmann::ordered_json j = t.summary.record.json();
+  EXPECT_EQ(j["search"]["optimizer"], "pso");
+  EXPECT_EQ(j["search"]["population"], 5);
+  EXPECT_EQ(j["boxes_searched"].size(), 1u);
+  EXPECT_EQ(j["fits"], r->tuning.fits);
   EXPECT_EQ(t.population, 5u);
   EXPECT_EQ(t.iterations, 3u);
-  EXPECT_DOUBLE_EQ(t.summary.fitness_value, t.summary.tuning.best_fitness);
+  EXPECT_DOUBLE_EQ(t.summary.fitness_value, r->tuning.best_fitness);
   EXPECT_EQ(t.summary.fitness, "cv");
   o.tune.optimizer.run.population = 0;
   EXPECT_THROW(SvrTrainer::validate(o), OptionError);

@@ -16,6 +16,10 @@ namespace fogdrift {
 struct BpTrainer {
   using Regressor = Mlp;       ///< what it fits
   using Options = MlpOptions;  ///< its seed is set from the search's (tune.optimizer.run.seed)
+  /// Its part of the summary (trainer_record.hpp): the network's fit.
+  struct Record {
+    MlpSummary fit;
+  };
   /// {hidden}.
   static OptionTable<Options> option_table();
   static constexpr std::string_view kName = "bp";
@@ -29,5 +33,8 @@ struct BpTrainer {
   static void validate(const TrainOptions& options);  ///< the network's (validate(MlpOptions))
   static Trained train(const TrainContext& context);
 };
+
+/// {"bp": {epochs, best_epoch, early_stopped, train_rmse}}.
+nlohmann::ordered_json to_json(const BpTrainer::Record& record);
 
 }  // namespace fogdrift

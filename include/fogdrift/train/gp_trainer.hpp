@@ -15,6 +15,10 @@ namespace fogdrift {
 struct GpTrainer {
   using Regressor = Gp;  ///< what it fits
   using Options = GpOptions;
+  /// Its part of the summary (trainer_record.hpp): the fit's search.
+  struct Record {
+    GpSummary fit;
+  };
   /// {gp_points}, {gp_fit}, {gp_kernel}.
   static OptionTable<Options> option_table();
   static constexpr std::string_view kName = "gp";
@@ -29,5 +33,8 @@ struct GpTrainer {
   static void validate(const TrainOptions& options);
   static Trained train(const TrainContext& context);
 };
+
+/// {"gp": {points, log_likelihood, iterations, evaluations, fold_fits, raced, converged}}.
+nlohmann::ordered_json to_json(const GpTrainer::Record& record);
 
 }  // namespace fogdrift

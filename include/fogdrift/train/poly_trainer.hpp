@@ -16,6 +16,10 @@ struct PolyTrainer {
   struct Options {
     std::size_t max_degree = 3;  ///< highest degree tried, 1 … 6
   };
+  /// Its part of the summary (trainer_record.hpp): the folds' RMSE of each degree tried.
+  struct Record {
+    std::vector<double> cv_rmse_by_degree;  ///< degree 1 first
+  };
   /// {max_degree}.
   static OptionTable<Options> option_table();
   static constexpr std::string_view kName = "poly";
@@ -27,5 +31,8 @@ struct PolyTrainer {
   static void validate(const TrainOptions& options);  ///< the degree, 1 … 6
   static Trained train(const TrainContext& context);
 };
+
+/// {"poly_cv_rmse_by_degree": [...]}.
+nlohmann::ordered_json to_json(const PolyTrainer::Record& record);
 
 }  // namespace fogdrift

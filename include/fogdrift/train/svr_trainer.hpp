@@ -5,7 +5,10 @@
 #pragma once
 
 #include <array>
+#include <functional>
 #include <optional>
+#include <string>
+#include <vector>
 
 #include "fogdrift/base/option_table.hpp"
 #include "fogdrift/svr/svr.hpp"
@@ -20,6 +23,15 @@ struct SvrTrainer {
     /// Without a search, fit with these instead of LIBSVM's defaults (a study refitting a tuned
     /// SVR on other rows); the tolerance and cache are still tune's.
     std::optional<svr::Params> params;
+  };
+  /// Its part of the summary (trainer_record.hpp), for a searched SVR; none without a search.
+  struct Record {
+    tune::TuneSummary tuning;  ///< the last search (the widest box, with auto-box)
+    std::size_t population = 0;
+    /// The boxes searched, in order (more than one with auto-box), and the edges the last
+    /// search's best lies on.
+    std::vector<tune::SearchSpace> boxes;
+    std::vector<tune::BoxEdge> box_edges;
   };
   /// None: a study's parameters are set in code.
   static OptionTable<Options> option_table() { return {}; }
@@ -38,5 +50,18 @@ struct SvrTrainer {
   static void validate(const TrainOptions& options);
   static Trained train(const TrainContext& context);
 };
+
+/// {"search": {optimizer, population, iterations, status, …}, "box_edges": […],
+/// "boxes_searched": […], "fits": N}.
+nlohmann::ordered_json to_json(const SvrTrainer::Record& record);
+
+/// One warning for each best value of a searched SVR on the edge of its box (its record's
+/// box_edges; none for another method): the box, not the data, may have stopped the search.
+/// The advice names what the user sets, in their own words: `name_of` turns a field (c_min,
+/// c_max, sigma_min, sigma_max, search_epsilon, auto_box) into a flag (--c-max) or a keyword
+/// (c_max); `auto_box` says whether the box was widened already.
+std::vector<std::string> box_edge_warnings(
+    const TrainSummary& summary, bool auto_box,
+    const std::function<std::string(const std::string&)>& name_of);
 
 }  // namespace fogdrift

@@ -14,6 +14,7 @@
 #include "fogdrift/train/held_out.hpp"
 #include "fogdrift/train/method.hpp"
 #include "fogdrift/train/trainer_options.hpp"
+#include "fogdrift/train/trainer_record.hpp"
 #include "fogdrift/train/tune.hpp"
 
 namespace fogdrift {
@@ -63,15 +64,9 @@ struct TrainSummary {
   std::string fitness;              ///< "cv", "train" or "validation"
   double fitness_value = 0;         ///< RMSE on the standardised target
   std::vector<std::pair<std::string, double>> hyperparameters;
-  tune::TuneSummary tuning;  ///< SVR methods with a search (the last, with auto-box)
-  /// Tuned SVRs: the boxes searched, in order (more than one with auto-box), and the edges the
-  /// last search's best lies on.
-  std::vector<tune::SearchSpace> boxes;
-  std::vector<tune::BoxEdge> box_edges;
-  /// The trainer's own record, under `fogdrift train --json`'s keys: "search" for a searched
-  /// SVR, "bp" (epochs, best_epoch, early_stopped, train_rmse), "poly_cv_rmse_by_degree",
-  /// "gp" (points, log_likelihood, iterations, evaluations, fold_fits, raced, converged).
-  nlohmann::ordered_json record = nlohmann::ordered_json::object();
+  /// The trainer's own record (trainer_record.hpp), of its own type: SvrSearchRecord,
+  /// BpRecord, PolyRecord, GpRecord, each declared in its trainer's header.
+  TrainerRecord record;
   /// How sure train is (held_out.hpp): the model's held-out RMSE beside the baselines' on the
   /// same folds, and the share it is expected to remove. SVRs searched on the training loss are
   /// scored on the grouped folds for it (one more fit per fold); absent, with the reason in
@@ -101,13 +96,5 @@ void validate(const TrainOptions& options);
 
 /// Trains on every row of `data`, built with `dataset` (recorded in the model).
 TrainResult train(const Dataset& data, const DatasetOptions& dataset, const TrainOptions& options);
-
-/// One warning for each best value on the edge of its box (summary.box_edges): the box, not the
-/// data, may have stopped the search. The advice names what the user sets, in their own words:
-/// `name_of` turns a field (c_min, c_max, sigma_min, sigma_max, search_epsilon, auto_box) into a
-/// flag (--c-max) or a keyword (c_max); `auto_box` says whether the box was widened already.
-std::vector<std::string> box_edge_warnings(
-    const TrainSummary& summary, bool auto_box,
-    const std::function<std::string(const std::string&)>& name_of);
 
 }  // namespace fogdrift

@@ -20,10 +20,11 @@ struct OptionWords {
 };
 
 /// The summary of one trained model: method, fitness, fitness_rmse, cv, hyperparameters,
-/// training_rows, recordings, features, the trainer's own record ("search", …; "search" null for
-/// a method without one), notes ("TEXT (WORD)"), box_edges, boxes_searched, held_out (its
-/// baselines and advice, or {"missing": why}), warnings (the data's, then the held-out advice),
-/// block_s, rate_window_s, rate_degree, fits, seconds.
+/// training_rows, recordings, features, the trainer's own record (TrainerRecord::json: "bp",
+/// "gp", "poly_cv_rmse_by_degree", or a searched SVR's "search", box_edges, boxes_searched and
+/// fits, which every summary has: null, [] and 0 for the others), notes ("TEXT (WORD)"),
+/// held_out (its baselines and advice, or {"missing": why}), warnings (the data's, then the
+/// held-out advice), block_s, rate_window_s, rate_degree, seconds.
 nlohmann::ordered_json summary_json(const CampaignTrainResult& trained, const OptionWords& words);
 
 }  // namespace fogdrift
