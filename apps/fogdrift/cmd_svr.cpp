@@ -2,11 +2,14 @@
 // that LIBSVM users can swap the command and keep their files and scripts.
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <iostream>
 #include <memory>
 #include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
 
 #include "commands.hpp"
 #include "fogdrift/base/atomic_file.hpp"
@@ -22,21 +25,44 @@ namespace fs = std::filesystem;
 namespace fogdrift::app {
 namespace {
 
+/// svm-train's arguments as given: its flags, then DATA and MODEL, read by the library's parser
+/// of svm-train's options (libsvm_options.hpp), which fogdrift.svmtrain's option string shares.
 struct SvrTrainArgs {
-  int svm_type = 3;
-  int kernel_type = 2;
-  double gamma = 0;  // 0: 1/number of features, as svm-train
-  double sigma = 0;
-  double c = 1;
-  double epsilon = 0.1;
-  double tolerance = 1e-3;
-  double cache_mb = 100;
-  int shrinking = 1;
-  std::string solver = "pairs";
-  bool quiet = false;
   bool json = false;
   std::string data, model;
+  std::vector<std::string> flags;  ///< the flags and their values, --solver pairs first
 };
+
+/// Splits `args` into svm-train's flags with their values (-q and --json alone; --json is
+/// fogdrift's) and the files after them, as svm-train's usage has them: [options] DATA [MODEL].
+SvrTrainArgs split_train_args(std::vector<std::string> args) {
+  SvrTrainArgs a;
+  // fogdrift's solver unless --solver asks for LIBSVM's: a later flag wins.
+  a.flags = {"--solver", "pairs"};
+  std::vector<std::string> files;
+  for (std::size_t i = 0; i < args.size(); ++i) {
+    const std::string& t = args[i];
+    if (t == "--json") {
+      a.json = true;
+    } else if (t.size() > 1 && t[0] == '-' && files.empty()) {
+      a.flags.push_back(t);
+      if (t != "-q") {
+        if (i + 1 >= args.size()) throw OptionError(t, "needs a value after it");
+        a.flags.push_back(args[++i]);
+      }
+    } else {
+      files.push_back(t);
+    }
+  }
+  if (files.empty() || files.size() > 2)
+    throw OptionError("DATA",
+                      fmt::format("svr train takes [options] DATA [MODEL], its options first "
+                                  "(got {} file names)",
+                                  files.size()));
+  a.data = files[0];
+  if (files.size() == 2) a.model = files[1];
+  return a;
+}
 
 struct PredictArgs {
   bool quiet = false;
@@ -50,34 +76,34 @@ bool ends_with(const std::string& s, const std::string& suffix) {
 }
 
 void run_train(const SvrTrainArgs& a) {
-  svr::check_svm_type(a.svm_type);
-  svr::check_kernel_type(a.kernel_type);
-  if (a.shrinking != 0 && a.shrinking != 1) throw OptionError("-h", "must be 0 or 1");
-  if (a.solver != "libsvm" && a.solver != "pairs")
-    throw OptionError("--solver", fmt::format("must be libsvm or pairs (got '{}')", a.solver));
-  if (a.gamma != 0 && a.sigma != 0) throw OptionError("--sigma", "give either -g or --sigma");
+  // The options checked before the data are read, then read with the data's feature count
+  // (svm-train's default γ is its reciprocal).
+  svr::parse_libsvm_train_options(a.flags, 1);
   svr::Data data = svr::read_libsvm_data(a.data);
-  svr::Params p;
+  const svr::LibsvmTrainOptions o =
+      svr::parse_libsvm_train_options(a.flags, std::max<std::size_t>(1, data.cols));
+  const svr::Params& p = o.params;
+  if (o.folds > 0) {
+    // svm-train -v n: the cross-validated error, and no model (libsvm_options.hpp).
+    const svr::CrossValidation cv = svr::cross_validate(data, p, o.folds);
+    if (a.json) {
+      nlohmann::ordered_json j;
+      j["folds"] = o.folds;
+      j["mean_squared_error"] = cv.mean_squared_error;
+      j["squared_correlation"] = std::isfinite(cv.squared_correlation)
+                                     ? nlohmann::ordered_json(cv.squared_correlation)
+                                     : nlohmann::ordered_json(nullptr);
+      std::cout << j.dump(2) << "\n";
+    } else if (!o.quiet) {
+      std::cout << fmt::format("Cross Validation Mean squared error = {:g}\n",
+                               cv.mean_squared_error)
+                << fmt::format("Cross Validation Squared correlation coefficient = {:g}\n",
+                               cv.squared_correlation);
+    }
+    return;
+  }
   check_output_not_input(
       a.model.empty() ? fs::path(a.data).filename().string() + ".model" : a.model, "MODEL");
-  if (a.kernel_type == 0) {
-    p.kernel = svr::Kernel::linear();
-  } else if (a.sigma != 0) {
-    if (!(a.sigma > 0) || !std::isfinite(a.sigma))
-      throw OptionError("--sigma", fmt::format("must be a finite number > 0 (got {})", a.sigma));
-    p.kernel = svr::Kernel::rbf_sigma(a.sigma);
-  } else {
-    p.kernel = svr::Kernel::rbf_gamma(
-        a.gamma != 0 ? a.gamma : 1.0 / static_cast<double>(std::max<std::size_t>(1, data.cols)));
-  }
-  p.c = a.c;
-  p.epsilon = a.epsilon;
-  p.tolerance = a.tolerance;
-  p.cache_mb = a.cache_mb;
-  p.shrinking = a.shrinking == 1;
-  p.libsvm_path = a.solver == "libsvm";
-  svr::validate(p, svr::ParamNames{"-c", a.sigma != 0 ? "--sigma" : "-g", "-p", "-e", "-m",
-                                   "max_iterations"});
   const std::string model_path =
       a.model.empty() ? fs::path(a.data).filename().string() + ".model" : a.model;
   const svr::TrainingSet set(std::move(data));
@@ -109,7 +135,7 @@ void run_train(const SvrTrainArgs& a) {
     std::cout << j.dump(2) << "\n";
     return;
   }
-  if (!a.quiet) {
+  if (!o.quiet) {
     // svm-train's closing lines, same formats.
     std::cout << fmt::format("optimization finished, #iter = {}\n", s.solver.iterations)
               << fmt::format("nu = {:f}\n", s.nu)
@@ -163,7 +189,6 @@ void add_svr(CLI::App& app) {
       "with the same models (to rounding) in a fraction of the time.");
   svr->require_subcommand(1);
 
-  auto ta = std::make_shared<SvrTrainArgs>();
   auto* train = svr->add_subcommand(
       "train",
       "Fit ε-SVR to LIBSVM-format data (svm-train's flags and defaults; -s 3 and -t 2 or 0).\n"
@@ -171,29 +196,36 @@ void add_svr(CLI::App& app) {
       "when MODEL ends in .json; prints svm-train's summary lines.\n\n"
       "Example:\n  fogdrift svr train -c 10 -g 0.5 -p 0.1 data.txt data.model");
   train->set_help_flag("--help", "Print this help message and exit (-h is svm-train's shrinking)");
-  train->add_option("-s", ta->svm_type, "SVM type; only 3 (epsilon-SVR)")->capture_default_str();
-  train->add_option("-t", ta->kernel_type, "kernel: 2 RBF exp(-gamma|u-v|^2), 0 linear u'v")
-      ->capture_default_str();
-  train->add_option("-g", ta->gamma, "RBF gamma = 1/(2 sigma^2) (default 1/number of features)");
-  train->add_option("--sigma", ta->sigma, "RBF width sigma, the paper's parameter (instead of -g)");
-  train->add_option("-c", ta->c, "cost C > 0")->capture_default_str();
-  train->add_option("-p", ta->epsilon, "epsilon >= 0 of the insensitive tube, target units")
-      ->capture_default_str();
-  train->add_option("-e", ta->tolerance, "stopping tolerance > 0")->capture_default_str();
-  train->add_option("-m", ta->cache_mb, "kernel cache, MB")->capture_default_str();
-  train->add_option("-h", ta->shrinking, "shrinking heuristics, 0 or 1")->capture_default_str();
-  train
-      ->add_option(
-          "--solver", ta->solver,
-          "pairs: fogdrift's solver (its training uses it too), svm-train's optimum to the\n"
-          "tolerance -e by another path, about 3x faster than libsvm; libsvm: LIBSVM's working\n"
-          "sets one for one, so the model, iterations and nSV are svm-train's (for audits)")
-      ->capture_default_str();
-  train->add_flag("-q", ta->quiet, "print nothing");
-  train->add_flag("--json", ta->json, "print the fit summary as JSON");
-  train->add_option("DATA", ta->data, "training data, LIBSVM format")->required();
-  train->add_option("MODEL", ta->model, "model file (default: DATA's file name + .model)");
-  train->callback([ta] { run_train(*ta); });
+  // Every argument after the help flag is svm-train's, read by the library's parser of its
+  // options (libsvm_options.hpp), so that `svr train` and fogdrift.svmtrain take one grammar.
+  train->prefix_command();
+  train->footer(
+      "Options (svm-train's, and its defaults but the solver):\n"
+      "  -s 3        SVM type: epsilon-SVR only\n"
+      "  -t 2|0      kernel: 2 RBF exp(-gamma|u-v|^2), 0 linear u'v\n"
+      "  -g GAMMA    RBF gamma = 1/(2 sigma^2) (default 1/number of features)\n"
+      "  --sigma S   RBF width sigma, the paper's parameter (instead of -g)\n"
+      "  -c C        cost C > 0 (default 1)\n"
+      "  -p EPSILON  epsilon >= 0 of the insensitive tube, target units (default 0.1)\n"
+      "  -e TOL      stopping tolerance > 0 (default 0.001)\n"
+      "  -m MB       kernel cache, MB (default 100)\n"
+      "  -h 0|1      shrinking heuristics (default 1)\n"
+      "  -d, -r, -n  kept as svm-train keeps them; -b 0 (probability estimates are refused)\n"
+      "  -q          print nothing; --json the fit summary as JSON\n"
+      "  --solver pairs|libsvm  pairs (default): fogdrift's solver (its training uses it too),\n"
+      "              svm-train's optimum to the tolerance -e by another path, about 3x faster;\n"
+      "              libsvm: LIBSVM's working sets one for one, so the model, iterations and\n"
+      "              nSV are svm-train's (for audits)\n"
+      "  DATA        training data, LIBSVM format; MODEL the model file (default: DATA's file\n"
+      "              name + .model; fogdrift's JSON when it ends in .json)");
+  train->callback([train] {
+    const std::vector<std::string> args = train->remaining();
+    if (std::find(args.begin(), args.end(), "--help") != args.end()) {
+      std::cout << train->help();
+      return;
+    }
+    run_train(split_train_args(args));
+  });
 
   auto pa = std::make_shared<PredictArgs>();
   auto* predict = svr->add_subcommand(

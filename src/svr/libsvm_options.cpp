@@ -55,8 +55,7 @@ void check_probability(const std::string& value) {
 
 /// Each flag with its value; -q alone. The flag's letter, and the value (empty for -q).
 template <class F>
-void for_each_flag(std::string_view text, const char* usage, F&& f) {
-  const std::vector<std::string> t = tokens_of(text);
+void for_each_flag(const std::vector<std::string>& t, const char* usage, F&& f) {
   for (std::size_t i = 0; i < t.size(); ++i) {
     const std::string& flag = t[i];
     if (flag.size() < 2 || flag[0] != '-')
@@ -96,12 +95,17 @@ void check_kernel_type(int kernel_type) {
 }
 
 LibsvmTrainOptions parse_libsvm_train_options(std::string_view text, std::size_t features) {
+  return parse_libsvm_train_options(tokens_of(text), features);
+}
+
+LibsvmTrainOptions parse_libsvm_train_options(const std::vector<std::string>& tokens,
+                                              std::size_t features) {
   LibsvmTrainOptions o;
   o.params.libsvm_path = true;
   o.params.cache_mb = 100;  // svm-train's default
   int svm_type = 3, kernel_type = 2;
-  double gamma = 0;
-  for_each_flag(text, "svm-train's options", [&](const std::string& flag, const std::string& v) {
+  double gamma = 0, sigma = 0;
+  for_each_flag(tokens, "svm-train's options", [&](const std::string& flag, const std::string& v) {
     if (flag == "--solver") {
       if (v != "libsvm" && v != "pairs")
         throw OptionError(flag, fmt::format("must be libsvm or pairs (got '{}')", v));
@@ -115,6 +119,11 @@ LibsvmTrainOptions parse_libsvm_train_options(std::string_view text, std::size_t
     } else if (flag == "-g") {
       gamma = number_of(flag, v);
       o.gamma_given = true;
+    } else if (flag == "--sigma") {
+      sigma = number_of(flag, v);
+      if (!(sigma > 0))
+        throw OptionError(flag, fmt::format("must be a finite number > 0 (got {})", v));
+      o.sigma_given = true;
     } else if (flag == "-r") {
       o.coef0 = number_of(flag, v);
     } else if (flag == "-c") {
@@ -148,27 +157,39 @@ LibsvmTrainOptions parse_libsvm_train_options(std::string_view text, std::size_t
     } else {
       throw OptionError(flag,
                         "is not one of svm-train's options (-s -t -d -g -r -c -n -p -m -e "
-                        "-h -b -v -q, and fogdrift's --solver libsvm|pairs)");
+                        "-h -b -v -q, and fogdrift's --solver libsvm|pairs and --sigma)");
     }
   });
   check_svm_type(svm_type);
   check_kernel_type(kernel_type);
-  o.gamma = o.gamma_given ? gamma : 1.0 / static_cast<double>(std::max<std::size_t>(1, features));
-  o.params.kernel = kernel_type == 0 ? Kernel::linear() : Kernel::rbf_gamma(o.gamma);
-  validate(o.params, ParamNames{"-c", "-g", "-p", "-e", "-m", "max_iterations"});
+  if (o.sigma_given && o.gamma_given) throw OptionError("--sigma", "give either -g or --sigma");
+  if (o.sigma_given) {
+    o.gamma_given = true;
+    o.gamma = Kernel::rbf_sigma(sigma).gamma;
+  } else if (!o.gamma_given) {
+    o.gamma = 1.0 / static_cast<double>(std::max<std::size_t>(1, features));
+  } else {
+    o.gamma = gamma;
+  }
+  o.params.kernel = kernel_type == 0 ? Kernel::linear()
+                    : o.sigma_given  ? Kernel::rbf_sigma(sigma)
+                                     : Kernel::rbf_gamma(o.gamma);
+  validate(o.params,
+           ParamNames{"-c", o.sigma_given ? "--sigma" : "-g", "-p", "-e", "-m", "max_iterations"});
   return o;
 }
 
 bool parse_libsvm_predict_options(std::string_view text) {
   bool quiet = false;
-  for_each_flag(text, "svm-predict's options", [&](const std::string& flag, const std::string& v) {
-    if (flag == "-q")
-      quiet = true;
-    else if (flag == "-b")
-      check_probability(v);
-    else
-      throw OptionError(flag, "is not one of svm-predict's options (-b 0, -q)");
-  });
+  for_each_flag(tokens_of(text), "svm-predict's options",
+                [&](const std::string& flag, const std::string& v) {
+                  if (flag == "-q")
+                    quiet = true;
+                  else if (flag == "-b")
+                    check_probability(v);
+                  else
+                    throw OptionError(flag, "is not one of svm-predict's options (-b 0, -q)");
+                });
   return quiet;
 }
 

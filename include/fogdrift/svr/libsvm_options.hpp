@@ -1,7 +1,8 @@
-// svm-train's options as one string, the way LIBSVM's MATLAB and Python interfaces take them
-// ('-s 3 -t 2 -c 10 -g 0.1 -p 0.05 -h 0'), and what `-v n` returns there: the cross-validated
-// mean squared error. fogdrift.svmtrain (matlab/, docs/matlab.md) runs on these, and `fogdrift
-// svr train` checks the SVM type and kernel with the same rules (docs/svr.md).
+// svm-train's options, described and checked once: as one string, the way LIBSVM's MATLAB and
+// Python interfaces take them ('-s 3 -t 2 -c 10 -g 0.1 -p 0.05 -h 0'), or as a command line's
+// arguments; and what `-v n` returns: the cross-validated mean squared error. `fogdrift svr
+// train`'s flags and fogdrift.svmtrain's option string (matlab/, docs/matlab.md) are both read
+// here (docs/svr.md).
 #pragma once
 
 #include <cstddef>
@@ -20,7 +21,8 @@ struct LibsvmTrainOptions {
   /// Kernel, C (-c), ε (-p), tolerance (-e), cache (-m), shrinking (-h). LIBSVM's working sets
   /// (libsvm_path) unless "--solver pairs" asks for fogdrift's solver.
   Params params;
-  bool gamma_given = false;  ///< -g given; else γ = 1/number of features, as svm-train
+  bool gamma_given = false;  ///< -g (or --sigma) given; else γ = 1/number of features
+  bool sigma_given = false;  ///< --sigma: the RBF width the paper tunes, γ = 1/(2σ²)
   /// γ as svm-train records it in the model's parameters: -g, or 1/number of features, also for
   /// the linear kernel, which does not use it.
   double gamma = 0;
@@ -42,7 +44,12 @@ void check_kernel_type(int kernel_type);
 /// its value, a value that is not a number of the flag's kind, a type or kernel fogdrift lacks
 /// (check_svm_type, check_kernel_type), probability estimates (-b 1), class weights (-wi) and
 /// values out of range (validate(Params)).
+/// fogdrift adds --solver libsvm|pairs (LIBSVM's working sets, the default here, or fogdrift's
+/// solver) and --sigma S (instead of -g).
 LibsvmTrainOptions parse_libsvm_train_options(std::string_view text, std::size_t features);
+/// The same from arguments already split, as a command line gives them: flags and their values.
+LibsvmTrainOptions parse_libsvm_train_options(const std::vector<std::string>& tokens,
+                                              std::size_t features);
 
 /// svm-predict's options in the MATLAB interface: -q, and -b 0 (-b 1 is refused as in
 /// parse_libsvm_train_options). Returns whether -q was given.
