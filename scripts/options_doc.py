@@ -1,20 +1,9 @@
 #!/usr/bin/env python3
 """Writes (or checks) the tables of options in docs/options.md.
 
-Each table is what `fogdrift options COMMAND` prints: the one description fogdrift keeps of each
-option of `fogdrift train` and Python's fogdrift.train (src/train/train_option_table.cpp), and of
-`fogdrift simulate`'s protocols and Python's fogdrift.simulate
-(src/sim/scenario_option_table.cpp), and of the streaming fault policy of `fogdrift stream`,
-`fogdrift export-c` and Python's StreamingCompensator (src/stream/fault_option_table.cpp), and of
-`fogdrift denoise` and Python's fogdrift.denoise (src/signal/denoise_option_table.cpp), of
-`fogdrift evaluate` and `fogdrift northfind` and their Python functions
-(src/eval/eval_option_table.cpp), and of
-`fogdrift paper` and `fogdrift demo` (src/report/paper_option_table.cpp), and of the chamber of
-`fogdrift plan` (src/sim/scenario_option_table.cpp), and of `fogdrift join`
-(src/io/join_option_table.cpp), and of the cutting of `fogdrift campaign`
-(src/io/cut_option_table.cpp), and of `fogdrift import` (src/io/import_option_table.cpp): every
-command `fogdrift options --list`
-names. This
+Each table is what `fogdrift options COMMAND` prints: the one description fogdrift keeps of the
+options of a command and its Python function, for every command `fogdrift options --list` names
+(docs/options.md's first table says which file of src/ holds each). This
 script puts each between its two marker lines on the page, so that the page cannot fall behind
 the code. It also writes the `--method a|b|…` lists of README.md and docs/tuning.md from the
 registry's methods (`--method`'s allowed values), so a regressor added by docs/architecture.md's

@@ -16,6 +16,7 @@
 #include "fogdrift/base/error.hpp"
 #include "fogdrift/base/text_file.hpp"
 #include "fogdrift/io/target.hpp"
+#include "fogdrift/model/model_load_option_table.hpp"
 #include "fogdrift/model/model_set.hpp"
 
 namespace fogdrift::app {
@@ -55,26 +56,6 @@ ModelSet axes_to_run(const ModelSet& set, const std::optional<std::string>& targ
                       other.dataset.target_column, set.models.front().dataset.target_column));
   }
   return set;
-}
-
-std::map<std::string, double> parse_references(const std::vector<std::string>& given,
-                                               const std::string& option) {
-  std::map<std::string, double> out;
-  for (const std::string& item : given) {
-    const auto eq = item.find('=');
-    const std::string column = item.substr(0, eq);
-    const Target target = target_of(column, option);
-    const auto value =
-        eq == std::string::npos ? std::nullopt : csv::parse_number(item.substr(eq + 1));
-    if (!value)
-      throw OptionError(option, fmt::format("'{}' is not COLUMN=VALUE with VALUE a number, {} "
-                                            "(e.g. {}=0)",
-                                            item, target.symbol(), column));
-    check_reference(column, *value, option);
-    if (!out.emplace(column, *value).second)
-      throw OptionError(option, fmt::format("{} is given twice", column));
-  }
-  return out;
 }
 
 std::filesystem::path piece_path(const std::filesystem::path& target, std::size_t index,
@@ -154,12 +135,12 @@ void check_standard_output() {
 }
 
 void add_model_load_flags(CLI::App* cmd, ModelLoadOptions* options) {
-  cmd->add_flag("--allow-edited", options->allow_edited,
-                "Load a model file whose content no longer matches its checksum (an edit made on "
-                "purpose); its fields are still checked");
-  cmd->add_flag("--allow-old-format", options->allow_old_format,
-                "Load a model file of format version 1 or 2, written before model files carried "
-                "a checksum (version 1 also has no novelty guard and compensates unguarded)");
+  const auto& table = model_load_option_table();
+  const std::vector<OptionSpec> specs = specs_of(table);
+  // Both are switches off by default: a flag turns each on (option_flags.hpp's rule).
+  for (const Option<ModelLoadOptions>& o : table)
+    cmd->add_flag_callback(
+        o.spec.flag, [&o, options] { o.set(*options, "true"); }, option_help(o.spec, specs, true));
 }
 
 }  // namespace fogdrift::app

@@ -31,11 +31,6 @@ CompensationModel load_one_model(const std::string& path, const ModelLoadOptions
 /// differ in sample interval, block or rate window, which one update cannot serve.
 ModelSet axes_to_run(const ModelSet& set, const std::optional<std::string>& target);
 
-/// --reference COLUMN=VALUE, repeated: what each target channel sensed, in its unit
-/// (CampaignEntry::references). Throws OptionError(option) naming the item and the rule.
-std::map<std::string, double> parse_references(const std::vector<std::string>& given,
-                                               const std::string& option);
-
 /// The output path of piece `index` of `count` a command splits its result into: out.csv itself
 /// for one piece, else out_1.csv, out_2.csv, ...
 std::filesystem::path piece_path(const std::filesystem::path& target, std::size_t index,
@@ -66,8 +61,8 @@ void with_flags(const FlagTable& flags, const std::function<void()>& body);
 /// as the model's, with the train flag that sets it, since the command itself cannot change it.
 void with_model_settings(const std::string& model_path, const std::function<void()>& body);
 
-/// The flags of every command that loads a model file: --allow-edited and --allow-old-format,
-/// described once.
+/// The flags of every command that loads a model file, --allow-edited and --allow-old-format,
+/// from their one description (model_load_option_table.hpp).
 void add_model_load_flags(CLI::App* cmd, ModelLoadOptions* options);
 
 /// Flushes standard output and throws InputError("standard output: …") when a write to it

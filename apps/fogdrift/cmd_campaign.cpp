@@ -16,8 +16,8 @@
 #include "fogdrift/base/run_files.hpp"
 #include "fogdrift/base/version.hpp"
 #include "fogdrift/io/campaign.hpp"
+#include "fogdrift/io/campaign_option_table.hpp"
 #include "fogdrift/io/cut.hpp"
-#include "fogdrift/io/cut_option_table.hpp"
 #include "fogdrift/io/recording.hpp"
 #include "option_flags.hpp"
 
@@ -29,13 +29,7 @@ namespace {
 struct CampaignArgs {
   std::string out;
   std::vector<std::string> inputs;
-  std::string test = "last";
-  std::string repetitions;
-  std::optional<double> input_rate_dph;
-  std::vector<std::string> references;
-  std::optional<double> latitude_deg;
-  std::optional<double> true_azimuth_deg;
-  std::shared_ptr<OptionFlags> cut;  // how one long log is cut (cut_option_table.hpp)
+  std::shared_ptr<OptionFlags> flags;  // campaign's options (campaign_option_table.hpp)
   bool force = false;
   bool quiet = false;
 };
@@ -55,12 +49,13 @@ std::set<std::size_t> test_positions(const std::string& text, std::size_t count)
   return out;
 }
 
-void run(const CampaignArgs& a) {
-  if (a.input_rate_dph && (a.latitude_deg || a.true_azimuth_deg))
+/// The campaign folder from the recordings `args` names and the options `o` its flags gave.
+void make(const CampaignArgs& args, const CampaignOptions& o) {
+  if (o.sensed.input_rate_dph && (o.latitude_deg || o.true_azimuth_deg))
     throw OptionError("--input-rate-dph",
                       "give either the input rate or the latitude and the "
                       "true azimuth, not both");
-  if (!a.input_rate_dph && !(a.latitude_deg && a.true_azimuth_deg))
+  if (!o.sensed.input_rate_dph && !(o.latitude_deg && o.true_azimuth_deg))
     throw OptionError("--input-rate-dph",
                       "say what rate the gyro sensed, so that train models drift and not the "
                       "input: --input-rate-dph R (0 for an axis that sees no rotation, e.g. "
@@ -68,13 +63,11 @@ void run(const CampaignArgs& a) {
                       "Earth rate), or --latitude-deg L --true-azimuth-deg A (the Earth rate's "
                       "projection on a horizontal axis)");
 
-  const std::map<std::string, double> references = parse_references(a.references, "--reference");
-
-  CutOptions cut_options;
-  a.cut->apply(cut_option_table(), cut_options);
+  const std::map<std::string, double>& references = o.sensed.references;
+  const CutOptions& cut_options = o.cut;
   std::vector<Recording> pieces;
   std::size_t plateau_cuts = 0;
-  for (const auto& input : a.inputs) {
+  for (const auto& input : args.inputs) {
     const Recording rec = read_recording(input);
     try {
       CutSummary summary;
@@ -88,35 +81,35 @@ void run(const CampaignArgs& a) {
             "fewest samples a recording needs)\n",
             input, from, to);
     } catch (const OptionError& e) {
-      throw a.cut->named(e);
+      throw args.flags->named(e);
     }
   }
-  const std::set<std::size_t> tests = test_positions(a.test, pieces.size());
+  const std::set<std::size_t> tests = test_positions(o.test, pieces.size());
   // Plateaus asked for and none found: the cut, not --test, is what left too few recordings.
   const bool no_plateau = cut_options.plateaus && plateau_cuts == 0;
   const std::string plateau_note = fmt::format(
       "no plateau ended in {} (a plateau: at least {} s with |rate| below {} °C/min, then a "
       "change); loosen --plateau-rate-degc-per-min or --plateau-min-s, or cut with --cut-gap-s "
       "or --cut-window-s",
-      a.inputs.size() == 1 ? a.inputs.front() : fmt::format("any of the {} logs", a.inputs.size()),
+      args.inputs.size() == 1 ? args.inputs.front()
+                              : fmt::format("any of the {} logs", args.inputs.size()),
       cut_options.plateau_min_s, cut_options.plateau_rate_degc_per_min);
   if (tests.size() == pieces.size()) {
     if (no_plateau)
       throw OptionError("--cut-plateaus",
                         fmt::format("{}: {} recording(s), and --test {} leaves none to train on",
-                                    plateau_note, pieces.size(), a.test));
+                                    plateau_note, pieces.size(), o.test));
     throw OptionError("--test", "leaves no recording to train on");
   }
-  std::vector<double> reps;
-  if (!a.repetitions.empty()) {
-    reps = parse_number_list(a.repetitions, "--repetitions");
+  const std::vector<double>& reps = o.repetitions;
+  if (!reps.empty()) {
     if (reps.size() != pieces.size())
       throw OptionError("--repetitions", fmt::format("lists {} numbers for {} recordings",
                                                      reps.size(), pieces.size()));
   }
 
   Campaign c;
-  c.latitude_deg = a.latitude_deg;
+  c.latitude_deg = o.latitude_deg;
   c.generator_json = fmt::format(R"({{"tool": "fogdrift campaign", "version": "{}"}})", kVersion);
   std::set<std::string> names;
   for (std::size_t k = 0; k < pieces.size(); ++k) {
@@ -136,7 +129,7 @@ void run(const CampaignArgs& a) {
                        fmt::format("temp_fog_degc starts at {} °C, outside [-70, 100]: check "
                                    "its unit (--unit at import)",
                                    e.initial_temp_degc));
-    e.input_rate_dph = a.input_rate_dph;
+    e.input_rate_dph = o.sensed.input_rate_dph;
     for (const auto& [column, value] : references)
       if (!pieces[k].has_column(column))
         throw OptionError("--reference", fmt::format("{} has no column '{}' to give a reference "
@@ -144,12 +137,12 @@ void run(const CampaignArgs& a) {
                                                      "wrote them)",
                                                      pieces[k].source, column));
     e.references = references;
-    e.true_azimuth_deg = a.true_azimuth_deg;
+    e.true_azimuth_deg = o.true_azimuth_deg;
     c.recordings.push_back(std::move(e));
   }
 
-  check_output_not_input(a.out, "DIR");
-  fill_directory_atomically(a.out, a.force, [&](const fs::path& dir) {
+  check_output_not_input(args.out, "DIR");
+  fill_directory_atomically(args.out, args.force, [&](const fs::path& dir) {
     for (std::size_t k = 0; k < pieces.size(); ++k) {
       Recording r = pieces[k];
       r.source = c.recordings[k].file;
@@ -161,9 +154,9 @@ void run(const CampaignArgs& a) {
     for (const auto& e : back.recordings) read_recording(back.path_of(e));
   });
 
-  if (a.quiet) return;
+  if (args.quiet) return;
   if (no_plateau) std::cout << "note: --cut-plateaus: " << plateau_note << "\n";
-  std::cout << fmt::format("{}: campaign of {} recordings ({} train, {} test)\n", a.out,
+  std::cout << fmt::format("{}: campaign of {} recordings ({} train, {} test)\n", args.out,
                            pieces.size(), pieces.size() - tests.size(), tests.size());
   std::cout << fmt::format("  {:<28}  {:<5}  {:>3}  {:>8}  {:>8}  {:>9}\n", "file", "role", "rep",
                            "T0 °C", "samples", "minutes");
@@ -175,7 +168,13 @@ void run(const CampaignArgs& a) {
                              (t.back() - t.front()) / 60.0);
   }
   std::cout << fmt::format("  next: fogdrift inspect {0}; fogdrift train {0} -o model.json\n",
-                           a.out);
+                           args.out);
+}
+
+void run(const CampaignArgs& args) {
+  CampaignOptions o;
+  args.flags->apply(campaign_option_table(), o);
+  make(args, o);
 }
 
 }  // namespace
@@ -201,28 +200,8 @@ void add_campaign(CLI::App& app) {
   cmd->add_option("RECORDING", a->inputs, "fogdrift recordings (CSV), in start-up order")
       ->required()
       ->check(CLI::ExistingFile);
-  cmd->add_option("--test", a->test,
-                  "Recordings held out for evaluate: 'last', 'none', or numbers such as 2,5 "
-                  "(1-based, after cutting)")
-      ->capture_default_str();
-  cmd->add_option("--repetitions", a->repetitions,
-                  "Repetition number of each recording, e.g. 1,1,1,2,2,2 (default: all 1)");
-  cmd->add_option("--input-rate-dph", a->input_rate_dph,
-                  "The rate the gyro sensed, °/h, the same in every recording (0 for an axis that "
-                  "sees no rotation)");
-  cmd->add_option("--reference", a->references,
-                  "COLUMN=VALUE, repeated: what a target channel sensed, in its unit, the same "
-                  "in every recording: an accelerometer's share of gravity (accel_x_g=0 for a "
-                  "level axis, accel_z_g=1 pointing up), a scale-factor channel's nominal "
-                  "(sf_fog_ppm=0), a gyro axis's own input rate (docs/logs.md, \"Other "
-                  "targets\"); without one, train subtracts each recording's mean and says so");
-  cmd->add_option("--latitude-deg", a->latitude_deg, "Site latitude, degrees (with azimuth)")
-      ->check(CLI::Range(-90.0, 90.0));
-  cmd->add_option("--true-azimuth-deg", a->true_azimuth_deg,
-                  "Azimuth of the horizontal sensitive axis, degrees from true north")
-      ->check(CLI::Range(0.0, 360.0));
-  const auto& cut = cut_option_table();
-  a->cut = std::make_shared<OptionFlags>(cmd, specs_of(cut), defaults_of(cut));
+  const auto& table = campaign_option_table();
+  a->flags = std::make_shared<OptionFlags>(cmd, specs_of(table), defaults_of(table));
   cmd->add_flag("--force", a->force, "Replace OUT if it exists (only after success)");
   cmd->add_flag("-q,--quiet", a->quiet, "Print nothing on success");
   cmd->callback([a] { run(*a); });

@@ -13,8 +13,10 @@
 #include "fogdrift/base/run_files.hpp"
 #include "fogdrift/eval/metrics.hpp"
 #include "fogdrift/model/compensate_file.hpp"
+#include "fogdrift/model/compensate_option_table.hpp"
 #include "fogdrift/model/model.hpp"
 #include "fogdrift/model/model_set.hpp"
+#include "option_flags.hpp"
 
 namespace fogdrift::app {
 namespace {
@@ -26,7 +28,7 @@ struct CompensateArgs {
   std::string output;
   bool json = false;
   bool quiet = false;
-  bool no_guard = false;
+  std::shared_ptr<OptionFlags> flags;  ///< compensate's options (compensate_option_table.hpp)
 };
 
 /// One axis compensated, with its STD before and after, as evaluate computes them.
@@ -34,7 +36,7 @@ struct Axis : CompensatedAxis {
   eval::CompensationMetrics metrics;
 };
 
-nlohmann::ordered_json axis_json(const CompensateArgs& a, const Axis& x) {
+nlohmann::ordered_json axis_json(const CompensateOptions& options, const Axis& x) {
   nlohmann::ordered_json j;
   const std::vector<double>& drift = x.prediction.drift_dph;
   // Keys in the target's unit: gyro_std_dph, accel_std_g, sf_std_ppm (target.hpp).
@@ -47,7 +49,7 @@ nlohmann::ordered_json axis_json(const CompensateArgs& a, const Axis& x) {
   j[fmt::format("{}_comp_std_{}", kind, unit)] = x.metrics.std_after_dph;
   j[fmt::format("drift_first_{}", unit)] = drift.front();
   j[fmt::format("drift_last_{}", unit)] = drift.back();
-  j["guard"] = !a.no_guard;
+  j["guard"] = options.guarded;
   j["novelty_outside_share"] =
       static_cast<double>(x.novelty.outside) / static_cast<double>(x.novelty.samples);
   j["novelty_reduced_share"] =
@@ -62,8 +64,10 @@ void run(const CompensateArgs& a) {
   const ModelSet set = load_model_set(a.model, a.load);
   note_input(a.input);
   check_output_not_input(a.output, "--output");
+  CompensateOptions options;
+  a.flags->apply(compensate_option_table(), options);
   std::vector<Axis> axes;
-  for (CompensatedAxis& c : compensate_file(set, a.input, a.output, !a.no_guard)) {
+  for (CompensatedAxis& c : compensate_file(set, a.input, a.output, options)) {
     const eval::CompensationMetrics metrics =
         eval::compensation_metrics(c.reading, c.prediction.drift_dph);
     axes.push_back({std::move(c), metrics});
@@ -76,7 +80,7 @@ void run(const CompensateArgs& a) {
       j["method"] = axes[0].model->provenance.method;
       j["input"] = a.input;
       j["output"] = a.output;
-      const nlohmann::ordered_json axis = axis_json(a, axes[0]);
+      const nlohmann::ordered_json axis = axis_json(options, axes[0]);
       for (const auto& [k, v] : axis.items())
         if (k != "method") j[k] = v;
     } else {
@@ -86,7 +90,7 @@ void run(const CompensateArgs& a) {
       for (const Axis& x : axes) {
         nlohmann::ordered_json one;
         one["target"] = x.model->dataset.target_column;
-        one.update(axis_json(a, x));
+        one.update(axis_json(options, x));
         j["axes"].push_back(one);
       }
     }
@@ -106,7 +110,7 @@ void run(const CompensateArgs& a) {
           target.format(drift.back()), target.symbol(), target.what(),
           target.format(x.metrics.std_before_dph), target.symbol(),
           target.format(x.metrics.std_after_dph), target.symbol(), x.novelty.line(),
-          a.no_guard ? " (guard off: full correction everywhere)" : "");
+          !options.guarded ? " (guard off: full correction everywhere)" : "");
     }
     std::cout << fmt::format("  wrote {}\n", a.output);
   }
@@ -139,8 +143,8 @@ void add_compensate(CLI::App& app) {
   cmd->add_option("-o,--output", args->output, "CSV to write (atomically)")->required();
   cmd->add_flag("--json", args->json, "Print a summary as JSON");
   cmd->add_flag("-q,--quiet", args->quiet, "Print nothing on success");
-  cmd->add_flag("--no-guard", args->no_guard,
-                "Apply the model's full correction even where its inputs are novel");
+  const auto& table = compensate_option_table();
+  args->flags = std::make_shared<OptionFlags>(cmd, specs_of(table), defaults_of(table));
   cmd->callback([args] { with_model_settings(args->model, [&] { run(*args); }); });
 }
 

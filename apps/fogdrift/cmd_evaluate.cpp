@@ -18,6 +18,7 @@
 #include "fogdrift/eval/eval_option_table.hpp"
 #include "fogdrift/eval/evaluation.hpp"
 #include "fogdrift/io/campaign.hpp"
+#include "fogdrift/io/campaign_option_table.hpp"
 #include "fogdrift/model/baselines.hpp"
 #include "fogdrift/model/model.hpp"
 #include "fogdrift/model/model_set.hpp"
@@ -33,8 +34,8 @@ struct EvaluateArgs {
   std::vector<std::string> inputs;
   bool json = false;
   std::shared_ptr<OptionFlags> flags;  // the evaluation's options (eval_option_table.hpp)
-  std::optional<double> input_rate_dph;
-  std::vector<std::string> references;
+  /// What the channels sensed, for recording files (campaign_option_table.hpp).
+  std::shared_ptr<OptionFlags> sensed;
   std::string figures;  ///< folder for the figures; empty: none
   bool force = false;   ///< replace that folder
 };
@@ -65,15 +66,17 @@ void run(const EvaluateArgs& a) {
   const ModelSet set = load_model_set(a.model, a.load);
   eval::EvaluationOptions options;
   a.flags->apply(eval::evaluation_option_table(), options);
+  SensedOptions sensed;
+  a.sensed->apply(sensed_option_table(), sensed);
   std::optional<Campaign> campaign;
   std::vector<RecordingInput> inputs;
   std::string source;
   if (a.inputs.size() == 1 && is_campaign(a.inputs[0])) {
-    if (a.input_rate_dph)
+    if (sensed.input_rate_dph)
       throw OptionError("--input-rate-dph",
                         "applies to recording files; a campaign says its input rate in "
                         "campaign.json (fogdrift campaign --input-rate-dph)");
-    if (!a.references.empty())
+    if (!sensed.references.empty())
       throw OptionError("--reference",
                         "applies to recording files; a campaign says its references in "
                         "campaign.json (fogdrift campaign --reference)");
@@ -88,8 +91,8 @@ void run(const EvaluateArgs& a) {
       RecordingInput in;
       in.recording = read_recording(path);
       in.info.file = path;
-      in.input_rate_dph = a.input_rate_dph;
-      in.references = parse_references(a.references, "--reference");
+      in.input_rate_dph = sensed.input_rate_dph;
+      in.references = sensed.references;
       inputs.push_back(std::move(in));
     }
     source = fmt::format("{} recording file{}", inputs.size(), inputs.size() == 1 ? "" : "s");
@@ -415,14 +418,10 @@ void add_evaluate(CLI::App& app) {
   cmd->add_option("model", args->model, "Model file written by `fogdrift train`")->required();
   add_model_load_flags(cmd, &args->load);
   cmd->add_option("inputs", args->inputs, "A campaign folder, or recording CSV files")->required();
-  cmd->add_option("--input-rate-dph", args->input_rate_dph,
-                  "Recording files only: the rate the gyro sensed, °/h (0 for an axis that sees "
-                  "no rotation); without it the target subtracts each recording's mean, and the "
-                  "turn-on bias is lost (a campaign says it in campaign.json)");
-  cmd->add_option("--reference", args->references,
-                  "Recording files only: COLUMN=VALUE, repeated, what a target channel sensed in "
-                  "its unit (accel_x_g=0, sf_fog_ppm=0; docs/logs.md, \"Other targets\"), as "
-                  "fogdrift campaign --reference gives it");
+  const auto& sensed = sensed_option_table();
+  args->sensed = std::make_shared<OptionFlags>(
+      cmd, specs_of(sensed), defaults_of(sensed),
+      "Recording files only: what the channels sensed (a campaign says it in campaign.json)");
   cmd->add_flag("--json", args->json, "Print the metrics as JSON");
   cmd->add_option("--figures", args->figures,
                   "Folder for figures, PNG (gnuplot) and JSON, per axis: each recording raw and "

@@ -28,8 +28,6 @@ namespace {
 struct ImportArgs {
   std::vector<std::string> inputs;
   std::string out;
-  std::vector<std::string> maps;
-  std::vector<std::string> units;
   bool quiet = false;
   std::shared_ptr<OptionFlags> flags;  // import's options (import_option_table.hpp)
 };
@@ -101,16 +99,6 @@ void report(const ImportReport& imported, const std::vector<RegridSummary>& grid
   }
 }
 
-std::pair<std::string, std::string> split_assignment(const std::string& text,
-                                                     const std::string& option) {
-  const auto eq = text.find('=');
-  if (eq == std::string::npos || eq == 0 || eq + 1 == text.size()) {
-    throw OptionError(fmt::format("{} {}", option, text),
-                      "expected FOGDRIFT_COLUMN=VALUE, e.g. gyro_dph=\"Rate X [rad/s]\"");
-  }
-  return {text.substr(0, eq), text.substr(eq + 1)};
-}
-
 }  // namespace
 
 void add_import(CLI::App& app) {
@@ -135,22 +123,12 @@ void add_import(CLI::App& app) {
   cmd->add_option("--out,-o", a->out,
                   "Output recording (one input), or an existing folder (several inputs)")
       ->required();
-  cmd->add_option("--map", a->maps, "FOGDRIFT_COLUMN=FOREIGN_COLUMN (repeatable)");
-  cmd->add_option("--unit", a->units, "FOGDRIFT_COLUMN=UNIT (repeatable)");
   const auto& table = import_option_table();
   a->flags = std::make_shared<OptionFlags>(cmd, specs_of(table), defaults_of(table));
   cmd->add_flag("-q,--quiet", a->quiet, "Print nothing on success");
   cmd->callback([a] {
     ImportRunOptions given;
-    for (const auto& m : a->maps) {
-      auto [target, source] = split_assignment(m, "--map");
-      given.read.columns[target] = source;
-    }
-    for (const auto& u : a->units) {
-      auto [target, unit] = split_assignment(u, "--unit");
-      given.read.conversions[target] = parse_unit(target, unit);
-    }
-    a->flags->apply(import_option_table(), given);  // the table leaves the map and units be
+    a->flags->apply(import_option_table(), given);
     ImportPlan plan;
     try {
       plan = import_plan(given);

@@ -12,8 +12,10 @@
 #include "fogdrift/features/features.hpp"
 #include "fogdrift/io/campaign.hpp"
 #include "fogdrift/io/inspect.hpp"
+#include "fogdrift/io/inspect_option_table.hpp"
 #include "fogdrift/io/recording.hpp"
 #include "fogdrift/io/target.hpp"
+#include "option_flags.hpp"
 
 namespace fs = std::filesystem;
 
@@ -178,14 +180,13 @@ void add_inspect(CLI::App& app) {
       "otherwise.");
   auto path = std::make_shared<std::string>();
   auto json = std::make_shared<bool>(false);
-  auto log = std::make_shared<bool>(false);
   cmd->add_option("PATH", *path, "Recording CSV, campaign folder or campaign.json")->required();
   cmd->add_flag("--json", *json, "Print the summary as JSON");
-  cmd->add_flag("--log", *log,
-                "The file may be a log to join (a chamber sheet imported with --partial): "
-                "summarise it without the gyro or the FOG thermometer, and with times before "
-                "power-on");
-  cmd->callback([path, json, log] {
+  const auto& table = inspect_option_table();
+  auto flags = std::make_shared<OptionFlags>(cmd, specs_of(table), defaults_of(table));
+  cmd->callback([path, json, flags] {
+    InspectOptions options;
+    flags->apply(inspect_option_table(), options);
     const fs::path p(*path);
     int status = 0;
     if (fs::is_directory(p) || p.extension() == ".json") {
@@ -194,7 +195,7 @@ void add_inspect(CLI::App& app) {
       // A recording is held to a recording's rules; with --log, a log to join (a chamber sheet
       // imported with --partial) is summarised too.
       Recording rec;
-      if (*log) {
+      if (options.log) {
         rec = read_log(p);
         // Every column a recording needs, from time 0 on: a recording, held to its rules.
         if (missing_required(rec).empty() && !rec.time_s.empty() && rec.time_s.front() >= 0) {

@@ -36,10 +36,9 @@ struct StreamArgs {
   std::optional<std::string> target;  ///< the axis of a model set
   std::string input = "-";
   std::optional<double> rate_hz;  ///< none given: the model's own rate
-  bool no_guard = false;
   bool strict = false;
-  std::shared_ptr<OptionFlags> fault_flags;  ///< the fault policy's (fault_options.hpp)
-  FaultPolicy faults;                        ///< as run: fitted to the model, then the flags
+  std::shared_ptr<OptionFlags> flags;  ///< the guard's and the fault policy's (fault_options.hpp)
+  StreamOptions options;               ///< as run: faults fitted to the model, then the flags
 };
 
 // A header's fields as compensate and inspect read them (csv::read): quoted, trimmed.
@@ -90,7 +89,7 @@ void run(const StreamArgs& given) {
   const double rate_hz = a.rate_hz.value_or(1.0 / model_dt_s);
   if (!(rate_hz > 0) || rate_hz > 10000)
     throw OptionError("--rate-hz", fmt::format("{} is outside (0, 10000] Hz", rate_hz));
-  a.faults = fault_policy(*a.fault_flags, first);
+  a.options = stream_options(*a.flags, first);
   // Streamed, a model trained on centred rates sees causal ones, noisier than those it learned:
   // a tuned SVR's drift then departs from its batch drift by about the drift's own STD
   // (docs/compensation.md). The stream still runs; the user is told, as export-c tells.
@@ -110,7 +109,7 @@ void run(const StreamArgs& given) {
   compensators.reserve(set.models.size());
   with_flags({{"rate", "--rate-hz"}}, [&] {
     for (const CompensationModel& model : set.models)
-      compensators.emplace_back(model, dt_s, StreamOptions{!a.no_guard, a.faults});
+      compensators.emplace_back(model, dt_s, a.options);
   });
 
   // Standard input through a file buffer of its own: std::cin, kept in step with C's stdio,
@@ -233,7 +232,7 @@ void run(const StreamArgs& given) {
       const StreamOutput out =
           compensator.update({v[0], v[1], v[2], v[3], v[4], std::span<const double>(further_degc)});
       if (a.strict && out.flags != 0)
-        stop_at_fault(name, line_no, out.flags, names, column, v, a.faults);
+        stop_at_fault(name, line_no, out.flags, names, column, v, a.options.faults);
       any |= out.flags;
       for (double value :
            {out.drift_dph, out.gyro_comp_dph, compensator.novelty(), compensator.weight()}) {
@@ -310,12 +309,10 @@ void add_stream(CLI::App& app) {
                   "With a model of several axes (train --targets): stream this one alone, e.g. "
                   "gyro_y_dph (default: every axis, each with drift_y_dph, gyro_y_comp_dph, "
                   "novelty_y, guard_weight_y, fault_flags_y)");
-  cmd->add_flag("--no-guard", args->no_guard,
-                "Apply the model's full correction even where its inputs are novel");
   cmd->add_flag("--strict", args->strict,
                 "Stop at the first faulty sample or torn line, naming its line and column, instead "
                 "of compensating through it");
-  args->fault_flags = add_fault_options(cmd);
+  args->flags = add_stream_options(cmd);
   cmd->callback([args] { with_model_settings(args->model, [&] { run(*args); }); });
 }
 

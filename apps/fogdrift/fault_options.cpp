@@ -1,9 +1,25 @@
 #include "fault_options.hpp"
 
-#include "fogdrift/stream/compensator.hpp"
 #include "fogdrift/stream/fault_option_table.hpp"
+#include "fogdrift/stream/stream_option_table.hpp"
 
 namespace fogdrift::app {
+namespace {
+
+/// `options` with `flags` applied and its fault policy checked, errors named by the flags.
+template <class O>
+O applied(const OptionFlags& flags, const OptionTable<O>& table, O options,
+          FaultPolicy& (*faults)(O&)) {
+  flags.apply(table, options);
+  try {
+    validate(faults(options));
+  } catch (const OptionError& e) {
+    throw flags.named(e);
+  }
+  return options;
+}
+
+}  // namespace
 
 std::shared_ptr<OptionFlags> add_fault_options(CLI::App* cmd) {
   const auto& table = fault_option_table();
@@ -12,14 +28,21 @@ std::shared_ptr<OptionFlags> add_fault_options(CLI::App* cmd) {
 }
 
 FaultPolicy fault_policy(const OptionFlags& flags, const CompensationModel& model) {
-  FaultPolicy policy = fault_policy_of(model);
-  flags.apply(fault_option_table(), policy);
-  try {
-    validate(policy);
-  } catch (const OptionError& e) {
-    throw flags.named(e);
-  }
-  return policy;
+  return applied<FaultPolicy>(flags, fault_option_table(), fault_policy_of(model),
+                              [](FaultPolicy& p) -> FaultPolicy& { return p; });
+}
+
+std::shared_ptr<OptionFlags> add_stream_options(CLI::App* cmd) {
+  const auto& table = stream_option_table();
+  return std::make_shared<OptionFlags>(cmd, specs_of(table), defaults_of(table),
+                                       "Guard and sensor faults (docs/compensation.md)");
+}
+
+StreamOptions stream_options(const OptionFlags& flags, const CompensationModel& model) {
+  StreamOptions options;
+  options.faults = fault_policy_of(model);  // the timings fitted to the model, then the flags
+  return applied<StreamOptions>(flags, stream_option_table(), options,
+                                [](StreamOptions& o) -> FaultPolicy& { return o.faults; });
 }
 
 }  // namespace fogdrift::app

@@ -1,10 +1,12 @@
-// The streaming fault policy's flags (FaultPolicy, stream_faults.hpp), shared by `stream` and
-// `export-c`, which both run the policy: made from its one description (fault_option_table.hpp).
+// The flags of the options that run a streaming compensator: the fault policy's (FaultPolicy,
+// stream_faults.hpp), which `export-c` takes, and `stream`'s, the guard and the fault policy
+// (stream_option_table.hpp); each made from its one description.
 #pragma once
 
 #include <memory>
 
 #include "fogdrift/model/model.hpp"
+#include "fogdrift/stream/compensator.hpp"
 #include "fogdrift/stream/stream_faults.hpp"
 #include "option_flags.hpp"
 
@@ -19,5 +21,13 @@ std::shared_ptr<OptionFlags> add_fault_options(CLI::App* cmd);
 /// records its interval, the defaults otherwise, then the flags given. Checked; errors name the
 /// flag.
 FaultPolicy fault_policy(const OptionFlags& flags, const CompensationModel& model);
+
+/// Adds `stream`'s flags to `cmd`: --no-guard and the fault policy's, in the group "Guard and
+/// sensor faults".
+std::shared_ptr<OptionFlags> add_stream_options(CLI::App* cmd);
+
+/// The options to stream `model` with: its fault policy as fault_policy() makes it, the guard
+/// as the flags say. Checked; errors name the flag.
+StreamOptions stream_options(const OptionFlags& flags, const CompensationModel& model);
 
 }  // namespace fogdrift::app

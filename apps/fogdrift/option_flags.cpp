@@ -24,6 +24,10 @@ std::string type_name(const OptionSpec& spec) {
       return "NAME,...";
     case OptionType::numbers:
       return spec.unit.empty() ? "NUMBER,..." : spec.unit + ",...";
+    case OptionType::number_or_none:
+      return spec.unit.empty() ? "NUMBER" : spec.unit;
+    case OptionType::assignments:
+      return "NAME=VALUE";
     case OptionType::text:
     case OptionType::on_off:
       break;
@@ -65,8 +69,10 @@ OptionFlags::OptionFlags(CLI::App* cmd, std::vector<OptionSpec> specs,
       options_.push_back(cmd->add_option(s.flag, *texts_.back(), help)
                              ->type_name(type_name(s))
                              ->default_str(defaults_[i]));
-      // A list may be given in pieces: --offset-from a=b --offset-from c=d is a=b,c=d.
+      // A list may be given in pieces: --offset-from a=b --offset-from c=d is a=b,c=d. An
+      // assignment is one piece a flag, whatever commas it holds (--map gyro_dph=rate,x).
       if (s.type == OptionType::names || s.type == OptionType::numbers) options_.back()->join(',');
+      if (s.type == OptionType::assignments) options_.back()->join(kAssignmentSeparator);
     }
     as_default_.push_back(as_default);
     if (!group.empty()) options_.back()->group(group);

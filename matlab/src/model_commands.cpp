@@ -11,7 +11,9 @@
 #include "fogdrift/io/recording.hpp"
 #include "fogdrift/io/target.hpp"
 #include "fogdrift/model/compensate_file.hpp"
+#include "fogdrift/model/compensate_option_table.hpp"
 #include "fogdrift/model/model.hpp"
+#include "fogdrift/model/model_load_option_table.hpp"
 #include "fogdrift/model/model_set.hpp"
 #include "fogdrift/signal/differentiate.hpp"
 #include "fogdrift/stream/compensator.hpp"
@@ -24,18 +26,13 @@ CompensationModel model_of(const Args& args) {
   return compensation_model_from_json(text_of(args.at(0, "model"), "model"), "model", {});
 }
 
-/// The one option of predict and compensate, 'guarded' (default true), from argument `first` on.
-bool guarded_of(const Args& args, std::size_t first) {
-  bool guarded = true;
-  for (const auto& [name, value] : name_values(args, first)) {
-    if (name != "guarded")
-      throw OptionError(name, "is not an option of " + args.function + "; its option is guarded");
-    OptionSpec spec;
-    spec.keyword = name;
-    spec.type = OptionType::on_off;
-    guarded = option_text(spec, value) == "true";
-  }
-  return guarded;
+/// The options of predict and compensate (compensate_option_table.hpp), from argument `first` on.
+CompensateOptions compensate_options_of(const Args& args, std::size_t first) {
+  const auto& table = compensate_option_table();
+  CompensateOptions o;
+  for (const auto& [name, value] : apply_options(table, o, name_values(args, first)))
+    unknown_option(args.function, name, {}, specs_of(table));
+  return o;
 }
 
 }  // namespace
@@ -43,21 +40,11 @@ bool guarded_of(const Args& args, std::size_t first) {
 void model_load(const Args& args, Results& out) {
   const std::string path = text_of(args.at(0, "path"), "path");
   std::optional<std::string> target;
+  const auto& table = model_load_option_table();
   ModelLoadOptions load;
-  for (const auto& [name, value] : name_values(args, 1)) {
-    OptionSpec spec;
-    spec.keyword = name;
-    spec.type = OptionType::on_off;
-    if (name == "target")
-      target = text_of(value, "target");
-    else if (name == "allow_edited")
-      load.allow_edited = option_text(spec, value) == "true";
-    else if (name == "allow_old_format")
-      load.allow_old_format = option_text(spec, value) == "true";
-    else
-      throw OptionError(name,
-                        "is not an option of fogdrift.Model.load; its options are target, "
-                        "allow_edited, allow_old_format");
+  for (const auto& [name, value] : apply_options(table, load, name_values(args, 1))) {
+    if (name != "target") unknown_option(args.function, name, {"target"}, specs_of(table));
+    target = text_of(value, "target");
   }
   const ModelSet set = load_model_set(path, load);
   out.values.push_back(text(to_json(choose_model(set, target, "target"))));
@@ -83,8 +70,7 @@ void model_predict(const Args& args, Results& out) {
   const mxArray* r = args.at(1, "recording");
   const Recording recording = mxIsChar(r) ? fogdrift::read_recording(text_of(r, "recording"))
                                           : recording_of(r, "recording");
-  const bool guarded = guarded_of(args, 2);
-  const RecordingPrediction p = m.predict(recording, guarded);
+  const RecordingPrediction p = m.predict(recording, compensate_options_of(args, 2).guarded);
   // Fields in the target's unit: drift_dph for a gyro, drift_g, drift_ppm (target.hpp).
   const std::string unit(target_of(m.dataset.target_column).unit());
   nlohmann::ordered_json names = {"drift_" + unit, "model_drift_" + unit, "novelty",
@@ -173,11 +159,11 @@ void compensate(const Args& args, Results& out) {
   const CompensationModel m = model_of(args);
   const std::string input = text_of(args.at(1, "input"), "input");
   const std::string output = text_of(args.at(2, "output"), "output");
-  const bool guarded = guarded_of(args, 3);
+  const CompensateOptions options = compensate_options_of(args, 3);
   check_output_not_among(output, {input}, "output");
   ModelSet set;
   set.models.push_back(m);
-  const CompensatedAxis axis = compensate_file(set, input, output, guarded).front();
+  const CompensatedAxis axis = compensate_file(set, input, output, options).front();
   nlohmann::ordered_json j;
   j["samples"] = axis.prediction.drift_dph.size();
   j["columns"] = axis.columns;

@@ -181,6 +181,23 @@ std::string option_text(const OptionSpec& spec, const mxArray* v) {
       if (mxIsChar(v)) return text_of(v, spec.keyword);
       if (!is_real_double(v) || mxIsSparse(v) || mxIsEmpty(v)) throw wrong("a vector of numbers");
       return option_numbers_text(vector_of(v, spec.keyword));
+    case OptionType::number_or_none:
+      if (mxIsEmpty(v)) return "none";
+      if (mxIsChar(v)) return text_of(v, spec.keyword);
+      if (!scalar_number) throw wrong("[] or a number");
+      return option_number_text(mxGetScalar(v));
+    case OptionType::assignments: {
+      if (mxIsChar(v)) return text_of(v, spec.keyword);
+      if (!mxIsCell(v)) throw wrong("'NAME=VALUE' or a cell array of them");
+      std::string out;
+      for (std::size_t i = 0; i < mxGetNumberOfElements(v); ++i) {
+        const mxArray* c = mxGetCell(v, i);
+        if (!c || !mxIsChar(c)) throw wrong("a cell array of 'NAME=VALUE'");
+        out +=
+            (i ? std::string(1, kAssignmentSeparator) : std::string()) + text_of(c, spec.keyword);
+      }
+      return out;
+    }
   }
   throw wrong("a value");
 }

@@ -69,14 +69,11 @@ denoise = with_keywords(denoise, ["data"],
                         + denoise_options(), "fogdrift denoise")
 for _method in ("__init__", "update", "run"):
     method_naming_keywords(StreamingCompensator, _method)
-# Its signature and docstring show the fault policy's keywords from their one description.
+# Its signature and docstring show the guard's and the fault policy's keywords from their one
+# description.
 StreamingCompensator.__init__ = with_keywords(StreamingCompensator.__init__,
-                                              ["self", "model", "dt_s"],
-                                              [dict(keyword="guarded", default="true",
-                                                    type="on/off", flag="--no-guard",
-                                                    doc="Reduce the correction where the inputs "
-                                                        "are novel to the model")]
-                                              + stream_options(), "fogdrift stream")
+                                              ["self", "model", "dt_s"], stream_options(),
+                                              "fogdrift stream")
 for _method in ("predict", "compensate", "save", "to_json"):
     method_naming_keywords(Model, _method)
 Model.load = staticmethod(naming_keywords(Model.load, "Model.load"))

@@ -25,7 +25,9 @@ def _value(option):
         return float(text)
     if kind == "numbers":  # "" is an empty list (simulate's start_up_temps_degc: the temps)
         return [float(v) for v in text.split(",")] if text else []
-    if kind == "mapping":
+    if kind == "number or none":
+        return None if text == "none" else float(text)
+    if kind in ("mapping", "assignments"):
         return {}
     return text
 

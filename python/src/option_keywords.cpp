@@ -52,6 +52,10 @@ std::string_view python_what(OptionType type) {
       return "a list of numbers or a str";
     case OptionType::on_off:
       return "a bool";
+    case OptionType::number_or_none:
+      return "None or a number";
+    case OptionType::assignments:
+      return "a dict or a list of 'NAME=VALUE' str";
   }
   return "?";
 }
@@ -65,6 +69,7 @@ std::string keyword_text(const OptionSpec& spec, const py::handle& value,
   if (value.is_none() &&
       (spec.type == OptionType::seconds_or_auto || spec.type == OptionType::whole_or_auto))
     return "auto";
+  if (value.is_none() && spec.type == OptionType::number_or_none) return "none";
   switch (spec.type) {
     case OptionType::whole:
       if (is_whole(value)) return whole_text(value);
@@ -112,6 +117,34 @@ std::string keyword_text(const OptionSpec& spec, const py::handle& value,
     case OptionType::on_off:
       if (is_bool(value)) return value.cast<bool>() ? "true" : "false";
       break;
+    case OptionType::number_or_none:
+      if (text) return value.cast<std::string>();
+      if (is_number(value)) return number_text(value);
+      break;
+    case OptionType::assignments: {
+      // {name: value} or ["name=value", ...]: one item each, whatever commas it holds.
+      std::vector<std::pair<std::string, std::string>> items;
+      bool fits = true;
+      if (py::isinstance<py::dict>(value)) {
+        for (const auto& [k, v] : value.cast<py::dict>()) {
+          fits = fits && py::isinstance<py::str>(k) && (py::isinstance<py::str>(v) || is_number(v));
+          if (fits)
+            items.emplace_back(k.cast<std::string>(),
+                               py::isinstance<py::str>(v) ? v.cast<std::string>() : number_text(v));
+        }
+        if (fits) return option_assignments_text(items);
+      } else if (py::isinstance<py::list>(value) || py::isinstance<py::tuple>(value)) {
+        std::string joined;
+        for (const py::handle item : value) {
+          fits = fits && py::isinstance<py::str>(item);
+          if (fits)
+            joined += (joined.empty() ? "" : std::string(1, kAssignmentSeparator)) +
+                      item.cast<std::string>();
+        }
+        if (fits) return joined;
+      }
+      break;
+    }
   }
   std::string shown = py::repr(value).cast<std::string>();
   if (shown.size() > 40) shown = shown.substr(0, 37) + "...";

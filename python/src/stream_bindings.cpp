@@ -18,22 +18,13 @@
 #include "convert.hpp"
 #include "fogdrift/base/error.hpp"
 #include "fogdrift/stream/compensator.hpp"
-#include "fogdrift/stream/fault_option_table.hpp"
+#include "fogdrift/stream/stream_option_table.hpp"
 #include "option_keywords.hpp"
 
 namespace py = pybind11;
 
 namespace fogdrift::python {
 namespace {
-
-const OptionSpec kGuarded{"guarded",
-                          "",
-                          OptionType::on_off,
-                          "",
-                          "",
-                          "Reduce the correction where the inputs are novel to the model "
-                          "(`fogdrift stream --no-guard` turns it off)",
-                          {}};
 
 // The compensator with what it needs to check its samples: which thermometers the model reads.
 struct Stream {
@@ -63,32 +54,27 @@ struct Stream {
   }
 };
 
-// The fault policy's keywords come from its one description (fault_option_table.hpp), as
-// `fogdrift stream`'s flags do; `guarded` is the class's own.
+// The keywords come from `stream`'s one description (stream_option_table.hpp), as `fogdrift
+// stream`'s flags do: the guard and the fault policy.
 std::unique_ptr<Stream> make_stream(const CompensationModel& model, double dt_s,
                                     const py::kwargs& kwargs) {
   if (!(dt_s > 0) || !std::isfinite(dt_s))
     throw OptionError("dt_s", "must be a finite number of seconds > 0");
-  const auto& table = fault_option_table();
+  const auto& table = stream_option_table();
   const std::vector<OptionSpec> specs = specs_of(table);
   StreamOptions o;
   o.faults = fault_policy_of(model);  // timings fitted to the model, as `fogdrift stream` runs it
   for (const auto& [key, value] : kwargs) {
     const auto name = key.cast<std::string>();
-    if (name == "guarded") {
-      o.guarded =
-          parse_on_off_option(kGuarded, keyword_text(kGuarded, value, "StreamingCompensator"));
-      continue;
-    }
-    const Option<FaultPolicy>* option = find_option(table, name);
+    const Option<StreamOptions>* option = find_option(table, name);
     if (option == nullptr) {
-      std::string all = "model, dt_s, guarded";
+      std::string all = "model, dt_s";
       for (const auto& spec : specs) all += ", " + spec.keyword;
       throw py::type_error(fmt::format(
           "StreamingCompensator() got an unexpected keyword argument '{}'; its keywords are {}",
           name, all));
     }
-    option->set(o.faults, keyword_text(option->spec, value, "StreamingCompensator"));
+    option->set(o, keyword_text(option->spec, value, "StreamingCompensator"));
   }
   // "faults.bridge_s" is the keyword bridge_s here.
   in_keywords_of(specs, [&] { validate(o.faults); });
@@ -225,10 +211,11 @@ void bind_stream(py::module_& m) {
   m.def(
       "stream_options",
       [] {
-        const auto& t = fault_option_table();
+        const auto& t = stream_option_table();
         return describe_options(specs_of(t), defaults_of(t));
       },
-      "The fault-policy keywords of StreamingCompensator, one dict each (keyword, type, default, "
+      "The keywords of StreamingCompensator (the guard's switch and the fault policy), one dict "
+      "each (keyword, type, default, "
       "unit, doc, flag), from the one description `fogdrift stream`'s flags come from "
       "(docs/options.md). The defaults of bridge_s, hold_s and stuck_s are a model's unless it "
       "records its sample interval, when they are fitted to it.");
@@ -238,9 +225,9 @@ void bind_stream(py::module_& m) {
                      "novelty guard, and the fault policy (docs/field.md) that keeps the output "
                      "finite through bad samples, flagging each.")
       .def(py::init(&make_stream), py::arg("model"), py::arg("dt_s"), py::keep_alive<1, 2>(),
-           "dt_s: the logger's fixed sample interval, s. guarded: reduce the correction where "
-           "the inputs are novel (default True). The fault policy's options are `fogdrift "
-           "stream`'s, under their keywords (fogdrift.stream_options(), docs/options.md); the "
+           "dt_s: the logger's fixed sample interval, s. The other keywords, guarded (the "
+           "novelty guard, default True) and the fault policy's, are `fogdrift stream`'s "
+           "options, under their keywords (fogdrift.stream_options(), docs/options.md); the "
            "timings not given (bridge_s, hold_s, stuck_s) are fitted to the model, as `fogdrift "
            "stream` fits them.")
       .def("update", &update, py::arg("time_s"), py::arg("gyro_dph"), py::arg("temp_fog_degc"),

@@ -30,6 +30,10 @@ std::string_view to_string(OptionType type) {
       return "numbers";
     case OptionType::on_off:
       return "on/off";
+    case OptionType::number_or_none:
+      return "number or none";
+    case OptionType::assignments:
+      return "assignments";
   }
   return "?";
 }
@@ -52,12 +56,13 @@ std::string in_option_words(std::string text, const std::vector<OptionSpec>& spe
 
 namespace {
 
-/// A table cell: pipes escaped, so that a cell's text cannot end it.
+/// A table cell: pipes escaped, so that a cell's text cannot end it, and an assignments
+/// option's items on one line.
 std::string cell(const std::string& text) {
   std::string out;
   for (char c : text) {
     if (c == '|') out += '\\';
-    out += c;
+    out += c == kAssignmentSeparator ? ' ' : c;
   }
   return out;
 }
@@ -167,13 +172,54 @@ bool parse_on_off_option(const OptionSpec& spec, const std::string& text) {
   throw OptionError(spec.keyword, fmt::format("'{}' is not true or false", text));
 }
 
+std::optional<double> parse_number_or_none_option(const OptionSpec& spec, const std::string& text) {
+  if (text == "none") return std::nullopt;
+  const auto v = csv::parse_number(text);
+  if (!v)
+    throw OptionError(spec.keyword, fmt::format("'{}' is neither none nor a finite number", text));
+  return in_range(spec, *v);
+}
+
+std::vector<std::pair<std::string, std::string>> parse_assignments_option(const OptionSpec& spec,
+                                                                          const std::string& text) {
+  std::vector<std::pair<std::string, std::string>> items;
+  if (text.empty()) return items;
+  std::size_t from = 0;
+  for (;;) {
+    const std::size_t end = text.find(kAssignmentSeparator, from);
+    const std::string item =
+        text.substr(from, end == std::string::npos ? std::string::npos : end - from);
+    const std::size_t eq = item.find('=');
+    if (eq == std::string::npos || eq == 0)
+      throw OptionError(spec.keyword,
+                        fmt::format("'{}' is not NAME=VALUE (give one NAME=VALUE each time, the "
+                                    "option repeated for more)",
+                                    item));
+    items.emplace_back(item.substr(0, eq), item.substr(eq + 1));
+    if (end == std::string::npos) return items;
+    from = end + 1;
+  }
+}
+
 std::string option_number_text(double value) {
   return fmt::format("{}", value);
 }
 
 std::string option_numbers_text(const std::vector<double>& values) {
   std::string out;
-  for (const double v : values) out += (out.empty() ? "" : ",") + option_number_text(v);
+  for (const double v : values) {
+    if (!out.empty()) out += ',';
+    out += option_number_text(v);
+  }
+  return out;
+}
+
+std::string option_assignments_text(const std::vector<std::pair<std::string, std::string>>& items) {
+  std::string out;
+  for (const auto& [name, value] : items) {
+    if (!out.empty()) out += kAssignmentSeparator;
+    out += name + "=" + value;
+  }
   return out;
 }
 

@@ -2,23 +2,10 @@
 // (northfind.hpp) checks the segmentation and names each field by its keyword.
 #include "fogdrift/eval/eval_option_table.hpp"
 
+#include "fogdrift/model/guard_option.hpp"
+
 namespace fogdrift::eval {
 namespace {
-
-/// The novelty guard's switch, the same in every command that applies a model.
-template <class O>
-Option<O> guarded_option() {
-  return on_off_option<O>(
-      {"guarded",
-       "--no-guard",
-       {},
-       "",
-       "",
-       "Reduce the model's correction where its inputs are novel to it "
-       "(docs/field.md); off, the full correction everywhere",
-       {}},
-      [](auto& o) -> auto& { return o.guarded; });
-}
 
 OptionTable<EvaluationOptions> make_evaluation() {
   using O = EvaluationOptions;

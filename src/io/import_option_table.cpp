@@ -8,9 +8,55 @@
 namespace fogdrift {
 namespace {
 
+/// An assignments option on a map of names: each NAME once, each VALUE non-empty.
+template <class Get>
+Option<ImportRunOptions> names_map_option(OptionSpec spec, Get get) {
+  spec.type = OptionType::assignments;
+  return {spec,
+          [get](const ImportRunOptions& o) {
+            const std::map<std::string, std::string>& m = get(o);
+            return option_assignments_text({m.begin(), m.end()});
+          },
+          [get, spec](ImportRunOptions& o, const std::string& text) {
+            std::map<std::string, std::string> out;
+            for (const auto& [name, value] : parse_assignments_option(spec, text)) {
+              if (value.empty())
+                throw OptionError(spec.keyword, fmt::format("{}= names nothing", name));
+              if (!out.emplace(name, value).second)
+                throw OptionError(spec.keyword, fmt::format("{} is given twice", name));
+            }
+            get(o) = std::move(out);
+          }};
+}
+
 OptionTable<ImportRunOptions> make_import_table() {
   using O = ImportRunOptions;
   OptionTable<O> t;
+  t.push_back(names_map_option(
+      {"map",
+       "--map",
+       {},
+       "",
+       {},
+       "FOGDRIFT_COLUMN=FOREIGN_COLUMN, the flag repeated for each column: which foreign column "
+       "holds a fogdrift column, e.g. gyro_dph=\"Rate X [rad/s]\"; a further channel "
+       "(gyro_NAME_dph, temp_NAME_degc, accel_NAME_g, sf_NAME_ppm) too. Columns not mapped are "
+       "kept as extra columns",
+       {}},
+      [](auto& o) -> auto& { return o.read.columns; }));
+  t.push_back(names_map_option(
+      {"units",
+       "--unit",
+       {},
+       "",
+       {},
+       "FOGDRIFT_COLUMN=UNIT, the flag repeated for each column: time_s s|ms|us|iso8601|clock; "
+       "gyro_dph deg/h|deg/s|rad/s|mrad/s|arcsec/s; temperatures degC|K|degF; accel_*_g "
+       "g|mg|m/s2; table_deg deg|rad; any column counts:SCALE:OFFSET (value = counts·SCALE + "
+       "OFFSET) or intN:SCALE:OFFSET (a signed register). A column not listed is in fogdrift's "
+       "unit already",
+       {}},
+      [](auto& o) -> auto& { return o.units; }));
   const OptionSpec delimiter{"delimiter", "--delimiter",          OptionType::choice,
                              "",          "',', ';', '|' or tab", "Field separator",
                              {}};
@@ -229,6 +275,8 @@ const OptionTable<ImportRunOptions>& import_option_table() {
 
 ImportPlan import_plan(const ImportRunOptions& o) {
   ImportPlan plan{o.read, std::nullopt};
+  for (const auto& [column, unit] : o.units)
+    plan.read.conversions[column] = parse_unit(column, unit);
   const signal::HampelOptions defaults;
   if (o.hampel) {
     plan.read.outliers = o.hampel_options;

@@ -21,7 +21,8 @@ std::vector<std::string> compensated_columns(const std::string& target) {
 
 std::vector<CompensatedAxis> compensate_file(const ModelSet& set,
                                              const std::filesystem::path& input,
-                                             const std::filesystem::path& output, bool guarded) {
+                                             const std::filesystem::path& output,
+                                             const CompensateOptions& options) {
   const std::string source = input.string();
   // Only the columns a model reads are held; the others are copied from the file as they are.
   std::vector<std::string> needed;
@@ -45,7 +46,7 @@ std::vector<CompensatedAxis> compensate_file(const ModelSet& set,
             table.file(), 1, *table.find(name) + 1,
             fmt::format("already has a {} column; compensate the original recording", name));
     x.reading = target_values(recording, model.dataset.target_column);
-    x.prediction = model.predict(recording, guarded);
+    x.prediction = model.predict(recording, options.guarded);
     x.novelty = summarize_novelty(x.prediction.novelty, x.prediction.weight);
     axes.push_back(std::move(x));
   }

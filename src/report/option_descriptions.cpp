@@ -8,13 +8,15 @@
 
 #include "fogdrift/base/error.hpp"
 #include "fogdrift/eval/eval_option_table.hpp"
-#include "fogdrift/io/cut_option_table.hpp"
+#include "fogdrift/io/campaign_option_table.hpp"
 #include "fogdrift/io/import_option_table.hpp"
+#include "fogdrift/io/inspect_option_table.hpp"
 #include "fogdrift/io/join_option_table.hpp"
+#include "fogdrift/model/compensate_option_table.hpp"
 #include "fogdrift/report/paper_option_table.hpp"
 #include "fogdrift/signal/denoise_option_table.hpp"
 #include "fogdrift/sim/scenario_option_table.hpp"
-#include "fogdrift/stream/fault_option_table.hpp"
+#include "fogdrift/stream/stream_option_table.hpp"
 #include "fogdrift/train/train_option_table.hpp"
 
 namespace fogdrift::report {
@@ -31,21 +33,23 @@ struct Command {
   std::string_view name;
   OptionDescriptions (*describe)();
 };
-const std::array<Command, 13> kCommands = {{
+const std::array<Command, 15> kCommands = {{
     {"train", [] { return described(train_option_table()); }},
     {"simulate-calibration", [] { return described(sim::calibration_option_table()); }},
     {"simulate-northfind", [] { return described(sim::northfind_option_table()); }},
     {"simulate-stable",
      [] { return described(sim::northfind_option_table(), sim::stable_defaults()); }},
-    {"stream", [] { return described(fault_option_table()); }},
+    {"compensate", [] { return described(compensate_option_table()); }},
+    {"stream", [] { return described(stream_option_table()); }},
     {"denoise", [] { return described(signal::denoise_option_table()); }},
     {"evaluate", [] { return described(eval::evaluation_option_table()); }},
     {"northfind", [] { return described(eval::finding_option_table()); }},
     {"paper", [] { return described(paper_option_table()); }},
     {"plan", [] { return described(sim::chamber_option_table()); }},
     {"join", [] { return described(join_option_table()); }},
-    {"campaign", [] { return described(cut_option_table()); }},
+    {"campaign", [] { return described(campaign_option_table()); }},
     {"import", [] { return described(import_option_table()); }},
+    {"inspect", [] { return described(inspect_option_table()); }},
 }};
 
 }  // namespace

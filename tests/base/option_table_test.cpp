@@ -80,6 +80,29 @@ TEST(OptionTable, Switches) {
   EXPECT_EQ(keyword_of_error([&] { parse_on_off_option(s, "maybe"); }), "racing");
 }
 
+TEST(OptionTable, NumberOrNone) {
+  const OptionSpec s = spec("input_rate_dph", "--input-rate-dph", OptionType::number_or_none);
+  EXPECT_FALSE(parse_number_or_none_option(s, "none").has_value());
+  EXPECT_EQ(*parse_number_or_none_option(s, "-7.5"), -7.5);
+  EXPECT_EQ(*parse_number_or_none_option(s, "0"), 0.0);
+  for (const char* bad : {"", "None", "auto", "nan", "fast"})
+    EXPECT_EQ(keyword_of_error([&] { parse_number_or_none_option(s, bad); }), "input_rate_dph")
+        << bad;
+}
+
+// NAME=VALUE items, one a line: a name or value may hold commas and '=' (a foreign column's).
+TEST(OptionTable, Assignments) {
+  const OptionSpec s = spec("map", "--map", OptionType::assignments);
+  using Items = std::vector<std::pair<std::string, std::string>>;
+  EXPECT_EQ(parse_assignments_option(s, ""), Items{});
+  const Items items{{"gyro_dph", "rate, x (deg/h)"}, {"temp_fog_degc", "T=fog"}};
+  EXPECT_EQ(option_assignments_text(items), "gyro_dph=rate, x (deg/h)\ntemp_fog_degc=T=fog");
+  EXPECT_EQ(parse_assignments_option(s, option_assignments_text(items)), items);
+  EXPECT_EQ(parse_assignments_option(s, "a="), (Items{{"a", ""}}));  // an empty value is a value
+  for (const char* bad : {"gyro_dph", "=x", "a=1\n\nb=2", "a=1\n"})
+    EXPECT_EQ(keyword_of_error([&] { parse_assignments_option(s, bad); }), "map") << bad;
+}
+
 // A number's text reads back to the same double, in the fewest digits (what --help shows).
 TEST(OptionTable, NumberTextRoundTrips) {
   EXPECT_EQ(option_number_text(0.05), "0.05");

@@ -75,6 +75,10 @@ check "only the text column is left behind" out_has "not carried onto the grid (
 check "every axis carried" bash -c "head -1 imu.csv | grep -qx 'time_s,gyro_dph,temp_fog_degc,accel_x_g,accel_z_g,gyro_y_dph,gyro_z_dph,sf_gx_ppm'"
 check "a channel needs a telling name" run 1 "$fd" import imu3.csv -o x.csv "${imu[@]}" --map gyroY=gy_dps
 check "channel name message" err_has "nor a further channel (gyro_NAME_dph, temp_NAME_degc, accel_NAME_g, sf_NAME_ppm"
+check "a column mapped twice" run 1 "$fd" import imu3.csv -o x.csv "${imu[@]}" --map accel_x_g=az_ms2
+check "mapped twice message" err_has "option --map: accel_x_g is given twice"
+check "a unit of a column given twice" run 1 "$fd" import imu3.csv -o x.csv "${imu[@]}" --unit gyro_y_dph=rad/s
+check "unit twice message" err_has "option --unit: gyro_y_dph is given twice"
 
 # --- the sheet: what a new user meets first ----------------------------------------------------
 check "no gyro in the sheet" run 1 "$fd" import sheet.csv -o s.csv --map time_s=Time
@@ -214,7 +218,11 @@ check "missing column message" err_has "option --reference: joined.csv has no co
 check "a reference that is not a target" run 1 "$fd" campaign x joined.csv --input-rate-dph 0 --reference temp_fog_degc=0
 check "not a target message" err_has "option --reference: 'temp_fog_degc' is not a target"
 check "a reference without a value" run 1 "$fd" campaign x joined.csv --input-rate-dph 0 --reference accel_x_g
-check "no value message" err_has "option --reference: 'accel_x_g' is not COLUMN=VALUE with VALUE a number"
+check "no value message" err_has "option --reference: 'accel_x_g' is not NAME=VALUE"
+check "a reference given twice" run 1 "$fd" campaign x joined.csv --input-rate-dph 0 --reference accel_x_g=0 --reference accel_x_g=1
+check "twice message" err_has "option --reference: accel_x_g is given twice"
+check "an input rate that is not a number" run 1 "$fd" campaign x joined.csv --input-rate-dph fast
+check "input rate message" err_has "option --input-rate-dph: 'fast' is neither none nor a finite number"
 check "a reference out of range" run 1 "$fd" campaign x joined.csv --cut-window-s 3600 --input-rate-dph 0 --reference accel_x_g=1e9
 check "out of range message" err_has "option --reference: accel_x_g: 1000000000 is not a number of magnitude at most 10000000, g"
 check "nothing written by failed campaigns" test ! -e x

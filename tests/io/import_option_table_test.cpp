@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <map>
 #include <string>
 #include <utility>
 #include <vector>
@@ -15,6 +16,8 @@ namespace {
 TEST(ImportOptionTable, DefaultsAreTheLibrarysAndEachOptionSetsItsOwnField) {
   const std::vector<std::string> before = defaults_of(import_option_table());
   const std::vector<std::pair<std::string, std::string>> given = {
+      {"map", "gyro_dph=Rate, X [rad/s]\ntime_s=t=ms"},
+      {"units", "gyro_dph=rad/s"},
       {"delimiter", "tab"},        {"decimal_comma", "true"},  {"time_from_zero", "true"},
       {"drop_extra", "true"},      {"skip_lines", "3"},        {"time_from_rate_hz", "100"},
       {"time_zero", "15:41:07"},   {"partial", "true"},        {"comment", "#"},
@@ -47,6 +50,33 @@ std::string refused_by(const std::vector<std::pair<std::string, std::string>>& g
     return option_word(specs_of(import_option_table()), e.option(), false);
   }
   return "(accepted)";
+}
+
+// The column map and units: one NAME=VALUE a flag, so a foreign name may hold commas and '=';
+// each name once; the units read by parse_unit when the plan is made.
+TEST(ImportOptionTable, TheMapAndUnitsAreAssignments) {
+  ImportRunOptions o;
+  apply_option(import_option_table(), o, "map", "gyro_dph=Rate, X [rad/s]\ntemp_fog_degc=T0");
+  EXPECT_EQ(o.read.columns, (std::map<std::string, std::string>{{"gyro_dph", "Rate, X [rad/s]"},
+                                                                {"temp_fog_degc", "T0"}}));
+  apply_option(import_option_table(), o, "units", "gyro_dph=rad/s\ntemp_fog_degc=K");
+  const ImportPlan plan = import_plan(o);
+  ASSERT_EQ(plan.read.conversions.size(), 2u);
+  EXPECT_EQ(plan.read.conversions.at("gyro_dph").scale,
+            parse_unit("gyro_dph", "rad/s").scale);
+  for (const auto& [keyword, text] : std::vector<std::pair<std::string, std::string>>{
+           {"map", "gyro_dph=a\ngyro_dph=b"}, {"map", "gyro_dph="}, {"units", "gyro_dph"}}) {
+    ImportRunOptions r;
+    EXPECT_THROW(apply_option(import_option_table(), r, keyword, text), OptionError) << text;
+  }
+  ImportRunOptions bad;
+  apply_option(import_option_table(), bad, "units", "gyro_dph=furlongs");
+  try {
+    import_plan(bad);
+    ADD_FAILURE() << "an unknown unit was accepted";
+  } catch (const OptionError& e) {
+    EXPECT_EQ(e.option(), "--unit gyro_dph=furlongs");  // the item, as parse_unit names it
+  }
 }
 
 TEST(ImportOptionTable, OptionsThatContradictOrDoNothingAreRefusedByName) {

@@ -49,7 +49,7 @@ TEST(CompensateFile, CopiesTheFieldsAndAddsEachAxissColumns) {
   const std::string text = to_csv(t.test);
   test::write_file(input, text);
   const auto output = dir.path() / "out.csv";
-  const std::vector<CompensatedAxis> axes = compensate_file(t.set, input, output, true);
+  const std::vector<CompensatedAxis> axes = compensate_file(t.set, input, output, {});
   ASSERT_EQ(axes.size(), 1U);
   EXPECT_EQ(axes[0].columns,
             (std::vector<std::string>{"drift_dph", "gyro_comp_dph", "novelty", "guard_weight"}));
@@ -83,9 +83,9 @@ TEST(CompensateFile, RefusesAFileAlreadyCompensatedAndWritesNothing) {
   const Trained& t = trained();
   const auto input = dir.path() / "in.csv";
   test::write_file(input, to_csv(t.test));
-  compensate_file(t.set, input, dir.path() / "once.csv", true);
+  compensate_file(t.set, input, dir.path() / "once.csv", {});
   try {
-    compensate_file(t.set, dir.path() / "once.csv", dir.path() / "twice.csv", true);
+    compensate_file(t.set, dir.path() / "once.csv", dir.path() / "twice.csv", {});
     FAIL() << "compensated twice";
   } catch (const InputError& e) {
     EXPECT_EQ(e.line(), 1U);

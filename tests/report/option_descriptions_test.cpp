@@ -12,7 +12,8 @@ namespace {
 
 bool numeric(OptionType type) {
   return type == OptionType::whole || type == OptionType::number || type == OptionType::numbers ||
-         type == OptionType::seconds_or_auto || type == OptionType::whole_or_auto;
+         type == OptionType::seconds_or_auto || type == OptionType::whole_or_auto ||
+         type == OptionType::number_or_none;
 }
 
 TEST(OptionDescriptions, NumericBoundsAreTypedNotWritten) {

@@ -32,7 +32,9 @@ TEST(ProtocolFront, PricedCheapestFirstWithTheFrontMarked) {
   double best = -1e300;
   for (std::size_t i = 0; i < priced.size(); ++i) {
     const PricedProtocol& p = priced[i];
-    if (i > 0) EXPECT_LE(priced[i - 1].service_hours, p.service_hours);
+    if (i > 0) {
+      EXPECT_LE(priced[i - 1].service_hours, p.service_hours);
+    }
     EXPECT_NEAR(p.service_hours, p.schedule.hours - p.schedule.test_hours, 1e-9);
     EXPECT_EQ(p.on_front, p.worst_p10_pct > best) << p.studied->name;
     best = std::max(best, p.worst_p10_pct);
@@ -40,7 +42,9 @@ TEST(ProtocolFront, PricedCheapestFirstWithTheFrontMarked) {
     for (Approach a : kAll) {
       const auto one = price_protocols(Instrument{}, ChamberOptions{}, {a});
       for (const PricedProtocol& q : one)
-        if (q.studied == p.studied) EXPECT_GE(q.worst_p10_pct, p.worst_p10_pct);
+        if (q.studied == p.studied) {
+          EXPECT_GE(q.worst_p10_pct, p.worst_p10_pct);
+        }
     }
   }
 }
@@ -57,7 +61,9 @@ TEST(ProtocolFront, TheChoiceKeepsToTheBudgetAndTakesTheHighestTenthPercentile) 
     EXPECT_LE(chosen->service_hours, budget);
     EXPECT_TRUE(chosen->on_front) << budget;
     for (const PricedProtocol& p : priced)
-      if (p.service_hours <= budget) EXPECT_LE(p.worst_p10_pct, chosen->worst_p10_pct);
+      if (p.service_hours <= budget) {
+        EXPECT_LE(p.worst_p10_pct, chosen->worst_p10_pct);
+      }
   }
   // The cheapest meeting the goal is the first that does.
   const auto goal = cheapest_meeting_goal(priced);
@@ -66,7 +72,9 @@ TEST(ProtocolFront, TheChoiceKeepsToTheBudgetAndTakesTheHighestTenthPercentile) 
   EXPECT_GE(goal->worst_median_pct, kGoalMedianPct);
   EXPECT_GE(goal->worst_p10_pct, kGoalP10Pct);
   for (const PricedProtocol& p : priced)
-    if (p.service_hours < goal->service_hours) EXPECT_FALSE(p.meets_goal) << p.studied->name;
+    if (p.service_hours < goal->service_hours) {
+      EXPECT_FALSE(p.meets_goal) << p.studied->name;
+    }
   // A tie goes to the cheaper.
   std::vector<PricedProtocol> tie(2, priced.front());
   tie[1].service_hours += 5;

@@ -45,6 +45,9 @@ std::string another_value(const Option<O>& option, const std::string& current) {
       const std::string last = r.substr(r.rfind(", ") + 2);
       return last == current ? r.substr(0, r.find(',')) : last;
     }
+    case OptionType::number_or_none:  // train has none of these
+    case OptionType::assignments:
+      break;
   }
   return current;
 }

@@ -38,10 +38,13 @@ enum class OptionType {
   numbers,          ///< comma-separated finite numbers; Python a list of numbers or a str
   on_off,           ///< a switch; Python bool. On the command line a flag that turns it on, or,
                     ///< for a switch on by default, a flag --no-NAME that turns it off
+  number_or_none,   ///< "none" (not given) or a finite number; Python None or a number
+  assignments,      ///< NAME=VALUE items, the flag repeated for each (a NAME or VALUE may hold
+                    ///< commas); Python a dict or a list of "NAME=VALUE"
 };
 
 /// "whole", "number", "seconds or auto", "whole or auto", "choice", "text", "names", "numbers",
-/// "on/off".
+/// "on/off", "number or none", "assignments".
 std::string_view to_string(OptionType type);
 
 /// How an option is described to its users.
@@ -171,11 +174,23 @@ std::vector<std::string> option_items(std::string_view text);
 std::vector<double> parse_numbers_option(const OptionSpec& spec, const std::string& text);
 /// "true" or "false" (also 1/0, yes/no, on/off).
 bool parse_on_off_option(const OptionSpec& spec, const std::string& text);
+/// nullopt for "none".
+std::optional<double> parse_number_or_none_option(const OptionSpec& spec, const std::string& text);
+/// The text of an assignments option, its NAME=VALUE items one to a line (the separator of
+/// kAssignmentSeparator), each split at its first '=': "a=1\nb=x=y" is (a, 1), (b, x=y). ""
+/// is no item. OptionError for an item without '=' or with an empty NAME.
+std::vector<std::pair<std::string, std::string>> parse_assignments_option(const OptionSpec& spec,
+                                                                          const std::string& text);
+/// What separates an assignments option's items in its text: a line end, which no column name
+/// of a CSV header line holds.
+inline constexpr char kAssignmentSeparator = '\n';
 
 /// A number as an option's text: the shortest that reads back to the same double.
 std::string option_number_text(double value);
 /// Numbers as an option's text, comma-separated, each as option_number_text.
 std::string option_numbers_text(const std::vector<double>& values);
+/// NAME=VALUE items as an assignments option's text.
+std::string option_assignments_text(const std::vector<std::pair<std::string, std::string>>& items);
 
 // Options of each type on a field of `O`: `get(o)` returns a reference to the field, and the
 // option reads, writes and parses it as its type says.
@@ -224,6 +239,20 @@ Option<O> choice_option(OptionSpec spec, Get get, Name name, Parse parse) {
   return {
       spec, [get, name](const O& o) { return std::string(name(get(o))); },
       [get, parse, spec](O& o, const std::string& text) { get(o) = parse(text, spec.keyword); }};
+}
+
+/// An optional number, unset meaning "none": not given (a campaign's input rate).
+template <class O, class Get>
+Option<O> number_or_none_option(OptionSpec spec, Get get) {
+  spec.type = OptionType::number_or_none;
+  return {spec,
+          [get](const O& o) {
+            const auto& v = get(o);
+            return v ? option_number_text(*v) : std::string("none");
+          },
+          [get, spec](O& o, const std::string& text) {
+            get(o) = parse_number_or_none_option(spec, text);
+          }};
 }
 
 /// An optional number of seconds, unset meaning "auto".

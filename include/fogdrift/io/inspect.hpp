@@ -35,6 +35,13 @@ struct RecordingSummary {
   std::vector<std::string> missing;        ///< what a log to join lacks of a recording
 };
 
+/// What `fogdrift inspect` is asked (inspect_option_table.hpp).
+struct InspectOptions {
+  /// The file may be a log to join (a chamber sheet imported with --partial): read it as one
+  /// (read_log), without the gyro or the FOG thermometer and with times before power-on.
+  bool log = false;
+};
+
 /// A recording, or a log to join (a chamber sheet: span, step, columns and ranges).
 RecordingSummary summarize(const Recording& recording);
 

@@ -29,12 +29,20 @@ struct CompensatedAxis {
   NoveltySummary novelty;
 };
 
+/// How a file is compensated: `fogdrift compensate`'s options, and those of Octave's
+/// Model.predict and Model.compensate (compensate_option_table.hpp).
+struct CompensateOptions {
+  /// Reduce the correction where the inputs are novel to the model (guard.hpp).
+  bool guarded = true;
+};
+
 /// Compensates `input` with every model of `set` and writes `output` (the input's fields copied
 /// as they are, row by row, then four columns per axis). InputError when the input already has
 /// one of the columns it would add, or gains or loses rows while it is read; nothing is
 /// written then. The caller checks that `output` is not an input (run_files.hpp).
 std::vector<CompensatedAxis> compensate_file(const ModelSet& set,
                                              const std::filesystem::path& input,
-                                             const std::filesystem::path& output, bool guarded);
+                                             const std::filesystem::path& output,
+                                             const CompensateOptions& options);
 
 }  // namespace fogdrift
