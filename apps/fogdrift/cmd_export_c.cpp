@@ -25,13 +25,8 @@ struct ExportArgs {
   std::string model;
   std::optional<std::string> target;  ///< the axis of a model set
   std::string output;
-  std::string prefix = "fogdrift_model";
-  double stream_rate_hz = 0;
-  std::string precision = "double";
   bool quiet = false;
-  bool force_float = false;
-  std::shared_ptr<OptionFlags> fault_flags;  ///< the fault policy's (fault_options.hpp)
-  FaultPolicy faults;                        ///< as run: fitted to the model, then the flags
+  std::shared_ptr<OptionFlags> flags;  ///< export-c's options (export_option_table.hpp)
 };
 
 // The temperature arguments of PREFIX_update, as the summary names them: temp_fog, temp_acc1,
@@ -42,22 +37,18 @@ std::string temperature_arguments(const ModelSet& set) {
   return fmt::format("{}", fmt::join(names, ", "));
 }
 
-void run(const ExportArgs& given) {
-  ExportArgs a = given;
+void run(const ExportArgs& a) {
   // One axis (--target, or a model of one), or every axis of a model set in one header.
   const ModelSet set = axes_to_run(load_model_set(a.model, a.load), a.target);
   const CompensationModel& model = set.models.front();
   check_output_not_input(a.output, "--output");
-  a.faults = fault_policy(*a.fault_flags, model);
-  if (!(a.stream_rate_hz >= 0) || a.stream_rate_hz > 10000)
-    throw OptionError("--stream-rate-hz", fmt::format("{} is outside [0, 10000] Hz (0: no "
-                                                      "streaming part)",
-                                                      a.stream_rate_hz));
+  const ExportOptions o = export_options(*a.flags, model);
+  const bool single = o.precision == CPrecision::single;
+  const char* precision = single ? "float" : "double";
   std::string header;
   try {
-    header =
-        to_c_header(set, a.prefix, a.stream_rate_hz > 0 ? 1.0 / a.stream_rate_hz : 0.0, a.faults,
-                    a.precision == "float" ? CPrecision::single : CPrecision::double_);
+    header = to_c_header(set, o.prefix, o.stream_rate_hz > 0 ? 1.0 / o.stream_rate_hz : 0.0,
+                         o.faults, o.precision);
   } catch (const OptionError& e) {
     if (e.option() == "prefix")
       throw OptionError("--prefix", e.message() +
@@ -71,7 +62,7 @@ void run(const ExportArgs& given) {
     throw OptionError("--stream-rate-hz", e.message());
   }
   // A float header must compute what the model computes (c_header.hpp, FloatPrecisionCheck).
-  if (a.precision == "float") {
+  if (single) {
     for (const CompensationModel& m : set.models) {
       const FloatPrecisionCheck check = check_float_precision(m);
       if (check.share() <= kFloatShareLimit) continue;
@@ -81,7 +72,7 @@ void run(const ExportArgs& given) {
           "few digits of these inputs (docs/firmware.md, \"Float\")",
           m.dataset.target_column, check.max_error, target_of(m.dataset.target_column).unit(),
           check.inputs, check.share(), kFloatShareLimit);
-      if (!a.force_float)
+      if (!o.force_float)
         throw OptionError("--precision",
                           what + "; use --precision double, or --force-float to write it anyway");
       std::cerr << "fogdrift export-c: warning: " << what << "; written anyway (--force-float)\n";
@@ -89,7 +80,7 @@ void run(const ExportArgs& given) {
   }
   write_text_atomically(a.output, header);
   // What the header cannot do as fogdrift does is said on standard error, not only in it.
-  if (a.stream_rate_hz > 0)
+  if (o.stream_rate_hz > 0)
     for (const CompensationModel& m : set.models)
       if (m.dataset.preprocessing.rates.causality != signal::Causality::causal)
         std::cerr << fmt::format(
@@ -101,30 +92,30 @@ void run(const ExportArgs& given) {
     std::cout << fmt::format(
         "wrote {}: {} axes ({}) of {}, C99 in {}, no heap; each axis's model as "
         "{}_AXIS_predict_UNIT(features){}\n",
-        a.output, set.models.size(), fmt::join(set.targets(), ", "), a.model, a.precision, a.prefix,
-        a.stream_rate_hz > 0
+        a.output, set.models.size(), fmt::join(set.targets(), ", "), a.model, precision, o.prefix,
+        o.stream_rate_hz > 0
             ? fmt::format(", and {}_update(&state, time_s, {}, drift[{}]) for all of them at {} Hz",
-                          a.prefix, temperature_arguments(set), set.models.size(), a.stream_rate_hz)
+                          o.prefix, temperature_arguments(set), set.models.size(), o.stream_rate_hz)
             : std::string());
   } else if (!a.quiet) {
     std::cout << fmt::format(
         "wrote {}: {}_predict_{}(features[{}]) for {} ({}), C99 in {}, no heap\n", a.output,
-        a.prefix, target_of(model.dataset.target_column).unit(), model.inputs(), a.model,
-        model.provenance.method, a.precision);
-    const std::size_t block = a.stream_rate_hz > 0
+        o.prefix, target_of(model.dataset.target_column).unit(), model.inputs(), a.model,
+        model.provenance.method, precision);
+    const std::size_t block = o.stream_rate_hz > 0
                                   ? decimation_factor(model.dataset.preprocessing,
-                                                      1.0 / a.stream_rate_hz, "--stream-rate-hz")
+                                                      1.0 / o.stream_rate_hz, "--stream-rate-hz")
                                   : 1;
-    if (a.stream_rate_hz > 0)
+    if (o.stream_rate_hz > 0)
       std::cout << fmt::format(
           "  and {0}_update(&state, time_s, {6}) "
           "at {1} Hz{5}, causal{2}, with the sensor-fault policy (--bridge-s {3}, --hold-s {4})\n",
-          a.prefix, a.stream_rate_hz,
+          o.prefix, o.stream_rate_hz,
           model.dataset.preprocessing.rates.causality == signal::Causality::causal
               ? ""
               : " (the model was trained with centred rates: train with "
                 "--differentiator causal for firmware)",
-          a.faults.bridge_s, a.faults.hold_s,
+          o.faults.bridge_s, o.faults.hold_s,
           block > 1 ? fmt::format(" (the model once per {} samples, its {:.6g} s interval)", block,
                                   model.dataset.preprocessing.sample_interval_s)
                     : std::string(),
@@ -133,7 +124,7 @@ void run(const ExportArgs& given) {
       std::cout << fmt::format(
           "  and {}_novelty(features): {} guard prototypes, correction "
           "reduced from novelty {} to none at {}\n",
-          a.prefix, model.guard.size(), model.guard.settings.full_at, model.guard.settings.zero_at);
+          o.prefix, model.guard.size(), model.guard.settings.full_at, model.guard.settings.zero_at);
   }
 }
 
@@ -164,24 +155,11 @@ void add_export_c(CLI::App& app) {
   cmd->add_option("model", args->model, "Model file written by `fogdrift train`")->required();
   add_model_load_flags(cmd, &args->load);
   cmd->add_option("-o,--output", args->output, "Header to write (atomically)")->required();
-  cmd->add_option("--prefix", args->prefix, "C name prefix of every symbol")->capture_default_str();
   cmd->add_option("--target", args->target,
                   "With a model of several axes (train --targets): export this one alone, e.g. "
                   "gyro_y_dph (default: every axis in one header, with one update for all)");
-  cmd->add_option("--stream-rate-hz", args->stream_rate_hz,
-                  "Also write PREFIX_update() for samples at this fixed rate, Hz (0: none)")
-      ->capture_default_str();
-  cmd->add_option("--precision", args->precision,
-                  "Arithmetic of the header: double (the model's numbers, what fogdrift computes) "
-                  "or float (for a 32-bit FPU such as a Cortex-M4F's; docs/firmware.md gives its "
-                  "error and cost); times stay double")
-      ->check(CLI::IsMember({"double", "float"}))
-      ->capture_default_str();
-  cmd->add_flag("--force-float", args->force_float,
-                "With --precision float: write the header even where float departs from the "
-                "model by more than 1e-3 of the drift's STD on its training inputs (warned)");
   cmd->add_flag("-q,--quiet", args->quiet, "Print nothing on success");
-  args->fault_flags = add_fault_options(cmd);
+  args->flags = add_export_options(cmd);
   cmd->callback([args] { with_model_settings(args->model, [&] { run(*args); }); });
 }
 

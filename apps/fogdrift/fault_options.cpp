@@ -1,5 +1,6 @@
 #include "fault_options.hpp"
 
+#include "fogdrift/firmware/export_option_table.hpp"
 #include "fogdrift/stream/fault_option_table.hpp"
 #include "fogdrift/stream/stream_option_table.hpp"
 
@@ -21,15 +22,17 @@ O applied(const OptionFlags& flags, const OptionTable<O>& table, O options,
 
 }  // namespace
 
-std::shared_ptr<OptionFlags> add_fault_options(CLI::App* cmd) {
-  const auto& table = fault_option_table();
+std::shared_ptr<OptionFlags> add_export_options(CLI::App* cmd) {
+  const auto& table = export_option_table();
   return std::make_shared<OptionFlags>(cmd, specs_of(table), defaults_of(table),
-                                       "Sensor faults (docs/compensation.md)");
+                                       "Header and sensor faults (docs/firmware.md)");
 }
 
-FaultPolicy fault_policy(const OptionFlags& flags, const CompensationModel& model) {
-  return applied<FaultPolicy>(flags, fault_option_table(), fault_policy_of(model),
-                              [](FaultPolicy& p) -> FaultPolicy& { return p; });
+ExportOptions export_options(const OptionFlags& flags, const CompensationModel& model) {
+  ExportOptions options;
+  options.faults = fault_policy_of(model);  // the timings fitted to the model, then the flags
+  return applied<ExportOptions>(flags, export_option_table(), options,
+                                [](ExportOptions& o) -> FaultPolicy& { return o.faults; });
 }
 
 std::shared_ptr<OptionFlags> add_stream_options(CLI::App* cmd) {

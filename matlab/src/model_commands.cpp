@@ -8,6 +8,7 @@
 #include "fogdrift/base/error.hpp"
 #include "fogdrift/base/run_files.hpp"
 #include "fogdrift/firmware/c_header.hpp"
+#include "fogdrift/firmware/export_option_table.hpp"
 #include "fogdrift/io/recording.hpp"
 #include "fogdrift/io/target.hpp"
 #include "fogdrift/model/compensate_file.hpp"
@@ -17,7 +18,6 @@
 #include "fogdrift/model/model_set.hpp"
 #include "fogdrift/signal/differentiate.hpp"
 #include "fogdrift/stream/compensator.hpp"
-#include "fogdrift/stream/fault_option_table.hpp"
 
 namespace fogdrift::matlab {
 namespace {
@@ -95,41 +95,19 @@ void model_save(const Args& args, Results&) {
 void model_export_c(const Args& args, Results& out) {
   const CompensationModel m = model_of(args);
   const std::string path = text_of(args.at(1, "path"), "path");
-  const auto& table = fault_option_table();
+  const auto& table = export_option_table();
   const std::vector<OptionSpec> specs = specs_of(table);
-  FaultPolicy faults = fault_policy_of(m);
-  std::string prefix = "fogdrift_model", precision = "double";
-  double rate_hz = 0;
-  bool force_float = false;
-  const auto rest =
-      in_keywords_of(specs, [&] { return apply_options(table, faults, name_values(args, 2)); });
-  for (const auto& [name, value] : rest) {
-    if (name == "prefix") {
-      prefix = text_of(value, "prefix");
-    } else if (name == "stream_rate_hz") {
-      rate_hz = scalar_of(value, "stream_rate_hz");
-      if (!(rate_hz >= 0) || rate_hz > 10000)
-        throw OptionError("stream_rate_hz", fmt::format("{} is outside [0, 10000] Hz (0: no "
-                                                        "streaming part)",
-                                                        rate_hz));
-    } else if (name == "precision") {
-      precision = text_of(value, "precision");
-      if (precision != "double" && precision != "float")
-        throw OptionError("precision",
-                          fmt::format("must be double or float (got '{}')", precision));
-    } else if (name == "force_float") {
-      OptionSpec spec;
-      spec.keyword = name;
-      spec.type = OptionType::on_off;
-      force_float = option_text(spec, value) == "true";
-    } else {
-      unknown_option(args.function, name, {"prefix", "stream_rate_hz", "precision", "force_float"},
-                     specs);
-    }
-  }
+  ExportOptions o;
+  o.faults = fault_policy_of(m);  // the timings fitted to the model, as export-c fits them
+  for (const auto& [name, value] :
+       in_keywords_of(specs, [&] { return apply_options(table, o, name_values(args, 2)); }))
+    unknown_option(args.function, name, {}, specs);
+  in_keywords_of(specs, [&] { validate(o.faults); });
+  const double rate_hz = o.stream_rate_hz;
+  const std::string precision = o.precision == CPrecision::single ? "float" : "double";
+  const bool force_float = o.force_float;
   const std::string header = in_keywords_of(specs, [&] {
-    return to_c_header(m, prefix, rate_hz > 0 ? 1.0 / rate_hz : 0.0, faults,
-                       precision == "float" ? CPrecision::single : CPrecision::double_);
+    return to_c_header(m, o.prefix, rate_hz > 0 ? 1.0 / rate_hz : 0.0, o.faults, o.precision);
   });
   if (precision == "float") {
     const FloatPrecisionCheck check = check_float_precision(m);

@@ -8,6 +8,7 @@
 
 #include "fogdrift/base/error.hpp"
 #include "fogdrift/eval/eval_option_table.hpp"
+#include "fogdrift/firmware/export_option_table.hpp"
 #include "fogdrift/io/campaign_option_table.hpp"
 #include "fogdrift/io/import_option_table.hpp"
 #include "fogdrift/io/inspect_option_table.hpp"
@@ -33,7 +34,7 @@ struct Command {
   std::string_view name;
   OptionDescriptions (*describe)();
 };
-const std::array<Command, 15> kCommands = {{
+const std::array<Command, 16> kCommands = {{
     {"train", [] { return described(train_option_table()); }},
     {"simulate-calibration", [] { return described(sim::calibration_option_table()); }},
     {"simulate-northfind", [] { return described(sim::northfind_option_table()); }},
@@ -41,6 +42,7 @@ const std::array<Command, 15> kCommands = {{
      [] { return described(sim::northfind_option_table(), sim::stable_defaults()); }},
     {"compensate", [] { return described(compensate_option_table()); }},
     {"stream", [] { return described(stream_option_table()); }},
+    {"export-c", [] { return described(export_option_table()); }},
     {"denoise", [] { return described(signal::denoise_option_table()); }},
     {"evaluate", [] { return described(eval::evaluation_option_table()); }},
     {"northfind", [] { return described(eval::finding_option_table()); }},

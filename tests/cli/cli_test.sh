@@ -656,7 +656,7 @@ check "export-c fault settings in the header" grep -qF "#define U_TEMP_MAX_DEGC 
 check "export-c bad fault setting" run 1 "$fd" export-c "$work/bp.json" -o "$work/bad.h" --stream-rate-hz 1 --bridge-s -1
 check "export-c bad fault setting message" err_has "option --bridge-s: -1 s must be ≥ 0"
 check "export-c bad stream rate" run 1 "$fd" export-c "$work/bp.json" -o "$work/bad.h" --stream-rate-hz -1
-check "export-c bad stream rate message" err_has "option --stream-rate-hz: -1 is outside [0, 10000] Hz"
+check "export-c bad stream rate message" err_has "option --stream-rate-hz: -1 Hz must be 0 … 10000"
 check "export-c window too short for the rate" run 1 "$fd" export-c "$work/bp.json" -o "$work/bad.h" --stream-rate-hz 0.001
 check "export-c window message names the option" err_has "option --stream-rate-hz"
 check "header has the function" grep -q "static inline unit42_real unit42_predict_dph" "$work/unit.h"

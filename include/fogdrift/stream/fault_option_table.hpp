@@ -1,6 +1,6 @@
 // The streaming fault policy's options, described once (option_table.hpp, docs/options.md):
-// `fogdrift stream`'s and `fogdrift export-c`'s flags and the keywords of Python's
-// StreamingCompensator come from this table. The timings a user does not give are fitted to
+// the last part of `stream`'s table (stream_option_table.hpp: `fogdrift stream`'s flags, Python's
+// StreamingCompensator's keywords) and of `export-c`'s (export_option_table.hpp). The timings a user does not give are fitted to
 // the model (fault_policy_for, stream_faults.hpp) by each front end.
 #pragma once
 
