@@ -7,13 +7,15 @@
 namespace fogdrift::app {
 namespace {
 
-/// `options` with `flags` applied and its fault policy checked, errors named by the flags.
+/// The options of `table` (an O with a `faults` policy) to run `model` with: the fault policy
+/// fitted to the model, then `flags` applied, the policy checked; errors named by the flags.
 template <class O>
-O applied(const OptionFlags& flags, const OptionTable<O>& table, O options,
-          FaultPolicy& (*faults)(O&)) {
+O fitted(const OptionFlags& flags, const OptionTable<O>& table, const CompensationModel& model) {
+  O options;
+  options.faults = fault_policy_of(model);
   flags.apply(table, options);
   try {
-    validate(faults(options));
+    validate(options.faults);
   } catch (const OptionError& e) {
     throw flags.named(e);
   }
@@ -29,10 +31,7 @@ std::shared_ptr<OptionFlags> add_export_options(CLI::App* cmd) {
 }
 
 ExportOptions export_options(const OptionFlags& flags, const CompensationModel& model) {
-  ExportOptions options;
-  options.faults = fault_policy_of(model);  // the timings fitted to the model, then the flags
-  return applied<ExportOptions>(flags, export_option_table(), options,
-                                [](ExportOptions& o) -> FaultPolicy& { return o.faults; });
+  return fitted(flags, export_option_table(), model);
 }
 
 std::shared_ptr<OptionFlags> add_stream_options(CLI::App* cmd) {
@@ -42,10 +41,7 @@ std::shared_ptr<OptionFlags> add_stream_options(CLI::App* cmd) {
 }
 
 StreamOptions stream_options(const OptionFlags& flags, const CompensationModel& model) {
-  StreamOptions options;
-  options.faults = fault_policy_of(model);  // the timings fitted to the model, then the flags
-  return applied<StreamOptions>(flags, stream_option_table(), options,
-                                [](StreamOptions& o) -> FaultPolicy& { return o.faults; });
+  return fitted(flags, stream_option_table(), model);
 }
 
 }  // namespace fogdrift::app
