@@ -103,13 +103,11 @@ void model_export_c(const Args& args, Results& out) {
        in_keywords_of(specs, [&] { return apply_options(table, o, name_values(args, 2)); }))
     unknown_option(args.function, name, {}, specs);
   in_keywords_of(specs, [&] { validate(o.faults); });
-  const double rate_hz = o.stream_rate_hz;
-  const std::string precision = o.precision == CPrecision::single ? "float" : "double";
-  const bool force_float = o.force_float;
   const std::string header = in_keywords_of(specs, [&] {
-    return to_c_header(m, o.prefix, rate_hz > 0 ? 1.0 / rate_hz : 0.0, o.faults, o.precision);
+    return to_c_header(m, o.prefix, o.stream_rate_hz > 0 ? 1.0 / o.stream_rate_hz : 0.0, o.faults,
+                       o.precision);
   });
-  if (precision == "float") {
+  if (o.precision == CPrecision::single) {
     const FloatPrecisionCheck check = check_float_precision(m);
     if (check.share() > kFloatShareLimit) {
       const std::string what = fmt::format(
@@ -118,14 +116,14 @@ void model_export_c(const Args& args, Results& out) {
           "these inputs (docs/firmware.md, \"Float\")",
           check.max_error, target_of(m.dataset.target_column).unit(), check.share(),
           kFloatShareLimit);
-      if (!force_float)
+      if (!o.force_float)
         throw OptionError("precision", what +
                                            "; use 'precision', 'double', or 'force_float', "
                                            "true to write it anyway");
       out.warnings.push_back(what + "; written anyway (force_float)");
     }
   }
-  if (rate_hz > 0 && m.dataset.preprocessing.rates.causality != signal::Causality::causal)
+  if (o.stream_rate_hz > 0 && m.dataset.preprocessing.rates.causality != signal::Causality::causal)
     out.warnings.push_back(
         "the model was trained with centred temperature rates; the header's update computes "
         "causal ones, so its drift differs from predict's (train with 'differentiator', "

@@ -287,6 +287,8 @@ check "svr train -v 1 refused" run 1 "$fd" svr train -v 1 "$dia" "$work/x.model"
 check "-v message" err_has "option -v: n-fold cross validation: n must be at least 2"
 check "options after the files refused" run 1 "$fd" svr train "$dia" "$work/x.model" -c 10
 check "usage message" err_has "svr train takes [options] DATA [MODEL]"
+check "a flag without its value refused" run 1 "$fd" svr train -c
+check "no value message" err_has "option -c: needs a value after it"
 check "-g with --sigma refused" run 1 "$fd" svr train -g 1 --sigma 1 "$dia" "$work/x.model"
 check "gamma or sigma message" err_has "option --sigma: give either -g or --sigma"
 check "svr train --help after options" run 0 "$fd" svr train -c 10 --help

@@ -18,12 +18,24 @@ TEST(ImportOptionTable, DefaultsAreTheLibrarysAndEachOptionSetsItsOwnField) {
   const std::vector<std::pair<std::string, std::string>> given = {
       {"map", "gyro_dph=Rate, X [rad/s]\ntime_s=t=ms"},
       {"units", "gyro_dph=rad/s"},
-      {"delimiter", "tab"},        {"decimal_comma", "true"},  {"time_from_zero", "true"},
-      {"drop_extra", "true"},      {"skip_lines", "3"},        {"time_from_rate_hz", "100"},
-      {"time_zero", "15:41:07"},   {"partial", "true"},        {"comment", "#"},
-      {"hold_empty", "true"},      {"split_at_reset", "true"}, {"hampel", "true"},
-      {"hampel_half_window", "5"}, {"hampel_sigma", "3"},      {"outlier_columns", "gyro_dph"},
-      {"rate_hz", "10"},           {"step_s", "60"},           {"method", "linear"},
+      {"delimiter", "tab"},
+      {"decimal_comma", "true"},
+      {"time_from_zero", "true"},
+      {"drop_extra", "true"},
+      {"skip_lines", "3"},
+      {"time_from_rate_hz", "100"},
+      {"time_zero", "15:41:07"},
+      {"partial", "true"},
+      {"comment", "#"},
+      {"hold_empty", "true"},
+      {"split_at_reset", "true"},
+      {"hampel", "true"},
+      {"hampel_half_window", "5"},
+      {"hampel_sigma", "3"},
+      {"outlier_columns", "gyro_dph"},
+      {"rate_hz", "10"},
+      {"step_s", "60"},
+      {"method", "linear"},
       {"max_gap_s", "0"}};
   ASSERT_EQ(given.size(), before.size());
   for (std::size_t i = 0; i < given.size(); ++i) {
@@ -62,8 +74,7 @@ TEST(ImportOptionTable, TheMapAndUnitsAreAssignments) {
   apply_option(import_option_table(), o, "units", "gyro_dph=rad/s\ntemp_fog_degc=K");
   const ImportPlan plan = import_plan(o);
   ASSERT_EQ(plan.read.conversions.size(), 2u);
-  EXPECT_EQ(plan.read.conversions.at("gyro_dph").scale,
-            parse_unit("gyro_dph", "rad/s").scale);
+  EXPECT_EQ(plan.read.conversions.at("gyro_dph").scale, parse_unit("gyro_dph", "rad/s").scale);
   for (const auto& [keyword, text] : std::vector<std::pair<std::string, std::string>>{
            {"map", "gyro_dph=a\ngyro_dph=b"}, {"map", "gyro_dph="}, {"units", "gyro_dph"}}) {
     ImportRunOptions r;
