@@ -215,7 +215,7 @@ grep -q 'LsqTrainer>;' "$registry" || fail "the registry's list did not take Lsq
 cmake -S "$tree" -B "$work/build" -G Ninja -DCMAKE_BUILD_TYPE=Release -DFOGDRIFT_BUILD_TESTS=OFF \
   -DFOGDRIFT_BUILD_BENCH=OFF -DFOGDRIFT_BUILD_PYTHON=OFF -DFOGDRIFT_BUILD_MATLAB=OFF >"$work/cmake.log" 2>&1 ||
   { cat "$work/cmake.log" >&2; fail "cmake failed"; }
-cmake --build "$work/build" --target fogdrift_cli >"$work/build.log" 2>&1 ||
+cmake --build "$work/build" --parallel "$(nproc)" --target fogdrift_cli >"$work/build.log" 2>&1 ||
   { tail -40 "$work/build.log" >&2; fail "the build failed"; }
 fd=$work/build/apps/fogdrift/fogdrift
 [ -x "$fd" ] || fail "no fogdrift at $fd"
