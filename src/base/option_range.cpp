@@ -58,6 +58,12 @@ std::string OptionRange::bounds_text() const {
   return out;
 }
 
+std::string OptionRange::bounds_phrase() const {
+  if (min && max && !min_open && !max_open)
+    return fmt::format("between {} and {}", bound_text(*min), bound_text(*max));
+  return bounds_text();
+}
+
 std::string OptionRange::text() const {
   const std::string bounds = bounds_text();
   if (bounds.empty()) return note;

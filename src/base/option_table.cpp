@@ -96,13 +96,14 @@ std::string options_markdown(const std::vector<OptionSpec>& specs,
 
 namespace {
 
-/// A parsed value checked against the option's bounds: "-1 s must be ≥ 0", the value written as
+/// A parsed value checked against the option's bounds: "-1 s must be ≥ 0", "200 °C must be
+/// between -70 and 100", the value written as
 /// every front end writes it (5.0 on a command line and 5 from Python both read "5").
 double in_range(const OptionSpec& spec, double value) {
   if (!spec.range.contains(value))
     throw OptionError(spec.keyword, fmt::format("{}{} must be {}", option_number_text(value),
                                                 spec.unit.empty() ? "" : " " + spec.unit,
-                                                spec.range.bounds_text()));
+                                                spec.range.bounds_phrase()));
   return value;
 }
 

@@ -29,6 +29,14 @@ TEST(OptionRange, ReadsAsTheDocsWriteIt) {
   EXPECT_EQ(OptionRange().text(), "");
 }
 
+TEST(OptionRange, AMessageSaysAClosedRangeInWords) {
+  EXPECT_EQ(between(-70, 100).bounds_phrase(), "between -70 and 100");
+  EXPECT_EQ(between(0, 1e6).bounds_phrase(), "between 0 and 1e6");
+  EXPECT_EQ(above(0).at_most(100).bounds_phrase(), "> 0, ≤ 100");
+  EXPECT_EQ(at_least(0).bounds_phrase(), "≥ 0");
+  EXPECT_EQ(at_least(2).with("ssa-svr ≥ 5").bounds_phrase(), "≥ 2");
+}
+
 TEST(OptionRange, ContainsItsClosedEndsAndNotItsOpenOnes) {
   EXPECT_TRUE(between(1, 4).contains(1));
   EXPECT_TRUE(between(1, 4).contains(4));
@@ -60,13 +68,15 @@ TEST(OptionRange, EveryParserRefusesAValueOutsideTheBounds) {
   EXPECT_EQ(parse_number_option(bridge, "0"), 0.0);
 
   OptionSpec degree{"max_degree", "--max-degree", OptionType::whole, "", between(1, 6), "", {}};
-  EXPECT_EQ(refusal("max_degree", [&] { parse_whole_option(degree, "7"); }), "7 must be 1 … 6");
-  EXPECT_EQ(refusal("max_degree", [&] { parse_whole_option(degree, "0"); }), "0 must be 1 … 6");
+  EXPECT_EQ(refusal("max_degree", [&] { parse_whole_option(degree, "7"); }),
+            "7 must be between 1 and 6");
+  EXPECT_EQ(refusal("max_degree", [&] { parse_whole_option(degree, "0"); }),
+            "0 must be between 1 and 6");
   EXPECT_EQ(parse_whole_option(degree, "6"), 6u);
 
   OptionSpec temps{"temps_degc", "--temps", OptionType::numbers, "°C", between(-70, 100), "", {}};
   EXPECT_EQ(refusal("temps_degc", [&] { parse_numbers_option(temps, "0,150"); }),
-            "150 °C must be -70 … 100");
+            "150 °C must be between -70 and 100");
 
   OptionSpec window{"rate_window_s",
                     "--rate-window-s",

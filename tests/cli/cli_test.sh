@@ -32,7 +32,7 @@ assert sum(s["action"] == "powered (recorded)" for s in d["steps"]) == 8, d' "$w
 check "plan refuses a chamber that does not move" run 1 "$fd" plan --chamber-ramp-degc-per-min 0
 check "plan names the chamber's flag" err_has "option --chamber-ramp-degc-per-min: 0 °C/min must be > 0, ≤ 100"
 check "plan refuses a protocol simulate refuses" run 1 "$fd" plan --repetitions 0
-check "plan names the protocol's flag" err_has "option --repetitions: 0 must be 1 … 100"
+check "plan names the protocol's flag" err_has "option --repetitions: 0 must be between 1 and 100"
 check "plan refuses a missing instrument" run 1 "$fd" plan --instrument "$work/no_such_unit.json"
 check "plan names the missing file" err_has "$work/no_such_unit.json"
 printf '{"thermal": {"capacity_j_per_k": {"housing": 1e7}}}' >"$work/slow_unit.json"
@@ -81,7 +81,7 @@ check "plan says which to drop" err_has "option --hours: chooses the protocol, a
 check "plan refuses a service condition that is not one" run 1 "$fd" plan --hours 60 --service warm,sweep
 check "plan names --service" err_has "option --service: sweep is not a start-up condition"
 check "simulate refuses a start-up set point out of range" run 1 "$fd" simulate calibration --out "$work/bad_cal" --start-up-temps=0,150
-check "simulate names --start-up-temps" err_has "option --start-up-temps: 150 °C must be -70 … 100"
+check "simulate names --start-up-temps" err_has "option --start-up-temps: 150 °C must be between -70 and 100"
 check "44 recordings" test "$(ls "$work/cal"/*.csv | wc -l)" -eq 44
 check "manifest written" test -f "$work/cal/campaign.json"
 check "inspect accepts the campaign" run 0 "$fd" inspect "$work/cal"
@@ -398,7 +398,7 @@ check "ard needs the likelihood" run 1 "$fd" train "$work/small" --method gp --g
   -o "$work/x.json"
 check "ard message" err_has "option --gp-kernel: ard (one length scale per feature) needs"
 check "gp points range" run 1 "$fd" train "$work/small" --method gp --gp-points 5 -o "$work/x.json"
-check "gp points message" err_has "option --gp-points: 5 must be 10 … 4000"
+check "gp points message" err_has "option --gp-points: 5 must be between 10 and 4000"
 check "train fitness" run 0 "$fd" train "$work/small" --method gwo-svr --fitness train --population 3 \
   --iterations 1 --c-max 10 -o "$work/gwo.json"
 check "training fitness named" out_has "train RMSE"
@@ -658,7 +658,7 @@ check "export-c fault settings in the header" grep -qF "#define U_TEMP_MAX_DEGC 
 check "export-c bad fault setting" run 1 "$fd" export-c "$work/bp.json" -o "$work/bad.h" --stream-rate-hz 1 --bridge-s -1
 check "export-c bad fault setting message" err_has "option --bridge-s: -1 s must be ≥ 0"
 check "export-c bad stream rate" run 1 "$fd" export-c "$work/bp.json" -o "$work/bad.h" --stream-rate-hz -1
-check "export-c bad stream rate message" err_has "option --stream-rate-hz: -1 Hz must be 0 … 10000"
+check "export-c bad stream rate message" err_has "option --stream-rate-hz: -1 Hz must be between 0 and 10000"
 check "export-c window too short for the rate" run 1 "$fd" export-c "$work/bp.json" -o "$work/bad.h" --stream-rate-hz 0.001
 check "export-c window message names the option" err_has "option --stream-rate-hz"
 check "header has the function" grep -q "static inline unit42_real unit42_predict_dph" "$work/unit.h"
@@ -676,7 +676,7 @@ check "no campaign on error" test ! -e "$work/nope"
 check "bad approach name" run 1 "$fd" simulate northfind --out "$work/nope" --approach lukewarm
 check "bad approach message" err_has "option --approach: 'lukewarm' is not an approach (calibration, soaked, warm, ramping, sweep)"
 check "bad warm-off" run 1 "$fd" simulate northfind --out "$work/nope" --approach warm --warm-off-s -5
-check "bad warm-off message" err_has "option --warm-off-s: -5 s must be 0 … 1e6"
+check "bad warm-off message" err_has "option --warm-off-s: -5 s must be between 0 and 1e6"
 check "warm restarts" run 0 "$fd" simulate northfind --out "$work/nfw" --approach warm --temps 10 --findings 1
 check "warm manifest" python3 -c 'import json,sys; assert json.load(open(sys.argv[1]))["generator"]["approach"] == "warm"' "$work/nfw/campaign.json"
 

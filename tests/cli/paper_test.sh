@@ -37,7 +37,7 @@ check "paper stdout has Table 2" out_has "## Table 2 — compensation on the tes
 check "paper repetition folds in the header" out_has "fitness \`cv\` (leave one repetition out)"
 check "paper without studies" bash -c "! grep -qF 'Leave one temperature out' '$work/out'"
 check "paper bad seeds" run 1 "$fd" paper --seeds 0
-check "paper bad seeds message" err_has "option --seeds: 0 must be 1 … 1000"
+check "paper bad seeds message" err_has "option --seeds: 0 must be between 1 and 1000"
 check "paper bad fitness" run 1 "$fd" paper --fitness best
 check "paper bad fitness message" err_has "option --fitness"
 check "paper bad approach" run 1 "$fd" paper --approach lukewarm
@@ -47,7 +47,7 @@ check "paper sweep calibration message" err_has "option --cal-approaches: sweep 
 check "paper bad start-up" run 1 "$fd" paper --start-ups soaked,lukewarm
 check "paper bad start-up message" err_has "option --start-ups: 'lukewarm' is not an approach (calibration, soaked, warm, ramping, sweep)"
 check "paper bad nf temps" run 1 "$fd" paper --nf-temps 10,200
-check "paper bad nf temps message" err_has "option --nf-temps: 200 °C must be -70 … 100"
+check "paper bad nf temps message" err_has "option --nf-temps: 200 °C must be between -70 and 100"
 check "paper bad population" run 1 "$fd" paper --population 3
 check "paper bad population message" err_has "option --population"
 check "paper bad cv" run 1 "$fd" paper --cv temperatures

@@ -91,7 +91,7 @@ def test_options_are_checked_once_before_any_unit_runs(units, tmp_path):
     for options, message in [(dict(method="svm"), "option method: 'svm' is not a method"),
                              (dict(population=1), "option population: 1 must be ≥ 2"),
                              (dict(c_min=10.0, c_max=1.0), "option c_max"),
-                             (dict(method="poly", max_degree=9), "option max_degree: 9 must be 1 … 6")]:
+                             (dict(method="poly", max_degree=9), "option max_degree: 9 must be between 1 and 6")]:
         ran = []
         with pytest.raises(ValueError, match=message):
             train_fleet(paths, out=tmp_path / "models",

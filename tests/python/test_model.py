@@ -210,7 +210,7 @@ def test_train_options_and_errors_use_the_librarys_names(small):
             (dict(block_s="soon"), "option block_s: 'soon' is neither auto nor a number of seconds"),
             (dict(features="T(gps)"), "gps"),
             # The library's fields under this function's keywords, not degree or window_s.
-            (dict(method="poly", max_degree=99), "option max_degree: 99 must be 1 … 6"),
+            (dict(method="poly", max_degree=99), "option max_degree: 99 must be between 1 and 6"),
             (dict(rate_window_s=3.0), "option rate_window_s: a window of 3"),
             (dict(threads=-1), "option threads: '-1' is not a whole number ≥ 0"),
             # The epsilon search's own bounds, not --epsilon's (issue 34).
@@ -246,7 +246,7 @@ def test_a_gaussian_process_trains_as_the_command_line_does(small, tmp_path, cli
             (dict(gp_fit="ml"), "option gp_fit: 'ml' is not a way to choose the hyperparameters"),
             (dict(gp_kernel="ard"), "option gp_kernel: ard .* needs the likelihood fit"),
             (dict(gp_kernel="matern"), "option gp_kernel: 'matern' is not rbf or ard"),
-            (dict(gp_points=5), "option gp_points: 5 must be 10 … 4000"),
+            (dict(gp_points=5), "option gp_points: 5 must be between 10 and 4000"),
     ]:
         with pytest.raises(ValueError, match=message):
             fogdrift.train(small, method="gp", **kwargs)

@@ -81,7 +81,7 @@ def test_an_error_names_the_option_in_each_front_ends_words(tmp_path):
     # option that sets it, in its own words.
     for keyword, value, extra, rule in [
             ("rate_window_s", 1.0, {}, "a window of 1"),
-            ("max_degree", 9, dict(method="poly"), "9 must be 1 … 6"),
+            ("max_degree", 9, dict(method="poly"), "9 must be between 1 and 6"),
             ("epsilon_min", 0.0, dict(search_epsilon=True), "0 must be > 0"),
             ("search", "pso", dict(method="ssa-svr"), "'pso' contradicts ")]:
         with pytest.raises(ValueError, match=f"option {keyword}: .*{rule}"):
@@ -125,9 +125,9 @@ def test_simulate_has_one_description_in_every_face(cli, scenario):
 def test_simulate_names_an_error_in_each_front_ends_words(tmp_path):
     cli = os.environ.get("FOGDRIFT_CLI", "build/apps/fogdrift/fogdrift")
     for scenario, keyword, flag, value, rule in [
-            ("calibration", "temps_degc", "--temps", [-20, 120], "120 °C must be -70 … 100"),
+            ("calibration", "temps_degc", "--temps", [-20, 120], "120 °C must be between -70 and 100"),
             ("calibration", "test_repetitions", "--test-repetitions", 7, "7 is outside"),
-            ("northfind", "position_s", "--position-s", 5.0, "5 s must be 20 … 36000"),
+            ("northfind", "position_s", "--position-s", 5.0, "5 s must be between 20 and 36000"),
             ("stable", "output_rate_hz", "--rate-hz", 0, "0 Hz must be > 0, ≤ 2000")]:
         with pytest.raises(ValueError, match=f"option {keyword}: {rule}"):
             fogdrift.simulate(scenario, **{keyword: value})

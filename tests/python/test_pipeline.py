@@ -51,11 +51,11 @@ def test_simulate_options_are_the_librarys_and_checked():
     assert "table_deg" in nf["data"][0]
     for kwargs, message in [
             (dict(scenario="storm"), "option scenario: must be 'calibration'"),
-            (dict(repetitions=0), "option repetitions: 0 must be 1 … 100"),
+            (dict(repetitions=0), "option repetitions: 0 must be between 1 and 100"),
             (dict(temps_degc="warm"), "option temps_degc: 'warm' in 'warm' is not a finite"),
-            (dict(temps_degc=[200]), "option temps_degc: 200 °C must be -70 … 100"),
+            (dict(temps_degc=[200]), "option temps_degc: 200 °C must be between -70 and 100"),
             (dict(approaches="sunny"), "option approaches"),
-            (dict(scenario="stable", findings=0), "option findings: 0 must be 1 … 1000"),
+            (dict(scenario="stable", findings=0), "option findings: 0 must be between 1 and 1000"),
             (dict(instrument={"fog": {"bias_dph": "x"}}), "instrument"),
             (dict(instrument="/nonexistent/unit.json"), "unit.json: cannot open"),
     ]:

@@ -40,6 +40,9 @@ struct OptionRange {
   bool contains(double value) const;
   /// The bounds as a user reads them: "≥ 0", "> 0, ≤ 100", "1 … 1000"; "" without bounds.
   std::string bounds_text() const;
+  /// The bounds as a message says them: "between 1 and 1000" where bounds_text() is "1 … 1000",
+  /// else bounds_text().
+  std::string bounds_phrase() const;
   /// The bounds, then the note after "; ", or either alone.
   std::string text() const;
 };
