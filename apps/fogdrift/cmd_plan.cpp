@@ -2,6 +2,7 @@
 // (docs/field.md, "Chamber hours").
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <iostream>
 #include <memory>
@@ -17,6 +18,7 @@
 #include "fogdrift/report/protocol_figure.hpp"
 #include "fogdrift/sim/chamber.hpp"
 #include "fogdrift/sim/instrument.hpp"
+#include "fogdrift/sim/plan_option_table.hpp"
 #include "fogdrift/sim/protocol_front.hpp"
 #include "fogdrift/sim/scenario_option_table.hpp"
 #include "option_flags.hpp"
@@ -28,8 +30,6 @@ struct PlanArgs {
   std::string instrument_file;
   bool json = false;
   bool schedule = false;
-  std::optional<double> hours;
-  std::string service = "calibration,soaked,warm,ramping";
   std::string figures;  ///< with --hours: the front as PNG and JSON here; empty: none
   bool force = false;
 };
@@ -187,34 +187,33 @@ void print_choice(const sim::PricedProtocol& chosen, const std::vector<sim::Pric
 
 /// --hours: the protocol the budget buys, its figures first (a folder that cannot be written
 /// fails the command before anything is printed), then the choice as text or JSON.
-void choose(const PlanArgs& a, const sim::Instrument& instrument, const sim::ChamberOptions& c) {
+void choose(const PlanArgs& a, const sim::Instrument& instrument, const sim::PlanOptions& o) {
   if (!a.figures.empty()) check_output_not_input(a.figures, "--figures");
-  const auto priced =
-      sim::price_protocols(instrument, c, sim::approaches_from_string(a.service, "service"));
-  const auto chosen = sim::choose_protocol(priced, *a.hours);
+  const auto priced = sim::price_protocols(instrument, o.chamber, o.service);
+  const auto chosen = sim::choose_protocol(priced, *o.hours);
   if (!chosen)
     throw OptionError(
         "--hours", fmt::format("{:g} h buys no studied protocol: the cheapest, {}, "
                                "needs {:.1f} h in this chamber; give --hours {:.0f} "
                                "or more",
-                               *a.hours, priced.front().studied->name, priced.front().service_hours,
+                               *o.hours, priced.front().studied->name, priced.front().service_hours,
                                std::ceil(priced.front().service_hours)));
   if (!a.figures.empty()) {
     std::vector<std::string> problems;
     fill_directory_atomically(a.figures, a.force, [&](const std::filesystem::path& folder) {
-      problems = report::write_figures({report::protocol_front_figure(priced, *a.hours)}, folder);
+      problems = report::write_figures({report::protocol_front_figure(priced, *o.hours)}, folder);
     });
     std::cerr << "Wrote protocol_front (PNG and JSON) to " << a.figures << "/\n";
     for (const std::string& p : problems) std::cerr << "fogdrift plan: no PNG: " << p << "\n";
   }
   if (!a.json) {
-    print_choice(*chosen, priced, *a.hours, a.service);
+    print_choice(*chosen, priced, *o.hours, sim::approaches_to_string(o.service));
     print(chosen->studied->protocol, chosen->schedule, a.schedule);
     return;
   }
   nlohmann::ordered_json j;
-  j["budget_hours"] = *a.hours;
-  j["service"] = a.service;
+  j["budget_hours"] = *o.hours;
+  j["service"] = sim::approaches_to_string(o.service);
   j["chosen"] = priced_json(*chosen);
   const auto goal = sim::cheapest_meeting_goal(priced);
   j["goal_needs_hours"] =
@@ -245,55 +244,45 @@ void add_plan(CLI::App& app) {
       cmd, specs_of(sim::calibration_option_table()),
       defaults_of(sim::calibration_option_table(), sim::CalibrationOptions{}),
       "The protocol (as simulate calibration)");
-  const auto chamber = std::make_shared<OptionFlags>(
-      cmd, specs_of(sim::chamber_option_table()),
-      defaults_of(sim::chamber_option_table(), sim::ChamberOptions{}), "The chamber");
+  const auto plan = std::make_shared<OptionFlags>(cmd, specs_of(sim::plan_option_table()),
+                                                  defaults_of(sim::plan_option_table()),
+                                                  "The chamber, and the choice of a protocol");
   cmd->add_option("--instrument", args->instrument_file,
                   "Instrument parameters (JSON, as simulate --instrument); default: the built-in "
                   "instrument");
   cmd->add_flag("--schedule", args->schedule,
                 "Also list every step of the chamber in order (set point, action, air, minutes)");
   cmd->add_flag("--json", args->json, "Print JSON (with --schedule, every step) instead of text");
-  cmd->add_option("--hours", args->hours,
-                  "Instead of pricing the protocol given, choose one: of the protocols studied on "
-                  "the population, the one whose worst 10th percentile under --service is "
-                  "highest within this many service chamber hours (the test sweep left out), "
-                  "priced for this instrument and chamber (docs/field.md, \"Protocols worth "
-                  "their hours\")")
-      ->check(CLI::PositiveNumber);
-  auto* service =
-      cmd->add_option("--service", args->service,
-                      "With --hours: the start-up conditions the unit will meet in service, "
-                      "comma-separated (calibration, soaked, warm, ramping)")
-          ->capture_default_str();
   cmd->add_option("--figures", args->figures,
                   "With --hours: write the studied protocols against their hours "
                   "(protocol_front.png for people, .json for machines) into this new folder");
   cmd->add_flag("--force", args->force, "Replace the --figures folder if it exists");
-  cmd->callback([args, protocol, chamber, service] {
-    if (service->count() > 0 && !args->hours)
+  cmd->callback([args, protocol, plan] {
+    sim::PlanOptions o;
+    plan->apply(sim::plan_option_table(), o);
+    const auto given = plan->given();
+    const bool service_given =
+        std::any_of(given.begin(), given.end(), [](const auto& g) { return g.first == "service"; });
+    if (service_given && !o.hours)
       throw OptionError("--service", "names the conditions --hours chooses for; give --hours H");
-    if (!args->figures.empty() && !args->hours)
+    if (!args->figures.empty() && !o.hours)
       throw OptionError("--figures", "draws the protocols --hours chooses among; give --hours H");
     if (args->force && args->figures.empty())
       throw OptionError("--force", "replaces the folder of --figures; give --figures DIR with it");
-    sim::ChamberOptions c;
-    chamber->apply(sim::chamber_option_table(), c);
     const sim::Instrument instrument =
         args->instrument_file.empty()
             ? sim::Instrument{}
             : sim::instrument_from_json(read_text_file(args->instrument_file),
                                         args->instrument_file);
-    if (args->hours) {
+    if (o.hours) {
       if (!protocol->given().empty())
         throw OptionError("--hours", protocol->words("chooses the protocol, and {" +
                                                      protocol->given().front().first +
                                                      "} gives one: drop one of them"));
       try {
-        choose(*args, instrument, c);
+        choose(*args, instrument, o);
       } catch (const OptionError& e) {
-        if (e.option() == "service") throw OptionError("--service", e.message());
-        throw e.option().rfind("--", 0) == 0 ? e : chamber->named(e);
+        throw e.option().rfind("--", 0) == 0 ? e : plan->named(e);
       }
       return;
     }
@@ -301,9 +290,9 @@ void add_plan(CLI::App& app) {
     protocol->apply(sim::calibration_option_table(), p);
     sim::ChamberSchedule s;
     try {
-      s = sim::chamber_schedule(instrument, p, c);
+      s = sim::chamber_schedule(instrument, p, o.chamber);
     } catch (const OptionError& e) {
-      throw e.option().rfind("calibration.", 0) == 0 ? protocol->named(e) : chamber->named(e);
+      throw e.option().rfind("calibration.", 0) == 0 ? protocol->named(e) : plan->named(e);
     }
     if (args->json)
       std::cout << to_json(p, s, args->schedule).dump(2) << "\n";

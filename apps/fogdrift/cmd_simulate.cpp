@@ -13,6 +13,7 @@
 #include "fogdrift/base/run_files.hpp"
 #include "fogdrift/sim/instrument.hpp"
 #include "fogdrift/sim/population.hpp"
+#include "fogdrift/sim/population_option_table.hpp"
 #include "fogdrift/sim/scenario_option_table.hpp"
 #include "fogdrift/sim/scenarios.hpp"
 #include "option_flags.hpp"
@@ -25,7 +26,6 @@ struct SimulateArgs {
   std::uint64_t seed = 1;
   std::string instrument_file;
   bool force = false;
-  int count = 20;
 };
 
 sim::Instrument load_instrument(const std::string& file) {
@@ -177,21 +177,22 @@ void add_simulate(CLI::App& app) {
       "  fogdrift simulate calibration --out cal --instrument units/unit_03.json");
   pop->add_option("--out,-o", args->out, "Folder to create (must not exist or be empty)")
       ->required();
-  pop->add_option("--count", args->count, "Instruments to draw, 1..999")->capture_default_str();
+  const auto pop_flags = std::make_shared<OptionFlags>(
+      pop, specs_of(sim::population_option_table()), defaults_of(sim::population_option_table()));
   pop->add_option("--seed", args->seed, "Seed of the population")->capture_default_str();
   pop->add_flag("--force", args->force, "Replace --out if it exists (only after success)");
-  pop->callback([args] {
-    if (args->count < 1 || args->count > 999)
-      throw OptionError("--count", fmt::format("{} is outside 1..999", args->count));
+  pop->callback([args, pop_flags] {
+    sim::PopulationOptions o;
+    pop_flags->apply(sim::population_option_table(), o);
     fill_directory_atomically(args->out, args->force, [&](const std::filesystem::path& dir) {
-      for (int k = 1; k <= args->count; ++k)
+      for (unsigned k = 1; k <= o.count; ++k)
         write_text_atomically(
             dir / fmt::format("unit_{:02}.json", k),
             sim::to_json(sim::draw_instrument(args->seed, static_cast<std::uint64_t>(k))));
     });
     std::cout << fmt::format(
-        "wrote {} instruments unit_01.json … unit_{:02}.json to {} (seed {})\n", args->count,
-        args->count, args->out, args->seed);
+        "wrote {} instruments unit_01.json … unit_{:02}.json to {} (seed {})\n", o.count, o.count,
+        args->out, args->seed);
   });
 }
 

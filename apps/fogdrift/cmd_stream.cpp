@@ -25,6 +25,7 @@
 #include "fogdrift/model/model.hpp"
 #include "fogdrift/model/model_set.hpp"
 #include "fogdrift/stream/compensator.hpp"
+#include "fogdrift/stream/stream_command_option_table.hpp"
 #include "fogdrift/stream/stream_faults.hpp"
 
 namespace fogdrift::app {
@@ -35,10 +36,9 @@ struct StreamArgs {
   std::string model;
   std::optional<std::string> target;  ///< the axis of a model set
   std::string input = "-";
-  std::optional<double> rate_hz;  ///< none given: the model's own rate
-  bool strict = false;
-  std::shared_ptr<OptionFlags> flags;  ///< the guard's and the fault policy's (fault_options.hpp)
-  StreamOptions options;               ///< as run: faults fitted to the model, then the flags
+  /// The rate's, --strict's, the guard's and the fault policy's (fault_options.hpp).
+  std::shared_ptr<OptionFlags> flags;
+  StreamCommandOptions options;  ///< as run: faults fitted to the model, then the flags
 };
 
 // A header's fields as compensate and inspect read them (csv::read): quoted, trimmed.
@@ -80,16 +80,18 @@ void run(const StreamArgs& given) {
   // Every axis of the model (model_set.hpp), or the one --target names.
   const ModelSet set = axes_to_run(load_model_set(a.model, a.load), a.target);
   const CompensationModel& first = set.models.front();
+  a.options = stream_options(*a.flags, first);
   // Without --rate-hz, the model's own rate; a model file too old to record it needs the flag.
   const double model_dt_s = first.dataset.preprocessing.sample_interval_s;
-  if (!a.rate_hz && !(model_dt_s > 0))
+  if (!a.options.rate_hz && !(model_dt_s > 0))
     throw OptionError("--rate-hz", fmt::format("is needed: {} does not record the rate it was "
                                                "trained at (written before models did)",
                                                a.model));
-  const double rate_hz = a.rate_hz.value_or(1.0 / model_dt_s);
-  if (!(rate_hz > 0) || rate_hz > 10000)
-    throw OptionError("--rate-hz", fmt::format("{} is outside (0, 10000] Hz", rate_hz));
-  a.options = stream_options(*a.flags, first);
+  const double rate_hz = a.options.rate_hz.value_or(1.0 / model_dt_s);
+  if (!a.options.rate_hz && !(rate_hz <= kMaxStreamRateHz))
+    throw OptionError("--rate-hz", fmt::format("is needed: {} was trained at {} Hz, above the "
+                                               "{} Hz a stream runs at",
+                                               a.model, rate_hz, kMaxStreamRateHz));
   // Streamed, a model trained on centred rates sees causal ones, noisier than those it learned:
   // a tuned SVR's drift then departs from its batch drift by about the drift's own STD
   // (docs/compensation.md). The stream still runs; the user is told, as export-c tells.
@@ -109,7 +111,7 @@ void run(const StreamArgs& given) {
   compensators.reserve(set.models.size());
   with_flags({{"rate", "--rate-hz"}}, [&] {
     for (const CompensationModel& model : set.models)
-      compensators.emplace_back(model, dt_s, a.options);
+      compensators.emplace_back(model, dt_s, a.options.stream);
   });
 
   // Standard input through a file buffer of its own: std::cin, kept in step with C's stdio,
@@ -185,7 +187,7 @@ void run(const StreamArgs& given) {
     try {
       csv::split_fields(line, ',', name, line_no, fields, quoted);
     } catch (const InputError& e) {
-      if (a.strict) throw;
+      if (a.options.strict) throw;
       std::cerr << fmt::format("{}:{}: skipped: {}\n", name, line_no, e.message());
       ++skipped;
       continue;
@@ -194,7 +196,7 @@ void run(const StreamArgs& given) {
       // A torn line cannot carry its outputs; the next sample sees the gap it leaves.
       const std::string what =
           fmt::format("has {} fields, the header {}", fields.size(), header.size());
-      if (a.strict) throw InputError(name, line_no, 0, what);
+      if (a.options.strict) throw InputError(name, line_no, 0, what);
       std::cerr << fmt::format("{}:{}: skipped: {}\n", name, line_no, what);
       ++skipped;
       continue;
@@ -204,7 +206,7 @@ void run(const StreamArgs& given) {
     auto value_of = [&](std::size_t c, const std::string& what) {
       if (c == kAbsent) return 0.0;
       const auto value = csv::parse_number(fields[c]);
-      if (a.strict && (!value || !std::isfinite(*value)))
+      if (a.options.strict && (!value || !std::isfinite(*value)))
         throw InputError(
             name, line_no, c + 1,
             fmt::format("{} '{}' {}", what, csv::excerpt(fields[c]),
@@ -215,7 +217,7 @@ void run(const StreamArgs& given) {
     for (std::size_t k = 0; k < v.size(); ++k)
       if (k != 1) v[k] = value_of(column[k], names[k]);
     // --strict keeps the fixed interval to 1 %: a sample off it would bend every rate after it.
-    if (a.strict && std::isfinite(previous_time) &&
+    if (a.options.strict && std::isfinite(previous_time) &&
         std::abs(v[0] - previous_time - dt_s) > 0.01 * dt_s)
       throw InputError(name, line_no, column[0] + 1,
                        fmt::format("time_s steps by {} s, not the {} s of --rate-hz {}",
@@ -231,8 +233,8 @@ void run(const StreamArgs& given) {
       for (std::size_t k : further_of[x]) further_degc.push_back(v[k]);
       const StreamOutput out =
           compensator.update({v[0], v[1], v[2], v[3], v[4], std::span<const double>(further_degc)});
-      if (a.strict && out.flags != 0)
-        stop_at_fault(name, line_no, out.flags, names, column, v, a.options.faults);
+      if (a.options.strict && out.flags != 0)
+        stop_at_fault(name, line_no, out.flags, names, column, v, a.options.stream.faults);
       any |= out.flags;
       for (double value :
            {out.drift_dph, out.gyro_comp_dph, compensator.novelty(), compensator.weight()}) {
@@ -301,17 +303,10 @@ void add_stream(CLI::App& app) {
   add_model_load_flags(cmd, &args->load);
   cmd->add_option("input", args->input, "Recording CSV, or - for standard input")
       ->capture_default_str();
-  cmd->add_option("--rate-hz", args->rate_hz,
-                  "The logger's fixed sample rate, Hz (default: the model's own); the model's "
-                  "rate or a whole multiple of it, to 1 %. Steps more than 10 % off its "
-                  "interval are flagged off_interval");
   cmd->add_option("--target", args->target,
                   "With a model of several axes (train --targets): stream this one alone, e.g. "
                   "gyro_y_dph (default: every axis, each with drift_y_dph, gyro_y_comp_dph, "
                   "novelty_y, guard_weight_y, fault_flags_y)");
-  cmd->add_flag("--strict", args->strict,
-                "Stop at the first faulty sample or torn line, naming its line and column, instead "
-                "of compensating through it");
   args->flags = add_stream_options(cmd);
   cmd->callback([args] { with_model_settings(args->model, [&] { run(*args); }); });
 }

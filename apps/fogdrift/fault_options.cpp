@@ -2,20 +2,21 @@
 
 #include "fogdrift/firmware/export_option_table.hpp"
 #include "fogdrift/stream/fault_option_table.hpp"
-#include "fogdrift/stream/stream_option_table.hpp"
+#include "fogdrift/stream/stream_command_option_table.hpp"
 
 namespace fogdrift::app {
 namespace {
 
-/// The options of `table` (an O with a `faults` policy) to run `model` with: the fault policy
-/// fitted to the model, then `flags` applied, the policy checked; errors named by the flags.
-template <class O>
-O fitted(const OptionFlags& flags, const OptionTable<O>& table, const CompensationModel& model) {
+/// The options of `table` to run `model` with: the fault policy (`faults(options)`) fitted to
+/// the model, then `flags` applied, the policy checked; errors named by the flags.
+template <class O, class Faults>
+O fitted(const OptionFlags& flags, const OptionTable<O>& table, const CompensationModel& model,
+         Faults faults) {
   O options;
-  options.faults = fault_policy_of(model);
+  faults(options) = fault_policy_of(model);
   flags.apply(table, options);
   try {
-    validate(options.faults);
+    validate(faults(options));
   } catch (const OptionError& e) {
     throw flags.named(e);
   }
@@ -31,17 +32,20 @@ std::shared_ptr<OptionFlags> add_export_options(CLI::App* cmd) {
 }
 
 ExportOptions export_options(const OptionFlags& flags, const CompensationModel& model) {
-  return fitted(flags, export_option_table(), model);
+  return fitted(
+      flags, export_option_table(), model, [](auto& o) -> auto& { return o.faults; });
 }
 
 std::shared_ptr<OptionFlags> add_stream_options(CLI::App* cmd) {
-  const auto& table = stream_option_table();
+  const auto& table = stream_command_option_table();
   return std::make_shared<OptionFlags>(cmd, specs_of(table), defaults_of(table),
-                                       "Guard and sensor faults (docs/compensation.md)");
+                                       "Rate, guard and sensor faults (docs/compensation.md)");
 }
 
-StreamOptions stream_options(const OptionFlags& flags, const CompensationModel& model) {
-  return fitted(flags, stream_option_table(), model);
+StreamCommandOptions stream_options(const OptionFlags& flags, const CompensationModel& model) {
+  return fitted(
+      flags, stream_command_option_table(), model,
+      [](auto& o) -> auto& { return o.stream.faults; });
 }
 
 }  // namespace fogdrift::app

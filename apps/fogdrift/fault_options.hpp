@@ -1,6 +1,7 @@
 // The flags of the options that run a streaming compensator, each made from its one description:
-// `export-c`'s (export_option_table.hpp) and `stream`'s (stream_option_table.hpp), both ending in
-// the fault policy (FaultPolicy, stream_faults.hpp), whose timings are first fitted to the model.
+// `export-c`'s (export_option_table.hpp) and `stream`'s (stream_command_option_table.hpp), both
+// ending in the fault policy (FaultPolicy, stream_faults.hpp), whose timings are first fitted to
+// the model.
 #pragma once
 
 #include <memory>
@@ -8,6 +9,7 @@
 #include "fogdrift/firmware/export_option_table.hpp"
 #include "fogdrift/model/model.hpp"
 #include "fogdrift/stream/compensator.hpp"
+#include "fogdrift/stream/stream_command_option_table.hpp"
 #include "fogdrift/stream/stream_faults.hpp"
 #include "option_flags.hpp"
 
@@ -22,12 +24,12 @@ std::shared_ptr<OptionFlags> add_export_options(CLI::App* cmd);
 /// Checked; errors name the flag.
 ExportOptions export_options(const OptionFlags& flags, const CompensationModel& model);
 
-/// Adds `stream`'s flags to `cmd`: --no-guard and the fault policy's, in the group "Guard and
-/// sensor faults".
+/// Adds `stream`'s flags to `cmd` (stream_command_option_table.hpp): --rate-hz, --strict,
+/// --no-guard and the fault policy's, in the group "Rate, guard and sensor faults".
 std::shared_ptr<OptionFlags> add_stream_options(CLI::App* cmd);
 
 /// The options to stream `model` with: the fault policy fitted to it as export_options() fits
-/// it, then the flags given (the guard among them). Checked; errors name the flag.
-StreamOptions stream_options(const OptionFlags& flags, const CompensationModel& model);
+/// it, then the flags given. Checked; errors name the flag.
+StreamCommandOptions stream_options(const OptionFlags& flags, const CompensationModel& model);
 
 }  // namespace fogdrift::app

@@ -5,6 +5,7 @@
 
 #include <fmt/format.h>
 
+#include "fogdrift/stream/compensator.hpp"
 #include "fogdrift/stream/fault_option_table.hpp"
 
 namespace fogdrift {
@@ -27,7 +28,7 @@ OptionTable<ExportOptions> make_export_table() {
        "--stream-rate-hz",
        {},
        "Hz",
-       between(0, 10000).with("0: no streaming part"),
+       between(0, kMaxStreamRateHz).with("0: no streaming part"),
        "Also write PREFIX_update() for samples at this fixed rate: the model's rate or a whole "
        "multiple of it",
        {"rate"}},

@@ -16,8 +16,10 @@
 #include "fogdrift/model/compensate_option_table.hpp"
 #include "fogdrift/report/paper_option_table.hpp"
 #include "fogdrift/signal/denoise_option_table.hpp"
+#include "fogdrift/sim/plan_option_table.hpp"
+#include "fogdrift/sim/population_option_table.hpp"
 #include "fogdrift/sim/scenario_option_table.hpp"
-#include "fogdrift/stream/stream_option_table.hpp"
+#include "fogdrift/stream/stream_command_option_table.hpp"
 #include "fogdrift/train/train_option_table.hpp"
 
 namespace fogdrift::report {
@@ -34,20 +36,21 @@ struct Command {
   std::string_view name;
   OptionDescriptions (*describe)();
 };
-const std::array<Command, 16> kCommands = {{
+const std::array<Command, 17> kCommands = {{
     {"train", [] { return described(train_option_table()); }},
     {"simulate-calibration", [] { return described(sim::calibration_option_table()); }},
     {"simulate-northfind", [] { return described(sim::northfind_option_table()); }},
+    {"simulate-population", [] { return described(sim::population_option_table()); }},
     {"simulate-stable",
      [] { return described(sim::northfind_option_table(), sim::stable_defaults()); }},
     {"compensate", [] { return described(compensate_option_table()); }},
-    {"stream", [] { return described(stream_option_table()); }},
+    {"stream", [] { return described(stream_command_option_table()); }},
     {"export-c", [] { return described(export_option_table()); }},
     {"denoise", [] { return described(signal::denoise_option_table()); }},
     {"evaluate", [] { return described(eval::evaluation_option_table()); }},
     {"northfind", [] { return described(eval::finding_option_table()); }},
     {"paper", [] { return described(paper_option_table()); }},
-    {"plan", [] { return described(sim::chamber_option_table()); }},
+    {"plan", [] { return described(sim::plan_option_table()); }},
     {"join", [] { return described(join_option_table()); }},
     {"campaign", [] { return described(campaign_option_table()); }},
     {"import", [] { return described(import_option_table()); }},

@@ -205,7 +205,7 @@ check "stream without --rate-hz runs at the model's rate" run 0 "$fd" stream "$w
 cp "$work/out" "$work/stream_default.csv"
 check "  the same lines as --rate-hz 1" bash -c "'$fd' stream '$work/m.json' '$rec' --rate-hz 1 2>/dev/null | cmp -s - '$work/stream_default.csv'"
 check "an explicit --rate-hz 0 is refused, not taken as the default" run 1 "$fd" stream "$work/m.json" "$rec" --rate-hz 0
-check "  naming the range" err_has "is outside (0, 10000] Hz"
+check "  naming the range" err_has "option --rate-hz: 0 Hz must be > 0, ≤ 10000"
 check "a rate far from the model's is refused" run 1 "$fd" stream "$work/m.json" "$rec" --rate-hz 1.3
 check "  naming --rate-hz" err_has "--rate-hz"
 

@@ -134,7 +134,7 @@ check "unit k does not depend on the count" cmp "$work/units/unit_02.json" "$wor
 check "a drawn unit simulates" run 0 "$fd" simulate stable --out "$work/st3" --findings 2 --instrument "$work/units/unit_03.json"
 check "a drawn unit is another instrument" bash -c "! diff -rq '$work/st' '$work/st3' >/dev/null"
 check "population of none" run 1 "$fd" simulate population --out "$work/x" --count 0
-check "population count message" err_has "--count: 0 is outside 1..999"
+check "population count message" err_has "option --count: 0 must be between 1 and 999"
 
 # --- malformed inputs: every case in the corpus --------------------------------------------
 while IFS=$'\t' read -r name expected; do

@@ -148,14 +148,18 @@ def test_simulate_names_an_error_in_each_front_ends_words(tmp_path):
 
 def test_the_fault_policy_has_one_description_in_every_face(cli):
     described = json.loads(cli("options", "stream", "--json"))
+    # How the command reads its CSV, then the compensator's own options, which Python's
+    # StreamingCompensator takes: it is given each sample's interval and raises on a fault.
+    assert [o["keyword"] for o in described[:2]] == ["rate_hz", "strict"]
+    compensator = described[2:]
     assert [(o["keyword"], o["flag"], o["default"]) for o in fogdrift.stream_options()] == \
-        [(o["keyword"], o["flag"], o["default"]) for o in described]
-    assert described[0]["keyword"] == "guarded"  # the guard's switch, then the fault policy
+        [(o["keyword"], o["flag"], o["default"]) for o in compensator]
+    assert compensator[0]["keyword"] == "guarded"  # the guard's switch, then the fault policy
     signature = inspect.signature(fogdrift.StreamingCompensator.__init__).parameters
-    assert list(signature) == ["self", "model", "dt_s"] + [o["keyword"] for o in described]
+    assert list(signature) == ["self", "model", "dt_s"] + [o["keyword"] for o in compensator]
     assert_help_shows(cli("stream", "--help"), described, "stream")
     # export-c runs the fault policy alone: the header's guard is the model's.
-    assert_help_shows(cli("export-c", "--help"), described[1:], "export-c")
+    assert_help_shows(cli("export-c", "--help"), compensator[1:], "export-c")
     rows = rows_of("stream")
     assert [re.match(r"\| `(\w+)`", r).group(1) for r in rows] == [o["keyword"] for o in described]
 

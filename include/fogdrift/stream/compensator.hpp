@@ -52,6 +52,10 @@ struct Sample {
 /// StreamingCompensator start from it and set what the user gives.
 FaultPolicy fault_policy_of(const CompensationModel& model);
 
+/// The highest logger rate a streaming compensator is run at (`stream --rate-hz`, `export-c
+/// --stream-rate-hz`), Hz.
+inline constexpr double kMaxStreamRateHz = 10000;
+
 struct StreamOptions {
   /// Reduce the correction where the inputs are novel to the model (guard.hpp); ignored for a
   /// model without a guard.
