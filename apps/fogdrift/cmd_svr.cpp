@@ -17,6 +17,7 @@
 #include "fogdrift/base/error.hpp"
 #include "fogdrift/base/run_files.hpp"
 #include "fogdrift/svr/libsvm_format.hpp"
+#include "fogdrift/svr/libsvm_option_table.hpp"
 #include "fogdrift/svr/libsvm_options.hpp"
 #include "fogdrift/svr/svr.hpp"
 
@@ -33,6 +34,14 @@ struct SvrTrainArgs {
   std::vector<std::string> flags;  ///< the flags and their values, --solver pairs first
 };
 
+/// Whether svm-train's `flag` takes a value: all but the switches (-q) of its table; an unknown
+/// flag is taken to, and the parser names it.
+bool takes_value(const std::string& flag) {
+  for (const auto& o : svr::libsvm_train_option_table())
+    if (o.spec.flag == flag) return o.spec.type != OptionType::on_off;
+  return true;
+}
+
 /// Splits `args` into svm-train's flags with their values (-q and --json alone; --json is
 /// fogdrift's) and the files after them, as svm-train's usage has them: [options] DATA [MODEL].
 SvrTrainArgs split_train_args(std::vector<std::string> args) {
@@ -46,7 +55,7 @@ SvrTrainArgs split_train_args(std::vector<std::string> args) {
       a.json = true;
     } else if (t.size() > 1 && t[0] == '-' && files.empty()) {
       a.flags.push_back(t);
-      if (t != "-q") {
+      if (takes_value(t)) {
         if (i + 1 >= args.size()) throw OptionError(t, "needs a value after it");
         a.flags.push_back(args[++i]);
       }
@@ -180,6 +189,27 @@ void run_predict(const PredictArgs& a) {
   }
 }
 
+/// svm-train's flags as --help lists them, from their one description (libsvm_option_table.hpp).
+std::string train_flags_help() {
+  const auto& table = svr::libsvm_train_option_table();
+  const std::vector<OptionSpec> specs = specs_of(table);
+  const std::vector<std::string> defaults = defaults_of(table);
+  std::string out =
+      "Options (svm-train's, with its defaults; fogdrift options svr-train lists them):\n";
+  for (std::size_t i = 0; i < specs.size(); ++i)
+    out += fmt::format(
+        "  {:<8} {} [default: {}]\n", specs[i].flag, option_help(specs[i], specs, true),
+        // fogdrift's solver here, which its training uses too; LIBSVM's in
+        // fogdrift.svmtrain, whose users compare models with svm-train's.
+        specs[i].flag == "--solver" ? "pairs (fogdrift.svmtrain: libsvm)" : defaults[i]);
+  out +=
+      "  --json   print the fit summary as JSON\n"
+      "  DATA     training data, LIBSVM format; MODEL the model file (default: DATA's file name "
+      "+\n"
+      "           .model; fogdrift's JSON when it ends in .json)";
+  return out;
+}
+
 }  // namespace
 
 void add_svr(CLI::App& app) {
@@ -199,25 +229,7 @@ void add_svr(CLI::App& app) {
   // Every argument after the help flag is svm-train's, read by the library's parser of its
   // options (libsvm_options.hpp), so that `svr train` and fogdrift.svmtrain take one grammar.
   train->prefix_command();
-  train->footer(
-      "Options (svm-train's, and its defaults but the solver):\n"
-      "  -s 3        SVM type: epsilon-SVR only\n"
-      "  -t 2|0      kernel: 2 RBF exp(-gamma|u-v|^2), 0 linear u'v\n"
-      "  -g GAMMA    RBF gamma = 1/(2 sigma^2) (default 1/number of features)\n"
-      "  --sigma S   RBF width sigma, the paper's parameter (instead of -g)\n"
-      "  -c C        cost C > 0 (default 1)\n"
-      "  -p EPSILON  epsilon >= 0 of the insensitive tube, target units (default 0.1)\n"
-      "  -e TOL      stopping tolerance > 0 (default 0.001)\n"
-      "  -m MB       kernel cache, MB (default 100)\n"
-      "  -h 0|1      shrinking heuristics (default 1)\n"
-      "  -d, -r, -n  kept as svm-train keeps them; -b 0 (probability estimates are refused)\n"
-      "  -q          print nothing; --json the fit summary as JSON\n"
-      "  --solver pairs|libsvm  pairs (default): fogdrift's solver (its training uses it too),\n"
-      "              svm-train's optimum to the tolerance -e by another path, about 3x faster;\n"
-      "              libsvm: LIBSVM's working sets one for one, so the model, iterations and\n"
-      "              nSV are svm-train's (for audits)\n"
-      "  DATA        training data, LIBSVM format; MODEL the model file (default: DATA's file\n"
-      "              name + .model; fogdrift's JSON when it ends in .json)");
+  train->footer(train_flags_help());
   train->callback([train] {
     const std::vector<std::string> args = train->remaining();
     if (std::find(args.begin(), args.end(), "--help") != args.end()) {

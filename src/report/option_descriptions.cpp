@@ -20,6 +20,7 @@
 #include "fogdrift/sim/population_option_table.hpp"
 #include "fogdrift/sim/scenario_option_table.hpp"
 #include "fogdrift/stream/stream_command_option_table.hpp"
+#include "fogdrift/svr/libsvm_option_table.hpp"
 #include "fogdrift/train/train_option_table.hpp"
 
 namespace fogdrift::report {
@@ -36,7 +37,7 @@ struct Command {
   std::string_view name;
   OptionDescriptions (*describe)();
 };
-const std::array<Command, 17> kCommands = {{
+const std::array<Command, 18> kCommands = {{
     {"train", [] { return described(train_option_table()); }},
     {"simulate-calibration", [] { return described(sim::calibration_option_table()); }},
     {"simulate-northfind", [] { return described(sim::northfind_option_table()); }},
@@ -52,6 +53,7 @@ const std::array<Command, 17> kCommands = {{
     {"paper", [] { return described(paper_option_table()); }},
     {"plan", [] { return described(sim::plan_option_table()); }},
     {"join", [] { return described(join_option_table()); }},
+    {"svr-train", [] { return described(svr::libsvm_train_option_table()); }},
     {"campaign", [] { return described(campaign_option_table()); }},
     {"import", [] { return described(import_option_table()); }},
     {"inspect", [] { return described(inspect_option_table()); }},

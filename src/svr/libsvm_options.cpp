@@ -3,6 +3,7 @@
 #include "fogdrift/svr/libsvm_options.hpp"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <algorithm>
 #include <cmath>
@@ -12,6 +13,7 @@
 #include "fogdrift/base/csv.hpp"
 #include "fogdrift/base/error.hpp"
 #include "fogdrift/base/random.hpp"
+#include "fogdrift/svr/libsvm_option_table.hpp"
 
 namespace fogdrift::svr {
 namespace {
@@ -42,15 +44,6 @@ int whole_of(const std::string& flag, const std::string& value) {
   if (v != std::floor(v) || std::abs(v) > 1e9)
     throw OptionError(flag, fmt::format("must be a whole number (got '{}')", value));
   return static_cast<int>(v);
-}
-
-void check_probability(const std::string& value) {
-  const int b = whole_of("-b", value);
-  if (b == 1)
-    throw OptionError("-b",
-                      "probability estimates are not supported: fogdrift's ε-SVR gives the "
-                      "regression value only; drop -b 1");
-  if (b != 0) throw OptionError("-b", fmt::format("must be 0 or 1 (got '{}')", value));
 }
 
 /// Each flag with its value; -q alone. The flag's letter, and the value (empty for -q).
@@ -94,86 +87,72 @@ void check_kernel_type(int kernel_type) {
                                       kernel_type, name ? fmt::format(" ({})", name) : ""));
 }
 
+void check_probability(const std::string& value) {
+  const int b = whole_of("-b", value);
+  if (b == 1)
+    throw OptionError("-b",
+                      "probability estimates are not supported: fogdrift's ε-SVR gives the "
+                      "regression value only; drop -b 1");
+  if (b != 0) throw OptionError("-b", fmt::format("must be 0 or 1 (got '{}')", value));
+}
+
 LibsvmTrainOptions parse_libsvm_train_options(std::string_view text, std::size_t features) {
   return parse_libsvm_train_options(tokens_of(text), features);
 }
 
 LibsvmTrainOptions parse_libsvm_train_options(const std::vector<std::string>& tokens,
                                               std::size_t features) {
-  LibsvmTrainOptions o;
-  o.params.libsvm_path = true;
-  o.params.cache_mb = 100;  // svm-train's default
-  int svm_type = 3, kernel_type = 2;
-  double gamma = 0, sigma = 0;
-  for_each_flag(tokens, "svm-train's options", [&](const std::string& flag, const std::string& v) {
-    if (flag == "--solver") {
-      if (v != "libsvm" && v != "pairs")
-        throw OptionError(flag, fmt::format("must be libsvm or pairs (got '{}')", v));
-      o.params.libsvm_path = v == "libsvm";
-    } else if (flag == "-s") {
-      svm_type = whole_of(flag, v);
-    } else if (flag == "-t") {
-      kernel_type = whole_of(flag, v);
-    } else if (flag == "-d") {
-      o.degree = whole_of(flag, v);
-    } else if (flag == "-g") {
-      gamma = number_of(flag, v);
-      o.gamma_given = true;
-    } else if (flag == "--sigma") {
-      sigma = number_of(flag, v);
-      if (!(sigma > 0))
-        throw OptionError(flag, fmt::format("must be a finite number > 0 (got {})", v));
-      o.sigma_given = true;
-    } else if (flag == "-r") {
-      o.coef0 = number_of(flag, v);
-    } else if (flag == "-c") {
-      o.params.c = number_of(flag, v);
-    } else if (flag == "-n") {
-      number_of(flag, v);  // ν: ν-SVC, one-class and ν-SVR only; ε-SVR ignores it, as LIBSVM
-    } else if (flag == "-p") {
-      o.params.epsilon = number_of(flag, v);
-    } else if (flag == "-m") {
-      o.params.cache_mb = number_of(flag, v);
-    } else if (flag == "-e") {
-      o.params.tolerance = number_of(flag, v);
-    } else if (flag == "-h") {
-      const int h = whole_of(flag, v);
-      if (h != 0 && h != 1) throw OptionError(flag, fmt::format("must be 0 or 1 (got '{}')", v));
-      o.params.shrinking = h == 1;
-    } else if (flag == "-b") {
-      check_probability(v);
-    } else if (flag == "-v") {
-      o.folds = whole_of(flag, v);
-      if (o.folds < 2)
-        throw OptionError(flag, fmt::format("n-fold cross validation: n must be "
-                                            "at least 2 (got '{}')",
-                                            v));
-    } else if (flag == "-q") {
-      o.quiet = true;
-    } else if (flag.size() > 2 && flag[1] == 'w') {
+  const OptionTable<LibsvmFlags>& table = libsvm_train_option_table();
+  LibsvmFlags f;
+  for (std::size_t i = 0; i < tokens.size(); ++i) {
+    const std::string& flag = tokens[i];
+    if (flag.size() < 2 || flag[0] != '-')
+      throw OptionError(flag, "is not an option: svm-train's options are '-LETTER VALUE' pairs");
+    if (flag.size() > 2 && flag[1] == 'w')
       throw OptionError(flag,
                         "class weights apply to classification only; epsilon-SVR has none "
                         "(give each sample a weight instead)");
-    } else {
-      throw OptionError(flag,
-                        "is not one of svm-train's options (-s -t -d -g -r -c -n -p -m -e "
-                        "-h -b -v -q, and fogdrift's --solver libsvm|pairs and --sigma)");
+    const auto option = std::find_if(table.begin(), table.end(),
+                                     [&](const auto& o) { return o.spec.flag == flag; });
+    if (option == table.end()) {
+      std::vector<std::string> flags;
+      for (const auto& o : table) flags.push_back(o.spec.flag);
+      throw OptionError(
+          flag, fmt::format("is not one of svm-train's options ({})", fmt::join(flags, " ")));
     }
-  });
-  check_svm_type(svm_type);
-  check_kernel_type(kernel_type);
-  if (o.sigma_given && o.gamma_given) throw OptionError("--sigma", "give either -g or --sigma");
-  if (o.sigma_given) {
-    o.gamma_given = true;
-    o.gamma = Kernel::rbf_sigma(sigma).gamma;
-  } else if (!o.gamma_given) {
-    o.gamma = 1.0 / static_cast<double>(std::max<std::size_t>(1, features));
-  } else {
-    o.gamma = gamma;
+    std::string value = "true";  // a switch (-q) takes no value
+    if (option->spec.type != OptionType::on_off) {
+      if (i + 1 >= tokens.size()) throw OptionError(flag, "needs a value after it");
+      value = tokens[++i];
+    }
+    try {
+      option->set(f, value);
+    } catch (const OptionError& e) {
+      // The table names its options by keyword; a user of svm-train knows them by flag.
+      if (e.option() == option->spec.keyword) throw OptionError(flag, e.message());
+      throw;
+    }
   }
-  o.params.kernel = kernel_type == 0 ? Kernel::linear()
-                    : o.sigma_given  ? Kernel::rbf_sigma(sigma)
-                                     : Kernel::rbf_gamma(o.gamma);
+  if (f.sigma && f.gamma) throw OptionError("--sigma", "give either -g or --sigma");
+  LibsvmTrainOptions o;
+  o.params.libsvm_path = !f.pairs;
+  o.params.c = f.c;
+  o.params.epsilon = f.epsilon;
+  o.params.cache_mb = f.cache_mb;
+  o.params.tolerance = f.tolerance;
+  o.params.shrinking = f.shrinking;
+  o.degree = static_cast<int>(f.degree);
+  o.coef0 = f.coef0;
+  o.folds = static_cast<int>(f.folds);
+  o.quiet = f.quiet;
+  o.sigma_given = f.sigma.has_value();
+  o.gamma_given = f.gamma || f.sigma;
+  o.gamma = f.sigma   ? Kernel::rbf_sigma(*f.sigma).gamma
+            : f.gamma ? *f.gamma
+                      : 1.0 / static_cast<double>(std::max<std::size_t>(1, features));
+  o.params.kernel = f.kernel_type == 0 ? Kernel::linear()
+                    : f.sigma          ? Kernel::rbf_sigma(*f.sigma)
+                                       : Kernel::rbf_gamma(o.gamma);
   validate(o.params,
            ParamNames{"-c", o.sigma_given ? "--sigma" : "-g", "-p", "-e", "-m", "max_iterations"});
   return o;

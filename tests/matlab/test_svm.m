@@ -88,7 +88,7 @@ check(isequal(yl, y) && issparse(Xl) && isequal(full(Xl), X), 'libsvmread reads 
 expect_error(@() fogdrift.svmtrain(y, X, '-s 0'), 'fogdrift:badOption', 'svm_type 0 (C-SVC) is not supported', 'C-SVC refused');
 expect_error(@() fogdrift.svmtrain(y, X, '-t 1'), 'fogdrift:badOption', 'kernel_type 1 (polynomial)', 'polynomial refused');
 expect_error(@() fogdrift.svmtrain(y, X, '-b 1'), 'fogdrift:badOption', 'probability estimates', '-b 1 refused');
-expect_error(@() fogdrift.svmtrain(y, X, '-c ten'), 'fogdrift:badOption', 'option -c: must be a finite number', 'a word for C');
+expect_error(@() fogdrift.svmtrain(y, X, '-c ten'), 'fogdrift:badOption', 'option -c: ''ten'' is not a finite number', 'a word for C');
 expect_error(@() fogdrift.svmtrain(y, X, '-c 0'), 'fogdrift:badOption', 'option -c', 'C = 0');
 expect_error(@() fogdrift.svmtrain(y(1:10), X), 'fogdrift:badInput', 'has 240 rows and the label vector 10', 'rows differ');
 bad = X; bad(7, 2) = NaN;

@@ -39,13 +39,17 @@ void check_svm_type(int svm_type);
 /// 4 precomputed; fogdrift has 0 linear and 2 RBF.
 void check_kernel_type(int kernel_type);
 
-/// Parses svm-train's options. `features` is the number of columns of the training data (the
-/// default γ is its reciprocal). OptionError naming the flag for an unknown flag, a flag without
-/// its value, a value that is not a number of the flag's kind, a type or kernel fogdrift lacks
-/// (check_svm_type, check_kernel_type), probability estimates (-b 1), class weights (-wi) and
-/// values out of range (validate(Params)).
-/// fogdrift adds --solver libsvm|pairs (LIBSVM's working sets, the default here, or fogdrift's
-/// solver) and --sigma S (instead of -g).
+/// OptionError("-b") for probability estimates (-b 1), which fogdrift's ε-SVR does not give, or
+/// a value other than 0 or 1.
+void check_probability(const std::string& value);
+
+/// Parses svm-train's options, each described in libsvm_train_option_table(). `features` is the
+/// number of columns of the training data (the default γ is its reciprocal). OptionError naming the
+/// flag for an unknown flag, a flag without its value, a value that is not a number of the flag's
+/// kind, a type or kernel fogdrift lacks (check_svm_type, check_kernel_type), probability estimates
+/// (-b 1), class weights (-wi) and values out of range (validate(Params)). fogdrift adds --solver
+/// libsvm|pairs (LIBSVM's working sets, the default here, or fogdrift's solver) and --sigma S
+/// (instead of -g).
 LibsvmTrainOptions parse_libsvm_train_options(std::string_view text, std::size_t features);
 /// The same from arguments already split, as a command line gives them: flags and their values.
 LibsvmTrainOptions parse_libsvm_train_options(const std::vector<std::string>& tokens,
