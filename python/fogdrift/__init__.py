@@ -25,8 +25,8 @@ The package wraps fogdrift's C++ library (docs/python.md):
 from ._fogdrift import (Model, StreamingCompensator, __version__, allan_deviation, denoise,
                         denoise_options, evaluate, evaluate_options, features, find_north,
                         noise_terms, northfind, northfind_options, read_recording,
-                        release_memory, save_models, simulate, simulate_options,
-                        stream_options, train, train_options, write_recording)
+                        release_memory, save_models, sensed_options, simulate,
+                        simulate_options, stream_options, train, train_options, write_recording)
 from ._keywords import method_naming_keywords, naming_keywords
 from ._options import keyword_lines, with_keywords, with_options
 from ._progress import with_progress
@@ -47,17 +47,10 @@ simulate.__doc__ += "".join(
     f"\n\nKeywords of {scenario}:\n" + "\n".join(
         keyword_lines(simulate_options(scenario), f"fogdrift simulate {scenario}"))
     for scenario in ("calibration", "northfind", "stable"))
-evaluate = with_keywords(evaluate, ["model", "data"],
-                         [dict(keyword="input_rate_dph", default="None", type="number", unit="°/h",
-                               flag="--input-rate-dph",
-                               doc="Recordings only: the rate the gyro sensed (0 for an axis that "
-                                   "sees no rotation); without it each recording's mean is "
-                                   "subtracted and the turn-on bias is lost"),
-                          dict(keyword="references", default="{}", type="mapping",
-                               flag="--reference",
-                               doc="Recordings only: what another target sensed, in its unit, "
-                                   "e.g. {'accel_x_g': 0.0}")]
-                         + evaluate_options(), "fogdrift evaluate")
+# What the recordings' channels sensed (as evaluate --input-rate-dph and --reference), then the
+# evaluation's own options: each from its one description.
+evaluate = with_keywords(evaluate, ["model", "data"], sensed_options() + evaluate_options(),
+                         "fogdrift evaluate")
 northfind = with_keywords(northfind, ["campaign", ("model", None)], northfind_options(),
                           "fogdrift northfind")
 find_north = with_keywords(find_north, ["recording", "latitude_deg", ("model", None)],
@@ -83,6 +76,6 @@ del _method
 __all__ = ["Model", "SVR", "SVRGridSearchCV", "StreamingCompensator", "allan_deviation",
            "denoise", "evaluate", "features", "find_north", "noise_terms", "northfind",
            "read_recording", "release_memory", "save_models", "simulate", "train", "train_fleet",
-           "denoise_options", "evaluate_options", "northfind_options", "simulate_options",
-           "stream_options", "train_options",
+           "denoise_options", "evaluate_options", "northfind_options", "sensed_options",
+           "simulate_options", "stream_options", "train_options",
            "write_recording", "__version__"]

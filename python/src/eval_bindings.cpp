@@ -25,6 +25,7 @@
 #include "fogdrift/eval/findings.hpp"
 #include "fogdrift/eval/northfind.hpp"
 #include "fogdrift/io/campaign.hpp"
+#include "fogdrift/io/campaign_option_table.hpp"
 #include "fogdrift/io/target.hpp"
 #include "fogdrift/report/evaluation_figures.hpp"
 #include "option_keywords.hpp"
@@ -48,14 +49,22 @@ bool is_campaign(const py::object& o) {
 }
 
 py::object evaluate(const CompensationModel& model, const py::object& data,
-                    std::optional<double> input_rate_dph,
-                    const std::map<std::string, double>& references,
                     const std::optional<std::filesystem::path>& figures, const py::kwargs& kwargs) {
+  // What the recordings' channels sensed (sensed_option_table, as `evaluate --input-rate-dph`
+  // and `--reference`), then the evaluation's own options.
+  py::kwargs sensed_kwargs, evaluation_kwargs;
+  for (const auto& [key, value] : kwargs)
+    (find_option(sensed_option_table(), key.cast<std::string>()) ? sensed_kwargs
+                                                                 : evaluation_kwargs)[key] = value;
+  SensedOptions sensed;
+  apply_keywords(sensed_option_table(), sensed, sensed_kwargs, "evaluate");
   eval::EvaluationOptions options;
-  apply_keywords(eval::evaluation_option_table(), options, kwargs, "evaluate",
-                 {"model", "data", "input_rate_dph", "references", "figures"});
+  std::vector<std::string> own{"model", "data", "figures"};
+  for (const auto& o : sensed_option_table()) own.push_back(o.spec.keyword);
+  apply_keywords(eval::evaluation_option_table(), options, evaluation_kwargs, "evaluate", own);
   options.series = figures.has_value();
-  for (const auto& [column, value] : references) check_reference(column, value, "references");
+  const std::optional<double>& input_rate_dph = sensed.input_rate_dph;
+  const std::map<std::string, double>& references = sensed.references;
   eval::Evaluation e;
   std::string source;
   if (is_held_campaign(data)) {
@@ -267,6 +276,15 @@ py::dict noise_terms(const py::object& rate, double dt_s) {
 
 void bind_eval(py::module_& m) {
   m.def(
+      "sensed_options",
+      [] {
+        const auto& t = sensed_option_table();
+        return describe_options(specs_of(t), defaults_of(t));
+      },
+      "What the channels of fogdrift.evaluate's recordings sensed (input_rate_dph, "
+      "references), one dict each: the descriptions `fogdrift evaluate --input-rate-dph` and "
+      "`--reference` come from (docs/options.md).");
+  m.def(
       "evaluate_options",
       [] {
         const auto& t = eval::evaluation_option_table();
@@ -284,8 +302,7 @@ void bind_eval(py::module_& m) {
       "default, unit, doc, flag): the descriptions `fogdrift northfind`'s flags come from "
       "(docs/options.md).");
   m.def("evaluate", &evaluate, py::arg("model"), py::arg("data"), py::kw_only(),
-        py::arg("input_rate_dph") = py::none(),
-        py::arg("references") = std::map<std::string, double>{}, py::arg("figures") = py::none(),
+        py::arg("figures") = py::none(),
         "The paper's Table 2 view of a Model on test data, as `fogdrift evaluate --json` prints "
         "it: data is a campaign folder (its recordings with role 'test'), a recording (a path or "
         "a mapping of columns) or a list of them. Recordings have no manifest to say what rate "

@@ -36,24 +36,29 @@ OptionTable<SensedOptions> make_sensed_table() {
       "(sf_fog_ppm=0), a gyro axis's own input rate (docs/logs.md, \"Other "
       "targets\"); without one, train subtracts each recording's mean and says so",
       {}};
-  t.push_back({references,
-               [](const O& o) {
-                 std::vector<std::pair<std::string, std::string>> items;
-                 for (const auto& [column, value] : o.references)
-                   items.emplace_back(column, option_number_text(value));
-                 return option_assignments_text(items);
-               },
-               [references](O& o, const std::string& text) {
-                 std::map<std::string, double> out;
-                 for (const auto& [column, value] : parse_assignments_option(references, text)) {
-                   const double v = parse_number_option(references, value);
-                   check_reference(column, v, references.keyword);  // a target column, a sane value
-                   if (!out.emplace(column, v).second)
-                     throw OptionError(references.keyword,
-                                       fmt::format("{} is given twice", column));
-                 }
-                 o.references = std::move(out);
-               }});
+  t.push_back(
+      {references,
+       [](const O& o) {
+         std::vector<std::pair<std::string, std::string>> items;
+         for (const auto& [column, value] : o.references)
+           items.emplace_back(column, option_number_text(value));
+         return option_assignments_text(items);
+       },
+       [references](O& o, const std::string& text) {
+         std::map<std::string, double> out;
+         for (const auto& [column, value] : parse_assignments_option(references, text)) {
+           double v = 0;
+           try {
+             v = parse_number_option(references, value);
+           } catch (const OptionError& e) {  // which of the items
+             throw OptionError(references.keyword, fmt::format("{}: {}", column, e.message()));
+           }
+           check_reference(column, v, references.keyword);  // a target column, a sane value
+           if (!out.emplace(column, v).second)
+             throw OptionError(references.keyword, fmt::format("{} is given twice", column));
+         }
+         o.references = std::move(out);
+       }});
   return t;
 }
 

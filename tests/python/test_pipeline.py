@@ -178,6 +178,12 @@ def test_evaluate_is_the_command_lines_table_2(campaign, cli):
     assert lost[0].filename == __file__  # the user's line, not the package's
     assert [str(w.message) for w in lost][:len(without_rate["warnings"])] == without_rate["warnings"]
     assert got["overall"]["mae_before_dph"] != without_rate["overall"]["mae_before_dph"]
+    # The keyword's type, number or none: None is the keyword not given, a word is refused.
+    with pytest.warns(UserWarning, match="the turn-on bias is lost"):
+        assert fogdrift.evaluate(m, files, input_rate_dph=None)["overall"] == \
+            without_rate["overall"]
+    with pytest.raises(TypeError, match=r"evaluate\(\): input_rate_dph must be None or a number"):
+        fogdrift.evaluate(m, files, input_rate_dph=[7.5])
     with pytest.raises(ValueError, match="input_rate_dph: applies to recordings"):
         fogdrift.evaluate(m, d / "cal", input_rate_dph=0.0)
     with pytest.raises(ValueError, match="no calibration recordings with role test"):
@@ -374,8 +380,14 @@ def test_an_accelerometer_is_a_target_with_its_own_reference(campaign):
         fogdrift.evaluate(m, [rec])
     with pytest.raises(ValueError, match="references: 'temp_fog_degc' is not a target"):
         fogdrift.evaluate(m, [rec], references={"temp_fog_degc": 0.0})
-    with pytest.raises(ValueError, match="references: accel_x_g: nan is not a number of magnitude"):
+    with pytest.raises(ValueError, match="references: accel_x_g: 'nan' is not a finite number"):
         fogdrift.evaluate(m, [rec], references={"accel_x_g": float("nan")})
+    # The keyword's type, assignments: a dict, or a list of "NAME=VALUE" as --reference takes.
+    assert fogdrift.evaluate(m, [rec], references=["accel_x_g=0"])["overall"] == got
+    with pytest.raises(ValueError, match="references: accel_x_g is given twice"):
+        fogdrift.evaluate(m, [rec], references=["accel_x_g=0", "accel_x_g=0.1"])
+    with pytest.raises(TypeError, match=r"evaluate\(\): references must be a dict or a list"):
+        fogdrift.evaluate(m, [rec], references=0.0)
 
 
 def test_malformed_inputs_are_value_errors_naming_the_rule(campaign):
