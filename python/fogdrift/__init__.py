@@ -24,7 +24,7 @@ The package wraps fogdrift's C++ library (docs/python.md):
 """
 from ._fogdrift import (Model, StreamingCompensator, __version__, allan_deviation, denoise,
                         denoise_options, evaluate, evaluate_options, features, find_north,
-                        noise_terms, northfind, northfind_options, read_recording,
+                        model_load_options, noise_terms, northfind, northfind_options, read_recording,
                         release_memory, save_models, sensed_options, simulate,
                         simulate_options, stream_options, train, train_options, write_recording)
 from ._keywords import method_naming_keywords, naming_keywords
@@ -69,13 +69,19 @@ StreamingCompensator.__init__ = with_keywords(StreamingCompensator.__init__,
                                               "fogdrift stream")
 for _method in ("predict", "compensate", "save", "to_json"):
     method_naming_keywords(Model, _method)
-Model.load = staticmethod(naming_keywords(Model.load, "Model.load"))
-Model.from_json = staticmethod(naming_keywords(Model.from_json, "Model.from_json"))
+# allow_edited and allow_old_format, from the description of every command's --allow-edited
+# and --allow-old-format.
+Model.load = staticmethod(with_keywords(naming_keywords(Model.load, "Model.load"),
+                                        ["path", ("target", None)], model_load_options(),
+                                        "fogdrift compensate"))
+Model.from_json = staticmethod(with_keywords(naming_keywords(Model.from_json, "Model.from_json"),
+                                             ["text"], model_load_options(),
+                                             "fogdrift compensate"))
 del _method
 
 __all__ = ["Model", "SVR", "SVRGridSearchCV", "StreamingCompensator", "allan_deviation",
            "denoise", "evaluate", "features", "find_north", "noise_terms", "northfind",
            "read_recording", "release_memory", "save_models", "simulate", "train", "train_fleet",
-           "denoise_options", "evaluate_options", "northfind_options", "sensed_options",
-           "simulate_options", "stream_options", "train_options",
+           "denoise_options", "evaluate_options", "model_load_options", "northfind_options",
+           "sensed_options", "simulate_options", "stream_options", "train_options",
            "write_recording", "__version__"]

@@ -15,7 +15,9 @@
 #include "fogdrift/base/error.hpp"
 #include "fogdrift/io/recording.hpp"
 #include "fogdrift/model/model.hpp"
+#include "fogdrift/model/model_load_option_table.hpp"
 #include "fogdrift/model/model_set.hpp"
+#include "option_keywords.hpp"
 
 namespace py = pybind11;
 
@@ -46,28 +48,40 @@ void bind_model(py::module_& m) {
       "Writes a mapping of columns (dict or DataFrame) as a recording CSV, atomically; columns "
       "fogdrift does not know are written after its own, as they are.");
 
+  m.def(
+      "model_load_options",
+      [] {
+        const auto& t = model_load_option_table();
+        return describe_options(specs_of(t), defaults_of(t));
+      },
+      "The keywords of Model.load and Model.from_json (allow_edited, allow_old_format), one dict "
+      "each: the descriptions every command's --allow-edited and --allow-old-format come from "
+      "(docs/options.md).");
   py::class_<CompensationModel>(m, "Model",
                                 "A compensation model: features, scalers, regressor, novelty "
                                 "guard and provenance, as `fogdrift train` writes it.")
       .def_static(
           "load",
-          [](const std::filesystem::path& path, bool allow_edited, bool allow_old_format,
-             const std::optional<std::string>& target) {
-            return choose_model(load_model_set(path, {allow_edited, allow_old_format}), target,
-                                "target");
+          [](const std::filesystem::path& path, const std::optional<std::string>& target,
+             const py::kwargs& kwargs) {
+            ModelLoadOptions load;
+            apply_keywords(model_load_option_table(), load, kwargs, "Model.load",
+                           {"path", "target"});
+            return choose_model(load_model_set(path, load), target, "target");
           },
-          py::arg("path"), py::arg("allow_edited") = false, py::arg("allow_old_format") = false,
-          py::arg("target") = py::none(),
+          py::arg("path"), py::kw_only(), py::arg("target") = py::none(),
           "Reads and checks a model file (its checksum too, unless allow_edited); a file of "
           "format version 1 or 2, which has no checksum, only with allow_old_format. Of a model "
           "with several axes (fogdrift train --targets), target names the one to load, e.g. "
           "'gyro_y_dph'.")
       .def_static(
           "from_json",
-          [](const std::string& text, bool allow_edited, bool allow_old_format) {
-            return compensation_model_from_json(text, "(text)", {allow_edited, allow_old_format});
+          [](const std::string& text, const py::kwargs& kwargs) {
+            ModelLoadOptions load;
+            apply_keywords(model_load_option_table(), load, kwargs, "Model.from_json", {"text"});
+            return compensation_model_from_json(text, "(text)", load);
           },
-          py::arg("text"), py::arg("allow_edited") = false, py::arg("allow_old_format") = false)
+          py::arg("text"), "A model from a model file's text, checked as Model.load checks a file.")
       .def(
           "to_json", [](const CompensationModel& self) { return to_json(self); },
           "The model file's text, byte for byte what save() writes.")

@@ -164,6 +164,23 @@ def test_the_fault_policy_has_one_description_in_every_face(cli):
     assert [re.match(r"\| `(\w+)`", r).group(1) for r in rows] == [o["keyword"] for o in described]
 
 
+def test_a_model_is_loaded_with_the_options_of_every_command_that_reads_one(cli):
+    described = fogdrift.model_load_options()
+    assert [(o["keyword"], o["flag"], o["default"]) for o in described] == \
+        [("allow_edited", "--allow-edited", "false"),
+         ("allow_old_format", "--allow-old-format", "false")]
+    for function, first in ((fogdrift.Model.load, ["path", "target"]),
+                            (fogdrift.Model.from_json, ["text"])):
+        assert list(inspect.signature(function).parameters) == \
+            first + [o["keyword"] for o in described]
+        for o in described:
+            assert o["doc"][:40] in function.__doc__, o["keyword"]
+    for command in ("compensate", "stream", "export-c", "evaluate"):
+        help_text = re.sub(r"\s+", " ", cli(command, "--help"))
+        for o in described:
+            assert f" {o['flag']} " in help_text, (command, o["flag"])
+
+
 def test_denoise_has_one_description_in_every_face(cli, tmp_path):
     described = json.loads(cli("options", "denoise", "--json"))
     assert [(o["keyword"], o["flag"], o["default"]) for o in fogdrift.denoise_options()] == \
