@@ -276,28 +276,16 @@ py::dict noise_terms(const py::object& rate, double dt_s) {
 
 void bind_eval(py::module_& m) {
   m.def(
-      "sensed_options",
-      [] {
-        const auto& t = sensed_option_table();
-        return describe_options(specs_of(t), defaults_of(t));
-      },
+      "sensed_options", [] { return describe_options(sensed_option_table()); },
       "What the channels of fogdrift.evaluate's recordings sensed (input_rate_dph, "
       "references), one dict each: the descriptions `fogdrift evaluate --input-rate-dph` and "
       "`--reference` come from (docs/options.md).");
   m.def(
-      "evaluate_options",
-      [] {
-        const auto& t = eval::evaluation_option_table();
-        return describe_options(specs_of(t), defaults_of(t));
-      },
+      "evaluate_options", [] { return describe_options(eval::evaluation_option_table()); },
       "The options of fogdrift.evaluate, one dict each (keyword, type, default, unit, doc, flag): "
       "the descriptions `fogdrift evaluate`'s flags come from (docs/options.md).");
   m.def(
-      "northfind_options",
-      [] {
-        const auto& t = eval::finding_option_table();
-        return describe_options(specs_of(t), defaults_of(t));
-      },
+      "northfind_options", [] { return describe_options(eval::finding_option_table()); },
       "The options of fogdrift.northfind and fogdrift.find_north, one dict each (keyword, type, "
       "default, unit, doc, flag): the descriptions `fogdrift northfind`'s flags come from "
       "(docs/options.md).");

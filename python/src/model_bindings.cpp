@@ -49,11 +49,7 @@ void bind_model(py::module_& m) {
       "fogdrift does not know are written after its own, as they are.");
 
   m.def(
-      "model_load_options",
-      [] {
-        const auto& t = model_load_option_table();
-        return describe_options(specs_of(t), defaults_of(t));
-      },
+      "model_load_options", [] { return describe_options(model_load_option_table()); },
       "The keywords of Model.load and Model.from_json (allow_edited, allow_old_format), one dict "
       "each: the descriptions every command's --allow-edited and --allow-old-format come from "
       "(docs/options.md).");

@@ -46,4 +46,10 @@ void apply_keywords(const OptionTable<O>& table, O& o, const pybind11::kwargs& k
 pybind11::list describe_options(const std::vector<OptionSpec>& specs,
                                 const std::vector<std::string>& defaults);
 
+/// describe_options of a whole table, with its struct's defaults.
+template <class O>
+pybind11::list describe_options(const OptionTable<O>& table) {
+  return describe_options(specs_of(table), defaults_of(table));
+}
+
 }  // namespace fogdrift::python

@@ -209,11 +209,7 @@ py::dict run(Stream& s, const py::object& recording) {
 
 void bind_stream(py::module_& m) {
   m.def(
-      "stream_options",
-      [] {
-        const auto& t = stream_option_table();
-        return describe_options(specs_of(t), defaults_of(t));
-      },
+      "stream_options", [] { return describe_options(stream_option_table()); },
       "The keywords of StreamingCompensator (the guard's switch and the fault policy), one dict "
       "each (keyword, type, default, "
       "unit, doc, flag), from the one description `fogdrift stream`'s flags come from "
