@@ -118,7 +118,7 @@ svr::Params to_params(const std::string& kernel, double gamma, double c, double 
 
 // A fit as the Python estimator stores it: the support vectors' indices into the training rows,
 // their coefficients α⁺ − α⁻ and rows, ρ, the γ used, and the solver's summary.
-py::dict to_dict(const svr::FitResult& r, const svr::Data& data, double gamma) {
+py::dict fit_dict(const svr::FitResult& r, const svr::Data& data, double gamma) {
   const std::size_t n = data.rows, d = data.cols, m = r.model.size();
   py::array_t<std::int32_t> support(static_cast<py::ssize_t>(m));
   auto sv = support.mutable_unchecked<1>();
@@ -167,7 +167,7 @@ py::dict fit(const Array& x, const Array& y, const std::optional<Array>& weight,
     const svr::WorkspacePool::Lease workspace = workspaces().borrow();
     r.emplace(svr::fit(*set, p, nullptr, workspace.get()));
   });
-  return to_dict(*r, set->data(), g);
+  return fit_dict(*r, set->data(), g);
 }
 
 py::list fit_path(const Array& x, const Array& y, const std::optional<Array>& weight,
@@ -188,7 +188,7 @@ py::list fit_path(const Array& x, const Array& y, const std::optional<Array>& we
     path = svr::fit_c_path(*set, p, c_values, workspace.get());
   });
   py::list out;
-  for (const auto& r : path) out.append(to_dict(r, set->data(), g));
+  for (const auto& r : path) out.append(fit_dict(r, set->data(), g));
   return out;
 }
 
