@@ -59,7 +59,10 @@ TEST(LibsvmOptionTable, ATypedBoundIsCheckedAndNamedByTheFlag) {
            {"-m 0", "option -m: 0 MB must be > 0"},
            {"-g 0", "option -g: 0 must be > 0"},
            {"-d 1.5", "option -d: '1.5' is not a whole number ≥ 0"},
-           {"-q -c 2 -e 0", "option -e: 0 must be > 0"}}) {
+           {"-q -c 2 -e 0", "option -e: 0 must be > 0"},
+           // More than the field holds is refused, not wrapped round to 3 or 2.
+           {"-s 4294967299", "option -s: '4294967299' is more than 4294967295"},
+           {"-v 4294967298", "option -v: '4294967298' is more than 4294967295"}}) {
     try {
       parse_libsvm_train_options(text, 2);
       ADD_FAILURE() << text << " was accepted";

@@ -14,6 +14,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <limits>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -202,7 +203,12 @@ Option<O> whole_option(OptionSpec spec, Get get) {
   return {spec, [get](const O& o) { return std::to_string(get(o)); },
           [get, spec](O& o, const std::string& text) {
             using T = std::remove_cvref_t<decltype(get(o))>;
-            get(o) = static_cast<T>(parse_whole_option(spec, text));
+            const std::uint64_t value = parse_whole_option(spec, text);
+            // A value the field cannot hold would wrap: -s 4294967299 would read as 3.
+            if (value > static_cast<std::uint64_t>(std::numeric_limits<T>::max()))
+              throw OptionError(spec.keyword, "'" + text + "' is more than " +
+                                                  std::to_string(std::numeric_limits<T>::max()));
+            get(o) = static_cast<T>(value);
           }};
 }
 
