@@ -34,14 +34,6 @@ struct SvrTrainArgs {
   std::vector<std::string> flags;  ///< the flags and their values, --solver pairs first
 };
 
-/// Whether svm-train's `flag` takes a value: all but the switches (-q) of its table; an unknown
-/// flag is taken to, and the parser names it.
-bool takes_value(const std::string& flag) {
-  for (const auto& o : svr::libsvm_train_option_table())
-    if (o.spec.flag == flag) return o.spec.type != OptionType::on_off;
-  return true;
-}
-
 /// Splits `args` into svm-train's flags with their values (-q and --json alone; --json is
 /// fogdrift's) and the files after them, as svm-train's usage has them: [options] DATA [MODEL].
 SvrTrainArgs split_train_args(std::vector<std::string> args) {
@@ -55,7 +47,7 @@ SvrTrainArgs split_train_args(std::vector<std::string> args) {
       a.json = true;
     } else if (t.size() > 1 && t[0] == '-' && files.empty()) {
       a.flags.push_back(t);
-      if (takes_value(t)) {
+      if (!svr::is_libsvm_train_switch(t)) {  // an unknown flag too: the parser names it
         if (i + 1 >= args.size()) throw OptionError(t, "needs a value after it");
         a.flags.push_back(args[++i]);
       }

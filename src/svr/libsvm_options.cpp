@@ -46,14 +46,14 @@ int whole_of(const std::string& flag, const std::string& value) {
   return static_cast<int>(v);
 }
 
-/// Each flag with its value; -q alone. The flag's letter, and the value (empty for -q).
-template <class F>
-void for_each_flag(const std::vector<std::string>& t, const char* usage, F&& f) {
+/// Each flag with its value, a switch (`no_value(flag)`) alone with an empty value.
+template <class NoValue, class F>
+void for_each_flag(const std::vector<std::string>& t, const char* usage, NoValue no_value, F&& f) {
   for (std::size_t i = 0; i < t.size(); ++i) {
     const std::string& flag = t[i];
     if (flag.size() < 2 || flag[0] != '-')
       throw OptionError(flag, fmt::format("is not an option: {} are '-LETTER VALUE' pairs", usage));
-    if (flag == "-q") {
+    if (no_value(flag)) {
       f(flag, std::string());
       continue;
     }
@@ -96,6 +96,12 @@ void check_probability(const std::string& value) {
   if (b != 0) throw OptionError("-b", fmt::format("must be 0 or 1 (got '{}')", value));
 }
 
+bool is_libsvm_train_switch(const std::string& flag) {
+  for (const auto& o : libsvm_train_option_table())
+    if (o.spec.flag == flag) return o.spec.type == OptionType::on_off;
+  return false;
+}
+
 LibsvmTrainOptions parse_libsvm_train_options(std::string_view text, std::size_t features) {
   return parse_libsvm_train_options(tokens_of(text), features);
 }
@@ -103,36 +109,37 @@ LibsvmTrainOptions parse_libsvm_train_options(std::string_view text, std::size_t
 LibsvmTrainOptions parse_libsvm_train_options(const std::vector<std::string>& tokens,
                                               std::size_t features) {
   const OptionTable<LibsvmFlags>& table = libsvm_train_option_table();
+  const auto find = [&](const std::string& flag) {
+    return std::find_if(table.begin(), table.end(),
+                        [&](const auto& o) { return o.spec.flag == flag; });
+  };
   LibsvmFlags f;
-  for (std::size_t i = 0; i < tokens.size(); ++i) {
-    const std::string& flag = tokens[i];
-    if (flag.size() < 2 || flag[0] != '-')
-      throw OptionError(flag, "is not an option: svm-train's options are '-LETTER VALUE' pairs");
-    if (flag.size() > 2 && flag[1] == 'w')
-      throw OptionError(flag,
-                        "class weights apply to classification only; epsilon-SVR has none "
-                        "(give each sample a weight instead)");
-    const auto option = std::find_if(table.begin(), table.end(),
-                                     [&](const auto& o) { return o.spec.flag == flag; });
-    if (option == table.end()) {
-      std::vector<std::string> flags;
-      for (const auto& o : table) flags.push_back(o.spec.flag);
-      throw OptionError(
-          flag, fmt::format("is not one of svm-train's options ({})", fmt::join(flags, " ")));
-    }
-    std::string value = "true";  // a switch (-q) takes no value
-    if (option->spec.type != OptionType::on_off) {
-      if (i + 1 >= tokens.size()) throw OptionError(flag, "needs a value after it");
-      value = tokens[++i];
-    }
-    try {
-      option->set(f, value);
-    } catch (const OptionError& e) {
-      // The table names its options by keyword; a user of svm-train knows them by flag.
-      if (e.option() == option->spec.keyword) throw OptionError(flag, e.message());
-      throw;
-    }
-  }
+  // A flag the table lacks takes no value here, so that it is named below for what it is.
+  const auto no_value = [&](const std::string& flag) {
+    return find(flag) == table.end() || is_libsvm_train_switch(flag);
+  };
+  for_each_flag(tokens, "svm-train's options", no_value,
+                [&](const std::string& flag, const std::string& value) {
+                  if (flag.size() > 2 && flag[1] == 'w')
+                    throw OptionError(flag,
+                                      "class weights apply to classification only; epsilon-SVR "
+                                      "has none (give each sample a weight instead)");
+                  const auto option = find(flag);
+                  if (option == table.end()) {
+                    std::vector<std::string> flags;
+                    for (const auto& o : table) flags.push_back(o.spec.flag);
+                    throw OptionError(flag, fmt::format("is not one of svm-train's options ({})",
+                                                        fmt::join(flags, " ")));
+                  }
+                  try {
+                    option->set(f, option->spec.type == OptionType::on_off ? "true" : value);
+                  } catch (const OptionError& e) {
+                    // The table names its options by keyword; a user of svm-train knows them by
+                    // flag.
+                    if (e.option() == option->spec.keyword) throw OptionError(flag, e.message());
+                    throw;
+                  }
+                });
   if (f.sigma && f.gamma) throw OptionError("--sigma", "give either -g or --sigma");
   LibsvmTrainOptions o;
   o.params.libsvm_path = !f.pairs;
@@ -160,15 +167,17 @@ LibsvmTrainOptions parse_libsvm_train_options(const std::vector<std::string>& to
 
 bool parse_libsvm_predict_options(std::string_view text) {
   bool quiet = false;
-  for_each_flag(tokens_of(text), "svm-predict's options",
-                [&](const std::string& flag, const std::string& v) {
-                  if (flag == "-q")
-                    quiet = true;
-                  else if (flag == "-b")
-                    check_probability(v);
-                  else
-                    throw OptionError(flag, "is not one of svm-predict's options (-b 0, -q)");
-                });
+  for_each_flag(
+      tokens_of(text), "svm-predict's options",
+      [](const std::string& flag) { return flag == "-q"; },
+      [&](const std::string& flag, const std::string& v) {
+        if (flag == "-q")
+          quiet = true;
+        else if (flag == "-b")
+          check_probability(v);
+        else
+          throw OptionError(flag, "is not one of svm-predict's options (-b 0, -q)");
+      });
   return quiet;
 }
 

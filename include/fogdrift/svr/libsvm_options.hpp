@@ -43,6 +43,10 @@ void check_kernel_type(int kernel_type);
 /// a value other than 0 or 1.
 void check_probability(const std::string& value);
 
+/// Whether `flag` is one of svm-train's switches, given without a value (-q): read from
+/// libsvm_train_option_table(). False for every other flag, known or not.
+bool is_libsvm_train_switch(const std::string& flag);
+
 /// Parses svm-train's options, each described in libsvm_train_option_table(). `features` is the
 /// number of columns of the training data (the default γ is its reciprocal). OptionError naming the
 /// flag for an unknown flag, a flag without its value, a value that is not a number of the flag's
