@@ -45,7 +45,13 @@ SvrTrainArgs split_train_args(std::vector<std::string> args) {
     const std::string& t = args[i];
     if (t == "--json") {
       a.json = true;
-    } else if (t.size() > 1 && t[0] == '-' && files.empty()) {
+    } else if (t.size() > 1 && t[0] == '-' && !files.empty()) {
+      // svm-train's order; taken as MODEL, "-c" would become the model file's name.
+      throw OptionError(t, fmt::format("comes after DATA '{}', and svr train takes [options] "
+                                       "DATA [MODEL], its options first as svm-train's: move {} "
+                                       "before DATA (a file whose name begins with '-' is ./{})",
+                                       files[0], t, t));
+    } else if (t.size() > 1 && t[0] == '-') {
       a.flags.push_back(t);
       if (!svr::is_libsvm_train_switch(t)) {  // an unknown flag too: the parser names it
         if (i + 1 >= args.size()) throw OptionError(t, "needs a value after it");

@@ -289,6 +289,11 @@ check "options after the files refused" run 1 "$fd" svr train "$dia" "$work/x.mo
 check "usage message" err_has "svr train takes [options] DATA [MODEL]"
 check "a flag without its value refused" run 1 "$fd" svr train -c
 check "no value message" err_has "option -c: needs a value after it"
+# A trailing flag is not MODEL: 'svr train DATA -c' wrote a model file named '-c' with exit 0.
+(cd "$work" && "$fd" svr train "$dia" -c >"$work/out" 2>"$work/err"; echo $? >"$work/rc")
+check "a flag after DATA refused" test "$(cat "$work/rc")" = 1
+check "a flag after DATA: no model named after it" test ! -e "$work/-c"
+check "a flag after DATA: what to do" err_has "move -c before DATA"
 check "-g with --sigma refused" run 1 "$fd" svr train -g 1 --sigma 1 "$dia" "$work/x.model"
 check "gamma or sigma message" err_has "option --sigma: give either -g or --sigma"
 check "svr train --help after options" run 0 "$fd" svr train -c 10 --help
