@@ -89,7 +89,7 @@ void run(const StreamArgs& given) {
                                                a.model));
   const double rate_hz = a.options.rate_hz.value_or(1.0 / model_dt_s);
   if (!a.options.rate_hz && !(rate_hz <= kMaxStreamRateHz))
-    throw OptionError("--rate-hz", fmt::format("is needed: {} was trained at {} Hz, above the "
+    throw OptionError("--rate-hz", fmt::format("is needed: {} was trained at {:.6g} Hz, above the "
                                                "{} Hz a stream runs at",
                                                a.model, rate_hz, kMaxStreamRateHz));
   // Streamed, a model trained on centred rates sees causal ones, noisier than those it learned:

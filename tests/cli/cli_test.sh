@@ -594,6 +594,12 @@ check "evaluate at 10 Hz: rows at the model's rate" python3 -c 'import json,sys;
 check "stream at 10 Hz" run 0 "$fd" stream "$work/causal.json" "$work/nf10/nf_20C.csv" --rate-hz 10
 check "stream at 10 Hz equals compensate" bash -c "cut -d, -f1-14 '$work/out' | cmp -s - '$work/comp10.csv'"
 check "stream at 10 Hz unflagged" bash -c "awk -F, 'NR>1 && \$15!=0{bad=1} END{exit bad}' '$work/out'"
+# A model recording an interval finer than a stream runs at (edited here; 50 kHz) needs the
+# logger's rate from the user, not 50 kHz taken as given.
+sed 's/"sample_interval_s": 1.0/"sample_interval_s": 2e-05/' "$work/causal.json" >"$work/fast.json"
+check "stream a model above 10 kHz" run 1 "$fd" stream "$work/fast.json" "$work/nf10/nf_20C.csv" --allow-edited
+check "stream a model above 10 kHz: why" err_has "option --rate-hz: is needed: $work/fast.json was trained at 50000 Hz, above the 10000 Hz a stream runs at"
+check "stream a model above 10 kHz: nothing written" test ! -s "$work/out"
 # A kilohertz logger from the default instrument: its 0.1 s step is finer than asked no more, so
 # the simulator integrates at the interval; 2 kHz is the highest rate.
 check "simulate at 2 kHz" run 0 "$fd" simulate northfind --out "$work/nf2k" --temps 20 --findings 1 --rate-hz 2000 --position-s 20
