@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <limits>
 #include <memory>
 #include <numeric>
 #include <vector>
@@ -95,18 +96,22 @@ class FoldPair {
   std::size_t folds() const { return folds_.size(); }
 
   /// One candidate on every fold: each engine's summed time and its CV loss, the RMSE over all
-  /// held-out rows (the tuner's loss).
+  /// held-out rows (the tuner's loss). Without `with_libsvm`, fogdrift's alone (LIBSVM's time
+  /// and loss NaN).
   struct Scored {
     double fogdrift_s = 0, libsvm_s = 0;
     double fogdrift_loss = 0, libsvm_loss = 0;
   };
-  Scored score(const svr::Params& p, double cache_mb) {
+  Scored score(const svr::Params& p, double cache_mb, bool with_libsvm = true) {
     Scored out;
     double sse_lib = 0, sse_ours = 0;
+    if (!with_libsvm) out.libsvm_s = sse_lib = std::numeric_limits<double>::quiet_NaN();
     for (std::size_t f = 0; f < folds_.size(); ++f) {
       auto t0 = Clock::now();
-      sse_lib += libsvm_fold_sse(lib_train_[f], lib_test_[f], p, cache_mb);
-      out.libsvm_s += seconds_since(t0);
+      if (with_libsvm) {
+        sse_lib += libsvm_fold_sse(lib_train_[f], lib_test_[f], p, cache_mb);
+        out.libsvm_s += seconds_since(t0);
+      }
       t0 = Clock::now();
       const svr::FitResult fit = svr::fit(*sets_[f], p, nullptr, &workspace_);
       sse_ours += svr::path_squared_errors(*sets_[f], std::span<const svr::FitResult>(&fit, 1),

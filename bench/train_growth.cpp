@@ -1,5 +1,6 @@
 // What `train` (SSA-SVR with train's defaults: features T,dT,grad,dT@300, three folds of whole
-// initial temperatures, SSA 20 × 50 with racing) costs as a campaign grows, beside the same
+// initial temperatures, SSA 20 × up to 50 with racing, the stall rule and folds of more than
+// 5,000 rows thinned, docs/tuning.md) costs as a campaign grows, beside the same
 // search made with LIBSVM fits (docs/tuning.md, "What a campaign of your size costs"):
 //
 //   rows          by more recordings (repetitions of the paper's chamber sweep, 10 s blocks) and
@@ -9,17 +10,26 @@
 //                 search per target).
 //
 //   train_growth [--threads 2] [--sample 4] [--measure-up-to 12000] [--max-rows 50000]
+//                [--libsvm-up-to 50000]
 //
 // Every point is a campaign of the default simulated instrument (seed 3). At each point the same
 // `sample` candidates (complete ones, spread over the history of the base campaign's search) are
 // fitted cold on every fold, one thread, by fogdrift's engine and by LIBSVM: the per-fit times
-// (the median of three passes where `train` is measured too, one pass above).
+// (the median of three passes up to 12,000 rows, one pass above).
 // Points with at most `measure-up-to` training rows also run the whole `train` on `threads`
-// threads. Above that the search would take hours, so `train` is estimated: the measured `train`
-// of the largest smaller campaign on the same axis (else the base campaign), scaled by the ratio
-// of fogdrift's per-fit times. Measured points carry the estimate too, to show how good it is.
+// threads. Above that `train` is estimated: the measured `train` of the largest smaller campaign
+// on the same axis (else the base campaign), scaled by the ratio of fogdrift's per-fit times.
+// Measured points carry the estimate too, to show how good it is: since train thins large
+// campaigns' folds (docs/tuning.md, "A search on fewer rows") it overshoots, so --measure-up-to
+// 50000 measures every point (about 20 minutes on two cores).
 // LIBSVM's search is estimated the way tune_vs_libsvm does it: its per-fit time × the base search's
-// candidates × folds (a script never stops a candidate).
+// candidates × folds (a script never stops a candidate). LIBSVM's fits are skipped above
+// `libsvm-up-to` rows (at 49,500 rows one takes minutes).
+// The floor beside each fit is one kernel pass: every entry of the largest fold's kernel matrix
+// computed once (svr::TrainingSet::kernel_row over all its rows, one thread, the median σ of
+// the sampled candidates), what an exact fit that touched each pair of rows once would cost. A
+// fit costs a multiple of it: the solver's iterations, and the rows its cache evicts and computes
+// again.
 #include <svm.h>
 
 #include <algorithm>
@@ -36,6 +46,8 @@
 #include "fogdrift/features/features.hpp"
 #include "fogdrift/model/dataset.hpp"
 #include "fogdrift/sim/scenarios.hpp"
+#include "fogdrift/svr/kernel.hpp"
+#include "fogdrift/train/folds.hpp"
 #include "fogdrift/train/svr_trainer.hpp"
 #include "fogdrift/train/train.hpp"
 #include "fogdrift/train/tune.hpp"
@@ -59,6 +71,7 @@ struct Measured {
   std::size_t point = 0;  // index into the points
   std::size_t rows = 0, inputs = 0;
   double fogdrift_fit_ms = 0, libsvm_fit_ms = 0;  // mean per fold fit, cold, one thread
+  double kernel_pass_ms = 0;                      // the floor: one pass, largest fold
   std::optional<double> train_s;                  // whole train, every target, measured
   double train_estimate_s = 0;
   double libsvm_search_s = 0;
@@ -82,6 +95,32 @@ std::vector<RecordingInput> training_inputs(const Point& p) {
   return recording_inputs(c.campaign, c.recordings, Role::train);
 }
 
+// One kernel pass: every row of the largest fold's (scaled) kernel matrix computed once, one
+// thread, ms; the median of three passes.
+double kernel_pass_ms(const Dataset& data, const tune::CvOptions& cv, const svr::Kernel& kernel) {
+  std::vector<tune::Fold> folds = tune::grouped_folds(data, cv);
+  const auto largest = std::max_element(
+      folds.begin(), folds.end(),
+      [](const auto& a, const auto& b) { return a.train_rows.size() < b.train_rows.size(); });
+  const tune::ScaledSplit split = tune::scale_split(data, largest->train_rows, largest->test_rows);
+  svr::TrainingSet::Options no_matrix;  // rows from the features, as a fit of few inputs forms them
+  no_matrix.distance_budget_mb = 0;
+  const svr::TrainingSet set(split.train, no_matrix);
+  std::vector<float> row(set.size());
+  std::vector<double> passes;
+  float sink = 0;
+  for (int run = 0; run < 3; ++run) {
+    const auto t0 = bench::Clock::now();
+    for (std::size_t i = 0; i < set.size(); ++i) {
+      set.kernel_row(kernel, i, row.data());
+      sink += row[i % row.size()];
+    }
+    passes.push_back(1e3 * bench::seconds_since(t0));
+  }
+  if (sink < 0) std::fprintf(stderr, "impossible\n");  // keeps the passes from being elided
+  return bench::median(passes);
+}
+
 // Least-squares slope of log y against log x: the exponent of y ∝ x^a.
 double exponent(const std::vector<double>& x, const std::vector<double>& y) {
   double mx = 0, my = 0;
@@ -100,7 +139,7 @@ double exponent(const std::vector<double>& x, const std::vector<double>& y) {
 
 int main(int argc, char** argv) {
   unsigned threads = 2;
-  std::size_t sample = 4, measure_up_to = 12000, max_rows = 50000;
+  std::size_t sample = 4, measure_up_to = 12000, max_rows = 50000, libsvm_up_to = 50000;
   for (int i = 1; i + 1 < argc; i += 2) {
     const auto value = static_cast<std::size_t>(std::atol(argv[i + 1]));
     if (!std::strcmp(argv[i], "--threads"))
@@ -111,10 +150,12 @@ int main(int argc, char** argv) {
       measure_up_to = value;
     else if (!std::strcmp(argv[i], "--max-rows"))
       max_rows = value;
+    else if (!std::strcmp(argv[i], "--libsvm-up-to"))
+      libsvm_up_to = value;
     else {
       std::fprintf(stderr,
                    "usage: train_growth [--threads N] [--sample N] [--measure-up-to ROWS] "
-                   "[--max-rows ROWS]\n");
+                   "[--max-rows ROWS] [--libsvm-up-to ROWS]\n");
       return 2;
     }
   }
@@ -124,7 +165,7 @@ int main(int argc, char** argv) {
   }
   svm_set_print_string_function(quiet);
   ThreadPool pool(threads);
-  TrainOptions options;  // SSA-SVR, SSA 20 × 50, temperature folds, racing, held-out report
+  TrainOptions options;  // train's defaults: SSA-SVR, its search, temperature folds, held-out
   options.tune.pool = &pool;
 
   std::vector<Point> points;
@@ -152,7 +193,7 @@ int main(int argc, char** argv) {
   std::size_t base_candidates = 0;
   std::vector<Measured> out;
   struct PerFit {
-    double fogdrift_ms = 0, libsvm_ms = 0;
+    double fogdrift_ms = 0, libsvm_ms = 0, kernel_pass_ms = 0;
     std::size_t folds = 0;
   };
   // A campaign and target met on another axis is not trained or sampled again.
@@ -206,13 +247,14 @@ int main(int argc, char** argv) {
         measured = false;
       }
       if (!per_fit.count(key)) {
-        // Small campaigns' fits are timed three times (the median), large ones once.
+        // Fits on up to 12,000 rows are timed three times (the median), larger ones once.
         bench::FoldPair folds(data, options.tune.cv);
         std::vector<double> ours_runs, lib_runs;
-        for (int run = 0; run < (data.rows <= measure_up_to ? 3 : 1); ++run) {
+        for (int run = 0; run < (data.rows <= 12000 ? 3 : 1); ++run) {
           double ours = 0, lib = 0;
           for (const svr::Params& params : sampled) {
-            const bench::FoldPair::Scored sc = folds.score(params, options.tune.cache_mb);
+            const bench::FoldPair::Scored sc =
+                folds.score(params, options.tune.cache_mb, data.rows <= libsvm_up_to);
             ours += sc.fogdrift_s;
             lib += sc.libsvm_s;
           }
@@ -221,9 +263,14 @@ int main(int argc, char** argv) {
         }
         const double ours = bench::median(ours_runs), lib = bench::median(lib_runs);
         const double fits = static_cast<double>(sampled.size() * folds.folds());
-        per_fit[key] = {1e3 * ours / fits, 1e3 * lib / fits, folds.folds()};
-        std::fprintf(stderr, "  per fit: fogdrift %.1f ms, LIBSVM %.1f ms\n", 1e3 * ours / fits,
-                     1e3 * lib / fits);
+        std::vector<double> sigmas;
+        for (const svr::Params& params : sampled) sigmas.push_back(params.kernel.sigma());
+        const double pass_ms =
+            kernel_pass_ms(data, options.tune.cv, svr::Kernel::rbf_sigma(bench::median(sigmas)));
+        per_fit[key] = {1e3 * ours / fits, 1e3 * lib / fits, pass_ms, folds.folds()};
+        std::fprintf(stderr,
+                     "  per fit: fogdrift %.1f ms, LIBSVM %.1f ms; one kernel pass %.1f ms\n",
+                     1e3 * ours / fits, 1e3 * lib / fits, pass_ms);
       }
       const PerFit& f = per_fit[key];
       ours_ms += f.fogdrift_ms;
@@ -232,6 +279,7 @@ int main(int argc, char** argv) {
       const double n = static_cast<double>(p.targets.size());
       m.fogdrift_fit_ms += f.fogdrift_ms / n;
       m.libsvm_fit_ms += f.libsvm_ms / n;
+      m.kernel_pass_ms += f.kernel_pass_ms / n;
     }
     if (m.rows > max_rows) {
       std::fprintf(stderr, "[%zu/%zu] %s: %s skipped, %zu rows (--max-rows %zu)\n", pi + 1,
@@ -250,30 +298,47 @@ int main(int argc, char** argv) {
   }
 
   std::printf(
-      "| axis | campaign | training rows | inputs | fogdrift fit, ms | LIBSVM fit, ms | per-fit "
-      "ratio | `train` measured, s | `train` estimated, s | LIBSVM search estimated, s | "
-      "LIBSVM / `train` |\n|---|---|---|---|---|---|---|---|---|---|---|\n");
-  std::vector<double> rows, ours, lib;
+      "| axis | campaign | training rows | inputs | one kernel pass, ms (floor) | fogdrift fit, "
+      "ms | fit / kernel pass | LIBSVM fit, ms | per-fit ratio | `train` measured, s | `train` "
+      "estimated, s | LIBSVM search estimated, s | LIBSVM / `train` "
+      "|\n|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
+  // A figure LIBSVM was not run for (above --libsvm-up-to) is a dash.
+  const auto cell = [](double v, const char* format) {
+    char text[32] = "—";
+    if (std::isfinite(v)) std::snprintf(text, sizeof text, format, v);
+    return std::string(text);
+  };
+  std::vector<double> rows, ours, lib_rows, lib;
   for (std::size_t i = 0; i < out.size(); ++i) {
     const Measured& m = out[i];
     const Point& p = points[m.point];
     const double train_s = m.train_s.value_or(m.train_estimate_s);
-    char measured[32] = "—";
-    if (m.train_s) std::snprintf(measured, sizeof measured, "%.1f", *m.train_s);
-    std::printf("| %s | %s | %zu | %zu | %.1f | %.1f | %.1f× | %s | %.0f | %.0f | %.1f× |\n",
-                p.axis.c_str(), p.campaign.c_str(), m.rows, m.inputs, m.fogdrift_fit_ms,
-                m.libsvm_fit_ms, m.libsvm_fit_ms / m.fogdrift_fit_ms, measured, m.train_estimate_s,
-                m.libsvm_search_s, m.libsvm_search_s / train_s);
+    const std::string measured = m.train_s ? cell(*m.train_s, "%.1f") : "—";
+    std::printf("| %s | %s | %zu | %zu | %.1f | %.1f | %.1f× | %s | %s | %s | %.0f | %s | %s |\n",
+                p.axis.c_str(), p.campaign.c_str(), m.rows, m.inputs, m.kernel_pass_ms,
+                m.fogdrift_fit_ms, m.fogdrift_fit_ms / m.kernel_pass_ms,
+                cell(m.libsvm_fit_ms, "%.1f").c_str(),
+                cell(m.libsvm_fit_ms / m.fogdrift_fit_ms, "%.1f×").c_str(), measured.c_str(),
+                m.train_estimate_s, cell(m.libsvm_search_s, "%.0f").c_str(),
+                cell(m.libsvm_search_s / train_s, "%.1f×").c_str());
     if (p.axis == "base" || p.axis == "recordings" || p.axis == "block") {
       rows.push_back(static_cast<double>(m.rows));
       ours.push_back(m.fogdrift_fit_ms);
-      lib.push_back(m.libsvm_fit_ms);
+      if (std::isfinite(m.libsvm_fit_ms)) {
+        lib_rows.push_back(static_cast<double>(m.rows));
+        lib.push_back(m.libsvm_fit_ms);
+      }
     }
   }
   std::printf(
       "\nPer-fit time against training rows (both row axes, least squares in log–log): fogdrift "
-      "∝ rows^%.2f, LIBSVM ∝ rows^%.2f. %zu candidates × every fold sampled per point; the "
-      "base search evaluated %zu distinct candidates; %u threads for `train`.\n",
-      exponent(rows, ours), exponent(rows, lib), sampled.size(), base_candidates, threads);
+      "∝ rows^%.2f",
+      exponent(rows, ours));
+  if (lib.size() >= 2)
+    std::printf(", LIBSVM ∝ rows^%.2f (up to %zu rows)", exponent(lib_rows, lib), libsvm_up_to);
+  std::printf(
+      ". %zu candidates × every fold sampled per point; the base search evaluated %zu distinct "
+      "candidates; %u threads for `train`.\n",
+      sampled.size(), base_candidates, threads);
   return 0;
 }
