@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdlib>
 #include <limits>
 #include <memory>
 #include <numeric>
@@ -94,6 +95,25 @@ class FoldPair {
     }
   }
   std::size_t folds() const { return folds_.size(); }
+
+  /// The floor of a fit: every row of the largest fold's kernel matrix computed once from the
+  /// training set the fits use, one thread, seconds.
+  double kernel_pass_s(const svr::Kernel& kernel) const {
+    const auto largest =
+        std::max_element(sets_.begin(), sets_.end(),
+                         [](const auto& a, const auto& b) { return a->size() < b->size(); });
+    const svr::TrainingSet& set = **largest;
+    std::vector<float> row(set.size());
+    float sink = 0;
+    const auto t0 = Clock::now();
+    for (std::size_t i = 0; i < set.size(); ++i) {
+      set.kernel_row(kernel, i, row.data());
+      sink += row[i];
+    }
+    const double s = seconds_since(t0);
+    if (!(sink >= 0)) std::abort();  // uses the rows, so the passes are not elided; K ≥ 0
+    return s;
+  }
 
   /// One candidate on every fold: each engine's summed time and its CV loss, the RMSE over all
   /// held-out rows (the tuner's loss). Without `with_libsvm`, fogdrift's alone (LIBSVM's time

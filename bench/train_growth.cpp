@@ -15,7 +15,7 @@
 // Every point is a campaign of the default simulated instrument (seed 3). At each point the same
 // `sample` candidates (complete ones, spread over the history of the base campaign's search) are
 // fitted cold on every fold, one thread, by fogdrift's engine and by LIBSVM: the per-fit times
-// (the median of three passes up to 12,000 rows, one pass above).
+// (the median of three passes up to 12,000 rows, one pass above; so is the floor).
 // Points with at most `measure-up-to` training rows also run the whole `train` on `threads`
 // threads. Above that `train` is estimated: the measured `train` of the largest smaller campaign
 // on the same axis (else the base campaign), scaled by the ratio of fogdrift's per-fit times.
@@ -26,10 +26,10 @@
 // candidates × folds (a script never stops a candidate). LIBSVM's fits are skipped above
 // `libsvm-up-to` rows (at 49,500 rows one takes minutes).
 // The floor beside each fit is one kernel pass: every entry of the largest fold's kernel matrix
-// computed once (svr::TrainingSet::kernel_row over all its rows, one thread, the median σ of
-// the sampled candidates), what an exact fit that touched each pair of rows once would cost. A
-// fit costs a multiple of it: the solver's iterations, and the rows its cache evicts and computes
-// again.
+// computed once (bench::FoldPair::kernel_pass_s: the fits' own training set, one thread, the
+// median σ of the sampled candidates), what an exact fit that touched each pair of rows once would
+// cost. A fit costs a multiple of it: the solver's iterations, and the rows its cache evicts and
+// computes again.
 #include <svm.h>
 
 #include <algorithm>
@@ -46,8 +46,6 @@
 #include "fogdrift/features/features.hpp"
 #include "fogdrift/model/dataset.hpp"
 #include "fogdrift/sim/scenarios.hpp"
-#include "fogdrift/svr/kernel.hpp"
-#include "fogdrift/train/folds.hpp"
 #include "fogdrift/train/svr_trainer.hpp"
 #include "fogdrift/train/train.hpp"
 #include "fogdrift/train/tune.hpp"
@@ -95,31 +93,8 @@ std::vector<RecordingInput> training_inputs(const Point& p) {
   return recording_inputs(c.campaign, c.recordings, Role::train);
 }
 
-// One kernel pass: every row of the largest fold's (scaled) kernel matrix computed once, one
-// thread, ms; the median of three passes.
-double kernel_pass_ms(const Dataset& data, const tune::CvOptions& cv, const svr::Kernel& kernel) {
-  std::vector<tune::Fold> folds = tune::grouped_folds(data, cv);
-  const auto largest = std::max_element(
-      folds.begin(), folds.end(),
-      [](const auto& a, const auto& b) { return a.train_rows.size() < b.train_rows.size(); });
-  const tune::ScaledSplit split = tune::scale_split(data, largest->train_rows, largest->test_rows);
-  svr::TrainingSet::Options no_matrix;  // rows from the features, as a fit of few inputs forms them
-  no_matrix.distance_budget_mb = 0;
-  const svr::TrainingSet set(split.train, no_matrix);
-  std::vector<float> row(set.size());
-  std::vector<double> passes;
-  float sink = 0;
-  for (int run = 0; run < 3; ++run) {
-    const auto t0 = bench::Clock::now();
-    for (std::size_t i = 0; i < set.size(); ++i) {
-      set.kernel_row(kernel, i, row.data());
-      sink += row[i % row.size()];
-    }
-    passes.push_back(1e3 * bench::seconds_since(t0));
-  }
-  if (sink < 0) std::fprintf(stderr, "impossible\n");  // keeps the passes from being elided
-  return bench::median(passes);
-}
+// Campaigns whose fits (and kernel passes) are timed three times, the median; larger ones once.
+constexpr std::size_t kThreePassRows = 12000;
 
 // Least-squares slope of log y against log x: the exponent of y ∝ x^a.
 double exponent(const std::vector<double>& x, const std::vector<double>& y) {
@@ -247,10 +222,11 @@ int main(int argc, char** argv) {
         measured = false;
       }
       if (!per_fit.count(key)) {
-        // Fits on up to 12,000 rows are timed three times (the median), larger ones once.
+        // Fits on up to kThreePassRows rows are timed three times (the median), larger once.
         bench::FoldPair folds(data, options.tune.cv);
+        const int passes = data.rows <= kThreePassRows ? 3 : 1;
         std::vector<double> ours_runs, lib_runs;
-        for (int run = 0; run < (data.rows <= 12000 ? 3 : 1); ++run) {
+        for (int run = 0; run < passes; ++run) {
           double ours = 0, lib = 0;
           for (const svr::Params& params : sampled) {
             const bench::FoldPair::Scored sc =
@@ -265,8 +241,10 @@ int main(int argc, char** argv) {
         const double fits = static_cast<double>(sampled.size() * folds.folds());
         std::vector<double> sigmas;
         for (const svr::Params& params : sampled) sigmas.push_back(params.kernel.sigma());
-        const double pass_ms =
-            kernel_pass_ms(data, options.tune.cv, svr::Kernel::rbf_sigma(bench::median(sigmas)));
+        const svr::Kernel kernel = svr::Kernel::rbf_sigma(bench::median(sigmas));
+        std::vector<double> pass_runs;
+        for (int run = 0; run < passes; ++run) pass_runs.push_back(folds.kernel_pass_s(kernel));
+        const double pass_ms = 1e3 * bench::median(pass_runs);
         per_fit[key] = {1e3 * ours / fits, 1e3 * lib / fits, pass_ms, folds.folds()};
         std::fprintf(stderr,
                      "  per fit: fogdrift %.1f ms, LIBSVM %.1f ms; one kernel pass %.1f ms\n",
