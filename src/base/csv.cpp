@@ -8,6 +8,7 @@
 #include <cerrno>
 #include <charconv>
 #include <cmath>
+#include <cstdint>
 #include <cstring>
 #include <fstream>
 #include <sstream>
@@ -254,6 +255,39 @@ bool underflows(std::string_view s) {
   return place + exponent < 0;
 }
 
+// The numbers loggers write, read without from_chars: an optional '-', digits, and optionally
+// `point` and more digits, at most 19 digits in all. Its digits as an integer m and its
+// fraction's length k give the value m / 10^k; with m ≤ 2^53 and k ≤ 22 both are exact doubles,
+// so the one correctly rounded division is the correctly rounded value, the double from_chars
+// returns (Clinger's fast path; docs/architecture.md, base/csv). nullopt for any other text,
+// which parse_number then reads with from_chars.
+std::optional<double> short_decimal(std::string_view s, char point) {
+  static constexpr double kPow10[] = {1e0,  1e1,  1e2,  1e3,  1e4,  1e5,  1e6,  1e7,
+                                      1e8,  1e9,  1e10, 1e11, 1e12, 1e13, 1e14, 1e15,
+                                      1e16, 1e17, 1e18, 1e19, 1e20, 1e21, 1e22};
+  const char* p = s.data();
+  const char* const end = p + s.size();
+  const bool negative = p != end && *p == '-';
+  if (negative) ++p;
+  std::uint64_t m = 0;  // 19 digits fit; more wrap, and are refused below
+  const char* const whole = p;
+  for (; p != end && static_cast<unsigned>(*p - '0') < 10; ++p)
+    m = m * 10 + static_cast<unsigned>(*p - '0');
+  std::ptrdiff_t count = p - whole, fraction = 0;
+  if (count == 0) return std::nullopt;
+  if (p != end && *p == point) {
+    const char* const first = ++p;
+    for (; p != end && static_cast<unsigned>(*p - '0') < 10; ++p)
+      m = m * 10 + static_cast<unsigned>(*p - '0');
+    fraction = p - first;
+    if (fraction == 0) return std::nullopt;
+    count += fraction;
+  }
+  if (p != end || count > 19 || fraction > 22 || m > (std::uint64_t{1} << 53)) return std::nullopt;
+  const double value = static_cast<double>(m) / kPow10[fraction];
+  return negative ? -value : value;
+}
+
 }  // namespace
 
 std::optional<double> parse_number(std::string_view field, bool decimal_comma) {
@@ -261,6 +295,7 @@ std::optional<double> parse_number(std::string_view field, bool decimal_comma) {
   if (field.empty()) return std::nullopt;
   if (field.front() == '+') field.remove_prefix(1);
   if (field.empty()) return std::nullopt;
+  if (const auto quick = short_decimal(field, decimal_comma ? ',' : '.')) return quick;
   std::string replaced;
   if (decimal_comma) {
     if (field.find('.') != std::string_view::npos) return std::nullopt;
@@ -333,25 +368,40 @@ std::string why_not_a_number(std::string_view cell) {
 }
 
 std::string format_number(double value) {
+  std::string out;
+  append_number(out, value);
+  return out;
+}
+
+void append_number(std::string& out, double value) {
   char buffer[32];
   const auto result = std::to_chars(buffer, buffer + sizeof buffer, value);
-  return std::string(buffer, result.ptr);
+  out.append(buffer, result.ptr);
 }
 
 std::string quote(std::string_view field, char delimiter) {
-  const bool needs = field.find(delimiter) != std::string_view::npos ||
-                     field.find('"') != std::string_view::npos ||
-                     field.find('\n') != std::string_view::npos ||
-                     field.find('\r') != std::string_view::npos ||
-                     (!field.empty() && (field.front() == ' ' || field.back() == ' '));
-  if (!needs) return std::string(field);
-  std::string out = "\"";
+  std::string out;
+  append_quoted(out, field, delimiter);
+  return out;
+}
+
+void append_quoted(std::string& out, std::string_view field, char delimiter) {
+  // One pass over the field's bytes, not a find per character that needs quotes.
+  bool needs = !field.empty() && (field.front() == ' ' || field.back() == ' ');
+  for (std::size_t i = 0; i < field.size() && !needs; ++i) {
+    const char ch = field[i];
+    needs = ch == delimiter || ch == '"' || ch == '\n' || ch == '\r';
+  }
+  if (!needs) {
+    out += field;
+    return;
+  }
+  out += '"';
   for (char ch : field) {
     if (ch == '"') out += '"';
     out += ch;
   }
   out += '"';
-  return out;
 }
 
 std::string excerpt(std::string_view field) {

@@ -60,6 +60,9 @@ std::optional<double> parse_number(std::string_view field, bool decimal_comma = 
 
 /// Shortest decimal text that reads back to exactly `value` (std::to_chars), e.g. "0.1", "1e-07".
 std::string format_number(double value);
+/// format_number(value) appended to `out`, without a string of its own: the writers of
+/// kilohertz logs append a row's numbers to one line.
+void append_number(std::string& out, double value);
 
 /// One line's fields as read() splits them: quoted fields ("a,b", "say ""x"""), spaces before an
 /// opening quote tolerated; a quote may not span lines. InputError(file, line_no, column) for an
@@ -84,6 +87,8 @@ std::string why_not_a_number(std::string_view cell);
 
 /// `field` quoted when it holds the delimiter, a quote, a line break or edge spaces.
 std::string quote(std::string_view field, char delimiter = ',');
+/// quote(field, delimiter) appended to `out`, without a string of its own.
+void append_quoted(std::string& out, std::string_view field, char delimiter = ',');
 
 /// A field as an error message shows it: whole up to 40 characters, else its first 40 and its
 /// length ("123456…(10000000 characters)"), so that a 10 MB cell is not echoed whole.

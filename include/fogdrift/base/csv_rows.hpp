@@ -37,6 +37,10 @@ class RowReader {
   /// The next data row: its fields (views valid until the next call) and its 1-based line in the
   /// file. False at the end of the input.
   bool next(std::vector<std::string_view>& fields, std::size_t& line);
+  /// The text of the row next() returned last, as the file has it without its line end (valid
+  /// until the next call): what a writer copies whole when it would copy every field as it is.
+  std::string_view row_text() const { return line_; }
+  char delimiter() const { return options_.delimiter; }
 
  private:
   /// The next physical line, without its end (a view of line_); false at the end of the input.
