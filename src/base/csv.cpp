@@ -255,12 +255,13 @@ bool underflows(std::string_view s) {
   return place + exponent < 0;
 }
 
-// The numbers loggers write, read without from_chars: an optional '-', digits, and optionally
-// `point` and more digits, at most 19 digits in all. Its digits as an integer m and its
-// fraction's length k give the value m / 10^k; with m ≤ 2^53 and k ≤ 22 both are exact doubles,
-// so the one correctly rounded division is the correctly rounded value, the double from_chars
-// returns (Clinger's fast path; docs/architecture.md, base/csv). nullopt for any other text,
-// which parse_number then reads with from_chars.
+// The numbers loggers write, read without from_chars: an optional '-', digits, optionally
+// `point` and more digits (at most 19 digits in all), and optionally an exponent ("e-05", at
+// most 4 digits). Its digits as an integer m and its power of ten p (the exponent less the
+// fraction's length) give the value m × 10^p; with m ≤ 2^53 and |p| ≤ 22 both are exact doubles,
+// so the one correctly rounded multiplication or division is the correctly rounded value, the
+// double from_chars returns (Clinger's fast path; docs/architecture.md, base/csv). nullopt for
+// any other text, which parse_number then reads with from_chars.
 std::optional<double> short_decimal(std::string_view s, char point) {
   static constexpr double kPow10[] = {1e0,  1e1,  1e2,  1e3,  1e4,  1e5,  1e6,  1e7,
                                       1e8,  1e9,  1e10, 1e11, 1e12, 1e13, 1e14, 1e15,
@@ -283,8 +284,22 @@ std::optional<double> short_decimal(std::string_view s, char point) {
     if (fraction == 0) return std::nullopt;
     count += fraction;
   }
-  if (p != end || count > 19 || fraction > 22 || m > (std::uint64_t{1} << 53)) return std::nullopt;
-  const double value = static_cast<double>(m) / kPow10[fraction];
+  std::ptrdiff_t exponent = 0;
+  if (p != end && (*p == 'e' || *p == 'E')) {
+    ++p;
+    const bool below = p != end && *p == '-';
+    if (p != end && (*p == '-' || *p == '+')) ++p;
+    const char* const first = p;
+    for (; p != end && static_cast<unsigned>(*p - '0') < 10 && p - first < 4; ++p)
+      exponent = exponent * 10 + (*p - '0');
+    if (p == first) return std::nullopt;
+    if (below) exponent = -exponent;
+  }
+  const std::ptrdiff_t power = exponent - fraction;
+  if (p != end || count > 19 || power < -22 || power > 22 || m > (std::uint64_t{1} << 53))
+    return std::nullopt;
+  const double value =
+      power < 0 ? static_cast<double>(m) / kPow10[-power] : static_cast<double>(m) * kPow10[power];
   return negative ? -value : value;
 }
 

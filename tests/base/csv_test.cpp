@@ -94,8 +94,8 @@ TEST(ParseNumber, RejectsNonFiniteAndText) {
 
 // The short decimals parse_number reads without from_chars (csv.cpp, short_decimal) give the
 // correctly rounded double, as glibc's strtod does: random digit strings around every edge of
-// that path (19 and 20 significant digits, 2^53, 22 and 23 fraction digits, leading zeros, -0),
-// with both decimal marks.
+// that path (19 and 20 digits, 2^53, powers of ten of ±22 and beyond, leading zeros, -0,
+// exponents), with both decimal marks.
 TEST(ParseNumber, ShortDecimalsAreCorrectlyRoundedAsStrtodReadsThem) {
   Rng rng(7);
   auto digit_string = [&rng](int n) {
@@ -122,6 +122,13 @@ TEST(ParseNumber, ShortDecimalsAreCorrectlyRoundedAsStrtodReadsThem) {
       d = std::string(static_cast<std::size_t>(rng.uniform(1, 4)), '0') + d;
     const auto at = static_cast<std::size_t>(rng.uniform(0, static_cast<double>(d.size())));
     if (at > 0 && rng.uniform(0, 1) < 0.8) d.insert(at, ".");
+    if (rng.uniform(0, 1) < 0.3) {  // an exponent, within the fast path's reach and beyond it
+      const int e = static_cast<int>(rng.uniform(-40, 40));
+      d += (rng.uniform(0, 1) < 0.5 ? "e" : "E") +
+           std::string(e >= 0 && rng.uniform(0, 1) < 0.5 ? "+" : "") +
+           (rng.uniform(0, 1) < 0.2 ? (e < 0 ? "-0" : "0") + std::to_string(std::abs(e))
+                                    : std::to_string(e));
+    }
     texts.push_back(rng.uniform(0, 1) < 0.5 ? "-" + d : d);
   }
   for (const std::string& text : texts) {
