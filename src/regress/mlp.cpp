@@ -41,6 +41,7 @@ namespace {
 
 using Matrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
 using Vector = Eigen::VectorXd;
+using RowArray = Eigen::Array<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
 
 // All weights in one vector θ = (W1 row-major, b1, w2, b2), so Adam runs on one array.
 struct Layout {
@@ -48,13 +49,22 @@ struct Layout {
   std::size_t size() const { return hid * in + hid + hid + 1; }
 };
 
+// The hidden layer's tanh while training: sign(a)·(1 − e)/(1 + e) with e = e^(−2|a|), from
+// Eigen's vectorised exponential. Within 4e-16 of std::tanh in absolute terms (tested; relative
+// error grows only near 0, where a unit is linear) and 2.5 times faster: libm's tanh was 17 % of
+// `fogdrift paper`'s CPU time. The model's predictions keep std::tanh, as its C header does.
+Matrix training_tanh(const RowArray& a) {
+  const RowArray e = (-2.0 * a.abs()).exp();
+  return (a.sign() * (1.0 - e) / (1.0 + e)).matrix();
+}
+
 double rmse(const Layout& l, const Vector& theta, const Matrix& x, const Vector& y) {
   if (x.rows() == 0) return 0;
   const Eigen::Map<const Matrix> w1(theta.data(), l.hid, l.in);
   const Eigen::Map<const Vector> b1(theta.data() + l.hid * l.in, l.hid);
   const Eigen::Map<const Vector> w2(theta.data() + l.hid * l.in + l.hid, l.hid);
   const double b2 = theta[static_cast<Eigen::Index>(l.size() - 1)];
-  const Matrix h = ((x * w1.transpose()).rowwise() + b1.transpose()).array().tanh().matrix();
+  const Matrix h = training_tanh(((x * w1.transpose()).rowwise() + b1.transpose()).array());
   const Vector e = (h * w2).array() + b2 - y.array();
   return std::sqrt(e.squaredNorm() / static_cast<double>(x.rows()));
 }
@@ -101,7 +111,7 @@ MlpFit fit_mlp(const Data& train, const Data& validation, const MlpOptions& opti
     const Eigen::Map<const Vector> w2(theta.data() + l.hid * l.in + l.hid, l.hid);
     const double b2 = theta[theta.size() - 1];
     // Forward pass and the error of the weights before this update.
-    h = ((x * w1.transpose()).rowwise() + b1.transpose()).array().tanh().matrix();
+    h = training_tanh(((x * w1.transpose()).rowwise() + b1.transpose()).array());
     const Vector e = (h * w2).array() + b2 - y.array();
     const double train_rmse = std::sqrt(e.squaredNorm() / static_cast<double>(n));
     const double score = has_validation ? rmse(l, theta, xv, yv) : train_rmse;

@@ -56,6 +56,23 @@ TEST(Mlp, StopsEarlyOnHeldOutData) {
   EXPECT_NEAR(rmse(fit.model, valid), fit.summary.validation_rmse, 1e-12);
 }
 
+// Training computes the hidden layer's tanh from a vectorised exponential (mlp.cpp,
+// training_tanh); predictions use std::tanh. After one epoch the kept weights are the initial
+// ones, so the validation error training reported and the model's own differ only by the two
+// tanh: within a few units of 1e-16.
+TEST(Mlp, TrainingTanhAgreesWithStdTanh) {
+  for (const std::size_t hidden : {std::size_t{3}, std::size_t{50}}) {
+    const Data train = smooth(7, 80, 0.1), valid = smooth(8, 400, 0.1);
+    MlpOptions o;
+    o.hidden = hidden;
+    o.max_epochs = 1;
+    o.seed = 3 + hidden;
+    const MlpFit fit = fit_mlp(train, valid, o);
+    ASSERT_EQ(fit.summary.best_epoch, 0u);
+    EXPECT_NEAR(rmse(fit.model, valid), fit.summary.validation_rmse, 1e-15) << hidden;
+  }
+}
+
 TEST(Mlp, SameSeedSameWeights) {
   const Data train = smooth(5, 100, 0.1), valid = smooth(6, 50, 0.1);
   MlpOptions o;
