@@ -186,7 +186,7 @@ TEST(Paper, AnotherMethodIsARowOfEveryTable) {
 TEST(Paper, SameSeedSameResultWhateverTheThreads) {
   PaperOptions o = small_options();
   o.seeds = 1;
-  o.studies = false;
+  o.studies = true;  // the fitness study's search runs beside the method tasks
   ThreadPool one(1), two(2);
   o.pool = &one;
   const PaperResult a = run_paper(o);
@@ -201,6 +201,15 @@ TEST(Paper, SameSeedSameResultWhateverTheThreads) {
     EXPECT_EQ(sa.methods[k].rmse_deg, sb.methods[k].rmse_deg);
     EXPECT_EQ(sa.methods[k].table2.std_after_dph, sb.methods[k].table2.std_after_dph);
   }
+  ASSERT_EQ(a.fitness.size(), b.fitness.size());
+  for (std::size_t k = 0; k < a.fitness.size(); ++k) {
+    EXPECT_EQ(a.fitness[k].c, b.fitness[k].c);
+    EXPECT_EQ(a.fitness[k].sigma, b.fitness[k].sigma);
+    EXPECT_EQ(a.fitness[k].mean_rmse_deg, b.fitness[k].mean_rmse_deg);
+  }
+  ASSERT_EQ(a.loto.size(), b.loto.size());
+  for (std::size_t k = 0; k < a.loto.size(); ++k)
+    EXPECT_EQ(a.loto[k].std_loto_dph, b.loto[k].std_loto_dph);
 }
 
 // The library names its fields; the CLI's table maps them to flags (tests/cli/paper_test.sh).
