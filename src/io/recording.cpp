@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
+#include <new>
 #include <optional>
 #include <sstream>
 #include <stdexcept>
@@ -218,9 +219,13 @@ Recording read_table(const std::filesystem::path& path, bool partial,
       if (row_line.size() + 1 == kSampledRows && !size_error) {
         const auto rows = static_cast<std::size_t>(
             static_cast<double>(file_bytes) / static_cast<double>(sampled_bytes) * kSampledRows);
-        row_line.reserve(rows);
-        for (std::vector<double>* column : numbers)
-          if (column) column->reserve(rows);
+        try {
+          row_line.reserve(rows);
+          for (std::vector<double>* column : numbers)
+            if (column) column->reserve(rows);
+        } catch (const std::bad_alloc&) {
+          // An estimate the address space refuses (ulimit -v): the columns grow as they fill.
+        }
       }
     }
     row_line.push_back(line);
