@@ -29,66 +29,17 @@ using scalar::none_if_offsets_only;
 
 // --- kernel rows ---------------------------------------------------------------------------------
 
-// exp_core (loops_scalar.hpp) on four lanes, rounded to float. GCC does not vectorise
-// exp_core's loop this well by itself: its own AVX2 version ran at half the speed of this code.
-FOGDRIFT_AVX2 inline __m128 exp_to_float_avx2(__m256d x) {
-  x = _mm256_max_pd(x, _mm256_set1_pd(-700.0));
-  x = _mm256_min_pd(x, _mm256_set1_pd(700.0));
+// exp_core (loops_scalar.hpp) on G vectors of four lanes, rounded to float into out[0, 4G), step
+// by step over the vectors: each vector's operations are exp_core's in its order, so the results
+// are the same bits whatever G, but G > 1 gives the processor independent chains. One vector
+// alone is a chain of dependent steps (thirteen Horner steps) that leaves the vector units
+// waiting on each step's latency. GCC does not vectorise exp_core's loop this well by itself: its
+// own AVX2 version ran at half the speed of this code.
+template <std::size_t G>
+FOGDRIFT_AVX2 inline void exp_to_float_avx2(__m256d (&x)[G], float* out) {
   const __m256d shifter = _mm256_set1_pd(kShifter);
-  const __m256d t = _mm256_add_pd(_mm256_mul_pd(x, _mm256_set1_pd(kLog2e)), shifter);
-  const __m256d n = _mm256_sub_pd(t, shifter);
-  const __m256d r = _mm256_sub_pd(_mm256_sub_pd(x, _mm256_mul_pd(n, _mm256_set1_pd(kLn2Hi))),
-                                  _mm256_mul_pd(n, _mm256_set1_pd(kLn2Lo)));
-  __m256d p = _mm256_set1_pd(kExpCoefficients[0]);
-  for (std::size_t c = 1; c < std::size(kExpCoefficients); ++c)
-    p = _mm256_add_pd(_mm256_mul_pd(p, r), _mm256_set1_pd(kExpCoefficients[c]));
-  const __m256i k = _mm256_sub_epi64(_mm256_castpd_si256(t), _mm256_castpd_si256(shifter));
-  const __m256d scale =
-      _mm256_castsi256_pd(_mm256_slli_epi64(_mm256_add_epi64(k, _mm256_set1_epi64x(1023)), 52));
-  return _mm256_cvtpd_ps(_mm256_mul_pd(p, scale));
-}
-
-// Four columns from `xt`, `sq` (pointing at the first of them).
-FOGDRIFT_AVX2 inline __m128 rbf_columns_avx2(const double* xi, __m256d sq_i, const double* xt,
-                                             std::size_t stride, const double* sq, std::size_t d,
-                                             __m256d minus_gamma) {
-  __m256d acc = _mm256_setzero_pd();
-  for (std::size_t f = 0; f < d; ++f)
-    acc =
-        _mm256_add_pd(acc, _mm256_mul_pd(_mm256_set1_pd(xi[f]), _mm256_loadu_pd(xt + f * stride)));
-  const __m256d dist = _mm256_sub_pd(_mm256_add_pd(sq_i, _mm256_loadu_pd(sq)),
-                                     _mm256_mul_pd(_mm256_set1_pd(2.0), acc));
-  return exp_to_float_avx2(_mm256_mul_pd(minus_gamma, dist));
-}
-
-// kGroups × 4 columns at once: each group of four is rbf_columns_avx2's operations in its order,
-// so the results are the same bits, but the groups' chains are independent. One group alone is a
-// chain of dependent adds and multiplies (the distance's sum, thirteen Horner steps of the
-// exponential) that leaves the vector units waiting on each step's latency (docs/svr.md, "Where
-// the speed comes from": 5.3 ns a pair one group at a time, 4.1-4.5 with four).
-constexpr std::size_t kGroups = 4;
-
-FOGDRIFT_AVX2 inline void rbf_column_groups_avx2(const double* xi, __m256d sq_i, const double* xt,
-                                                 std::size_t stride, const double* sq,
-                                                 std::size_t d, __m256d minus_gamma, float* out) {
-  __m256d x[kGroups];
-  for (std::size_t g = 0; g < kGroups; ++g) x[g] = _mm256_setzero_pd();
-  for (std::size_t f = 0; f < d; ++f) {
-    const __m256d a = _mm256_set1_pd(xi[f]);
-    const double* column = xt + f * stride;
-    for (std::size_t g = 0; g < kGroups; ++g)
-      x[g] = _mm256_add_pd(x[g], _mm256_mul_pd(a, _mm256_loadu_pd(column + 4 * g)));
-  }
-  const __m256d two = _mm256_set1_pd(2.0);
-  for (std::size_t g = 0; g < kGroups; ++g) {
-    const __m256d dist =
-        _mm256_sub_pd(_mm256_add_pd(sq_i, _mm256_loadu_pd(sq + 4 * g)), _mm256_mul_pd(two, x[g]));
-    x[g] = _mm256_mul_pd(minus_gamma, dist);
-  }
-  // exp_to_float_avx2, step by step over the groups.
-  const __m256d shifter = _mm256_set1_pd(kShifter);
-  __m256d t[kGroups], p[kGroups];
-  for (std::size_t g = 0; g < kGroups; ++g) {
+  __m256d t[G], p[G];
+  for (std::size_t g = 0; g < G; ++g) {
     x[g] = _mm256_min_pd(_mm256_max_pd(x[g], _mm256_set1_pd(-700.0)), _mm256_set1_pd(700.0));
     t[g] = _mm256_add_pd(_mm256_mul_pd(x[g], _mm256_set1_pd(kLog2e)), shifter);
     const __m256d n = _mm256_sub_pd(t[g], shifter);
@@ -98,16 +49,44 @@ FOGDRIFT_AVX2 inline void rbf_column_groups_avx2(const double* xi, __m256d sq_i,
   }
   for (std::size_t c = 1; c < std::size(kExpCoefficients); ++c) {
     const __m256d coefficient = _mm256_set1_pd(kExpCoefficients[c]);
-    for (std::size_t g = 0; g < kGroups; ++g)
+    for (std::size_t g = 0; g < G; ++g)
       p[g] = _mm256_add_pd(_mm256_mul_pd(p[g], x[g]), coefficient);
   }
-  for (std::size_t g = 0; g < kGroups; ++g) {
+  for (std::size_t g = 0; g < G; ++g) {
     const __m256i k = _mm256_sub_epi64(_mm256_castpd_si256(t[g]), _mm256_castpd_si256(shifter));
     const __m256d scale =
         _mm256_castsi256_pd(_mm256_slli_epi64(_mm256_add_epi64(k, _mm256_set1_epi64x(1023)), 52));
     _mm_storeu_ps(out + 4 * g, _mm256_cvtpd_ps(_mm256_mul_pd(p[g], scale)));
   }
 }
+
+// 4G columns from `xt`, `sq` (pointing at the first of them) into out[0, 4G), the distances'
+// sums and exponentials of the G groups of four computed side by side. Four groups took a row of
+// 4,000 samples × 12 features from 5.3 to 4.1-4.5 ns a pair on an AVX2-only AMD EPYC; two or
+// three gained nothing measurable, eight less than four (docs/svr.md, "Where the speed comes
+// from").
+template <std::size_t G>
+FOGDRIFT_AVX2 inline void rbf_columns_avx2(const double* xi, __m256d sq_i, const double* xt,
+                                           std::size_t stride, const double* sq, std::size_t d,
+                                           __m256d minus_gamma, float* out) {
+  __m256d x[G];
+  for (std::size_t g = 0; g < G; ++g) x[g] = _mm256_setzero_pd();
+  for (std::size_t f = 0; f < d; ++f) {
+    const __m256d a = _mm256_set1_pd(xi[f]);
+    const double* column = xt + f * stride;
+    for (std::size_t g = 0; g < G; ++g)
+      x[g] = _mm256_add_pd(x[g], _mm256_mul_pd(a, _mm256_loadu_pd(column + 4 * g)));
+  }
+  const __m256d two = _mm256_set1_pd(2.0);
+  for (std::size_t g = 0; g < G; ++g) {
+    const __m256d dist =
+        _mm256_sub_pd(_mm256_add_pd(sq_i, _mm256_loadu_pd(sq + 4 * g)), _mm256_mul_pd(two, x[g]));
+    x[g] = _mm256_mul_pd(minus_gamma, dist);
+  }
+  exp_to_float_avx2(x, out);
+}
+
+constexpr std::size_t kGroups = 4;
 
 FOGDRIFT_AVX2 void rbf_row_avx2(const double* xi, double sq_i, const double* xt, std::size_t stride,
                                 const double* sq, std::size_t n, std::size_t d, double gamma,
@@ -116,9 +95,9 @@ FOGDRIFT_AVX2 void rbf_row_avx2(const double* xi, double sq_i, const double* xt,
   const __m256d minus_gamma = _mm256_set1_pd(-gamma);
   std::size_t j = 0;
   for (; j + 4 * kGroups <= n; j += 4 * kGroups)
-    rbf_column_groups_avx2(xi, sqi, xt + j, stride, sq + j, d, minus_gamma, out + j);
+    rbf_columns_avx2<kGroups>(xi, sqi, xt + j, stride, sq + j, d, minus_gamma, out + j);
   for (; j + 4 <= n; j += 4)
-    _mm_storeu_ps(out + j, rbf_columns_avx2(xi, sqi, xt + j, stride, sq + j, d, minus_gamma));
+    rbf_columns_avx2<1>(xi, sqi, xt + j, stride, sq + j, d, minus_gamma, out + j);
   scalar::rbf_row(xi, sq_i, xt + j, stride, sq + j, n - j, d, gamma, out + j);
 }
 
@@ -126,9 +105,10 @@ FOGDRIFT_AVX2 void rbf_row_from_distances_avx2(const float* dist, std::size_t n,
                                                float* out) {
   const __m256d minus_gamma = _mm256_set1_pd(-gamma);
   std::size_t j = 0;
-  for (; j + 4 <= n; j += 4)
-    _mm_storeu_ps(out + j, exp_to_float_avx2(_mm256_mul_pd(
-                               minus_gamma, _mm256_cvtps_pd(_mm_loadu_ps(dist + j)))));
+  for (; j + 4 <= n; j += 4) {
+    __m256d x[1] = {_mm256_mul_pd(minus_gamma, _mm256_cvtps_pd(_mm_loadu_ps(dist + j)))};
+    exp_to_float_avx2(x, out + j);
+  }
   scalar::rbf_row_from_distances(dist + j, n - j, gamma, out + j);
 }
 
