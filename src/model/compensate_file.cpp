@@ -66,6 +66,7 @@ std::vector<CompensatedAxis> compensate_file(const ModelSet& set,
     std::size_t line_no = 0;
     const std::size_t rows = recording.size();
     std::size_t i = 0;
+    const bool comma_separated = table.delimiter() == ',';
     for (; table.next(fields, line_no); ++i) {
       if (i == rows)
         throw InputError(source, line_no, 0, "changed while it was read; compensate it again");
@@ -73,7 +74,7 @@ std::vector<CompensatedAxis> compensate_file(const ModelSet& set,
       // A comma-separated row without a quote or a space is its fields as add_field copies them:
       // none needs quotes. Copied whole, a kilohertz log's row is one append, not ten.
       const std::string_view text = table.row_text();
-      if (table.delimiter() == ',' && text.find('"') == std::string_view::npos &&
+      if (comma_separated && text.find('"') == std::string_view::npos &&
           text.find(' ') == std::string_view::npos) {
         line += text;
         line += ',';
