@@ -29,26 +29,18 @@ constexpr double kLn2Lo = 1.90821492927058770002e-10;
 constexpr double kShifter = 6755399441055744.0;  // 1.5·2^52: adding it rounds to an integer
 
 /// The Taylor coefficients of e^r, 1/11! down to 1/0!, for Horner's rule.
-constexpr double kExpCoefficients[] = {1.0 / 39916800.0,
-                                       1.0 / 3628800.0,
-                                       1.0 / 362880.0,
-                                       1.0 / 40320.0,
-                                       1.0 / 5040.0,
-                                       1.0 / 720.0,
-                                       1.0 / 120.0,
-                                       1.0 / 24.0,
-                                       1.0 / 6.0,
-                                       0.5,
-                                       1.0,
-                                       1.0};
+constexpr double kExpCoefficients[] = {
+    1.0 / 39916800.0, 1.0 / 3628800.0, 1.0 / 362880.0, 1.0 / 40320.0, 1.0 / 5040.0, 1.0 / 720.0,
+    1.0 / 120.0,      1.0 / 24.0,      1.0 / 6.0,      0.5,           1.0,          1.0};
 
 /// e^x through e^x = 2^n·e^r, n = round(x/ln 2), |r| ≤ ln 2 / 2, and the Taylor series of e^r to
 /// degree 11: truncation error r^12/12! < 6.3e-15 relative, against the 3e-8 half-step of the
 /// float every caller rounds the result to, so the float is e^x correctly rounded unless e^x lies
 /// within 6.3e-15 of the midpoint between two floats: on 2·10^8 random x in [−30, 0] every float
 /// equals std::exp's and that of degree 13, which this replaced for 11-13 % of a kernel row; over
-/// the billions of a whole search a few differ (docs/svr.md, "Where the speed comes from"). Branch-free so that loops around it vectorise; the vector versions compute the same
-/// operations lane by lane.
+/// the billions of a whole search a few differ (docs/svr.md, "Where the speed comes from").
+/// Branch-free so that loops around it vectorise; the vector versions compute the same operations
+/// lane by lane.
 FOGDRIFT_INLINE double exp_core(double x) {
   x = x < -700.0 ? -700.0 : x;  // e^-700 is 0 in float; keeps 2^n a normal double
   x = x > 700.0 ? 700.0 : x;
