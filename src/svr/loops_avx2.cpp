@@ -32,7 +32,7 @@ using scalar::none_if_offsets_only;
 // exp_core (loops_scalar.hpp) on G vectors of four lanes, rounded to float into out[0, 4G), step
 // by step over the vectors: each vector's operations are exp_core's in its order, so the results
 // are the same bits whatever G, but G > 1 gives the processor independent chains. One vector
-// alone is a chain of dependent steps (thirteen Horner steps) that leaves the vector units
+// alone is a chain of dependent steps (the Horner steps of exp_core) that leaves the vector units
 // waiting on each step's latency. GCC does not vectorise exp_core's loop this well by itself: its
 // own AVX2 version ran at half the speed of this code.
 template <std::size_t G>
