@@ -225,6 +225,17 @@ OptionTable<O> make_train_table() {
        {}},
       [](auto& o) -> auto& { return o.train.tune.search_rows; }));
   t.push_back(whole_option<O>(
+      {"thin_from_rows",
+       "--thin-from-rows",
+       {},
+       "",
+       at_least(0).with("0 lets {search_rows} alone decide"),
+       "The fewest training rows a fold must hold for the search to thin it ({search_rows}): "
+       "a smaller campaign is searched on every row, where thinning saves little and costs "
+       "the search the most (docs/tuning.md)",
+       {}},
+      [](auto& o) -> auto& { return o.train.tune.thin_from_rows; }));
+  t.push_back(whole_option<O>(
       {"seed", "--seed", {}, "", "", "Seed of the search (and of bp's weights)", {}},
       [](auto& o) -> auto& { return o.train.tune.optimizer.run.seed; }));
   t.push_back(number_option<O>(

@@ -104,6 +104,7 @@ std::size_t search_stride(const Dataset& data, const TuneOptions& options) {
   if (options.search_rows == 0 || options.fitness != Fitness::cv) return 1;
   std::size_t most = 0;
   for (const Fold& f : grouped_folds(data, options.cv)) most = std::max(most, f.train_rows.size());
+  if (most < options.thin_from_rows) return 1;
   return std::max<std::size_t>(1, most / options.search_rows);
 }
 

@@ -192,15 +192,18 @@ TEST(TuneSvr, AStrideScalesCSoThatDuplicatedRowsLoseNothing) {
   o.cv.scheme = CvScheme::temperature;
   o.search_rows = 360;
   EXPECT_EQ(search_stride(once, o), 1u);
-  EXPECT_EQ(search_stride(twice, o), 2u);
-  o.search_rows = 361;
-  EXPECT_EQ(search_stride(twice, o), 1u);
-  o.search_rows = 240;
-  EXPECT_EQ(search_stride(twice, o), 3u);
-  o.search_rows = 1000;
-  EXPECT_EQ(search_stride(twice, o), 1u);
-  o.search_rows = 0;
-  EXPECT_EQ(search_stride(twice, o), 1u);
+  // A fold smaller than thin_from_rows keeps every row; at or above it, search_rows decides.
+  struct Case {
+    std::size_t search_rows, thin_from_rows, stride;
+  };
+  for (const Case c : {Case{360, 0, 2}, Case{361, 0, 1}, Case{240, 0, 3}, Case{1000, 0, 1},
+                       Case{0, 0, 1}, Case{240, 721, 1}, Case{240, 720, 3}, Case{0, 720, 1}}) {
+    o.search_rows = c.search_rows;
+    o.thin_from_rows = c.thin_from_rows;
+    EXPECT_EQ(search_stride(twice, o), c.stride)
+        << "search_rows " << c.search_rows << ", thin_from_rows " << c.thin_from_rows;
+  }
+  o.thin_from_rows = 0;
   o.search_rows = 360;
   const TuneSummary s = tune_svr(twice, o);
   ASSERT_EQ(s.stride, 2u);

@@ -23,18 +23,22 @@ namespace fogdrift {
 /// tuning.md, "A search that stops when it stops learning"). fogdrift paper keeps the paper's
 /// fixed budget.
 inline constexpr std::size_t kTrainStallIterations = 10;
-/// The fewest training rows a fold is thinned to for train's search (tune::TuneOptions::
-/// search_rows; docs/tuning.md, "A search on fewer rows"): the paper's 3 × 11 start-ups (at
-/// most 4,320 a fold) are searched on all their rows, the five-sweep protocol's 5,760 on every
-/// second row, the seven-sweep protocol's 8,640 on every third.
-inline constexpr std::size_t kTrainSearchRows = 2500;
+/// The fewest training rows a fold is thinned to for train's search, and the fewest a fold must
+/// hold to be thinned at all (tune::TuneOptions::search_rows, thin_from_rows; docs/tuning.md, "A
+/// search on fewer rows"): the seven-sweep protocol's 8,640 a fold are searched on every seventh
+/// row, the five-sweep protocol's 5,760 on every fourth, and the paper's 3 × 11 start-ups (at
+/// most 4,320) and the four-start-up-set-point protocol's (3,060) on all their rows. fogdrift
+/// paper searches every row, as the paper did.
+inline constexpr std::size_t kTrainSearchRows = 1200;
+inline constexpr std::size_t kTrainThinFromRows = 5000;
 
 /// The search train runs unless told otherwise: TuneOptions' defaults, stopping on a stall and
-/// thinning a large campaign's folds to no fewer than kTrainSearchRows training rows.
+/// thinning a fold of kTrainThinFromRows or more to no fewer than kTrainSearchRows rows.
 inline tune::TuneOptions train_search_defaults() {
   tune::TuneOptions t;
   t.optimizer.run.stall_iterations = kTrainStallIterations;
   t.search_rows = kTrainSearchRows;
+  t.thin_from_rows = kTrainThinFromRows;
   return t;
 }
 

@@ -97,6 +97,10 @@ struct TuneOptions {
   /// k that leaves this many, and its best kRescored candidates are scored again on all rows,
   /// the best of those winning (docs/tuning.md, "A search on fewer rows"). 0: every row.
   std::size_t search_rows = 0;
+  /// cv: a fold of fewer training rows than this is searched on every row whatever search_rows
+  /// says: thinning a small campaign saves little and costs its search the most (docs/tuning.md,
+  /// "Why small campaigns keep every row"). 0: search_rows alone decides.
+  std::size_t thin_from_rows = 0;
   ThreadPool* pool = nullptr;  ///< fits a population in parallel when given
 };
 
@@ -119,7 +123,8 @@ struct Candidate {
 inline constexpr std::size_t kRescored = 3;
 
 /// The stride of a search on `data` (cv only): the largest fold's training rows divided by
-/// options.search_rows, rounded down, and at least 1; 1 with search_rows 0.
+/// options.search_rows, rounded down, and at least 1; 1 with search_rows 0 or when the largest
+/// fold holds fewer than options.thin_from_rows.
 std::size_t search_stride(const Dataset& data, const TuneOptions& options);
 
 struct TuneSummary {
