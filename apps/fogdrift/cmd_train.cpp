@@ -113,6 +113,14 @@ void print_summary(const TrainArgs& a, const CampaignTrainResult& trained,
           "(--search-rows)\n",
           svr->tuning.stride, svr->tuning.stride, svr->tuning.rescored.size(), rescored);
     }
+    const tune::TuneOptions& tuned = a.options.train.tune;
+    if (svr && svr->tuning.stride == 1 && tuned.search_rows > 0 &&
+        svr->tuning.largest_fold_rows > 0 && svr->tuning.largest_fold_rows < tuned.thin_from_rows)
+      // A --search-rows the user set must not look applied when the folds are too small for it.
+      std::cout << fmt::format(
+          "  searched on every training row: the largest fold holds {} rows, fewer than "
+          "--thin-from-rows {} (from there folds are thinned to about --search-rows {})\n",
+          svr->tuning.largest_fold_rows, tuned.thin_from_rows, tuned.search_rows);
     if (svr && svr->boxes.size() > 1) {
       const auto& b = svr->boxes.back();
       std::cout << fmt::format(

@@ -90,6 +90,7 @@ nlohmann::ordered_json to_json(const SvrTrainer::Record& r) {
                  {"fits", u.fits},
                  {"raced", u.raced},
                  {"row_stride", u.stride},
+                 {"largest_fold_rows", u.largest_fold_rows},
                  {"rescored", rescored},
                  {"initial_best_rmse", u.optimizer.initial_best_fitness},
                  {"seconds", u.seconds},

@@ -100,10 +100,16 @@ svr::Params params_at(std::span<const double> point, const TuneOptions& options)
   return p;
 }
 
-std::size_t search_stride(const Dataset& data, const TuneOptions& options) {
-  if (options.search_rows == 0 || options.fitness != Fitness::cv) return 1;
+std::size_t largest_fold_rows(const Dataset& data, const TuneOptions& options) {
+  if (options.fitness != Fitness::cv) return 0;
   std::size_t most = 0;
   for (const Fold& f : grouped_folds(data, options.cv)) most = std::max(most, f.train_rows.size());
+  return most;
+}
+
+std::size_t search_stride(const Dataset& data, const TuneOptions& options) {
+  if (options.search_rows == 0 || options.fitness != Fitness::cv) return 1;
+  const std::size_t most = largest_fold_rows(data, options);
   if (most < options.thin_from_rows) return 1;
   return std::max<std::size_t>(1, most / options.search_rows);
 }
@@ -172,6 +178,7 @@ TuneSummary tune_svr(const Dataset& data, const TuneOptions& options) {
   out.fit_seconds = objective.fit_seconds_;
   out.history = std::move(objective.history_);
   out.stride = stride;
+  out.largest_fold_rows = largest_fold_rows(data, options);
   if (stride > 1) {
     out.rescored = rescored(data, options, out.history);
     out.fits += out.rescored.size() * std::max<std::size_t>(1, out.folds.size());

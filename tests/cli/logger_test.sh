@@ -108,7 +108,10 @@ check "a small campaign is searched on every row by default" run 0 "$fd" train "
 check "its JSON says every row" python3 -c '
 import json, sys
 s = json.load(open(sys.argv[1]))["search"]
-assert s["row_stride"] == 1 and s["rescored"] == [], s' "$work/out"
+assert s["row_stride"] == 1 and s["rescored"] == [] and 0 < s["largest_fold_rows"] < 5000, s' "$work/out"
+check "train --search-rows on a small campaign" run 0 "$fd" train "$work/camp" -o "$work/thin.json" --features "T(fog),dT(fog)" --search-rows 60
+check "it says why every row was searched" out_has "searched on every training row: the largest fold holds "
+check "and which option decided it" out_has "rows, fewer than --thin-from-rows 5000 (from there folds are thinned to about --search-rows 60)"
 check "an impossible stall tolerance" run 1 "$fd" train "$work/camp" -o "$work/never.json" --features "T(fog),dT(fog)" --stall-tolerance 1
 check "stall tolerance message names its flag" err_has "option --stall-tolerance: 1 must be ≥ 0, < 1"
 check "no model from an impossible option" test ! -e "$work/never.json"

@@ -122,6 +122,10 @@ struct Candidate {
 /// Candidates of a search on every k-th row scored again on all rows (TuneOptions::search_rows).
 inline constexpr std::size_t kRescored = 3;
 
+/// The training rows of the largest cv fold of `data` (0 for the training-loss fitness): what
+/// decides whether a search thins its folds.
+std::size_t largest_fold_rows(const Dataset& data, const TuneOptions& options);
+
 /// The stride of a search on `data` (cv only): the largest fold's training rows divided by
 /// options.search_rows, rounded down, and at least 1; 1 with search_rows 0 or when the largest
 /// fold holds fewer than options.thin_from_rows.
@@ -143,6 +147,7 @@ struct TuneSummary {
   /// k-th training row and `rescored` the best of them scored again on all rows, best first
   /// in the search's order; `best` and `best_fitness` are the rescored winner's.
   std::size_t stride = 1;
+  std::size_t largest_fold_rows = 0;  ///< largest_fold_rows, which set the stride
   std::vector<Candidate> rescored;
   double seconds = 0;  ///< wall time of the search
 };
