@@ -22,6 +22,9 @@
 # $POPULATION_CAL_TEMPS, if set, replaces its set points (°C, comma-separated; default the
 # paper's eleven, -40 to 60 by 10), and $POPULATION_CAL_START_UP_TEMPS those of its soaked, warm
 # and ramping sweeps alone (default: the same; docs/field.md, "Protocols worth their hours").
+# $POPULATION_SEARCH_SEED_OFFSET, if set, trains instrument k with `--seed k + offset` instead
+# of `--seed k`: the same campaigns, other search seeds (how much of a study is the search's
+# luck; docs/field.md).
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 fd=${1:-$root/build}/apps/fogdrift/fogdrift
@@ -29,6 +32,11 @@ count=${2:-20}
 seed=${3:-1}
 jobs=${4:-2}
 shift $(($# < 4 ? $# : 4))
+search_seed_offset=${POPULATION_SEARCH_SEED_OFFSET:-0}
+if ! [[ $search_seed_offset =~ ^[0-9]+$ ]]; then
+  echo "population_study.sh: POPULATION_SEARCH_SEED_OFFSET: '$search_seed_offset' is not a whole number ≥ 0" >&2
+  exit 2
+fi
 if [[ -n ${POPULATION_WORK:-} ]]; then
   work=$POPULATION_WORK
   mkdir -p "$work"
@@ -71,7 +79,7 @@ one() { # one instrument: $1 = its number; a failed step fails the instrument, n
   local sim_s=$((SECONDS - start))
   for path in centred causal; do
     start=$SECONDS
-    "$fd" train "$d/cal" --differentiator "$path" --seed "$k" --threads 1 --json \
+    "$fd" train "$d/cal" --differentiator "$path" --seed "$((k + search_seed_offset))" --threads 1 --json \
       -o "$d/$path.json" "${TRAIN_FLAGS[@]}" >"$d/$path.train.json"
     echo $((SECONDS - start)) >"$d/$path.seconds"
     for a in calibration soaked warm ramping; do
@@ -109,7 +117,7 @@ PY
   echo "unit $k done" >&2
 }
 export -f one
-export fd work out nf_temps cal_approaches cal_repetitions cal_temps cal_start_up_temps
+export fd work out nf_temps cal_approaches cal_repetitions cal_temps cal_start_up_temps search_seed_offset
 TRAIN_FLAGS=("$@")
 export TRAIN_FLAGS_STR="${*:-}"
 units=${POPULATION_UNITS:-$(seq -s ' ' "$count")}
