@@ -38,13 +38,19 @@ def table(fogdrift):
             name += f" ({p['instruments']} instruments)"
         first = [name, f"{p['service_hours']:.1f}"]
         last = [f"{p['worse_than_raw']} of {8 * p['instruments']}", f"{p['train_median_s']:g}"]
-        for path in ("batch", "causal"):
-            cells = [minus(" / ".join(f"{p[path][c][k]:g}"
-                                      for k in ("median_pct", "p10_pct", "worst_pct")))
-                     for c in CONDITIONS]
-            row = first + [path] + cells + last if path == "batch" else \
-                ["", "", path] + cells + ["", ""]
-            rows.append("| " + " | ".join(row) + " |")
+        # The study, then the same study with other search seeds where it was repeated.
+        studies = [("", p, first, last)] + [
+            (f", search seeds k + {r['search_seed_offset']}", r, ["", ""],
+             [f"{r['worse_than_raw']} of {8 * p['instruments']}", ""])
+            for r in p.get("reruns", [])]
+        for seeds, study, lead, tail in studies:
+            for path in ("batch", "causal"):
+                cells = [minus(" / ".join(f"{study[path][c][k]:g}"
+                                          for k in ("median_pct", "p10_pct", "worst_pct")))
+                         for c in CONDITIONS]
+                row = lead + [path + seeds] + cells + tail if path == "batch" else \
+                    ["", "", path + seeds] + cells + ["", ""]
+                rows.append("| " + " | ".join(row) + " |")
     return "\n".join(rows) + "\n"
 
 

@@ -56,6 +56,17 @@ nlohmann::ordered_json shares_json(const std::array<sim::PopulationShare, 4>& sh
   return j;
 }
 
+/// The study repeated with other search seeds: what the worst figures of the protocol also cover.
+nlohmann::ordered_json reruns_json(const sim::StudiedProtocol& s) {
+  nlohmann::ordered_json j = nlohmann::ordered_json::array();
+  for (const sim::SeedRerun& r : s.reruns)
+    j.push_back({{"search_seed_offset", r.search_seed_offset},
+                 {"batch", shares_json(r.batch)},
+                 {"causal", shares_json(r.causal)},
+                 {"worse_than_raw", r.worse_than_raw}});
+  return j;
+}
+
 nlohmann::ordered_json priced_json(const sim::PricedProtocol& p) {
   return {{"name", p.studied->name},
           {"service_hours", p.service_hours},
@@ -70,7 +81,8 @@ nlohmann::ordered_json priced_json(const sim::PricedProtocol& p) {
           {"causal", shares_json(p.studied->causal)},
           {"instruments", p.studied->instruments},
           {"worse_than_raw", p.studied->worse_than_raw},
-          {"train_median_s", p.studied->train_median_s}};
+          {"train_median_s", p.studied->train_median_s},
+          {"reruns", reruns_json(*p.studied)}};
 }
 
 nlohmann::ordered_json to_json(const sim::CalibrationOptions& p, const sim::ChamberSchedule& s,
@@ -149,6 +161,20 @@ std::string share_cells(const std::array<sim::PopulationShare, 4>& shares) {
 void print_choice(const sim::PricedProtocol& chosen, const std::vector<sim::PricedProtocol>& all,
                   double budget, const std::string& service) {
   const sim::StudiedProtocol& s = *chosen.studied;
+  // Where the study was repeated with other search seeds, each set's rows, and the worst figures
+  // below cover them all.
+  std::string rerun_rows, first_seeds, seeds;
+  for (const sim::SeedRerun& r : s.reruns) {
+    rerun_rows +=
+        fmt::format("| batch, search seeds k + {0} |{1}\n| causal, search seeds k + {0} |{2}\n",
+                    r.search_seed_offset, share_cells(r.batch), share_cells(r.causal));
+    seeds += fmt::format(", k + {}", r.search_seed_offset);
+  }
+  if (!s.reruns.empty()) {
+    first_seeds = ", search seeds k";
+    seeds = fmt::format(" and {} sets of search seeds (train --seed k{} for instrument k)",
+                        s.reruns.size() + 1, seeds);
+  }
   std::cout << fmt::format(
       "{:g} chamber hours for a unit that will meet {} start-ups buy: {}, {:.1f} h ({:.1f} days) "
       "in this chamber, the test sweep left out\n"
@@ -157,12 +183,13 @@ void print_choice(const sim::PricedProtocol& chosen, const std::vector<sim::Pric
       "what it removed on the population (docs/field.md, \"Protocols worth their hours\"), "
       "% of the removable north-finding error, median / 10th percentile / worst, guard on:\n"
       "| path | calibration | soaked | warm | ramping |\n|---|---|---|---|---|\n"
-      "| batch |{}\n| causal |{}\n"
-      "worst over {}, batch and causal: median {:g} %, 10th percentile {:g} %; of {} "
+      "| batch{} |{}\n| causal{} |{}\n{}"
+      "worst over {}, batch and causal{}: median {:g} %, 10th percentile {:g} %; of {} "
       "instruments × 4 conditions × 2 paths, {} worse than raw\n\n",
       budget, service, s.name, chosen.service_hours, chosen.service_hours / 24,
-      simulate_command(s.protocol), share_cells(s.batch), share_cells(s.causal), service,
-      chosen.worst_median_pct, chosen.worst_p10_pct, s.instruments, s.worse_than_raw);
+      simulate_command(s.protocol), first_seeds, share_cells(s.batch), first_seeds,
+      share_cells(s.causal), rerun_rows, service, seeds, chosen.worst_median_pct,
+      chosen.worst_p10_pct, s.instruments, chosen.worse_than_raw);
   if (!chosen.meets_goal) {
     const auto goal = sim::cheapest_meeting_goal(all);
     std::cout << fmt::format(

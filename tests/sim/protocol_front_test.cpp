@@ -18,12 +18,45 @@ TEST(ProtocolFront, EveryStudiedProtocolIsOneTheSimulatorRuns) {
     // The last sweep is the test, begun as the paper's cycle; every other one is trained on.
     EXPECT_EQ(s.protocol.test_repetitions, 1) << s.name;
     EXPECT_EQ(approach_of(s.protocol, s.protocol.repetitions), Approach::calibration) << s.name;
-    for (const auto* path : {&s.batch, &s.causal})
+    std::vector<const std::array<PopulationShare, 4>*> paths{&s.batch, &s.causal};
+    for (const SeedRerun& r : s.reruns) {
+      EXPECT_GT(r.search_seed_offset, 0) << s.name;  // other seeds than the first study's
+      paths.push_back(&r.batch);
+      paths.push_back(&r.causal);
+    }
+    for (const auto* path : paths)
       for (const PopulationShare& x : *path) {
         EXPECT_LE(x.worst_pct, x.p10_pct) << s.name;
         EXPECT_LE(x.p10_pct, x.median_pct) << s.name;
       }
   }
+}
+
+// A protocol is claimed at the worst of every set of search seeds it was studied with: a rerun
+// can lower its figures, never raise them.
+TEST(ProtocolFront, AClaimIsTheWorstOverEverySetOfSearchSeeds) {
+  bool some_rerun = false;
+  for (const PricedProtocol& p : price_protocols(Instrument{}, ChamberOptions{}, kAll)) {
+    const StudiedProtocol& s = *p.studied;
+    std::vector<const std::array<PopulationShare, 4>*> paths{&s.batch, &s.causal};
+    EXPECT_GE(p.worse_than_raw, s.worse_than_raw) << s.name;
+    for (const SeedRerun& r : s.reruns) {
+      some_rerun = true;
+      paths.push_back(&r.batch);
+      paths.push_back(&r.causal);
+      EXPECT_GE(p.worse_than_raw, r.worse_than_raw) << s.name;
+    }
+    double lowest_p10 = 1e300, lowest_median = 1e300;
+    for (const auto* path : paths)
+      for (const PopulationShare& x : *path) {
+        lowest_p10 = std::min(lowest_p10, x.p10_pct);
+        lowest_median = std::min(lowest_median, x.median_pct);
+      }
+    EXPECT_EQ(p.worst_p10_pct, lowest_p10) << s.name;
+    EXPECT_EQ(p.worst_median_pct, lowest_median) << s.name;
+    EXPECT_EQ(p.meets_goal, lowest_median >= kGoalMedianPct && lowest_p10 >= kGoalP10Pct) << s.name;
+  }
+  EXPECT_TRUE(some_rerun);
 }
 
 TEST(ProtocolFront, PricedCheapestFirstWithTheFrontMarked) {
@@ -83,16 +116,30 @@ TEST(ProtocolFront, TheChoiceKeepsToTheBudgetAndTakesTheHighestTenthPercentile) 
 
 // The goal of docs/field.md, "Protocols worth their hours": within 60 chamber hours on the
 // default instrument, a protocol whose population study has every median ≥ 85 % and every 10th
-// percentile ≥ 60 %, batch and causal, on all 20 instruments. (Its cells worse than raw are
-// the one part of the goal it misses; the page says which and why.)
-TEST(ProtocolFront, SixtyHoursBuyTheGoalOnThePopulation) {
-  const auto chosen = choose_protocol(price_protocols(Instrument{}, ChamberOptions{}, kAll), 60);
+// percentile ≥ 60 %, batch and causal, on all 20 instruments. The four start-up set points
+// meet it with the first study's search seeds and miss it with seeds k + 100 (batch soaked 10th
+// percentile 56 %), so 60 hours buy the best protocol studied, which is not yet the goal; the
+// page says so, and this test fails, to be rewritten, once a protocol of 60 hours meets it
+// whatever the seeds.
+TEST(ProtocolFront, SixtyHoursBuyTheBestStudiedProtocolNotYetTheGoal) {
+  const auto priced = price_protocols(Instrument{}, ChamberOptions{}, kAll);
+  const auto chosen = choose_protocol(priced, 60);
   ASSERT_TRUE(chosen);
+  EXPECT_EQ(chosen->studied->name, "four start-up set points");
   EXPECT_LE(chosen->service_hours, 60.0);
-  EXPECT_GE(chosen->worst_median_pct, 85.0) << chosen->studied->name;
-  EXPECT_GE(chosen->worst_p10_pct, 60.0) << chosen->studied->name;
-  EXPECT_TRUE(chosen->meets_goal);
-  EXPECT_EQ(chosen->studied->instruments, 20) << chosen->studied->name;
+  EXPECT_EQ(chosen->studied->instruments, 20);
+  EXPECT_GE(chosen->worst_median_pct, kGoalMedianPct);
+  EXPECT_LT(chosen->worst_p10_pct, kGoalP10Pct);
+  EXPECT_FALSE(chosen->meets_goal);
+  // With its first search seeds alone it would have been claimed to meet the goal.
+  for (const auto* path : {&chosen->studied->batch, &chosen->studied->causal})
+    for (const PopulationShare& x : *path) {
+      EXPECT_GE(x.median_pct, kGoalMedianPct);
+      EXPECT_GE(x.p10_pct, kGoalP10Pct);
+    }
+  const auto goal = cheapest_meeting_goal(priced);
+  ASSERT_TRUE(goal);
+  EXPECT_GT(goal->service_hours, 60.0);
 }
 
 TEST(ProtocolFront, ServiceConditionsAreStartUps) {
