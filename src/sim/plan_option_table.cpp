@@ -18,8 +18,9 @@ OptionTable<PlanOptions> make_plan_table() {
        "h",
        above(0),
        "Instead of pricing the protocol given, choose one: of the protocols studied on the "
-       "population, the one whose worst 10th percentile under {service} is highest within this "
-       "many service chamber hours (the test sweep left out), priced for this instrument and "
+       "population, the one whose worst 10th percentile under {service} (over every set of "
+       "search seeds it was studied with) is highest within this many service chamber hours "
+       "(the test sweep left out), priced for this instrument and "
        "chamber (docs/field.md, \"Protocols worth their hours\"); none: price the protocol given",
        {}},
       [](auto& o) -> auto& { return o.hours; }));
