@@ -78,12 +78,20 @@ std::vector<StudiedProtocol> measured() {
                // percentile is 56 %, not 70.
                {{100, Shares{{{97, 85, 81}, {96, 56, 44}, {92, 70, -323}, {99, 81, 24}}},
                  Shares{{{97, 87, 74}, {96, 64, 56}, {94, 73, -330}, {99, 82, 42}}}, 2}}});
-  // One more warm sweep at the four set points buys no 10th percentile and does not mend the
-  // one instrument whose warm start-ups the four leave worse than raw.
+  // One more warm sweep at the four set points buys no 10th percentile that other search seeds
+  // keep, and does not mend the one instrument whose warm start-ups the four leave worse than
+  // raw.
   v.push_back(
-      {"four start-up set points, two warm sweeps", protocol_of({kC, kS, kW, kR, kW}, kFour),
+      {"four start-up set points, two warm sweeps",
+       protocol_of({kC, kS, kW, kR, kW}, kFour),
        Shares{{{97, 80, 74}, {95, 62, 41}, {95, 78, -165}, {99, 84, 30}}},
-       Shares{{{97, 85, 74}, {95, 74, 51}, {97, 79, -132}, {99, 80, 58}}}, 20, 2, 42, kNoRerun});
+       Shares{{{97, 85, 74}, {95, 74, 51}, {97, 79, -132}, {99, 80, 58}}},
+       20,
+       2,
+       42,
+       // With search seeds k + 100 (2026-12-01): the batch warm 10th percentile is 48 %, not 78.
+       {{100, Shares{{{97, 77, 72}, {95, 58, -58}, {95, 48, -139}, {98, 84, 25}}},
+         Shares{{{97, 86, 73}, {95, 73, 62}, {97, 81, -94}, {99, 81, 56}}}, 3}}});
   v.push_back({"five sweeps", protocol_of({kC, kS, kW, kR}),
                Shares{{{98, 84, 81}, {99, 89, 66}, {99, 79, -15}, {99, 94, 68}}},
                Shares{{{98, 85, 73}, {98, 92, 31}, {98, 83, -35}, {99, 93, 76}}}, 20, 2, 84,
