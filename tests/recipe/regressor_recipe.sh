@@ -216,7 +216,8 @@ grep -q 'LsqTrainer>;' "$registry" || fail "the registry's list did not take Lsq
 # is most of a unity batch's time (the test took 143 s at -O0 against 232 s in Release when this
 # was chosen); the runs below take 4 s of it. The library's sources go in two unity batches of at
 # most 62, one a core, not the build's batches of 24: each batch parses the heavy headers (Eigen,
-# nlohmann-json, fmt) once, and the test took 80 s against 93 s (2026-12-01, the same quiet hour).
+# nlohmann-json, fmt) once: the test took 87 and 87 s against 101 and 98 s (2026-12-01, quiet,
+# the two alternated).
 cmake -S "$tree" -B "$work/build" -G Ninja -DCMAKE_BUILD_TYPE=None -DCMAKE_CXX_FLAGS=-O0 \
   -DCMAKE_C_FLAGS=-O0 -DFOGDRIFT_BUILD_TESTS=OFF -DFOGDRIFT_UNITY_BATCH_SIZE=62 \
   -DFOGDRIFT_BUILD_BENCH=OFF -DFOGDRIFT_BUILD_PYTHON=OFF -DFOGDRIFT_BUILD_MATLAB=OFF >"$work/cmake.log" 2>&1 ||
