@@ -107,11 +107,19 @@ std::size_t largest_fold_rows(const Dataset& data, const TuneOptions& options) {
   return most;
 }
 
-std::size_t search_stride(const Dataset& data, const TuneOptions& options) {
+namespace {
+
+// search_stride from the largest fold's training rows (largest_fold_rows).
+std::size_t stride_for(std::size_t largest_fold_rows, const TuneOptions& options) {
   if (options.search_rows == 0 || options.fitness != Fitness::cv) return 1;
-  const std::size_t most = largest_fold_rows(data, options);
-  if (most < options.thin_from_rows) return 1;
-  return std::max<std::size_t>(1, most / options.search_rows);
+  if (largest_fold_rows < options.thin_from_rows) return 1;
+  return std::max<std::size_t>(1, largest_fold_rows / options.search_rows);
+}
+
+}  // namespace
+
+std::size_t search_stride(const Dataset& data, const TuneOptions& options) {
+  return stride_for(largest_fold_rows(data, options), options);
 }
 
 namespace {
@@ -148,7 +156,8 @@ std::vector<Candidate> rescored(const Dataset& data, const TuneOptions& options,
 TuneSummary tune_svr(const Dataset& data, const TuneOptions& options) {
   validate(options);
   const auto start = std::chrono::steady_clock::now();
-  const std::size_t stride = search_stride(data, options);
+  const std::size_t largest = largest_fold_rows(data, options);
+  const std::size_t stride = stride_for(largest, options);
   SvrObjective objective(
       data, options, [&options](std::span<const double> x) { return params_at(x, options); },
       stride);
@@ -178,7 +187,7 @@ TuneSummary tune_svr(const Dataset& data, const TuneOptions& options) {
   out.fit_seconds = objective.fit_seconds_;
   out.history = std::move(objective.history_);
   out.stride = stride;
-  out.largest_fold_rows = largest_fold_rows(data, options);
+  out.largest_fold_rows = largest;
   if (stride > 1) {
     out.rescored = rescored(data, options, out.history);
     out.fits += out.rescored.size() * std::max<std::size_t>(1, out.folds.size());
