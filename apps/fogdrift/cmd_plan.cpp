@@ -193,8 +193,8 @@ void print_choice(const sim::PricedProtocol& chosen, const std::vector<sim::Pric
   if (!chosen.meets_goal) {
     const auto goal = sim::cheapest_meeting_goal(all);
     std::cout << fmt::format(
-        "note: this protocol misses the goal on the population (every median ≥ {:g} % and every "
-        "10th percentile ≥ {:g} %); {}\n\n",
+        "note: this protocol misses the goal on the population (every median ≥ {:g} %, every "
+        "10th percentile ≥ {:g} %, none worse than raw); {}\n\n",
         sim::kGoalMedianPct, sim::kGoalP10Pct,
         goal ? fmt::format("the cheapest that meets it, {}, needs {:.1f} h here",
                            goal->studied->name, goal->service_hours)

@@ -20,8 +20,10 @@ OptionTable<PlanOptions> make_plan_table() {
        "Instead of pricing the protocol given, choose one: of the protocols studied on the "
        "population, the one whose worst 10th percentile under {service} (over every set of "
        "search seeds it was studied with) is highest within this many service chamber hours "
-       "(the test sweep left out), priced for this instrument and "
-       "chamber (docs/field.md, \"Protocols worth their hours\"); none: price the protocol given",
+       "(the test sweep left out), priced for this instrument and chamber, and whether it "
+       "meets the goal (every median ≥ 85 %, every 10th percentile ≥ 60 %, none worse than "
+       "raw) or which protocol is the cheapest that does (docs/field.md, \"Protocols worth "
+       "their hours\"); none: price the protocol given",
        {}},
       [](auto& o) -> auto& { return o.hours; }));
   t.push_back(

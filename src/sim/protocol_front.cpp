@@ -125,6 +125,10 @@ std::vector<PricedProtocol> price_protocols(const Instrument& instrument,
                         "give calibration, soaked, warm or ramping");
     columns.push_back(static_cast<std::size_t>(at - kServiceConditions.begin()));
   }
+  bool every_condition = true;
+  for (std::size_t c = 0; c < kServiceConditions.size(); ++c)
+    every_condition =
+        every_condition && std::find(columns.begin(), columns.end(), c) != columns.end();
   std::vector<PricedProtocol> priced;
   for (const StudiedProtocol& s : studied_protocols()) {
     PricedProtocol p;
@@ -146,7 +150,11 @@ std::vector<PricedProtocol> price_protocols(const Instrument& instrument,
         p.worst_median_pct = std::min(p.worst_median_pct, (*path)[c].median_pct);
         p.worst_worst_pct = std::min(p.worst_worst_pct, (*path)[c].worst_pct);
       }
-    p.meets_goal = p.worst_median_pct >= kGoalMedianPct && p.worst_p10_pct >= kGoalP10Pct;
+    // The count of cells worse than raw covers all four conditions; the worst share, those the
+    // unit meets.
+    const bool none_worse = p.worst_worst_pct >= 0 && (!every_condition || p.worse_than_raw == 0);
+    p.meets_goal =
+        p.worst_median_pct >= kGoalMedianPct && p.worst_p10_pct >= kGoalP10Pct && none_worse;
     priced.push_back(std::move(p));
   }
   std::stable_sort(priced.begin(), priced.end(),

@@ -50,8 +50,19 @@ assert c["instruments"] == 20 and c["on_front"], c
 # Its claim is the worst over every set of search seeds it was studied with.
 studies = [c] + c["reruns"]
 assert len(studies) >= 2 and all(r["search_seed_offset"] > 0 for r in c["reruns"]), c
-p10 = min(s[path][k]["p10_pct"] for s in studies for path in ("batch", "causal") for k in s[path])
-assert c["worst_p10_pct"] == p10 and c["meets_goal"] == (p10 >= 60), c
+cells = [s[path][k] for s in studies for path in ("batch", "causal") for k in s[path]]
+p10 = min(x["p10_pct"] for x in cells)
+median = min(x["median_pct"] for x in cells)
+worst = min(x["worst_pct"] for x in cells)
+worse = max(s["worse_than_raw"] for s in studies)
+assert c["worst_p10_pct"] == p10 and c["worst_pct"] == worst, c
+# The goal: every median >= 85 %, every 10th percentile >= 60 %, none worse than raw.
+assert c["meets_goal"] == (median >= 85 and p10 >= 60 and worst >= 0 and worse == 0), c
+# The protocol it names as meeting the goal leaves no instrument worse than raw.
+goal = [p for p in d["studied"] if p["meets_goal"]]
+assert goal and d["goal_needs_hours"] == goal[0]["service_hours"], d["goal_needs_hours"]
+assert all(s["worse_than_raw"] == 0 for s in [goal[0]] + goal[0]["reruns"]), goal[0]
+assert goal[0]["worst_pct"] >= 0, goal[0]
 assert abs(d["protocol"]["hours"] - c["hours"]) < 1e-9, d["protocol"]
 args = shlex.split(c["simulate"])
 assert args[:3] == ["fogdrift", "simulate", "calibration"], args
@@ -69,7 +80,11 @@ check "plan claims the worst over both" out_has "and 2 sets of search seeds (tra
 check "plan says 60 hours miss the goal" out_has "note: this protocol misses the goal on the population"
 check "plan --hours 30" run 0 "$fd" plan --hours 30
 check "plan says a cheap choice misses the goal" out_has "note: this protocol misses the goal on the population"
-check "plan says what meets it" out_has "the cheapest that meets it, five sweeps, needs 105.1 h here"
+check "plan says what meets it" out_has "the cheapest that meets it, seven sweeps, needs 207.3 h here"
+check "plan --hours 110" run 0 "$fd" plan --hours 110
+check "plan buys five sweeps for 110 hours" out_has "buy: five sweeps, 105.1 h"
+check "plan says five sweeps leave instruments worse than raw" out_has "of 20 instruments × 4 conditions × 2 paths, 2 worse than raw"
+check "plan says five sweeps miss the goal" out_has "note: this protocol misses the goal on the population (every median ≥ 85 %, every 10th percentile ≥ 60 %, none worse than raw)"
 check "plan --service alone is refused" run 1 "$fd" plan --service soaked
 check "plan says --service needs --hours" err_has "option --service: names the conditions --hours chooses for"
 check "plan --figures alone is refused" run 1 "$fd" plan --figures "$work/front"

@@ -46,15 +46,20 @@ TEST(ProtocolFront, AClaimIsTheWorstOverEverySetOfSearchSeeds) {
       paths.push_back(&r.causal);
       EXPECT_GE(p.worse_than_raw, r.worse_than_raw) << s.name;
     }
-    double lowest_p10 = 1e300, lowest_median = 1e300;
+    double lowest_p10 = 1e300, lowest_median = 1e300, lowest = 1e300;
     for (const auto* path : paths)
       for (const PopulationShare& x : *path) {
         lowest_p10 = std::min(lowest_p10, x.p10_pct);
         lowest_median = std::min(lowest_median, x.median_pct);
+        lowest = std::min(lowest, x.worst_pct);
       }
     EXPECT_EQ(p.worst_p10_pct, lowest_p10) << s.name;
     EXPECT_EQ(p.worst_median_pct, lowest_median) << s.name;
-    EXPECT_EQ(p.meets_goal, lowest_median >= kGoalMedianPct && lowest_p10 >= kGoalP10Pct) << s.name;
+    EXPECT_EQ(p.worst_worst_pct, lowest) << s.name;
+    // The goal: the median and 10th percentile, and none worse than raw with any seeds.
+    EXPECT_EQ(p.meets_goal, lowest_median >= kGoalMedianPct && lowest_p10 >= kGoalP10Pct &&
+                                lowest >= 0 && p.worse_than_raw == 0)
+        << s.name;
   }
   EXPECT_TRUE(some_rerun);
 }
@@ -104,6 +109,8 @@ TEST(ProtocolFront, TheChoiceKeepsToTheBudgetAndTakesTheHighestTenthPercentile) 
   EXPECT_TRUE(goal->meets_goal);
   EXPECT_GE(goal->worst_median_pct, kGoalMedianPct);
   EXPECT_GE(goal->worst_p10_pct, kGoalP10Pct);
+  EXPECT_GE(goal->worst_worst_pct, 0.0);
+  EXPECT_EQ(goal->worse_than_raw, 0);
   for (const PricedProtocol& p : priced)
     if (p.service_hours < goal->service_hours) {
       EXPECT_FALSE(p.meets_goal) << p.studied->name;
@@ -116,11 +123,13 @@ TEST(ProtocolFront, TheChoiceKeepsToTheBudgetAndTakesTheHighestTenthPercentile) 
 
 // The goal of docs/field.md, "Protocols worth their hours": within 60 chamber hours on the
 // default instrument, a protocol whose population study has every median ≥ 85 % and every 10th
-// percentile ≥ 60 %, batch and causal, on all 20 instruments. The four start-up set points
-// meet it with the first study's search seeds and miss it with seeds k + 100 (batch soaked 10th
-// percentile 56 %), so 60 hours buy the best protocol studied, which is not yet the goal (nor is
-// the two-warm-sweep protocol of 77.8 h, whose batch warm one falls to 48 %); the page says so,
-// and this test fails, to be rewritten, once a protocol of 60 hours meets it whatever the seeds.
+// percentile ≥ 60 %, batch and causal, on all 20 instruments, none worse than raw. The four
+// start-up set points reach the median and 10th percentile with the first study's search seeds
+// and miss the 10th percentile with seeds k + 100 (batch soaked 56 %), and leave unit 15's warm
+// start-ups worse than raw with both, so 60 hours buy the best protocol studied, which is not yet
+// the goal (nor is the two-warm-sweep protocol of 77.8 h, whose batch warm 10th percentile falls
+// to 48 %, nor the five sweeps of 105.1 h); the page says so, and this test fails, to be
+// rewritten, once a protocol of 60 hours meets it whatever the seeds.
 TEST(ProtocolFront, SixtyHoursBuyTheBestStudiedProtocolNotYetTheGoal) {
   const auto priced = price_protocols(Instrument{}, ChamberOptions{}, kAll);
   const auto chosen = choose_protocol(priced, 60);
@@ -140,6 +149,28 @@ TEST(ProtocolFront, SixtyHoursBuyTheBestStudiedProtocolNotYetTheGoal) {
   const auto goal = cheapest_meeting_goal(priced);
   ASSERT_TRUE(goal);
   EXPECT_GT(goal->service_hours, 60.0);
+  EXPECT_EQ(goal->studied->name, "seven sweeps");  // five sweeps leave warm start-ups worse
+}
+
+// "None worse than raw" is part of the goal: the five-sweep protocol has its medians and 10th
+// percentiles (79 % and more) but leaves unit 15's warm start-ups worse than raw (−15 / −35 %),
+// so it meets the goal for a unit that never restarts warm and misses it for one that does.
+TEST(ProtocolFront, AProtocolLeavingAnInstrumentWorseThanRawMissesTheGoal) {
+  auto five = [](const std::vector<Approach>& service) {
+    for (const PricedProtocol& p : price_protocols(Instrument{}, ChamberOptions{}, service))
+      if (p.studied->name == "five sweeps") return p;
+    ADD_FAILURE() << "no five-sweep protocol";
+    return PricedProtocol{};
+  };
+  const PricedProtocol every = five(kAll);
+  EXPECT_GE(every.worst_median_pct, kGoalMedianPct);
+  EXPECT_GE(every.worst_p10_pct, kGoalP10Pct);
+  EXPECT_LT(every.worst_worst_pct, 0.0);
+  EXPECT_GT(every.worse_than_raw, 0);
+  EXPECT_FALSE(every.meets_goal);
+  const PricedProtocol never_warm = five({Approach::calibration, Approach::ramping});
+  EXPECT_GE(never_warm.worst_worst_pct, 0.0);
+  EXPECT_TRUE(never_warm.meets_goal);
 }
 
 TEST(ProtocolFront, ServiceConditionsAreStartUps) {

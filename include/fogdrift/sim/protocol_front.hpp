@@ -30,7 +30,8 @@ inline constexpr std::array<Approach, 4> kServiceConditions = {
     Approach::calibration, Approach::soaked, Approach::warm, Approach::ramping};
 
 /// docs/field.md's goal on the population: every median and every 10th percentile at least
-/// these, under each start-up condition the unit meets, batch and causal.
+/// these, under each start-up condition the unit meets, batch and causal, and no instrument
+/// worse than raw under any of them.
 inline constexpr double kGoalMedianPct = 85, kGoalP10Pct = 60;
 
 /// The share of the removable north-finding error removed over the population, %.
@@ -74,7 +75,9 @@ struct PricedProtocol {
   double worst_p10_pct = 0, worst_median_pct = 0, worst_worst_pct = 0;
   int worse_than_raw = 0;  ///< the most cells worse than raw of any set of search seeds
   bool on_front = false;   ///< no cheaper protocol has a worst 10th percentile as high
-  /// The worst median and 10th percentile reach kGoalMedianPct and kGoalP10Pct.
+  /// The worst median and 10th percentile reach kGoalMedianPct and kGoalP10Pct, and no
+  /// instrument is worse than raw: the worst share is not below 0 (to the whole percent it was
+  /// recorded in) and, under all four conditions, worse_than_raw is 0.
   bool meets_goal = false;
 };
 
