@@ -184,6 +184,7 @@ namespace {
 // pairwise: a fixed order (the same bits on every processor and thread count) whose sums are
 // independent chains of adds (docs/svr.md, "Where the speed comes from").
 constexpr std::size_t kSumLanes = 8;
+static_assert(kSumLanes == 8, "lane_sum adds its eight sums pairwise by hand");
 
 double lane_sum(const double* b, const float* k, std::size_t n) {
   double lane[kSumLanes] = {};
