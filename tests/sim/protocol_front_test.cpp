@@ -150,6 +150,8 @@ TEST(ProtocolFront, SixtyHoursBuyTheBestStudiedProtocolNotYetTheGoal) {
   ASSERT_TRUE(goal);
   EXPECT_GT(goal->service_hours, 60.0);
   EXPECT_EQ(goal->studied->name, "seven sweeps");  // five sweeps leave warm start-ups worse
+  // It meets the goal with other search seeds too (k + 100, 2026-12-02).
+  EXPECT_FALSE(goal->studied->reruns.empty());
 }
 
 // "None worse than raw" is part of the goal: the five-sweep protocol has its medians and 10th
