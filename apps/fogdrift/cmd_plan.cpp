@@ -75,6 +75,9 @@ nlohmann::ordered_json priced_json(const sim::PricedProtocol& p) {
           {"worst_median_pct", p.worst_median_pct},
           {"worst_p10_pct", p.worst_p10_pct},
           {"worst_pct", p.worst_worst_pct},
+          // The claim's count: the most cells worse than raw of any set of search seeds (the
+          // first study's own is "worse_than_raw" below, each rerun's in "reruns").
+          {"most_worse_than_raw", p.worse_than_raw},
           {"on_front", p.on_front},
           {"meets_goal", p.meets_goal},
           {"batch", shares_json(p.studied->batch)},

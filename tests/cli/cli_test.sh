@@ -56,6 +56,7 @@ median = min(x["median_pct"] for x in cells)
 worst = min(x["worst_pct"] for x in cells)
 worse = max(s["worse_than_raw"] for s in studies)
 assert c["worst_p10_pct"] == p10 and c["worst_pct"] == worst, c
+assert c["most_worse_than_raw"] == worse, c
 # The goal: every median >= 85 %, every 10th percentile >= 60 %, none worse than raw.
 assert c["meets_goal"] == (median >= 85 and p10 >= 60 and worst >= 0 and worse == 0), c
 # The protocol it names as meeting the goal leaves no instrument worse than raw.
