@@ -203,17 +203,20 @@ std::vector<double> path_predictions(const TrainingSet& set, std::span<const Fit
   if (data.cols != set.dims())
     throw std::invalid_argument(fmt::format(
         "path_predictions: data has {} features, the training set {}", data.cols, set.dims()));
-  // Each model's coefficient of every training sample (eq. 6: α⁺ − α⁻), over the samples that
-  // are a support vector of some model.
+  // The samples that are a support vector of some model, and each model's coefficient of each
+  // of them (eq. 6: α⁺ − α⁻), model by model so that lane_sum reads them contiguously.
   std::vector<std::size_t> used;
-  std::vector<double> beta;  // used.size() × models
-  for (std::size_t i = 0; i < l; ++i) {
-    bool any = false;
-    for (const FitResult& r : path) any = any || r.dual.alpha[i] != r.dual.alpha[i + l];
-    if (!any) continue;
-    used.push_back(i);
-    for (const FitResult& r : path) beta.push_back(r.dual.alpha[i] - r.dual.alpha[i + l]);
-  }
+  for (std::size_t i = 0; i < l; ++i)
+    for (const FitResult& r : path)
+      if (r.dual.alpha[i] != r.dual.alpha[i + l]) {
+        used.push_back(i);
+        break;
+      }
+  const std::size_t n_used = used.size();
+  std::vector<double> beta(models * n_used);  // beta[m · n_used + u]
+  for (std::size_t m = 0; m < models; ++m)
+    for (std::size_t u = 0; u < n_used; ++u)
+      beta[m * n_used + u] = path[m].dual.alpha[used[u]] - path[m].dual.alpha[used[u] + l];
   std::vector<double> out(rows.size() * models), f(models);
   const Kernel kernel = path.empty() ? Kernel{} : path.front().model.kernel;
   const std::size_t d = set.dims();
@@ -222,16 +225,15 @@ std::vector<double> path_predictions(const TrainingSet& set, std::span<const Fit
   std::vector<double> w;
   if (kernel.type == KernelType::linear) {
     w.assign(models * d, 0.0);
-    for (std::size_t u = 0; u < used.size(); ++u)
+    for (std::size_t u = 0; u < n_used; ++u)
       for (std::size_t m = 0; m < models; ++m)
         for (std::size_t c = 0; c < d; ++c)
-          w[m * d + c] += beta[u * models + m] * set.data().row(used[u])[c];
+          w[m * d + c] += beta[m * n_used + u] * set.data().row(used[u])[c];
   }
   // RBF: the support vectors alone, feature-major, so that a row costs one kernel value per
   // support vector rather than per training sample (a quarter of them in a typical search). Each
   // value is the float TrainingSet::kernel_row_of computes for that sample: the loops compute
   // every entry from its own column alone.
-  const std::size_t n_used = used.size();
   std::vector<double> xt, sq;
   std::vector<float> k;
   if (kernel.type != KernelType::linear) {
@@ -243,11 +245,6 @@ std::vector<double> path_predictions(const TrainingSet& set, std::span<const Fit
     }
     k.resize(n_used);
   }
-  // The coefficients model by model, contiguous for lane_sum.
-  std::vector<double> beta_of_model(kernel.type == KernelType::linear ? 0 : n_used * models);
-  if (!beta_of_model.empty())
-    for (std::size_t u = 0; u < n_used; ++u)
-      for (std::size_t m = 0; m < models; ++m) beta_of_model[m * n_used + u] = beta[u * models + m];
   const detail::Loops& loops = detail::loops();
   for (std::size_t r = 0; r < rows.size(); ++r) {
     const std::size_t row = rows[r];
@@ -263,7 +260,7 @@ std::vector<double> path_predictions(const TrainingSet& set, std::span<const Fit
       for (std::size_t c = 0; c < d; ++c) sq_x += x[c] * x[c];
       loops.rbf_row(x, sq_x, xt.data(), n_used, sq.data(), n_used, d, kernel.gamma, k.data());
       for (std::size_t j = 0; j < models; ++j)
-        f[j] = lane_sum(beta_of_model.data() + j * n_used, k.data(), n_used);
+        f[j] = lane_sum(beta.data() + j * n_used, k.data(), n_used);
     }
     for (std::size_t m = 0; m < models; ++m) out[r * models + m] = f[m] - path[m].model.rho;
   }
