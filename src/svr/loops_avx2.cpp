@@ -16,6 +16,7 @@
 namespace fogdrift::svr::detail {
 namespace {
 
+using scalar::kExp2Sixteenths;
 using scalar::kExpCoefficients;
 using scalar::kLn2Hi;
 using scalar::kLn2Lo;
@@ -41,10 +42,10 @@ FOGDRIFT_AVX2 inline void exp_to_float_avx2(__m256d (&x)[G], float* out) {
   __m256d t[G], p[G];
   for (std::size_t g = 0; g < G; ++g) {
     x[g] = _mm256_min_pd(_mm256_max_pd(x[g], _mm256_set1_pd(-700.0)), _mm256_set1_pd(700.0));
-    t[g] = _mm256_add_pd(_mm256_mul_pd(x[g], _mm256_set1_pd(kLog2e)), shifter);
+    t[g] = _mm256_add_pd(_mm256_mul_pd(x[g], _mm256_set1_pd(16.0 * kLog2e)), shifter);
     const __m256d n = _mm256_sub_pd(t[g], shifter);
-    x[g] = _mm256_sub_pd(_mm256_sub_pd(x[g], _mm256_mul_pd(n, _mm256_set1_pd(kLn2Hi))),
-                         _mm256_mul_pd(n, _mm256_set1_pd(kLn2Lo)));
+    x[g] = _mm256_sub_pd(_mm256_sub_pd(x[g], _mm256_mul_pd(n, _mm256_set1_pd(kLn2Hi / 16.0))),
+                         _mm256_mul_pd(n, _mm256_set1_pd(kLn2Lo / 16.0)));
     p[g] = _mm256_set1_pd(kExpCoefficients[0]);
   }
   for (std::size_t c = 1; c < std::size(kExpCoefficients); ++c) {
@@ -54,9 +55,16 @@ FOGDRIFT_AVX2 inline void exp_to_float_avx2(__m256d (&x)[G], float* out) {
   }
   for (std::size_t g = 0; g < G; ++g) {
     const __m256i k = _mm256_sub_epi64(_mm256_castpd_si256(t[g]), _mm256_castpd_si256(shifter));
-    const __m256d scale =
-        _mm256_castsi256_pd(_mm256_slli_epi64(_mm256_add_epi64(k, _mm256_set1_epi64x(1023)), 52));
-    _mm_storeu_ps(out + 4 * g, _mm256_cvtpd_ps(_mm256_mul_pd(p[g], scale)));
+    // ⌊k/16⌋ without AVX2's missing 64-bit arithmetic shift: k + 2^20 is positive (|k| < 2^15),
+    // and 2^16 − 1023 restores the bias after the logical shift.
+    const __m256i e =
+        _mm256_add_epi64(_mm256_srli_epi64(_mm256_add_epi64(k, _mm256_set1_epi64x(1 << 20)), 4),
+                         _mm256_set1_epi64x(1023 - (1 << 16)));
+    const __m256d scale = _mm256_castsi256_pd(_mm256_slli_epi64(e, 52));
+    const __m256d sixteenths = _mm256_i64gather_pd(
+        kExp2Sixteenths, _mm256_and_si256(k, _mm256_set1_epi64x(15)), sizeof(double));
+    _mm_storeu_ps(out + 4 * g,
+                  _mm256_cvtpd_ps(_mm256_mul_pd(_mm256_mul_pd(p[g], sixteenths), scale)));
   }
 }
 

@@ -22,6 +22,7 @@
 namespace fogdrift::svr::detail {
 namespace {
 
+using scalar::kExp2Sixteenths;
 using scalar::kExpCoefficients;
 using scalar::kLn2Hi;
 using scalar::kLn2Lo;
@@ -44,13 +45,15 @@ using scalar::none_if_offsets_only;
 template <std::size_t G>
 FOGDRIFT_AVX512 inline void exp_to_float_avx512(__m512d (&x)[G], __m256 (&out)[G]) {
   const __m512d shifter = _mm512_set1_pd(kShifter);
+  const __m512d low_half = _mm512_load_pd(kExp2Sixteenths);
+  const __m512d high_half = _mm512_load_pd(kExp2Sixteenths + 8);
   __m512d t[G], p[G];
   for (std::size_t g = 0; g < G; ++g) {
     x[g] = _mm512_min_pd(_mm512_max_pd(x[g], _mm512_set1_pd(-700.0)), _mm512_set1_pd(700.0));
-    t[g] = _mm512_add_pd(_mm512_mul_pd(x[g], _mm512_set1_pd(kLog2e)), shifter);
+    t[g] = _mm512_add_pd(_mm512_mul_pd(x[g], _mm512_set1_pd(16.0 * kLog2e)), shifter);
     const __m512d n = _mm512_sub_pd(t[g], shifter);
-    x[g] = _mm512_sub_pd(_mm512_sub_pd(x[g], _mm512_mul_pd(n, _mm512_set1_pd(kLn2Hi))),
-                         _mm512_mul_pd(n, _mm512_set1_pd(kLn2Lo)));
+    x[g] = _mm512_sub_pd(_mm512_sub_pd(x[g], _mm512_mul_pd(n, _mm512_set1_pd(kLn2Hi / 16.0))),
+                         _mm512_mul_pd(n, _mm512_set1_pd(kLn2Lo / 16.0)));
     p[g] = _mm512_set1_pd(kExpCoefficients[0]);
   }
   for (std::size_t c = 1; c < std::size(kExpCoefficients); ++c) {
@@ -60,9 +63,11 @@ FOGDRIFT_AVX512 inline void exp_to_float_avx512(__m512d (&x)[G], __m256 (&out)[G
   }
   for (std::size_t g = 0; g < G; ++g) {
     const __m512i k = _mm512_sub_epi64(_mm512_castpd_si512(t[g]), _mm512_castpd_si512(shifter));
-    const __m512d scale =
-        _mm512_castsi512_pd(_mm512_slli_epi64(_mm512_add_epi64(k, _mm512_set1_epi64(1023)), 52));
-    out[g] = _mm512_cvtpd_ps(_mm512_mul_pd(p[g], scale));
+    const __m512d scale = _mm512_castsi512_pd(
+        _mm512_slli_epi64(_mm512_add_epi64(_mm512_srai_epi64(k, 4), _mm512_set1_epi64(1023)), 52));
+    // The permutation reads the low four bits of k: bit 3 picks the table's half.
+    const __m512d sixteenths = _mm512_permutex2var_pd(low_half, k, high_half);
+    out[g] = _mm512_cvtpd_ps(_mm512_mul_pd(_mm512_mul_pd(p[g], sixteenths), scale));
   }
 }
 

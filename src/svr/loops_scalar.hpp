@@ -28,30 +28,38 @@ constexpr double kLn2Hi = 6.93147180369123816490e-01;
 constexpr double kLn2Lo = 1.90821492927058770002e-10;
 constexpr double kShifter = 6755399441055744.0;  // 1.5·2^52: adding it rounds to an integer
 
-/// The Taylor coefficients of e^r, 1/11! down to 1/0!, for Horner's rule.
-constexpr double kExpCoefficients[] = {
-    1.0 / 39916800.0, 1.0 / 3628800.0, 1.0 / 362880.0, 1.0 / 40320.0, 1.0 / 5040.0, 1.0 / 720.0,
-    1.0 / 120.0,      1.0 / 24.0,      1.0 / 6.0,      0.5,           1.0,          1.0};
+/// 2^(j/16) for j = 0 … 15, each the double nearest the exact value.
+alignas(64) constexpr double kExp2Sixteenths[16] = {
+    0x1.0000000000000p+0, 0x1.0b5586cf9890fp+0, 0x1.172b83c7d517bp+0, 0x1.2387a6e756238p+0,
+    0x1.306fe0a31b715p+0, 0x1.3dea64c123422p+0, 0x1.4bfdad5362a27p+0, 0x1.5ab07dd485429p+0,
+    0x1.6a09e667f3bcdp+0, 0x1.7a11473eb0187p+0, 0x1.8ace5422aa0dbp+0, 0x1.9c49182a3f090p+0,
+    0x1.ae89f995ad3adp+0, 0x1.c199bdd85529cp+0, 0x1.d5818dcfba487p+0, 0x1.ea4afa2a490dap+0};
 
-/// e^x through e^x = 2^n·e^r, n = round(x/ln 2), |r| ≤ ln 2 / 2, and the Taylor series of e^r to
-/// degree 11: truncation error r^12/12! < 6.3e-15 relative, against the 3e-8 half-step of the
-/// float every caller rounds the result to, so the float is e^x correctly rounded unless e^x lies
-/// within 6.3e-15 of the midpoint between two floats: on 2·10^8 random x in [−30, 0] every float
-/// equals std::exp's and that of degree 13, which this replaced for 11-13 % of a kernel row; over
-/// the billions of a whole search a few differ (docs/svr.md, "Where the speed comes from").
-/// Branch-free so that loops around it vectorise; the vector versions compute the same operations
-/// lane by lane.
+/// The Taylor coefficients of e^r, 1/6! down to 1/0!, for Horner's rule.
+constexpr double kExpCoefficients[] = {1.0 / 720.0, 1.0 / 120.0, 1.0 / 24.0, 1.0 / 6.0,
+                                       0.5,         1.0,         1.0};
+
+/// e^x through e^x = 2^(n/16)·e^r, n = round(16·x/ln 2), |r| ≤ ln 2 / 32: 2^(n/16) is 2^⌊n/16⌋
+/// (built in the exponent bits) times 2^((n mod 16)/16) from kExp2Sixteenths, and e^r is the
+/// Taylor series to degree 6, whose truncation error r^7/7! < 4.4e-16 relative. With the
+/// table's and the arithmetic's roundings the result is within a few 1e-16 of e^x, against the
+/// 3e-8 half-step of the float every caller rounds it to, so the float is e^x correctly rounded
+/// unless e^x lies within about 1e-15 of the midpoint between two floats: on 6·10^7 random x in
+/// [−745, 0] every float equals std::exp's (docs/svr.md, "Where the speed comes from"). The
+/// reduction to a sixteenth of ln 2 replaced one to ln 2 / 2 with a polynomial of degree 11, for
+/// a third less work an exponential. Branch-free so that loops around it vectorise; the vector
+/// versions compute the same operations lane by lane.
 FOGDRIFT_INLINE double exp_core(double x) {
-  x = x < -700.0 ? -700.0 : x;  // e^-700 is 0 in float; keeps 2^n a normal double
+  x = x < -700.0 ? -700.0 : x;  // e^-700 is 0 in float; keeps 2^⌊n/16⌋ a normal double
   x = x > 700.0 ? 700.0 : x;
-  const double t = x * kLog2e + kShifter;
+  const double t = x * (16.0 * kLog2e) + kShifter;
   const double n = t - kShifter;
-  const double r = (x - n * kLn2Hi) - n * kLn2Lo;
+  const double r = (x - n * (kLn2Hi / 16.0)) - n * (kLn2Lo / 16.0);
   double p = kExpCoefficients[0];
   for (std::size_t c = 1; c < std::size(kExpCoefficients); ++c) p = p * r + kExpCoefficients[c];
   const std::int64_t k = std::bit_cast<std::int64_t>(t) - std::bit_cast<std::int64_t>(kShifter);
-  const double scale = std::bit_cast<double>(static_cast<std::uint64_t>(k + 1023) << 52);
-  return p * scale;
+  const double scale = std::bit_cast<double>(static_cast<std::uint64_t>((k >> 4) + 1023) << 52);
+  return (p * kExp2Sixteenths[k & 15]) * scale;
 }
 
 constexpr std::size_t kBlock = 256;  // columns per block: the accumulators stay in L1

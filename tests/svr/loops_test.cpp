@@ -2,6 +2,7 @@
 // function of every instruction set's table bit for bit against the portable table, a closed-form
 // case, and the choice of the table through FOGDRIFT_ISA.
 #include "svr/loops.hpp"
+#include "svr/loops_scalar.hpp"
 
 #include <gtest/gtest.h>
 
@@ -37,6 +38,15 @@ TEST(FastExp, RoundsToTheSameFloatAsStdExp) {
   EXPECT_LE(differ, 2) << "of " << n;
   EXPECT_EQ(detail::exp_to_float(0.0), 1.0f);
   EXPECT_EQ(detail::exp_to_float(-800.0), 0.0f);
+}
+
+TEST(FastExp, ItsTableIsTheNearestDoubles) {
+  // 2^(j/16) in long double (64 significant bits) rounded to double: the nearest double unless
+  // the value lay within 2^-64 of a midpoint, which none of these does.
+  for (std::size_t j = 0; j < 16; ++j)
+    EXPECT_EQ(detail::scalar::kExp2Sixteenths[j],
+              static_cast<double>(std::exp2(static_cast<long double>(j) / 16.0L)))
+        << j;
 }
 
 /// The vector tables this processor has, each to be compared with the portable one.
