@@ -47,7 +47,7 @@ constexpr double kExpCoefficients[] = {1.0 / 720.0, 1.0 / 120.0, 1.0 / 24.0, 1.0
 /// unless e^x lies within about 1e-15 of the midpoint between two floats: on 6·10^7 random x in
 /// [−745, 0] every float equals std::exp's (docs/svr.md, "Where the speed comes from"). The
 /// reduction to a sixteenth of ln 2 replaced one to ln 2 / 2 with a polynomial of degree 11, for
-/// a third less work an exponential. Branch-free so that loops around it vectorise; the vector
+/// a third less work per exponential. Branch-free so that loops around it vectorise; the vector
 /// versions compute the same operations lane by lane.
 FOGDRIFT_INLINE double exp_core(double x) {
   x = x < -700.0 ? -700.0 : x;  // e^-700 is 0 in float; keeps 2^⌊n/16⌋ a normal double
