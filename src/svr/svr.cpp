@@ -225,8 +225,8 @@ std::vector<double> path_predictions(const TrainingSet& set, std::span<const Fit
   std::vector<double> w;
   if (kernel.type == KernelType::linear) {
     w.assign(models * d, 0.0);
-    for (std::size_t u = 0; u < n_used; ++u)
-      for (std::size_t m = 0; m < models; ++m)
+    for (std::size_t m = 0; m < models; ++m)
+      for (std::size_t u = 0; u < n_used; ++u)
         for (std::size_t c = 0; c < d; ++c)
           w[m * d + c] += beta[m * n_used + u] * set.data().row(used[u])[c];
   }
