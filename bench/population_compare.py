@@ -100,10 +100,11 @@ def main(a, b):
         for path in PATHS:
             cells, worse = [], 0
             for c in CONDITIONS:
-                v = shares[k][(path, c)]
+                # As population_study.sh: a share with no removable error (NaN) is left out.
+                v = [x for x in shares[k][(path, c)] if not math.isnan(x)]
                 worse += sum(x < 0 for x in v)
                 cells.append(f"{100 * quantile(v, .5):.0f} / {100 * quantile(v, .1):.0f} / "
-                             f"{100 * min(v):.0f}")
+                             f"{100 * min(v):.0f} (n = {len(v)})" if v else "n/a")
             print(f"| {k} | {path} | " + " | ".join(cells) + f" | {worse} |")
 
 
