@@ -96,62 +96,58 @@ class SvrObjective {
     // One path task of one C per (candidate, fold) on the engine every search runs on
     // (fold_paths.hpp); warm starts only from earlier batches. Tasks are handed out longest
     // first (LPT), the length guessed from the nearest solved candidate's fit time, so that both
-    // threads finish a stage together; the order never changes a result.
+    // threads finish the batch together; the order never changes a result.
     const std::size_t tasks = fresh.size() * folds;
     std::vector<double> sse(tasks, 0.0), seconds(tasks, 0.0);
     std::vector<std::shared_ptr<const svr::DualSolution>> duals(tasks);
     std::vector<char> warm(tasks, 0), ran(tasks, 0);
-    auto run = [&](const std::vector<std::size_t>& stage) {
-      std::vector<svr::PathTask> paths(stage.size());
-      for (std::size_t k = 0; k < stage.size(); ++k) {
-        const std::size_t t = stage[k], c = t / folds, f = t % folds;
-        svr::PathTask& p = paths[k];
-        p.fold = f;
-        p.params = to_params_(fresh[c]);
-        p.params.c *= c_scale_;
-        p.c_values = {p.params.c};
-        if (options_.warm_start) p.warm = warm_start_for(folds_[f], fresh[c]);
-        p.keep_duals = true;
-        p.guess_seconds = guessed_seconds(folds_[f], fresh[c]);
-        warm[t] = p.warm != nullptr;
-      }
-      const std::vector<svr::PathScores> scores =
-          svr::run_paths(scoring_, paths, options_.pool, workspaces_);
-      for (std::size_t k = 0; k < stage.size(); ++k) {
-        const std::size_t t = stage[k];
-        sse[t] = scores[k].sse[0];
-        seconds[t] = scores[k].seconds[0];
-        duals[t] = scores[k].duals[0];
-        ran[t] = 1;
-      }
-    };
 
-    // Racing (header): once a complete candidate is known, the folds run in stages, the fold
-    // where the best candidate errs most first, and a candidate whose squared errors so far
-    // already exceed the best's total leaves the race. Before that, one stage holds every fold.
+    // Racing (header): once a complete candidate is known, each candidate's folds run as a
+    // chain, the fold where the best candidate errs most first, and a candidate whose squared
+    // errors so far already exceed the best's total leaves the race. Before that, every fold
+    // of every candidate runs. A chain goes on as soon as its own fold is scored, without
+    // waiting for the other candidates' (fold_paths.hpp, run_path_chains).
     const double stop_above = options_.racing && folds > 1 && std::isfinite(best_loss_)
                                   ? best_loss_ * best_loss_ * static_cast<double>(test_rows_)
                                   : INFINITY;
+    const bool racing = std::isfinite(stop_above);
     std::vector<double> partial(fresh.size(), 0.0);
     std::vector<char> alive(fresh.size(), 1);
-    if (!std::isfinite(stop_above)) {
-      std::vector<std::size_t> all(tasks);
-      std::iota(all.begin(), all.end(), 0);
-      run(all);
-    } else {
-      const std::vector<std::size_t> order = fold_order();
-      for (std::size_t stage = 0; stage < folds; ++stage) {
-        const std::size_t f = order[stage];
-        std::vector<std::size_t> these;
-        for (std::size_t c = 0; c < fresh.size(); ++c)
-          if (alive[c]) these.push_back(c * folds + f);
-        run(these);
-        for (std::size_t c = 0; c < fresh.size(); ++c) {
-          if (!alive[c]) continue;
-          partial[c] += sse[c * folds + f];
-          if (stage + 1 < folds && partial[c] > stop_above) alive[c] = 0;
-        }
-      }
+    std::vector<std::size_t> order(folds);
+    if (racing)
+      order = fold_order();
+    else
+      std::iota(order.begin(), order.end(), 0);
+    // Task k is fold order[k % folds] of candidate k / folds; t its slot in sse, duals, ….
+    auto slot_of = [&](std::size_t k) { return (k / folds) * folds + order[k % folds]; };
+    std::vector<svr::PathTask> paths(tasks);
+    for (std::size_t k = 0; k < tasks; ++k) {
+      const std::size_t c = k / folds, f = order[k % folds];
+      svr::PathTask& p = paths[k];
+      p.fold = f;
+      p.params = to_params_(fresh[c]);
+      p.params.c *= c_scale_;
+      p.c_values = {p.params.c};
+      if (options_.warm_start) p.warm = warm_start_for(folds_[f], fresh[c]);
+      p.keep_duals = true;
+      p.guess_seconds = guessed_seconds(folds_[f], fresh[c]);
+      warm[slot_of(k)] = p.warm != nullptr;
+    }
+    const std::vector<svr::PathScores> scores =
+        svr::run_path_chains(scoring_, paths, racing ? folds : 1, options_.pool, workspaces_,
+                             [&](std::size_t k, const svr::PathScores& s) {
+                               const std::size_t c = k / folds;
+                               partial[c] += s.sse[0];
+                               if (partial[c] > stop_above) alive[c] = 0;
+                               return alive[c] != 0;
+                             });
+    for (std::size_t k = 0; k < tasks; ++k) {
+      if (scores[k].sse.empty()) continue;  // its candidate left the race before this fold
+      const std::size_t t = slot_of(k);
+      sse[t] = scores[k].sse[0];
+      seconds[t] = scores[k].seconds[0];
+      duals[t] = scores[k].duals[0];
+      ran[t] = 1;
     }
 
     std::vector<double> loss(fresh.size());

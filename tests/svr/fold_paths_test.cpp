@@ -1,7 +1,7 @@
 // The engine every search runs on (fold_paths.hpp): a path task is the fits fit_c_path makes,
 // scored as path_squared_errors scores them; a one-C task warm-started from a solution is that
-// warm-started fit; predictions add up to the errors; and neither the order of the tasks nor the
-// thread count changes a number.
+// warm-started fit; predictions add up to the errors; chains run a task only when the rule said so
+// after the one before; and neither the order of the tasks nor the thread count changes a number.
 #include "fogdrift/svr/fold_paths.hpp"
 
 #include <gtest/gtest.h>
@@ -116,6 +116,98 @@ TEST(FoldPaths, PredictionsAddUpAndNothingDependsOnOrderOrThreads) {
       EXPECT_NEAR(sse, serial[k].sse[c], 1e-9 * serial[k].sse[c]) << k << " " << c;
     }
   }
+}
+
+TEST(FoldPaths, AChainGoesOnOnlyWhereItsRuleSaysAndNothingElseMoves) {
+  const EvenOddFolds f = even_odd_folds(180);
+  // Chains of two: fold 0, then fold 1, for five kernels; then a chain of one (7 % 2).
+  std::vector<PathTask> tasks;
+  const std::vector<double> gammas = {0.05, 0.5, 2.0, 8.0, 30.0, 1.0};
+  for (std::size_t g = 0; g < gammas.size(); ++g)
+    for (std::size_t fold = 0; fold < 2; ++fold) {
+      if (g + 1 == gammas.size() && fold == 1) break;
+      PathTask& t = tasks.emplace_back();
+      t.fold = fold;
+      t.params = rbf_params(gammas[g]);
+      t.c_values = {3.0};
+      t.guess_seconds = static_cast<double>((g * 7 + fold) % 5);  // another order than given
+    }
+  WorkspacePool spaces;
+  const std::vector<PathScores> every = run_paths(f.scoring, tasks, nullptr, spaces);
+  // Go on where the first fold's error is below the median of the five: some chains stop.
+  std::vector<double> first;
+  for (std::size_t k = 0; k + 1 < tasks.size(); k += 2) first.push_back(every[k].sse[0]);
+  std::sort(first.begin(), first.end());
+  const double median = first[2];
+  for (unsigned threads : {1u, 2u, 3u}) {
+    ThreadPool pool(threads);
+    std::vector<int> asked(tasks.size(), 0);
+    const std::vector<PathScores> chained = run_path_chains(
+        f.scoring, tasks, 2, &pool, spaces, [&](std::size_t k, const PathScores& s) {
+          ++asked[k];
+          return s.sse[0] < median;
+        });
+    ASSERT_EQ(chained.size(), tasks.size());
+    std::size_t stopped = 0;
+    for (std::size_t k = 0; k < tasks.size(); ++k) {
+      const bool chain_start = k % 2 == 0;
+      // The rule is asked once after every task that has a next one in its chain, never after
+      // the last of a chain.
+      const bool has_next = chain_start && k + 1 < tasks.size();
+      EXPECT_EQ(asked[k], has_next && !chained[k].sse.empty() ? 1 : 0) << threads << " " << k;
+      const bool runs = chain_start || every[k - 1].sse[0] < median;
+      if (runs) {
+        EXPECT_EQ(chained[k].sse, every[k].sse) << threads << " " << k;  // to the bit
+      } else {
+        EXPECT_TRUE(chained[k].sse.empty()) << threads << " " << k;
+        ++stopped;
+      }
+    }
+    EXPECT_EQ(stopped, 3u) << threads;  // the three kernels at or above the median
+  }
+}
+
+TEST(FoldPaths, AStoppedChainRunsNothingMore) {
+  // One chain of three on two threads: the rule stops it after its first task, and nothing of
+  // the other two is run or returned.
+  const EvenOddFolds f = even_odd_folds(240);
+  std::vector<PathTask> tasks(3);
+  for (std::size_t k = 0; k < tasks.size(); ++k) {
+    tasks[k].fold = k % 2;
+    tasks[k].params = rbf_params(0.5 + static_cast<double>(k));
+    tasks[k].c_values = {10.0};
+  }
+  WorkspacePool spaces;
+  ThreadPool pool(2);
+  for (int repeat = 0; repeat < 5; ++repeat) {
+    int asked = 0;
+    const std::vector<PathScores> out =
+        run_path_chains(f.scoring, tasks, 3, &pool, spaces, [&](std::size_t k, const PathScores&) {
+          EXPECT_EQ(k, 0u);
+          ++asked;
+          return false;
+        });
+    EXPECT_EQ(asked, 1);
+    EXPECT_EQ(out[0].sse.size(), 1u);
+    EXPECT_TRUE(out[1].sse.empty() && out[1].seconds.empty());
+    EXPECT_TRUE(out[2].sse.empty() && out[2].seconds.empty());
+  }
+}
+
+TEST(FoldPaths, AFailingTaskStopsItsChainsAndIsRethrown) {
+  const EvenOddFolds f = even_odd_folds(120);
+  std::vector<PathTask> tasks(4);
+  for (std::size_t k = 0; k < tasks.size(); ++k) {
+    tasks[k].fold = k % 2;
+    tasks[k].params = rbf_params(1.0);
+    tasks[k].c_values = {1.0};
+  }
+  tasks[0].c_values = {-1.0};  // C must be positive: the fit throws
+  WorkspacePool spaces;
+  ThreadPool pool(2);
+  EXPECT_THROW(run_path_chains(f.scoring, tasks, 2, &pool, spaces,
+                               [](std::size_t, const PathScores&) { return true; }),
+               std::invalid_argument);
 }
 
 }  // namespace

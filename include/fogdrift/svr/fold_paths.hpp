@@ -6,11 +6,14 @@
 // nearest solved candidate; the grid search's (grid_search.hpp) are the whole C axis of a
 // kernel. Tasks run on the caller's pool, longest first as guessed, each with a workspace from
 // the caller's WorkspacePool; the order never changes a result, and neither does the thread
-// count.
+// count. Tasks may also come in chains whose next task runs only if the caller's rule says so
+// after the one before (the tuner's racing: a candidate's folds, one after another, for as long
+// as it can still win); chains run side by side, without waiting for one another.
 #pragma once
 
 #include <cmath>
 #include <cstddef>
+#include <functional>
 #include <memory>
 #include <span>
 #include <vector>
@@ -54,5 +57,21 @@ struct PathScores {
 std::vector<PathScores> run_paths(std::span<const ScoringFold> folds,
                                   std::span<const PathTask> tasks, ThreadPool* pool,
                                   WorkspacePool& workspaces);
+
+/// Whether the chain of task `k` goes on to task k + 1, from task k's scores.
+using ChainRule = std::function<bool(std::size_t k, const PathScores& scores)>;
+
+/// Runs `tasks` as chains of `chain_length` consecutive tasks (the last chain may be shorter):
+/// the first task of every chain, and task k + 1 of a chain once task k has run and
+/// `go_on(k, scores of k)` is true. A task whose chain stopped before it is not run and keeps
+/// empty scores. Chains run in parallel, each as soon as a thread is free: no chain waits for
+/// another's step, so a thread idles only when no ready task is left. Among ready tasks the one
+/// whose chain has the most guessed time left (its guess × tasks left in its chain) goes first.
+/// `go_on` is called one at a time. Since a chain's decisions read only its own scores, which
+/// tasks run, and so every result, do not depend on the order or the thread count.
+std::vector<PathScores> run_path_chains(std::span<const ScoringFold> folds,
+                                        std::span<const PathTask> tasks, std::size_t chain_length,
+                                        ThreadPool* pool, WorkspacePool& workspaces,
+                                        const ChainRule& go_on);
 
 }  // namespace fogdrift::svr
