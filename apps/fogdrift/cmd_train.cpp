@@ -37,6 +37,15 @@ struct TrainArgs {
   CampaignTrainOptions options;
 };
 
+// "C = 8.62, sigma = 6.03: 0.18098; …": candidates of a search and their losses.
+std::string candidate_list(const std::vector<tune::Candidate>& candidates) {
+  std::string out;
+  for (const tune::Candidate& c : candidates)
+    out += fmt::format("{}C = {:.4g}, sigma = {:.3g}: {:.5f}", out.empty() ? "" : "; ", c.params.c,
+                       c.params.kernel.sigma(), c.loss);
+  return out;
+}
+
 /// How sure train is, its advice in flags.
 std::vector<std::string> held_out_warnings(const TrainArgs& a, const HeldOutReport& h) {
   std::vector<std::string> out;
@@ -96,23 +105,28 @@ void print_summary(const TrainArgs& a, const CampaignTrainResult& trained,
           "racing), {} SVR fits\n",
           svr->tuning.optimizer.brief_report(), svr->tuning.candidates, svr->tuning.raced,
           svr->tuning.fits);
+    if (svr && svr->tuning.capped_fits > 0)
+      std::cout << fmt::format(
+          "  {} fits stopped unfinished at {} SMO iterations a row (--smo-iterations-per-row); "
+          "{}\n",
+          svr->tuning.capped_fits, a.options.train.tune.smo_iterations_per_row,
+          svr->tuning.stride > 1 ? std::string("the rescored candidates are fitted to the end")
+          : svr->tuning.finished.empty()
+              ? std::string("none would have been the answer")
+              : "fitted to the end as they would have been the answer: " +
+                    candidate_list(svr->tuning.finished));
     if (svr && svr->tuning.optimizer.status == opt::Status::converged)
       std::cout << fmt::format(
           "  stopped learning: less than {:g} % better over its last {} iterations "
           "(--stall-iterations, --stall-tolerance)\n",
           100 * a.options.train.tune.optimizer.run.stall_tolerance,
           a.options.train.tune.optimizer.run.stall_iterations);
-    if (svr && svr->tuning.stride > 1) {
-      std::string rescored;
-      for (const tune::Candidate& c : svr->tuning.rescored)
-        rescored +=
-            fmt::format("{}C = {:.4g}, sigma = {:.3g}: {:.5f}", rescored.empty() ? "" : "; ",
-                        c.params.c, c.params.kernel.sigma(), c.loss);
+    if (svr && svr->tuning.stride > 1)
       std::cout << fmt::format(
           "  searched on one training row in {} (C x {}), the best {} rescored on all rows: {} "
           "(--search-rows)\n",
-          svr->tuning.stride, svr->tuning.stride, svr->tuning.rescored.size(), rescored);
-    }
+          svr->tuning.stride, svr->tuning.stride, svr->tuning.rescored.size(),
+          candidate_list(svr->tuning.rescored));
     const tune::TuneOptions& tuned = a.options.train.tune;
     if (svr && svr->tuning.stride == 1 && tuned.search_rows > 0 &&
         svr->tuning.largest_fold_rows > 0 && svr->tuning.largest_fold_rows < tuned.thin_from_rows)

@@ -26,6 +26,7 @@ PathScores run_one(const ScoringFold& fold, const PathTask& task, WorkspacePool&
     scores.sse = path_squared_errors(*fold.train, path, *fold.held, fold.score_rows);
   for (FitResult& fit : path) {
     scores.seconds.push_back(fit.summary.seconds);
+    scores.status.push_back(fit.summary.solver.status);
     if (task.keep_duals)
       scores.duals.push_back(std::make_shared<const DualSolution>(std::move(fit.dual)));
   }

@@ -1,6 +1,8 @@
 // The loss of SVR candidates over grouped folds (or the training rows), as tune_svr's searches
 // evaluate it: each fold prepared once, a memo of candidates, warm starts from the nearest solved
-// candidate, racing, and vectorised scoring (fogdrift/train/tune.hpp, docs/tuning.md "Speed").
+// candidate, racing, the cap on a fit's SMO iterations with finish() for a capped candidate, and
+// vectorised scoring (fogdrift/train/tune.hpp, docs/tuning.md "Speed", "A cap on the search's
+// fits").
 // Private to train/: the searches build one per campaign, or two when the search fits every k-th
 // training row (docs/tuning.md, "A search on fewer rows").
 #pragma once
@@ -41,9 +43,12 @@ class SvrObjective {
                         std::move(rows),
                         {}});
     };
+    std::size_t largest_rows = data.rows;  // of the fitness on the training rows
     if (options.fitness == Fitness::cv) {
       c_scale_ = static_cast<double>(stride);
+      largest_rows = 0;
       for (const Fold& f : grouped_folds(data, options.cv)) {
+        largest_rows = std::max(largest_rows, f.train_rows.size());
         std::vector<std::size_t> kept;
         for (std::size_t i = 0; i < f.train_rows.size(); i += stride)
           kept.push_back(f.train_rows[i]);
@@ -55,6 +60,7 @@ class SvrObjective {
       std::iota(all.begin(), all.end(), 0);
       add(scale_split(data, all, all));
     }
+    max_iterations_ = static_cast<std::int64_t>(options.smo_iterations_per_row * largest_rows);
     for (const FoldState& f : folds_) {
       test_rows_ += f.test.rows;
       scoring_.push_back({f.set.get(), &f.test, f.test_rows, {}});
@@ -100,7 +106,7 @@ class SvrObjective {
     const std::size_t tasks = fresh.size() * folds;
     std::vector<double> sse(tasks, 0.0), seconds(tasks, 0.0);
     std::vector<std::shared_ptr<const svr::DualSolution>> duals(tasks);
-    std::vector<char> warm(tasks, 0), ran(tasks, 0);
+    std::vector<char> warm(tasks, 0), ran(tasks, 0), capped(tasks, 0);
 
     // Racing (header): once a complete candidate is known, each candidate's folds run as a
     // chain, the fold where the best candidate errs most first, and a candidate whose squared
@@ -127,6 +133,7 @@ class SvrObjective {
       p.fold = f;
       p.params = to_params_(fresh[c]);
       p.params.c *= c_scale_;
+      p.params.max_iterations = max_iterations_;
       p.c_values = {p.params.c};
       if (options_.warm_start) p.warm = warm_start_for(folds_[f], fresh[c]);
       p.keep_duals = true;
@@ -147,10 +154,12 @@ class SvrObjective {
       sse[t] = scores[k].sse[0];
       seconds[t] = scores[k].seconds[0];
       duals[t] = scores[k].duals[0];
+      capped[t] = scores[k].status[0] == svr::SolverStatus::iteration_limit;
       ran[t] = 1;
     }
 
     std::vector<double> loss(fresh.size());
+    std::vector<char> any_capped(fresh.size(), 0);
     for (std::size_t c = 0; c < fresh.size(); ++c) {
       double s = 0;
       bool complete = true;
@@ -164,6 +173,7 @@ class SvrObjective {
         fit_seconds_ += seconds[t];
         warm_fits_ += warm[t] ? 1 : 0;
         ++fits_;
+        if (capped[t]) any_capped[c] = 1, ++capped_fits_;
       }
       // A candidate out of the race: its squared errors so far, scaled to all folds as the best
       // candidate's errors spread over them; above the best loss, since they alone exceed it.
@@ -178,12 +188,23 @@ class SvrObjective {
       }
       loss[c] = std::sqrt(s * scale / static_cast<double>(test_rows_));
       memo_.emplace(fresh[c], loss[c]);
-      history_.push_back({to_params_(fresh[c]), loss[c], complete});
+      history_.push_back({to_params_(fresh[c]), loss[c], complete, any_capped[c] != 0});
       if (!complete) ++raced_;
+      // A complete capped candidate may yet be the answer: keep what finish() needs.
+      if (complete && any_capped[c]) {
+        Unfinished& u = unfinished_[history_.size() - 1];
+        u.point = fresh[c];
+        for (std::size_t f = 0; f < folds; ++f) {
+          const std::size_t t = c * folds + f;
+          u.sse.push_back(sse[t]);
+          u.duals.push_back(capped[t] ? duals[t] : nullptr);
+        }
+      }
     }
-    // The best complete candidate so far bounds the next batches' races.
+    // The best complete candidate so far bounds the next batches' races; one with an
+    // unfinished fit does not, since its loss is not yet the loss of its parameters.
     for (std::size_t c = 0; c < fresh.size(); ++c) {
-      if (!alive[c] || !(loss[c] < best_loss_)) continue;
+      if (!alive[c] || any_capped[c] || !(loss[c] < best_loss_)) continue;
       best_loss_ = loss[c];
       best_fold_sse_.assign(sse.begin() + static_cast<std::ptrdiff_t>(c * folds),
                             sse.begin() + static_cast<std::ptrdiff_t>((c + 1) * folds));
@@ -213,7 +234,39 @@ class SvrObjective {
     candidates_ += fresh.size();
   }
 
+  /// The loss of history_[index], a complete capped candidate, with its capped fits run to the
+  /// end (no cap), each warm-started from its own unfinished solution; its other folds keep
+  /// their scores. The fits count in fits_ and fit_seconds_.
+  double finish(std::size_t index) {
+    const Unfinished& u = unfinished_.at(index);
+    std::vector<svr::PathTask> paths;
+    std::vector<std::size_t> fold_of;
+    for (std::size_t f = 0; f < folds_.size(); ++f) {
+      if (u.duals[f] == nullptr) continue;
+      svr::PathTask p;
+      p.fold = f;
+      p.params = to_params_(u.point);
+      p.params.c *= c_scale_;
+      p.c_values = {p.params.c};
+      p.warm = u.duals[f].get();
+      paths.push_back(std::move(p));
+      fold_of.push_back(f);
+    }
+    const std::vector<svr::PathScores> scores =
+        svr::run_paths(scoring_, paths, options_.pool, workspaces_);
+    std::vector<double> sse = u.sse;
+    for (std::size_t k = 0; k < paths.size(); ++k) {
+      sse[fold_of[k]] = scores[k].sse[0];
+      fit_seconds_ += scores[k].seconds[0];
+      ++fits_;
+      ++warm_fits_;
+    }
+    return std::sqrt(std::accumulate(sse.begin(), sse.end(), 0.0) /
+                     static_cast<double>(test_rows_));
+  }
+
   std::size_t candidates_ = 0, repeats_ = 0, fits_ = 0, warm_fits_ = 0, raced_ = 0;
+  std::size_t capped_fits_ = 0;
   std::vector<Candidate> history_;
   double fit_seconds_ = 0;
 
@@ -222,6 +275,13 @@ class SvrObjective {
     std::vector<double> point;
     std::shared_ptr<const svr::DualSolution> dual;
     double seconds;
+  };
+  // A complete candidate with a capped fit: its point, each fold's squared errors, and the
+  // unfinished solution of each fold that hit the cap (null where the fit finished).
+  struct Unfinished {
+    std::vector<double> point;
+    std::vector<double> sse;
+    std::vector<std::shared_ptr<const svr::DualSolution>> duals;
   };
   struct FoldState {
     std::unique_ptr<svr::TrainingSet> set;
@@ -291,6 +351,8 @@ class SvrObjective {
   svr::WorkspacePool workspaces_;
   std::vector<std::string> fold_names_;
   std::map<std::vector<double>, double> memo_;
+  std::int64_t max_iterations_ = 0;               // of each fit (smo_iterations_per_row); 0: no cap
+  std::map<std::size_t, Unfinished> unfinished_;  // by index in history_
 };
 
 }  // namespace fogdrift::tune

@@ -77,6 +77,18 @@ nlohmann::ordered_json to_json(const SvrTrainer::Record& r) {
   nlohmann::ordered_json rescored = nlohmann::ordered_json::array();
   for (const tune::Candidate& c : u.rescored)
     rescored.push_back({{"C", c.params.c}, {"sigma", c.params.kernel.sigma()}, {"rmse", c.loss}});
+  nlohmann::ordered_json finished = nlohmann::ordered_json::array();
+  for (const tune::Candidate& c : u.finished) {
+    double seen = c.loss;
+    for (const tune::Candidate& h : u.history)
+      if (h.params.c == c.params.c && h.params.kernel == c.params.kernel &&
+          h.params.epsilon == c.params.epsilon)
+        seen = h.loss;
+    finished.push_back({{"C", c.params.c},
+                        {"sigma", c.params.kernel.sigma()},
+                        {"capped_rmse", seen},
+                        {"rmse", c.loss}});
+  }
   nlohmann::ordered_json log = nlohmann::ordered_json::array();
   for (const auto& i : u.optimizer.log) log.push_back(i.best_fitness);
   nlohmann::ordered_json j;
@@ -89,6 +101,8 @@ nlohmann::ordered_json to_json(const SvrTrainer::Record& r) {
                  {"repeats", u.repeats},
                  {"fits", u.fits},
                  {"raced", u.raced},
+                 {"capped_fits", u.capped_fits},
+                 {"finished", finished},
                  {"row_stride", u.stride},
                  {"largest_fold_rows", u.largest_fold_rows},
                  {"rescored", rescored},

@@ -236,6 +236,18 @@ OptionTable<O> make_train_table() {
        {}},
       [](auto& o) -> auto& { return o.train.tune.thin_from_rows; }));
   t.push_back(whole_option<O>(
+      {"smo_iterations_per_row",
+       "--smo-iterations-per-row",
+       {},
+       "",
+       between(0, static_cast<double>(tune::kMaxSmoIterationsPerRow)).with("0 sets no cap"),
+       "The SMO iterations each of the search's fits may take, per training row of the largest "
+       "fold: a fit stopped there is unfinished, its loss steers the search but never bounds "
+       "racing, and a candidate that would be the answer is fitted to the end first "
+       "(docs/tuning.md). Spares the slow fits of the over-fitting corner",
+       {}},
+      [](auto& o) -> auto& { return o.train.tune.smo_iterations_per_row; }));
+  t.push_back(whole_option<O>(
       {"seed", "--seed", {}, "", "", "Seed of the search (and of bp's weights)", {}},
       [](auto& o) -> auto& { return o.train.tune.optimizer.run.seed; }));
   t.push_back(number_option<O>(

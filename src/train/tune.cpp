@@ -7,6 +7,7 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <map>
 #include <numeric>
 
 #include "fogdrift/base/enum_names.hpp"
@@ -70,6 +71,11 @@ void validate(const TuneOptions& options) {
     throw OptionError("tolerance", fmt::format("{} must be finite and > 0", options.tolerance));
   if (!(options.cache_mb >= 0 && std::isfinite(options.cache_mb)))
     throw OptionError("cache_mb", fmt::format("{} must be finite and ≥ 0", options.cache_mb));
+  if (options.smo_iterations_per_row > kMaxSmoIterationsPerRow)
+    throw OptionError(
+        "smo_iterations_per_row",
+        fmt::format("{} is above {}: LIBSVM's own limit is 200 a row (at least 10⁷); 0 sets no cap",
+                    options.smo_iterations_per_row, kMaxSmoIterationsPerRow));
   if ((options.cv.scheme == CvScheme::recording || options.cv.scheme == CvScheme::temperature) &&
       options.cv.folds < 2)
     throw OptionError("folds", fmt::format("{} is below 2", options.cv.folds));
@@ -139,6 +145,7 @@ std::vector<Candidate> rescored(const Dataset& data, const TuneOptions& options,
   TuneOptions all_rows = options;
   all_rows.racing = false;
   all_rows.warm_start = false;
+  all_rows.smo_iterations_per_row = 0;  // the answer's fits run to the end
   SvrObjective objective(data, all_rows, [&](std::span<const double> x) {
     return history[order[static_cast<std::size_t>(x[0])]].params;
   });
@@ -149,6 +156,33 @@ std::vector<Candidate> rescored(const Dataset& data, const TuneOptions& options,
   for (std::size_t k = 0; k < order.size(); ++k)
     out.push_back({history[order[k]].params, loss[k], true});
   return out;
+}
+
+// The search's answer when some fits stopped at the cap (docs/tuning.md, "A cap on the search's
+// fits"): the complete candidate of lowest loss, where a capped candidate's loss counts only
+// once its capped fits have been run to the end. Finishes capped candidates in order of the loss
+// the optimizer saw until the lowest is a finished one; each is finished at most once. Returns
+// its index in history (SIZE_MAX when no candidate is complete) and the finished ones in `out`.
+std::size_t finish_best(SvrObjective& objective, const std::vector<Candidate>& history,
+                        std::vector<Candidate>& out, double& best_loss) {
+  std::map<std::size_t, double> finished;
+  for (;;) {
+    std::size_t best = SIZE_MAX;
+    double lowest = INFINITY;
+    for (std::size_t i = 0; i < history.size(); ++i) {
+      if (!history[i].complete) continue;
+      const auto f = finished.find(i);
+      const double loss = f != finished.end() ? f->second : history[i].loss;
+      if (loss < lowest) lowest = loss, best = i;
+    }
+    if (best == SIZE_MAX || !history[best].capped || finished.contains(best)) {
+      best_loss = lowest;
+      return best;
+    }
+    const double loss = objective.finish(best);
+    finished.emplace(best, loss);
+    out.push_back({history[best].params, loss, true, true});
+  }
 }
 
 }  // namespace
@@ -184,8 +218,20 @@ TuneSummary tune_svr(const Dataset& data, const TuneOptions& options) {
   out.fits = objective.fits_;
   out.warm_fits = objective.warm_fits_;
   out.raced = objective.raced_;
-  out.fit_seconds = objective.fit_seconds_;
+  out.capped_fits = objective.capped_fits_;
   out.history = std::move(objective.history_);
+  if (stride == 1 && out.capped_fits > 0) {
+    double loss = 0;
+    const std::size_t best = finish_best(objective, out.history, out.finished, loss);
+    // Unchanged when the optimizer's best had no capped fit: the same answer to the byte.
+    if (!out.finished.empty() && best != SIZE_MAX) {
+      out.best = out.history[best].params;
+      out.best_fitness = loss;
+    }
+    out.fits = objective.fits_;
+    out.warm_fits = objective.warm_fits_;
+  }
+  out.fit_seconds = objective.fit_seconds_;
   out.stride = stride;
   out.largest_fold_rows = largest;
   if (stride > 1) {
@@ -205,7 +251,9 @@ TuneSummary tune_svr(const Dataset& data, const TuneOptions& options) {
 
 double svr_loss(const Dataset& data, const svr::Params& params, const TuneOptions& options) {
   svr::validate(params);
-  SvrObjective objective(data, options, [&params](std::span<const double>) { return params; });
+  TuneOptions whole = options;
+  whole.smo_iterations_per_row = 0;  // one candidate's loss: its fits run to the end
+  SvrObjective objective(data, whole, [&params](std::span<const double>) { return params; });
   const double point = 0;
   double loss = 0;
   objective.evaluate(std::span<const double>(&point, 1), std::span<double>(&loss, 1), 1);
@@ -242,10 +290,11 @@ const std::array<Axis, 3> kAxes = {{
 std::vector<BoxEdge> box_edges(const TuneSummary& summary, const SearchSpace& space) {
   std::vector<BoxEdge> edges;
   // The best's loss as the search saw it (on every k-th row when it had a stride), comparable
-  // with the history's.
+  // with the history's; a capped candidate's is not its parameters' loss.
   double best_loss = summary.best_fitness;
   for (const Candidate& c : summary.history)
-    if (c.complete && c.params.c == summary.best.c && c.params.epsilon == summary.best.epsilon &&
+    if (c.complete && !c.capped && c.params.c == summary.best.c &&
+        c.params.epsilon == summary.best.epsilon &&
         c.params.kernel.gamma == summary.best.kernel.gamma)
       best_loss = c.loss;
   for (const Axis& a : kAxes) {
@@ -259,7 +308,7 @@ std::vector<BoxEdge> box_edges(const TuneSummary& summary, const SearchSpace& sp
       const double inset = std::min(1.0, 0.25 * span);
       double inside = std::numeric_limits<double>::infinity();
       for (const Candidate& c : summary.history) {
-        if (!c.complete) continue;  // an estimate only
+        if (!c.complete || c.capped) continue;  // an estimate, or an unfinished fit's loss
         const double x = std::log10(a.get(c.params));
         if ((upper ? edge - x : x - edge) >= inset) inside = std::min(inside, c.loss);
       }

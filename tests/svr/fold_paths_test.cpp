@@ -1,6 +1,7 @@
 // The engine every search runs on (fold_paths.hpp): a path task is the fits fit_c_path makes,
 // scored as path_squared_errors scores them; a one-C task warm-started from a solution is that
-// warm-started fit; predictions add up to the errors; chains run a task only when the rule said so
+// warm-started fit; a fit stopped at its iteration cap says so and finishes from where it
+// stopped; predictions add up to the errors; chains run a task only when the rule said so
 // after the one before; and neither the order of the tasks nor the thread count changes a number.
 #include "fogdrift/svr/fold_paths.hpp"
 
@@ -83,6 +84,36 @@ TEST(FoldPaths, ATaskIsItsPathScoredAndAWarmStartIsKept) {
   const FitResult warm = fit(*f.sets[1], tasks[1].params, first[0].duals.back().get());
   EXPECT_EQ(second[0].sse, path_squared_errors(*f.sets[1], {&warm, 1}, f.all, f.held[1]));
   EXPECT_TRUE(second[0].duals.empty());  // not asked for
+}
+
+// A fit stopped at params.max_iterations says so (the tuner's cap, docs/tuning.md), and a fit
+// warm-started from its unfinished solution runs to the end: the finished loss of that C.
+TEST(FoldPaths, ACappedFitSaysSoAndFinishesFromWhereItStopped) {
+  const EvenOddFolds f = even_odd_folds(200);
+  PathTask capped;
+  capped.fold = 0;
+  capped.params = rbf_params(1.5);
+  capped.params.c = 300;
+  capped.params.max_iterations = 20;
+  capped.c_values = {300};
+  capped.keep_duals = true;
+  PathTask whole = capped;
+  whole.params.max_iterations = 0;
+  WorkspacePool spaces;
+  const std::vector<PathTask> both = {capped, whole};
+  const std::vector<PathScores> s = run_paths(f.scoring, both, nullptr, spaces);
+  ASSERT_EQ(s[0].status.size(), 1u);
+  EXPECT_EQ(s[0].status[0], SolverStatus::iteration_limit);
+  EXPECT_EQ(s[1].status[0], SolverStatus::optimal);
+  // Twenty iterations are far from the optimum here: the unfinished fit errs otherwise.
+  EXPECT_GT(std::fabs(s[0].sse[0] - s[1].sse[0]), 1e-3 * s[1].sse[0]);
+
+  PathTask finish = whole;
+  finish.warm = s[0].duals[0].get();
+  const std::vector<PathScores> finished = run_paths(f.scoring, {&finish, 1}, nullptr, spaces);
+  EXPECT_EQ(finished[0].status[0], SolverStatus::optimal);
+  // The same optimum to the solver's tolerance (1e-5), from another starting point.
+  EXPECT_NEAR(finished[0].sse[0], s[1].sse[0], 1e-3 * s[1].sse[0]);
 }
 
 TEST(FoldPaths, PredictionsAddUpAndNothingDependsOnOrderOrThreads) {

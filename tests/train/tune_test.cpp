@@ -141,6 +141,74 @@ TEST(TuneSvr, RacingStopsOnlyCandidatesThatCannotWin) {
   EXPECT_LE(raced.best_fitness, full.best_fitness * 1.01);
 }
 
+// A cap on the search's fits (docs/tuning.md, "A cap on the search's fits"): capped candidates
+// steer the search, but the answer's loss is that of fits run to the end. Every capped candidate
+// that looked better than the answer was finished and is worse than it; racing stopped only
+// candidates whose finished loss is above the answer; and the thread count changes nothing.
+TEST(TuneSvr, ACappedSearchNeverAnswersWithAnUnfinishedFit) {
+  const Dataset d = synthetic();
+  ThreadPool one(1), two(2);
+  TuneOptions o = small_search(opt::Algorithm::ssa, &two);
+  o.space.c_max = 1000;  // the slow corner the cap is for
+  o.smo_iterations_per_row = 2;
+  const TuneSummary s = tune_svr(d, o);
+  ASSERT_GT(s.capped_fits, 0u);
+  ASSERT_FALSE(s.finished.empty());  // at this cap some capped candidate looked best
+
+  TuneOptions whole = o;
+  whole.pool = nullptr;
+  whole.smo_iterations_per_row = 0;
+  // The answer's loss is its parameters' loss (warm starts vs cold fits, as above).
+  EXPECT_NEAR(svr_loss(d, s.best, whole), s.best_fitness, 3e-3 * s.best_fitness);
+  bool found = false;
+  for (const Candidate& c : s.finished) {
+    EXPECT_TRUE(c.capped);
+    EXPECT_GE(c.loss, s.best_fitness);
+    EXPECT_NEAR(svr_loss(d, c.params, whole), c.loss, 3e-3 * c.loss) << "C=" << c.params.c;
+    found = found || (c.params.c == s.best.c && c.loss == s.best_fitness);
+  }
+  std::size_t capped = 0;
+  for (const Candidate& c : s.history) {
+    capped += c.capped ? 1 : 0;
+    if (!c.complete) {
+      EXPECT_GT(svr_loss(d, c.params, whole), s.best_fitness * (1 - 3e-3)) << "C=" << c.params.c;
+      continue;
+    }
+    if (!c.capped) {
+      EXPECT_GE(c.loss, s.best_fitness);
+      found = found || (c.params.c == s.best.c && c.loss == s.best_fitness);
+      continue;
+    }
+    if (c.loss >= s.best_fitness) continue;
+    // A capped candidate that looked better than the answer was finished.
+    bool was_finished = false;
+    for (const Candidate& f : s.finished)
+      was_finished =
+          was_finished || (f.params.c == c.params.c && f.params.kernel == c.params.kernel);
+    EXPECT_TRUE(was_finished) << "C=" << c.params.c;
+  }
+  EXPECT_TRUE(found);
+  EXPECT_GT(capped, 0u);
+  EXPECT_LE(capped, s.capped_fits);
+
+  TuneOptions serial = o;
+  serial.pool = &one;
+  const TuneSummary s1 = tune_svr(d, serial);
+  EXPECT_EQ(s1.best_fitness, s.best_fitness);
+  EXPECT_EQ(s1.best.c, s.best.c);
+  EXPECT_EQ(s1.fits, s.fits);
+  EXPECT_EQ(s1.capped_fits, s.capped_fits);
+  EXPECT_EQ(s1.finished.size(), s.finished.size());
+
+  // Without the cap no fit is stopped and nothing is finished.
+  TuneOptions uncapped = o;
+  uncapped.smo_iterations_per_row = 0;
+  const TuneSummary u = tune_svr(d, uncapped);
+  EXPECT_EQ(u.capped_fits, 0u);
+  EXPECT_TRUE(u.finished.empty());
+  for (const Candidate& c : u.history) EXPECT_FALSE(c.capped);
+}
+
 // The search ends at least as low as the best point of a 9 × 9 grid over the same box (up to
 // the solver tolerance), and well below LIBSVM's default parameters.
 TEST(TuneSvr, MatchesAFineGrid) {
@@ -270,6 +338,9 @@ TEST(TuneSvr, RejectsImpossibleOptions) {
   o = {};
   o.optimizer.run.population = 3;
   expect_option(o, "population");
+  o = {};
+  o.smo_iterations_per_row = kMaxSmoIterationsPerRow + 1;
+  expect_option(o, "smo_iterations_per_row");
   EXPECT_THROW(parse_fitness("loo"), OptionError);
   EXPECT_EQ(parse_cv_scheme("recording"), CvScheme::recording);
   EXPECT_EQ(parse_cv_scheme("temperature"), CvScheme::temperature);

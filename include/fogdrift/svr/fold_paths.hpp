@@ -51,6 +51,8 @@ struct PathScores {
   std::vector<double> predictions;                         ///< [row][C] at predict_rows, if predict
   std::vector<std::shared_ptr<const DualSolution>> duals;  ///< per C, if keep_duals
   std::vector<double> seconds;                             ///< per C, each fit's
+  /// per C: iteration_limit for a fit stopped at params.max_iterations, unfinished
+  std::vector<SolverStatus> status;
 };
 
 /// Runs every task; results in the order of `tasks`. Without a pool, on this thread.

@@ -31,14 +31,21 @@ inline constexpr std::size_t kTrainStallIterations = 10;
 /// paper searches every row, as the paper did.
 inline constexpr std::size_t kTrainSearchRows = 1200;
 inline constexpr std::size_t kTrainThinFromRows = 5000;
+/// The SMO iterations each of train's search fits may take per training row of the largest fold
+/// (tune::TuneOptions::smo_iterations_per_row; docs/tuning.md, "A cap on the search's fits"):
+/// it stops the slow fits of the over-fitting corner, and left the population study's shares
+/// within a point. fogdrift paper fits every candidate to the end, as the paper did.
+inline constexpr std::size_t kTrainSmoIterationsPerRow = 20;
 
-/// The search train runs unless told otherwise: TuneOptions' defaults, stopping on a stall and
-/// thinning a fold of kTrainThinFromRows or more to no fewer than kTrainSearchRows rows.
+/// The search train runs unless told otherwise: TuneOptions' defaults, stopping on a stall,
+/// thinning a fold of kTrainThinFromRows or more to no fewer than kTrainSearchRows rows, and
+/// capping the search's fits at kTrainSmoIterationsPerRow iterations a row.
 inline tune::TuneOptions train_search_defaults() {
   tune::TuneOptions t;
   t.optimizer.run.stall_iterations = kTrainStallIterations;
   t.search_rows = kTrainSearchRows;
   t.thin_from_rows = kTrainThinFromRows;
+  t.smo_iterations_per_row = kTrainSmoIterationsPerRow;
   return t;
 }
 

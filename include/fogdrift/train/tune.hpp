@@ -21,13 +21,22 @@
 //
 // Racing: the loss is sqrt(Σ squared errors / held-out rows), so a candidate whose errors on the
 // folds run so far already exceed the best complete candidate's total cannot beat it. Once an
-// earlier batch has completed a candidate, a batch runs its folds in stages (the fold where the
-// best candidate errs most first) and a candidate that cannot win leaves the race. The optimizer
-// then sees its errors so far scaled to all folds as the best candidate's errors spread over
-// them: an estimate of its loss, above the best. A candidate that would beat the best is never
-// stopped, so the best of the candidates a search visits is the one full evaluation would
-// choose; the estimates order the losers a little differently from their full losses, so the
-// later candidates may differ. On 5,940-row campaigns it spares half the fits (docs/tuning.md).
+// earlier batch has completed a candidate, a batch runs each candidate's folds as a chain (the
+// fold where the best candidate errs most first) and a candidate that cannot win leaves the
+// race, its chain stopped. The optimizer then sees its errors so far scaled to all folds as the
+// best candidate's errors spread over them: an estimate of its loss, above the best. A
+// candidate that would beat the best is never stopped, so the best of the candidates a search
+// visits is the one full evaluation would choose; the estimates order the losers a little
+// differently from their full losses, so the later candidates may differ. On 5,940-row
+// campaigns it spares half the fits (docs/tuning.md).
+//
+// A cap on the fits (TuneOptions::smo_iterations_per_row): a fit stops after so many SMO
+// iterations a training row, unfinished. Its candidate's loss is what the optimizer sees, but it
+// never bounds a race, and before the search answers, a capped candidate whose loss is the
+// lowest has its capped fits run to the end (from where they stopped) and competes with its
+// finished loss; this repeats until the lowest is a finished candidate. The answer is therefore
+// the best of the visited candidates as finished fits score them, among those the optimizer's
+// unfinished losses did not steer it away from (docs/tuning.md, "A cap on the search's fits").
 #pragma once
 
 #include <cstdint>
@@ -101,8 +110,18 @@ struct TuneOptions {
   /// says: thinning a small campaign saves little and costs its search the most (docs/tuning.md,
   /// "Why small campaigns keep every row"). 0: search_rows alone decides.
   std::size_t thin_from_rows = 0;
+  /// The SMO iterations each of the search's fits may take, per training row of the largest
+  /// fold (before any thinning). A fit stopped there is unfinished: its candidate's loss
+  /// steers the optimizer but never bounds a race, and a candidate that would be the search's
+  /// answer is fitted to the end first (docs/tuning.md, "A cap on the search's fits"). 0: no
+  /// cap beyond the solver's own (LIBSVM's). At most kMaxSmoIterationsPerRow.
+  std::size_t smo_iterations_per_row = 0;
   ThreadPool* pool = nullptr;  ///< fits a population in parallel when given
 };
+
+/// The largest TuneOptions::smo_iterations_per_row; LIBSVM's own limit is 200 a row (at least
+/// 10⁷ in all).
+inline constexpr std::size_t kMaxSmoIterationsPerRow = 1000;
 
 /// Throws OptionError naming the field: bounds not positive or not increasing, ε outside its
 /// bounds, a bad tolerance or cache size, or bad optimizer settings.
@@ -117,6 +136,9 @@ struct Candidate {
   double loss = 0;  ///< the fitness: RMSE on the standardised target
   /// false: stopped by racing before its last fold; `loss` is then an estimate, above the best
   bool complete = true;
+  /// A fit of it stopped at the search's cap (TuneOptions::smo_iterations_per_row): `loss` is
+  /// that of unfinished fits, what the optimizer saw.
+  bool capped = false;
 };
 
 /// Candidates of a search on every k-th row scored again on all rows (TuneOptions::search_rows).
@@ -141,6 +163,7 @@ struct TuneSummary {
   std::size_t fits = 0;            ///< SVR fits made, the rescored candidates' included
   std::size_t warm_fits = 0;       ///< of which warm-started
   std::size_t raced = 0;           ///< candidates stopped by racing before their last fold
+  std::size_t capped_fits = 0;     ///< fits stopped at the cap (smo_iterations_per_row)
   double fit_seconds = 0;          ///< sum of the fits' own times (over all threads)
   std::vector<Candidate> history;  ///< every distinct candidate and its loss
   /// The search's stride (search_stride); above 1, `history` holds the losses of fits on every
@@ -149,6 +172,10 @@ struct TuneSummary {
   std::size_t stride = 1;
   std::size_t largest_fold_rows = 0;  ///< largest_fold_rows, which set the stride
   std::vector<Candidate> rescored;
+  /// Capped candidates fitted to the end because one of them would have been the answer, in
+  /// the order finished, each with its finished loss (stride 1; above it the rescoring fits
+  /// the answer to the end). `best` is a candidate whose every fit finished.
+  std::vector<Candidate> finished;
   double seconds = 0;  ///< wall time of the search
 };
 
