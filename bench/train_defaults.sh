@@ -12,6 +12,9 @@
 # Usage: bench/train_defaults.sh [BUILD_DIR] [RUNS] [N] [OLD_RUNS] [OLD_SEVEN_RUNS]
 #   (default build/, 3 runs, 10 instruments, 1 run of the old search on the default campaign and
 #   none on the seven-sweep one, where it takes 7 minutes; 0 skips either)
+# Environment: TRAIN_DEFAULTS_UNIT_RUNS, the runs on each instrument (1); TRAIN_DEFAULTS_COMPARE,
+#   train flags of a second search run once on every campaign right after its defaults', e.g.
+#   "--smo-iterations-per-row 0" for the search without the cap on its fits (none).
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 fd=${1:-$root/build}/apps/fogdrift/fogdrift
@@ -19,6 +22,8 @@ runs=${2:-3}
 count=${3:-10}
 old_runs=${4:-1}
 old_seven_runs=${5:-0}
+unit_runs=${TRAIN_DEFAULTS_UNIT_RUNS:-1}
+read -r -a compare <<<"${TRAIN_DEFAULTS_COMPARE:-}"
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 
@@ -56,17 +61,25 @@ PY
 
 echo "| campaign and search | training rows | wall s, median (runs) | iterations | status | stride | fits | C | σ | cv RMSE |"
 echo "|---|---|---|---|---|---|---|---|---|---|"
-measure "default campaign, defaults" "$work/paper" "$runs"
+# measure, then once with TRAIN_DEFAULTS_COMPARE's flags when there are any.
+measure_and_compare() { # $1 label, $2 campaign, $3 runs
+  measure "$1, defaults" "$2" "$3"
+  if ((${#compare[@]} > 0)); then
+    measure "$1, ${compare[*]}" "$2" 1 "${compare[@]}"
+  fi
+}
+
+measure_and_compare "default campaign" "$work/paper" "$runs"
 if ((old_runs > 0)); then
   measure "default campaign, whole budget on every row" "$work/paper" "$old_runs" \
     --stall-iterations 0 --search-rows 0
 fi
-measure "seven sweeps, defaults" "$work/seven" "$runs"
+measure_and_compare "seven sweeps" "$work/seven" "$runs"
 if ((old_seven_runs > 0)); then
   measure "seven sweeps, whole budget on every row" "$work/seven" "$old_seven_runs" \
     --stall-iterations 0 --search-rows 0
 fi
 for k in $(seq 1 "$count"); do
   unit=$(printf 'unit_%02d' "$k")
-  measure "population seed 2, $unit, paper's protocol, defaults" "$work/$unit" 1
+  measure_and_compare "population seed 2, $unit, paper's protocol" "$work/$unit" "$unit_runs"
 done
