@@ -130,11 +130,8 @@ class SvrObjective {
     for (std::size_t k = 0; k < tasks; ++k) {
       const std::size_t c = k / folds, f = order[k % folds];
       svr::PathTask& p = paths[k];
-      p.fold = f;
-      p.params = to_params_(fresh[c]);
-      p.params.c *= c_scale_;
+      p = task_for(fresh[c], f);
       p.params.max_iterations = max_iterations_;
-      p.c_values = {p.params.c};
       if (options_.warm_start) p.warm = warm_start_for(folds_[f], fresh[c]);
       p.keep_duals = true;
       p.guess_seconds = guessed_seconds(folds_[f], fresh[c]);
@@ -243,11 +240,7 @@ class SvrObjective {
     std::vector<std::size_t> fold_of;
     for (std::size_t f = 0; f < folds_.size(); ++f) {
       if (u.duals[f] == nullptr) continue;
-      svr::PathTask p;
-      p.fold = f;
-      p.params = to_params_(u.point);
-      p.params.c *= c_scale_;
-      p.c_values = {p.params.c};
+      svr::PathTask p = task_for(u.point, f);  // no cap
       p.warm = u.duals[f].get();
       paths.push_back(std::move(p));
       fold_of.push_back(f);
@@ -276,6 +269,16 @@ class SvrObjective {
     std::shared_ptr<const svr::DualSolution> dual;
     double seconds;
   };
+  // The fit of `point` on fold f, one C (× the stride), without a cap or a warm start.
+  svr::PathTask task_for(const std::vector<double>& point, std::size_t f) const {
+    svr::PathTask p;
+    p.fold = f;
+    p.params = to_params_(point);
+    p.params.c *= c_scale_;
+    p.c_values = {p.params.c};
+    return p;
+  }
+
   // A complete candidate with a capped fit: its point, each fold's squared errors, and the
   // unfinished solution of each fold that hit the cap (null where the fit finished).
   struct Unfinished {

@@ -212,6 +212,15 @@ TuneSummary tune_svr(const Dataset& data, const TuneOptions& options) {
   out.optimizer = opt::minimize(problem, options.optimizer);
   out.best = params_at(out.optimizer.best_point, options);
   out.best_fitness = out.optimizer.best_fitness;
+  if (stride == 1 && objective.capped_fits_ > 0) {
+    double loss = 0;
+    const std::size_t best = finish_best(objective, objective.history_, out.finished, loss);
+    // Unchanged when the optimizer's best had no capped fit: the same answer to the byte.
+    if (!out.finished.empty() && best != SIZE_MAX) {
+      out.best = objective.history_[best].params;
+      out.best_fitness = loss;
+    }
+  }
   out.folds = objective.fold_names();
   out.candidates = objective.candidates_;
   out.repeats = objective.repeats_;
@@ -220,17 +229,6 @@ TuneSummary tune_svr(const Dataset& data, const TuneOptions& options) {
   out.raced = objective.raced_;
   out.capped_fits = objective.capped_fits_;
   out.history = std::move(objective.history_);
-  if (stride == 1 && out.capped_fits > 0) {
-    double loss = 0;
-    const std::size_t best = finish_best(objective, out.history, out.finished, loss);
-    // Unchanged when the optimizer's best had no capped fit: the same answer to the byte.
-    if (!out.finished.empty() && best != SIZE_MAX) {
-      out.best = out.history[best].params;
-      out.best_fitness = loss;
-    }
-    out.fits = objective.fits_;
-    out.warm_fits = objective.warm_fits_;
-  }
   out.fit_seconds = objective.fit_seconds_;
   out.stride = stride;
   out.largest_fold_rows = largest;
