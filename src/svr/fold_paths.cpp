@@ -18,12 +18,14 @@ PathScores run_one(const ScoringFold& fold, const PathTask& task, WorkspacePool&
   const WorkspacePool::Lease workspace = workspaces.borrow();
   std::vector<FitResult> path =
       fit_c_path(*fold.train, task.params, task.c_values, workspace.get(), task.warm);
-  // Scored with one vectorised kernel row per held-out row, in float as the solver's rows
+  // Scored with one vectorised kernel row per held-out row, in the fits' own arithmetic
   // (path_squared_errors): a scalar prediction per support vector was 40 % of a search.
+  const KernelArithmetic arithmetic = task.params.kernel_arithmetic;
   if (task.predict)
-    scores.predictions = path_predictions(*fold.train, path, *fold.held, fold.predict_rows);
+    scores.predictions =
+        path_predictions(*fold.train, path, *fold.held, fold.predict_rows, arithmetic);
   else
-    scores.sse = path_squared_errors(*fold.train, path, *fold.held, fold.score_rows);
+    scores.sse = path_squared_errors(*fold.train, path, *fold.held, fold.score_rows, arithmetic);
   for (FitResult& fit : path) {
     scores.seconds.push_back(fit.summary.seconds);
     scores.status.push_back(fit.summary.solver.status);

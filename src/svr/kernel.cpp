@@ -61,17 +61,20 @@ TrainingSet::TrainingSet(Data data, const Options& options) : data_(std::move(da
   const bool distances = d >= options.distance_min_features && options.distance_budget_mb > 0 &&
                          matrix_mb <= options.distance_budget_mb;
   // The feature-major copy and the norms, and the distance matrix when it is kept.
-  const std::uint64_t need = 8 * static_cast<std::uint64_t>(n) * (d + 1) +
+  const std::uint64_t need = 8 * static_cast<std::uint64_t>(n) * (2 * d + 1) +
                              (distances ? 4 * static_cast<std::uint64_t>(n) * n : 0);
   require_memory(need, fmt::format("a training set of {} rows × {} features", n, d),
                  "Fewer rows or features would fit.");
   feature_major_.resize(n * d);
   squared_norms_.resize(n);
+  rows_f32_.resize(n * d);
+  feature_major_f32_.resize(n * d);
   for (std::size_t i = 0; i < n; ++i) {
     double sq = 0;
     for (std::size_t k = 0; k < d; ++k) {
       const double v = data_.x[i * d + k];
       feature_major_[k * n + i] = v;
+      rows_f32_[i * d + k] = feature_major_f32_[k * n + i] = static_cast<float>(v);
       sq += v * v;
     }
     squared_norms_[i] = sq;
@@ -79,8 +82,8 @@ TrainingSet::TrainingSet(Data data, const Options& options) : data_(std::move(da
   if (distances) {
     distances_.resize(n * n);
     auto fill = [&](std::size_t i) {
-      detail::loops().distance_row(data_.row(i), squared_norms_[i], feature_major_.data(),
-                                   squared_norms_.data(), n, d, distances_.data() + i * n);
+      detail::loops().distance_row(row_f32(i), feature_major_f32_.data(), n, n, d,
+                                   distances_.data() + i * n);
     };
     if (options.pool != nullptr) {
       options.pool->parallel_for(n, fill);
@@ -94,43 +97,54 @@ std::size_t TrainingSet::bytes() const {
   return (data_.x.size() + data_.y.size() + data_.weight.size() + feature_major_.size() +
           squared_norms_.size()) *
              sizeof(double) +
-         distances_.size() * sizeof(float);
+         (rows_f32_.size() + feature_major_f32_.size() + distances_.size()) * sizeof(float);
 }
 
-void TrainingSet::kernel_row(const Kernel& kernel, std::size_t i, float* out) const {
+void TrainingSet::kernel_row(const Kernel& kernel, std::size_t i, float* out,
+                             KernelArithmetic arithmetic) const {
   const std::size_t n = data_.rows, d = data_.cols;
   if (kernel.type == KernelType::linear) {
     detail::loops().linear_row(data_.row(i), feature_major_.data(), n, n, d, out);
+  } else if (arithmetic == KernelArithmetic::libsvm) {
+    detail::loops().libsvm_rbf_row(data_.row(i), squared_norms_[i], feature_major_.data(), n,
+                                   squared_norms_.data(), n, d, kernel.gamma, out);
   } else if (!distances_.empty()) {
     detail::loops().rbf_row_from_distances(distances_.data() + i * n, n, kernel.gamma, out);
   } else {
-    detail::loops().rbf_row(data_.row(i), squared_norms_[i], feature_major_.data(), n,
-                            squared_norms_.data(), n, d, kernel.gamma, out);
+    detail::loops().rbf_row(row_f32(i), feature_major_f32_.data(), n, n, d, kernel.gamma, out);
   }
 }
 
-void TrainingSet::kernel_row_of(const Kernel& kernel, const double* x, float* out) const {
+void TrainingSet::kernel_row_of(const Kernel& kernel, const double* x, float* out,
+                                KernelArithmetic arithmetic) const {
   const std::size_t n = data_.rows, d = data_.cols;
   if (kernel.type == KernelType::linear) {
     detail::loops().linear_row(x, feature_major_.data(), n, n, d, out);
-    return;
+  } else if (arithmetic == KernelArithmetic::libsvm) {
+    double sq = 0;  // summed in feature order, as the set's own norms
+    for (std::size_t k = 0; k < d; ++k) sq += x[k] * x[k];
+    detail::loops().libsvm_rbf_row(x, sq, feature_major_.data(), n, squared_norms_.data(), n, d,
+                                   kernel.gamma, out);
+  } else {
+    const std::vector<float> x_f32(x, x + d);
+    detail::loops().rbf_row(x_f32.data(), feature_major_f32_.data(), n, n, d, kernel.gamma, out);
   }
-  double sq = 0;  // summed in feature order, as the set's own norms
-  for (std::size_t k = 0; k < d; ++k) sq += x[k] * x[k];
-  detail::loops().rbf_row(x, sq, feature_major_.data(), n, squared_norms_.data(), n, d,
-                          kernel.gamma, out);
 }
 
-double TrainingSet::kernel_diagonal(const Kernel& kernel, std::size_t i) const {
+double TrainingSet::kernel_diagonal(const Kernel& kernel, std::size_t i,
+                                    KernelArithmetic arithmetic) const {
   const double sq = squared_norms_[i];
   if (kernel.type == KernelType::linear) return sq;
-  return std::exp(-kernel.gamma * ((sq + sq) - 2.0 * sq));
+  if (arithmetic == KernelArithmetic::libsvm)
+    return std::exp(-kernel.gamma * ((sq + sq) - 2.0 * sq));
+  return 1.0;  // kernel_exp(−γ·0), exactly (src/svr/loops.hpp)
 }
 
 KernelCache::KernelCache(const TrainingSet& set, const Kernel& kernel, double cache_mb,
-                         Workspace* workspace)
+                         Workspace* workspace, KernelArithmetic arithmetic)
     : set_(set),
       kernel_(kernel),
+      arithmetic_(arithmetic),
       n_(set.size()),
       own_workspace_(workspace != nullptr ? nullptr : std::make_unique<Workspace>()),
       workspace_(workspace != nullptr ? workspace : own_workspace_.get()) {
@@ -139,7 +153,7 @@ KernelCache::KernelCache(const TrainingSet& set, const Kernel& kernel, double ca
   // At least two rows (the solver holds two at once), at most every row.
   capacity_ = static_cast<std::size_t>(std::max(2.0, std::min(rows, static_cast<double>(n_))));
   diagonal_.resize(n_);
-  for (std::size_t i = 0; i < n_; ++i) diagonal_[i] = set.kernel_diagonal(kernel, i);
+  for (std::size_t i = 0; i < n_; ++i) diagonal_[i] = set.kernel_diagonal(kernel, i, arithmetic_);
   slot_of_row_.assign(n_, -1);
   row_of_slot_.reserve(capacity_);
   prev_.reserve(capacity_);
@@ -196,7 +210,7 @@ const float* KernelCache::row(std::size_t i) {
   slot_of_row_[i] = s;
   push_front(s);
   float* out = slots_->row(static_cast<std::size_t>(s));
-  set_.kernel_row(kernel_, i, out);
+  set_.kernel_row(kernel_, i, out, arithmetic_);
   ++rows_computed_;
   return out;
 }

@@ -3,8 +3,8 @@
 //   loops_portable.cpp  the portable C++ (loops_scalar.hpp), for any processor;
 //   loops_avx2.cpp      AVX2: hand-vectorised selections and RBF rows, the rest vectorised by
 //                       the compiler;
-//   loops_avx512.cpp    AVX-512F: the pair solver's loops and the RBF rows on eight lanes, the
-//                       rest as in AVX2.
+//   loops_avx512.cpp    AVX-512F: the pair solver's loops on eight lanes of doubles and the RBF
+//                       rows on sixteen of floats, the rest as in AVX2.
 // loops.cpp chooses the table once, at the first call: the fastest the processor has, or the one
 // the environment variable FOGDRIFT_ISA names (docs/reliability.md, "Same bits everywhere").
 //
@@ -12,8 +12,10 @@
 // order, each rounded as a scalar (IEEE arithmetic rounds a lane as it rounds a scalar), and the
 // same element chosen on ties. So a fit takes the same path through the dual, and writes the
 // same model, on every processor (loops_test and cli_test check it). The files are compiled with
-//  * -ffp-contract=off: no fused multiply-add, so every product and sum rounds exactly as in
-//    LIBSVM's scalar C++ and the engine walks the same path through the dual;
+//  * -ffp-contract=off: no fused multiply-add the code does not write, so every product and sum
+//    rounds exactly as in LIBSVM's scalar C++ and the solvers walk the same path through the
+//    dual; the RBF rows' fused multiply-adds are written out (kernel_exp, loops_scalar.hpp), the
+//    same in every table;
 //  * -ffinite-math-only -fno-signed-zeros: lets the compiler vectorise the max/min reductions of
 //    the working-set selection. The inputs are finite by validation, and sentinels are ±DBL_MAX.
 // Internal header: not installed, not part of the API.
@@ -28,10 +30,14 @@ namespace fogdrift::svr::detail {
 /// Bound status of a dual variable (LIBSVM's alpha_status).
 enum : std::uint8_t { kLowerBound = 0, kUpperBound = 1, kFree = 2 };
 
-/// e^x for x ≤ 0, accurate to about one unit in the last place of a double and rounded to float.
-/// Agrees with (float)std::exp(x) except, very rarely, when std::exp(x) lies within 2 ulp of a
-/// float rounding boundary. Exposed for its test.
+/// LIBSVM's RBF kernel's exponential: e^x for x ≤ 0, accurate to about one unit in the last
+/// place of a double and rounded to float. Agrees with (float)std::exp(x) except, very rarely,
+/// when std::exp(x) lies within 2 ulp of a float rounding boundary. Exposed for its test.
 float exp_to_float(double x);
+
+/// The RBF kernel's exponential in float, e^y for y ≤ 0 (loops_scalar.hpp, kernel_exp): within
+/// two float steps of e^y, the same float in every table. Exposed for its test.
+float kernel_exp(float y);
 
 /// The result of a maximisation over variables: the value and the last index reaching it (−1:
 /// none qualified).
@@ -64,8 +70,8 @@ enum class Isa { portable, avx2, avx512 };
 std::string_view isa_name(Isa isa);
 
 /// One instruction set's loops. Columns of kernel rows are given feature-major: feature f of
-/// column j at xt[f·stride + j] (stride ≥ n), with their squared norms in `sq`; row i is `xi`
-/// (d values, contiguous).
+/// column j at xt[f·stride + j] (stride ≥ n), in float for the RBF kernel and in double for the
+/// linear one; row i is `xi` (d values, contiguous).
 ///
 /// The solver works with kernel rows in its permuted variable order, unsigned: K_r[index[j]].
 /// The signs of Q_ij = y_i·y_j·K_ij are applied inside the loops; every sign flip is exact, so
@@ -73,19 +79,25 @@ std::string_view isa_name(Isa isa);
 struct Loops {
   Isa isa;
 
-  /// One row of the RBF kernel over n columns: out[j] = (float) exp(−γ·((‖x_i‖² + ‖x_j‖²) −
-  /// 2·x_i·x_j)), the expression and rounding LIBSVM uses. A row of a subset of columns is the
-  /// same floats as the full row's.
-  void (*rbf_row)(const double* xi, double sq_i, const double* xt, std::size_t stride,
-                  const double* sq, std::size_t n, std::size_t d, double gamma, float* out);
+  /// One row of the RBF kernel as LIBSVM computes it, for the solver that follows LIBSVM's path
+  /// (Params::libsvm_path): out[j] = (float) exp(−γ·((‖x_i‖² + ‖x_j‖²) − 2·x_i·x_j)) in double,
+  /// the expression and rounding LIBSVM uses, from the double features `xt` and their squared
+  /// norms `sq`. A row of a subset of columns is the same floats as the full row's.
+  void (*libsvm_rbf_row)(const double* xi, double sq_i, const double* xt, std::size_t stride,
+                         const double* sq, std::size_t n, std::size_t d, double gamma, float* out);
+  /// One row of the RBF kernel over n columns, for every other fit: out[j] = kernel_exp(−γ·Σ_f
+  /// (x_if − x_jf)²), all in float (γ rounded to float; loops_scalar.hpp). A row of a subset of
+  /// columns is the same floats as the full row's.
+  void (*rbf_row)(const float* xi, const float* xt, std::size_t stride, std::size_t n,
+                  std::size_t d, double gamma, float* out);
   /// One row of the linear kernel: out[j] = (float) x_i·x_j.
   void (*linear_row)(const double* xi, const double* xt, std::size_t stride, std::size_t n,
                      std::size_t d, float* out);
-  /// Squared distances of row i to all n rows (stride n), as LIBSVM forms them:
-  /// (‖x_i‖² + ‖x_j‖²) − 2·x_i·x_j.
-  void (*distance_row)(const double* xi, double sq_i, const double* xt, const double* sq,
-                       std::size_t n, std::size_t d, float* out);
-  /// One RBF row from precomputed squared distances: out[j] = exp(−γ·dist[j]).
+  /// Squared distances of row i to n columns, as rbf_row forms them: Σ_f (x_if − x_jf)².
+  void (*distance_row)(const float* xi, const float* xt, std::size_t stride, std::size_t n,
+                       std::size_t d, float* out);
+  /// One RBF row from squared distances as distance_row gives them: out[j] =
+  /// kernel_exp(−γ·dist[j]), the same floats as rbf_row.
   void (*rbf_row_from_distances)(const float* dist, std::size_t n, double gamma, float* out);
 
   /// g[k] += y_k·(K_i[k]·a_i + K_j[k]·a_j) for k < len, with a_i = y_i·Δα_i, a_j = y_j·Δα_j: the

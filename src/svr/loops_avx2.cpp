@@ -1,10 +1,11 @@
-// The AVX2 table of the SVR engine's inner loops (loops.hpp). The selections and the RBF rows
-// are written with intrinsics, four lanes of doubles at a time; the elementwise loops are the
+// The AVX2 table of the SVR engine's inner loops (loops.hpp). The selections are written with
+// intrinsics, four lanes of doubles at a time, and the RBF rows eight lanes of floats at a time
+// (with AVX2's fused multiply-adds, as the portable rows write them); the elementwise loops are the
 // portable ones (loops_scalar.hpp) inlined into functions built for AVX2, which the compiler
 // vectorises. Every function computes what its portable version computes, bit for bit: the same
-// operations in the same order, no fused multiply-add, and on ties the same index (each lane
-// keeps its own last maximiser and the lanes are merged so that the overall last one wins, as in
-// LIBSVM). loops_test checks each against the portable one.
+// operations in the same order, no fused multiply-add but the RBF rows' own, and on ties the same
+// index (each lane keeps its own last maximiser and the lanes are merged so that the overall last
+// one wins, as in LIBSVM). loops_test checks each against the portable one.
 #include "svr/loops.hpp"
 #include "svr/loops_scalar.hpp"
 
@@ -16,19 +17,31 @@
 namespace fogdrift::svr::detail {
 namespace {
 
+using scalar::kEighthsPerNat;
+using scalar::kExp2Eighths;
 using scalar::kExp2Sixteenths;
 using scalar::kExpCoefficients;
+using scalar::kExpCoefficientsF;
+using scalar::kKernelExponentMin;
 using scalar::kLn2Hi;
+using scalar::kLn2HiEighth;
 using scalar::kLn2Lo;
+using scalar::kLn2LoEighth;
 using scalar::kLog2e;
 using scalar::kShifter;
+using scalar::kShifterF;
 using scalar::merge_gain;
 using scalar::merge_max;
 using scalar::none_if_offsets_only;
 
 #define FOGDRIFT_AVX2 __attribute__((target("avx2")))
+// The RBF rows also use fused multiply-adds (loops_scalar.hpp, kernel_exp); every processor with
+// AVX2 that fogdrift has met has FMA too, and avx2_loops() requires both.
+#define FOGDRIFT_AVX2_FMA __attribute__((target("avx2,fma")))
 
 // --- kernel rows ---------------------------------------------------------------------------------
+
+// LIBSVM's RBF rows (loops_scalar.hpp, libsvm_rbf_row): in double, four lanes a vector.
 
 // exp_core (loops_scalar.hpp) on G vectors of four lanes, rounded to float into out[0, 4G), step
 // by step over the vectors: each vector's operations are exp_core's in its order, so the results
@@ -74,9 +87,9 @@ FOGDRIFT_AVX2 inline void exp_to_float_avx2(__m256d (&x)[G], float* out) {
 // three gained nothing measurable, eight less than four (docs/svr.md, "Where the speed comes
 // from").
 template <std::size_t G>
-FOGDRIFT_AVX2 inline void rbf_columns_avx2(const double* xi, __m256d sq_i, const double* xt,
-                                           std::size_t stride, const double* sq, std::size_t d,
-                                           __m256d minus_gamma, float* out) {
+FOGDRIFT_AVX2 inline void libsvm_rbf_columns_avx2(const double* xi, __m256d sq_i, const double* xt,
+                                                  std::size_t stride, const double* sq,
+                                                  std::size_t d, __m256d minus_gamma, float* out) {
   __m256d x[G];
   for (std::size_t g = 0; g < G; ++g) x[g] = _mm256_setzero_pd();
   for (std::size_t f = 0; f < d; ++f) {
@@ -96,26 +109,95 @@ FOGDRIFT_AVX2 inline void rbf_columns_avx2(const double* xi, __m256d sq_i, const
 
 constexpr std::size_t kGroups = 4;
 
-FOGDRIFT_AVX2 void rbf_row_avx2(const double* xi, double sq_i, const double* xt, std::size_t stride,
-                                const double* sq, std::size_t n, std::size_t d, double gamma,
-                                float* out) {
+FOGDRIFT_AVX2 void libsvm_rbf_row_avx2(const double* xi, double sq_i, const double* xt,
+                                       std::size_t stride, const double* sq, std::size_t n,
+                                       std::size_t d, double gamma, float* out) {
   const __m256d sqi = _mm256_set1_pd(sq_i);
   const __m256d minus_gamma = _mm256_set1_pd(-gamma);
   std::size_t j = 0;
   for (; j + 4 * kGroups <= n; j += 4 * kGroups)
-    rbf_columns_avx2<kGroups>(xi, sqi, xt + j, stride, sq + j, d, minus_gamma, out + j);
+    libsvm_rbf_columns_avx2<kGroups>(xi, sqi, xt + j, stride, sq + j, d, minus_gamma, out + j);
   for (; j + 4 <= n; j += 4)
-    rbf_columns_avx2<1>(xi, sqi, xt + j, stride, sq + j, d, minus_gamma, out + j);
-  scalar::rbf_row(xi, sq_i, xt + j, stride, sq + j, n - j, d, gamma, out + j);
+    libsvm_rbf_columns_avx2<1>(xi, sqi, xt + j, stride, sq + j, d, minus_gamma, out + j);
+  scalar::libsvm_rbf_row(xi, sq_i, xt + j, stride, sq + j, n - j, d, gamma, out + j);
 }
 
-FOGDRIFT_AVX2 void rbf_row_from_distances_avx2(const float* dist, std::size_t n, double gamma,
-                                               float* out) {
-  const __m256d minus_gamma = _mm256_set1_pd(-gamma);
+// The RBF rows in float (loops_scalar.hpp, rbf_row): eight lanes a vector.
+
+// kernel_exp (loops_scalar.hpp) on G vectors of eight floats, step by step over the vectors:
+// each vector's operations are kernel_exp's in its order, so the results are the same bits
+// whatever G, but G > 1 gives the processor independent chains. One vector alone is a chain of
+// dependent steps (the Horner steps) that leaves the vector units waiting on each step's latency.
+template <std::size_t G>
+FOGDRIFT_AVX2_FMA inline void kernel_exp_avx2(__m256 (&y)[G]) {
+  const __m256 shifter = _mm256_set1_ps(kShifterF);
+  const __m256 eighths = _mm256_load_ps(kExp2Eighths);
+  __m256 t[G], p[G];
+  for (std::size_t g = 0; g < G; ++g) {
+    y[g] = _mm256_max_ps(y[g], _mm256_set1_ps(kKernelExponentMin));
+    t[g] = _mm256_fmadd_ps(y[g], _mm256_set1_ps(kEighthsPerNat), shifter);
+    const __m256 n = _mm256_sub_ps(t[g], shifter);
+    y[g] = _mm256_fmadd_ps(n, _mm256_set1_ps(-kLn2LoEighth),
+                           _mm256_fmadd_ps(n, _mm256_set1_ps(-kLn2HiEighth), y[g]));
+    p[g] = _mm256_set1_ps(kExpCoefficientsF[0]);
+  }
+  for (std::size_t c = 1; c < std::size(kExpCoefficientsF); ++c) {
+    const __m256 coefficient = _mm256_set1_ps(kExpCoefficientsF[c]);
+    for (std::size_t g = 0; g < G; ++g) p[g] = _mm256_fmadd_ps(p[g], y[g], coefficient);
+  }
+  for (std::size_t g = 0; g < G; ++g) {
+    const __m256i k = _mm256_sub_epi32(_mm256_castps_si256(t[g]), _mm256_castps_si256(shifter));
+    const __m256 scale = _mm256_castsi256_ps(
+        _mm256_slli_epi32(_mm256_add_epi32(_mm256_srai_epi32(k, 3), _mm256_set1_epi32(127)), 23));
+    // The permutation reads the low three bits of k.
+    const __m256 part = _mm256_permutevar8x32_ps(eighths, k);
+    y[g] = _mm256_mul_ps(_mm256_mul_ps(p[g], part), scale);
+  }
+}
+
+// 8G columns from `xt` (pointing at the first of them) into out[0, 8G), the distances' sums and
+// exponentials of the G groups of eight computed side by side, for the same reason.
+template <std::size_t G>
+FOGDRIFT_AVX2_FMA inline void rbf_columns_avx2(const float* xi, const float* xt, std::size_t stride,
+                                               std::size_t d, __m256 minus_gamma, float* out) {
+  __m256 x[G];
+  for (std::size_t g = 0; g < G; ++g) x[g] = _mm256_setzero_ps();
+  for (std::size_t f = 0; f < d; ++f) {
+    const __m256 a = _mm256_set1_ps(xi[f]);
+    const float* column = xt + f * stride;
+    for (std::size_t g = 0; g < G; ++g) {
+      const __m256 diff = _mm256_sub_ps(a, _mm256_loadu_ps(column + 8 * g));
+      x[g] = _mm256_fmadd_ps(diff, diff, x[g]);
+    }
+  }
+  for (std::size_t g = 0; g < G; ++g) x[g] = _mm256_mul_ps(minus_gamma, x[g]);
+  kernel_exp_avx2(x);
+  for (std::size_t g = 0; g < G; ++g) _mm256_storeu_ps(out + 8 * g, x[g]);
+}
+
+FOGDRIFT_AVX2_FMA void rbf_row_avx2(const float* xi, const float* xt, std::size_t stride,
+                                    std::size_t n, std::size_t d, double gamma, float* out) {
+  const __m256 minus_gamma = _mm256_set1_ps(-static_cast<float>(gamma));
   std::size_t j = 0;
-  for (; j + 4 <= n; j += 4) {
-    __m256d x[1] = {_mm256_mul_pd(minus_gamma, _mm256_cvtps_pd(_mm_loadu_ps(dist + j)))};
-    exp_to_float_avx2(x, out + j);
+  for (; j + 8 * kGroups <= n; j += 8 * kGroups)
+    rbf_columns_avx2<kGroups>(xi, xt + j, stride, d, minus_gamma, out + j);
+  for (; j + 8 <= n; j += 8) rbf_columns_avx2<1>(xi, xt + j, stride, d, minus_gamma, out + j);
+  scalar::rbf_row(xi, xt + j, stride, n - j, d, gamma, out + j);
+}
+
+FOGDRIFT_AVX2_FMA void distance_row_avx2(const float* xi, const float* xt, std::size_t stride,
+                                         std::size_t n, std::size_t d, float* out) {
+  scalar::distance_row(xi, xt, stride, n, d, out);
+}
+
+FOGDRIFT_AVX2_FMA void rbf_row_from_distances_avx2(const float* dist, std::size_t n, double gamma,
+                                                   float* out) {
+  const __m256 minus_gamma = _mm256_set1_ps(-static_cast<float>(gamma));
+  std::size_t j = 0;
+  for (; j + 8 <= n; j += 8) {
+    __m256 y[1] = {_mm256_mul_ps(minus_gamma, _mm256_loadu_ps(dist + j))};
+    kernel_exp_avx2(y);
+    _mm256_storeu_ps(out + j, y[0]);
   }
   scalar::rbf_row_from_distances(dist + j, n - j, gamma, out + j);
 }
@@ -124,11 +206,6 @@ FOGDRIFT_AVX2 void rbf_row_from_distances_avx2(const float* dist, std::size_t n,
 FOGDRIFT_AVX2 void linear_row_avx2(const double* xi, const double* xt, std::size_t stride,
                                    std::size_t n, std::size_t d, float* out) {
   scalar::linear_row(xi, xt, stride, n, d, out);
-}
-
-FOGDRIFT_AVX2 void distance_row_avx2(const double* xi, double sq_i, const double* xt,
-                                     const double* sq, std::size_t n, std::size_t d, float* out) {
-  scalar::distance_row(xi, sq_i, xt, sq, n, d, out);
 }
 
 FOGDRIFT_AVX2 void update_gradient_avx2(double* g, const std::int8_t* y, const float* k_i,
@@ -420,6 +497,7 @@ FOGDRIFT_AVX2 SelectionJ select_low_avx2(const double* f, const double* low, con
 const Loops* avx2_loops() {
   static constexpr Loops kTable{
       .isa = Isa::avx2,
+      .libsvm_rbf_row = libsvm_rbf_row_avx2,
       .rbf_row = rbf_row_avx2,
       .linear_row = linear_row_avx2,
       .distance_row = distance_row_avx2,
@@ -435,7 +513,7 @@ const Loops* avx2_loops() {
       .select_low = select_low_avx2,
   };
   __builtin_cpu_init();
-  return __builtin_cpu_supports("avx2") ? &kTable : nullptr;
+  return __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma") ? &kTable : nullptr;
 }
 
 }  // namespace fogdrift::svr::detail

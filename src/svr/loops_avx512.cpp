@@ -1,6 +1,6 @@
-// The AVX-512 table of the SVR engine's inner loops (loops.hpp): the RBF rows and the pair
-// solver's loops on eight lanes of doubles, written with AVX-512F intrinsics; LIBSVM's
-// selections and the elementwise loops are the AVX2 ones (loops_avx2.cpp). Every function
+// The AVX-512 table of the SVR engine's inner loops (loops.hpp): the RBF rows on sixteen lanes of
+// floats and the pair solver's loops on eight lanes of doubles, written with AVX-512F intrinsics;
+// LIBSVM's selections and the elementwise loops are the AVX2 ones (loops_avx2.cpp). Every function
 // computes what its portable version computes, bit for bit (see loops_avx2.cpp); loops_test
 // checks each against the portable one.
 #include "svr/loops.hpp"
@@ -22,22 +22,31 @@
 namespace fogdrift::svr::detail {
 namespace {
 
+using scalar::kEighthsPerNat;
+using scalar::kExp2Eighths;
 using scalar::kExp2Sixteenths;
 using scalar::kExpCoefficients;
+using scalar::kExpCoefficientsF;
+using scalar::kKernelExponentMin;
 using scalar::kLn2Hi;
+using scalar::kLn2HiEighth;
 using scalar::kLn2Lo;
+using scalar::kLn2LoEighth;
 using scalar::kLog2e;
 using scalar::kShifter;
+using scalar::kShifterF;
 using scalar::merge_gain;
 using scalar::merge_max;
 using scalar::none_if_offsets_only;
 
-#define FOGDRIFT_AVX512 __attribute__((target("avx512f")))
+#define FOGDRIFT_AVX512 __attribute__((target("avx512f,fma")))
 
 // --- kernel rows ---------------------------------------------------------------------------------
-// GCC does not vectorise exp_core's loop for AVX-512 by itself; explicit code and four groups of
-// columns side by side make the row 1.25× faster than one group (docs/svr.md, "Where the speed
-// comes from").
+// Four groups of columns side by side: each group's steps are a chain of dependent operations, and
+// independent chains keep the vector units busy (docs/svr.md, "Where the speed comes from").
+
+// LIBSVM's RBF rows (loops_scalar.hpp, libsvm_rbf_row): in double, eight lanes a vector. GCC does
+// not vectorise exp_core's loop for AVX-512 by itself.
 
 // exp_core on G vectors of eight lanes, rounded to float, step by step over the vectors as in
 // exp_to_float_avx2 (loops_avx2.cpp): the same bits whatever G, and G > 1 gives the processor
@@ -74,10 +83,11 @@ FOGDRIFT_AVX512 inline void exp_to_float_avx512(__m512d (&x)[G], __m256 (&out)[G
 // 8G columns from j of an RBF row, the G groups of eight computed side by side; `mask` selects
 // the columns of each group that exist (the others read nothing and compute a harmless value).
 template <std::size_t G>
-FOGDRIFT_AVX512 inline void rbf_columns_avx512(const double* xi, __m512d sq_i, const double* xt,
-                                               std::size_t stride, const double* sq, std::size_t d,
-                                               __m512d minus_gamma, std::size_t j, __mmask8 mask,
-                                               __m256 (&out)[G]) {
+FOGDRIFT_AVX512 inline void libsvm_rbf_columns_avx512(const double* xi, __m512d sq_i,
+                                                      const double* xt, std::size_t stride,
+                                                      const double* sq, std::size_t d,
+                                                      __m512d minus_gamma, std::size_t j,
+                                                      __mmask8 mask, __m256 (&out)[G]) {
   __m512d x[G];
   for (std::size_t g = 0; g < G; ++g) x[g] = _mm512_setzero_pd();
   for (std::size_t f = 0; f < d; ++f) {
@@ -96,43 +106,117 @@ FOGDRIFT_AVX512 inline void rbf_columns_avx512(const double* xi, __m512d sq_i, c
 }
 
 // Groups of eight columns computed side by side: two and eight were slower than four.
-constexpr std::size_t kGroups = 4;
+constexpr std::size_t kLibsvmGroups = 4;
 
-FOGDRIFT_AVX512 void rbf_row_avx512(const double* xi, double sq_i, const double* xt,
-                                    std::size_t stride, const double* sq, std::size_t n,
-                                    std::size_t d, double gamma, float* out) {
+FOGDRIFT_AVX512 void libsvm_rbf_row_avx512(const double* xi, double sq_i, const double* xt,
+                                           std::size_t stride, const double* sq, std::size_t n,
+                                           std::size_t d, double gamma, float* out) {
   const __m512d sqi = _mm512_set1_pd(sq_i);
   const __m512d minus_gamma = _mm512_set1_pd(-gamma);
   std::size_t j = 0;
-  for (; j + 8 * kGroups <= n; j += 8 * kGroups) {
-    __m256 v[kGroups];
-    rbf_columns_avx512(xi, sqi, xt, stride, sq, d, minus_gamma, j, 0xFF, v);
-    for (std::size_t g = 0; g < kGroups; ++g) _mm256_storeu_ps(out + j + 8 * g, v[g]);
+  for (; j + 8 * kLibsvmGroups <= n; j += 8 * kLibsvmGroups) {
+    __m256 v[kLibsvmGroups];
+    libsvm_rbf_columns_avx512(xi, sqi, xt, stride, sq, d, minus_gamma, j, 0xFF, v);
+    for (std::size_t g = 0; g < kLibsvmGroups; ++g) _mm256_storeu_ps(out + j + 8 * g, v[g]);
   }
   for (; j + 8 <= n; j += 8) {
     __m256 v[1];
-    rbf_columns_avx512(xi, sqi, xt, stride, sq, d, minus_gamma, j, 0xFF, v);
+    libsvm_rbf_columns_avx512(xi, sqi, xt, stride, sq, d, minus_gamma, j, 0xFF, v);
     _mm256_storeu_ps(out + j, v[0]);
   }
   if (j < n) {
     alignas(32) float tail[8];
     const auto mask = static_cast<__mmask8>((1u << (n - j)) - 1u);
     __m256 v[1];
-    rbf_columns_avx512(xi, sqi, xt, stride, sq, d, minus_gamma, j, mask, v);
+    libsvm_rbf_columns_avx512(xi, sqi, xt, stride, sq, d, minus_gamma, j, mask, v);
     _mm256_store_ps(tail, v[0]);
     std::memcpy(out + j, tail, (n - j) * sizeof(float));
   }
 }
 
+// The RBF rows in float (loops_scalar.hpp, rbf_row): sixteen lanes a vector.
+
+// kernel_exp (loops_scalar.hpp) on G vectors of sixteen floats, step by step over the vectors as
+// in kernel_exp_avx2 (loops_avx2.cpp): the same bits whatever G.
+template <std::size_t G>
+FOGDRIFT_AVX512 inline void kernel_exp_avx512(__m512 (&y)[G]) {
+  const __m512 shifter = _mm512_set1_ps(kShifterF);
+  const __m512 eighths = _mm512_load_ps(kExp2Eighths);
+  __m512 t[G], p[G];
+  for (std::size_t g = 0; g < G; ++g) {
+    y[g] = _mm512_max_ps(y[g], _mm512_set1_ps(kKernelExponentMin));
+    t[g] = _mm512_fmadd_ps(y[g], _mm512_set1_ps(kEighthsPerNat), shifter);
+    const __m512 n = _mm512_sub_ps(t[g], shifter);
+    y[g] = _mm512_fmadd_ps(n, _mm512_set1_ps(-kLn2LoEighth),
+                           _mm512_fmadd_ps(n, _mm512_set1_ps(-kLn2HiEighth), y[g]));
+    p[g] = _mm512_set1_ps(kExpCoefficientsF[0]);
+  }
+  for (std::size_t c = 1; c < std::size(kExpCoefficientsF); ++c) {
+    const __m512 coefficient = _mm512_set1_ps(kExpCoefficientsF[c]);
+    for (std::size_t g = 0; g < G; ++g) p[g] = _mm512_fmadd_ps(p[g], y[g], coefficient);
+  }
+  for (std::size_t g = 0; g < G; ++g) {
+    const __m512i k = _mm512_sub_epi32(_mm512_castps_si512(t[g]), _mm512_castps_si512(shifter));
+    const __m512 scale = _mm512_castsi512_ps(
+        _mm512_slli_epi32(_mm512_add_epi32(_mm512_srai_epi32(k, 3), _mm512_set1_epi32(127)), 23));
+    // The permutation reads the low four bits of k; the table holds its eight entries twice.
+    const __m512 part = _mm512_permutexvar_ps(k, eighths);
+    y[g] = _mm512_mul_ps(_mm512_mul_ps(p[g], part), scale);
+  }
+}
+
+// 16G columns from j of an RBF row, the G groups of sixteen computed side by side; `mask` selects
+// the columns of each group that exist (the others read nothing and compute a harmless value).
+template <std::size_t G>
+FOGDRIFT_AVX512 inline void rbf_columns_avx512(const float* xi, const float* xt, std::size_t stride,
+                                               std::size_t d, __m512 minus_gamma, std::size_t j,
+                                               __mmask16 mask, __m512 (&out)[G]) {
+  for (std::size_t g = 0; g < G; ++g) out[g] = _mm512_setzero_ps();
+  for (std::size_t f = 0; f < d; ++f) {
+    const __m512 a = _mm512_set1_ps(xi[f]);
+    const float* column = xt + f * stride + j;
+    for (std::size_t g = 0; g < G; ++g) {
+      const __m512 diff = _mm512_sub_ps(a, _mm512_maskz_loadu_ps(mask, column + 16 * g));
+      out[g] = _mm512_fmadd_ps(diff, diff, out[g]);
+    }
+  }
+  for (std::size_t g = 0; g < G; ++g) out[g] = _mm512_mul_ps(minus_gamma, out[g]);
+  kernel_exp_avx512(out);
+}
+
+// Groups of sixteen columns computed side by side.
+constexpr std::size_t kGroups = 4;
+
+FOGDRIFT_AVX512 void rbf_row_avx512(const float* xi, const float* xt, std::size_t stride,
+                                    std::size_t n, std::size_t d, double gamma, float* out) {
+  const __m512 minus_gamma = _mm512_set1_ps(-static_cast<float>(gamma));
+  std::size_t j = 0;
+  for (; j + 16 * kGroups <= n; j += 16 * kGroups) {
+    __m512 v[kGroups];
+    rbf_columns_avx512(xi, xt, stride, d, minus_gamma, j, 0xFFFF, v);
+    for (std::size_t g = 0; g < kGroups; ++g) _mm512_storeu_ps(out + j + 16 * g, v[g]);
+  }
+  for (; j + 16 <= n; j += 16) {
+    __m512 v[1];
+    rbf_columns_avx512(xi, xt, stride, d, minus_gamma, j, 0xFFFF, v);
+    _mm512_storeu_ps(out + j, v[0]);
+  }
+  if (j < n) {
+    const auto mask = static_cast<__mmask16>((1u << (n - j)) - 1u);
+    __m512 v[1];
+    rbf_columns_avx512(xi, xt, stride, d, minus_gamma, j, mask, v);
+    _mm512_mask_storeu_ps(out + j, mask, v[0]);
+  }
+}
+
 FOGDRIFT_AVX512 void rbf_row_from_distances_avx512(const float* dist, std::size_t n, double gamma,
                                                    float* out) {
-  const __m512d minus_gamma = _mm512_set1_pd(-gamma);
+  const __m512 minus_gamma = _mm512_set1_ps(-static_cast<float>(gamma));
   std::size_t j = 0;
-  for (; j + 8 <= n; j += 8) {
-    __m512d x[1] = {_mm512_mul_pd(minus_gamma, _mm512_cvtps_pd(_mm256_loadu_ps(dist + j)))};
-    __m256 v[1];
-    exp_to_float_avx512(x, v);
-    _mm256_storeu_ps(out + j, v[0]);
+  for (; j + 16 <= n; j += 16) {
+    __m512 y[1] = {_mm512_mul_ps(minus_gamma, _mm512_loadu_ps(dist + j))};
+    kernel_exp_avx512(y);
+    _mm512_storeu_ps(out + j, y[0]);
   }
   scalar::rbf_row_from_distances(dist + j, n - j, gamma, out + j);
 }
@@ -286,6 +370,7 @@ const Loops* avx512_loops() {
   static const Loops kTable = [] {
     Loops table = avx2_loops() != nullptr ? *avx2_loops() : portable_loops();
     table.isa = Isa::avx512;
+    table.libsvm_rbf_row = libsvm_rbf_row_avx512;
     table.rbf_row = rbf_row_avx512;
     table.rbf_row_from_distances = rbf_row_from_distances_avx512;
     table.select_up = select_up_avx512;

@@ -9,9 +9,14 @@ float exp_to_float(double x) {
   return static_cast<float>(scalar::exp_core(x));
 }
 
+float kernel_exp(float y) {
+  return scalar::kernel_exp(y);
+}
+
 const Loops& portable_loops() {
   static constexpr Loops kTable{
       .isa = Isa::portable,
+      .libsvm_rbf_row = scalar::libsvm_rbf_row,
       .rbf_row = scalar::rbf_row,
       .linear_row = scalar::linear_row,
       .distance_row = scalar::distance_row,

@@ -22,6 +22,8 @@ namespace fogdrift::svr::detail::scalar {
 
 #define FOGDRIFT_INLINE inline __attribute__((always_inline))
 
+// --- LIBSVM's RBF kernel: in double, rounded to float ------------------------------------------
+
 constexpr double kLog2e = 1.4426950408889634074;
 // ln 2 split so that n·kLn2Hi is exact for |n| < 2^20 (Cody & Waite range reduction).
 constexpr double kLn2Hi = 6.93147180369123816490e-01;
@@ -62,6 +64,52 @@ FOGDRIFT_INLINE double exp_core(double x) {
   return (p * kExp2Sixteenths[k & 15]) * scale;
 }
 
+// --- the RBF kernel's arithmetic, in float (docs/svr.md, "The kernel in float") ---------------
+// Every RBF row of every table is K_ij = kernel_exp(−γ·Σ_f (x_if − x_jf)²), all in float: the
+// differences of the features rounded to float, the squares summed in feature order with fused
+// multiply-adds, and the exponential below. Sixteen lanes of floats per AVX-512 vector instead of
+// eight of doubles, and no cancellation in the distance of near samples (LIBSVM forms it as
+// ‖x_i‖² + ‖x_j‖² − 2·x_i·x_j).
+
+constexpr float kShifterF = 12582912.0f;  // 1.5·2^23: adding it rounds to an integer
+/// 8 / ln 2, rounded to float.
+constexpr float kEighthsPerNat = 0x1.715476p+3f;
+// ln 2 / 8 split so that n·kLn2HiEighth is exact for |n| < 2^15 (Cody & Waite range reduction).
+constexpr float kLn2HiEighth = 0.693359375f / 8.0f;
+constexpr float kLn2LoEighth = -0x1.bd0106p-16f;
+/// −γ·d² is clamped here: e^−87 is below every kernel value that can matter (float's smallest
+/// normal is e^−87.3), and 2^⌊n/8⌋ stays a normal float.
+constexpr float kKernelExponentMin = -87.0f;
+
+/// 2^(j/8) for j = 0 … 7, each the float nearest the exact value, twice over (an AVX-512
+/// permutation reads sixteen entries by the low four bits of its index).
+alignas(64) constexpr float kExp2Eighths[16] = {
+    0x1.000000p+0f, 0x1.172b84p+0f, 0x1.306fe0p+0f, 0x1.4bfdaep+0f, 0x1.6a09e6p+0f, 0x1.8ace54p+0f,
+    0x1.ae89fap+0f, 0x1.d5818ep+0f, 0x1.000000p+0f, 0x1.172b84p+0f, 0x1.306fe0p+0f, 0x1.4bfdaep+0f,
+    0x1.6a09e6p+0f, 0x1.8ace54p+0f, 0x1.ae89fap+0f, 0x1.d5818ep+0f};
+
+/// The Taylor coefficients of e^r, 1/4! down to 1/0!, for Horner's rule.
+constexpr float kExpCoefficientsF[] = {1.0f / 24.0f, 1.0f / 6.0f, 0.5f, 1.0f, 1.0f};
+
+/// e^y for kKernelExponentMin ≤ y ≤ 0 in float: e^y = 2^(n/8)·e^r with n = round(8·y/ln 2) and
+/// |r| ≤ ln 2 / 16; 2^(n/8) is 2^⌊n/8⌋ (built in the exponent bits) times 2^((n mod 8)/8) from
+/// kExp2Eighths, and e^r the Taylor series to degree 4, whose truncation error r^5/5! < 1.3e-9
+/// is far under a float's half-step of 3e-8. Each step is a fused multiply-add or one rounded
+/// operation, the same in every table, so every table gives the same float; it is within two
+/// float steps of e^y (tested against std::exp in double: loops_test).
+FOGDRIFT_INLINE float kernel_exp(float y) {
+  y = y < kKernelExponentMin ? kKernelExponentMin : y;
+  const float t = __builtin_fmaf(y, kEighthsPerNat, kShifterF);
+  const float n = t - kShifterF;
+  const float r = __builtin_fmaf(n, -kLn2LoEighth, __builtin_fmaf(n, -kLn2HiEighth, y));
+  float p = kExpCoefficientsF[0];
+  for (std::size_t c = 1; c < std::size(kExpCoefficientsF); ++c)
+    p = __builtin_fmaf(p, r, kExpCoefficientsF[c]);
+  const std::int32_t k = std::bit_cast<std::int32_t>(t) - std::bit_cast<std::int32_t>(kShifterF);
+  const float scale = std::bit_cast<float>(static_cast<std::uint32_t>((k >> 3) + 127) << 23);
+  return (p * kExp2Eighths[k & 7]) * scale;
+}
+
 constexpr std::size_t kBlock = 256;  // columns per block: the accumulators stay in L1
 
 /// acc[j] = x_i·x_{j0+j} for j < m, summed over features in order (LIBSVM's order), from the
@@ -78,9 +126,24 @@ FOGDRIFT_INLINE void dot_block(const double* xi, const double* xt, std::size_t s
 
 // --- kernel rows ---------------------------------------------------------------------------------
 
-FOGDRIFT_INLINE void rbf_row(const double* xi, double sq_i, const double* xt, std::size_t stride,
-                             const double* sq, std::size_t n, std::size_t d, double gamma,
-                             float* out) {
+/// dist[j] = Σ_f (x_if − x_jf)² for j < m, in feature order, from the float feature-major copy
+/// `xt` (feature f of column j at xt[f·stride + j]).
+FOGDRIFT_INLINE void distance_block(const float* xi, const float* xt, std::size_t stride,
+                                    std::size_t d, std::size_t j0, std::size_t m, float* dist) {
+  for (std::size_t j = 0; j < m; ++j) dist[j] = 0.0f;
+  for (std::size_t f = 0; f < d; ++f) {
+    const float xf = xi[f];
+    const float* col = xt + f * stride + j0;
+    for (std::size_t j = 0; j < m; ++j) {
+      const float diff = xf - col[j];
+      dist[j] = __builtin_fmaf(diff, diff, dist[j]);
+    }
+  }
+}
+
+FOGDRIFT_INLINE void libsvm_rbf_row(const double* xi, double sq_i, const double* xt,
+                                    std::size_t stride, const double* sq, std::size_t n,
+                                    std::size_t d, double gamma, float* out) {
   double acc[kBlock];
   for (std::size_t j0 = 0; j0 < n; j0 += kBlock) {
     const std::size_t m = std::min(kBlock, n - j0);
@@ -89,6 +152,16 @@ FOGDRIFT_INLINE void rbf_row(const double* xi, double sq_i, const double* xt, st
       const double dist = (sq_i + sq[j0 + j]) - 2.0 * acc[j];
       out[j0 + j] = static_cast<float>(exp_core(-gamma * dist));
     }
+  }
+}
+
+FOGDRIFT_INLINE void rbf_row(const float* xi, const float* xt, std::size_t stride, std::size_t n,
+                             std::size_t d, double gamma, float* out) {
+  const float minus_gamma = -static_cast<float>(gamma);
+  for (std::size_t j0 = 0; j0 < n; j0 += kBlock) {
+    const std::size_t m = std::min(kBlock, n - j0);
+    distance_block(xi, xt, stride, d, j0, m, out + j0);
+    for (std::size_t j = 0; j < m; ++j) out[j0 + j] = kernel_exp(minus_gamma * out[j0 + j]);
   }
 }
 
@@ -102,21 +175,16 @@ FOGDRIFT_INLINE void linear_row(const double* xi, const double* xt, std::size_t 
   }
 }
 
-FOGDRIFT_INLINE void distance_row(const double* xi, double sq_i, const double* xt, const double* sq,
+FOGDRIFT_INLINE void distance_row(const float* xi, const float* xt, std::size_t stride,
                                   std::size_t n, std::size_t d, float* out) {
-  double acc[kBlock];
-  for (std::size_t j0 = 0; j0 < n; j0 += kBlock) {
-    const std::size_t m = std::min(kBlock, n - j0);
-    dot_block(xi, xt, n, d, j0, m, acc);
-    for (std::size_t j = 0; j < m; ++j)
-      out[j0 + j] = static_cast<float>((sq_i + sq[j0 + j]) - 2.0 * acc[j]);
-  }
+  for (std::size_t j0 = 0; j0 < n; j0 += kBlock)
+    distance_block(xi, xt, stride, d, j0, std::min(kBlock, n - j0), out + j0);
 }
 
 FOGDRIFT_INLINE void rbf_row_from_distances(const float* dist, std::size_t n, double gamma,
                                             float* out) {
-  for (std::size_t j = 0; j < n; ++j)
-    out[j] = static_cast<float>(exp_core(-gamma * static_cast<double>(dist[j])));
+  const float minus_gamma = -static_cast<float>(gamma);
+  for (std::size_t j = 0; j < n; ++j) out[j] = kernel_exp(minus_gamma * dist[j]);
 }
 
 // --- gradient updates ----------------------------------------------------------------------------

@@ -83,32 +83,49 @@ class RowArena {
 
 /// The training features in a solver's sample order, feature-major, so that kernel rows can be
 /// computed straight into that order: row r at positions [begin, end) is K(x_r, x_index[j]), the
-/// same floats as TrainingSet::kernel_row(r)[index[j]] (the same products, sums and rounding).
+/// same floats as TrainingSet::kernel_row(r)[index[j]] in the same arithmetic (the same
+/// operations and rounding). The single-arithmetic RBF kernel reads the features in float, the
+/// others in double.
 class DataInOrder {
  public:
   /// The identity order. `set` must outlive this object and keep no distance matrix.
-  DataInOrder(const TrainingSet& set, const Kernel& kernel)
-      : set_(set), kernel_(kernel), n_(set.size()), d_(set.dims()), xt_(n_ * d_), sq_(n_) {
-    for (std::size_t j = 0; j < n_; ++j) {
-      for (std::size_t f = 0; f < d_; ++f) xt_[f * n_ + j] = set.data().row(j)[f];
-      sq_[j] = set.squared_norm(j);
+  DataInOrder(const TrainingSet& set, const Kernel& kernel, KernelArithmetic arithmetic)
+      : set_(set), kernel_(kernel), n_(set.size()), d_(set.dims()) {
+    in_float_ = kernel_.type != KernelType::linear && arithmetic == KernelArithmetic::single;
+    if (in_float_) {
+      xt_f32_.resize(n_ * d_);
+      for (std::size_t j = 0; j < n_; ++j)
+        for (std::size_t f = 0; f < d_; ++f) xt_f32_[f * n_ + j] = set.row_f32(j)[f];
+    } else {
+      xt_.resize(n_ * d_);
+      sq_.resize(n_);
+      for (std::size_t j = 0; j < n_; ++j) {
+        for (std::size_t f = 0; f < d_; ++f) xt_[f * n_ + j] = set.data().row(j)[f];
+        sq_[j] = set.squared_norm(j);
+      }
     }
   }
 
   /// Positions a and b trade samples.
   void swap(std::size_t a, std::size_t b) {
-    for (std::size_t f = 0; f < d_; ++f) std::swap(xt_[f * n_ + a], xt_[f * n_ + b]);
-    std::swap(sq_[a], sq_[b]);
+    if (in_float_) {
+      for (std::size_t f = 0; f < d_; ++f) std::swap(xt_f32_[f * n_ + a], xt_f32_[f * n_ + b]);
+    } else {
+      for (std::size_t f = 0; f < d_; ++f) std::swap(xt_[f * n_ + a], xt_[f * n_ + b]);
+      std::swap(sq_[a], sq_[b]);
+    }
   }
 
   /// out[j] = K(x_r, x at position j) for begin ≤ j < end.
   void row(std::size_t r, std::size_t begin, std::size_t end, float* out) const {
-    const double* x = set_.data().row(r);
     if (kernel_.type == KernelType::linear)
-      loops_.linear_row(x, xt_.data() + begin, n_, end - begin, d_, out + begin);
+      loops_.linear_row(set_.data().row(r), xt_.data() + begin, n_, end - begin, d_, out + begin);
+    else if (in_float_)
+      loops_.rbf_row(set_.row_f32(r), xt_f32_.data() + begin, n_, end - begin, d_, kernel_.gamma,
+                     out + begin);
     else
-      loops_.rbf_row(x, set_.squared_norm(r), xt_.data() + begin, n_, sq_.data() + begin,
-                     end - begin, d_, kernel_.gamma, out + begin);
+      loops_.libsvm_rbf_row(set_.data().row(r), set_.squared_norm(r), xt_.data() + begin, n_,
+                            sq_.data() + begin, end - begin, d_, kernel_.gamma, out + begin);
   }
 
  private:
@@ -116,8 +133,10 @@ class DataInOrder {
   const TrainingSet& set_;
   Kernel kernel_;
   std::size_t n_, d_;
-  std::vector<double> xt_;  // d × n, column j the sample at position j
-  std::vector<double> sq_;  // its squared norm
+  bool in_float_ = false;
+  std::vector<double> xt_;     // d × n, column j the sample at position j
+  std::vector<double> sq_;     // its squared norm
+  std::vector<float> xt_f32_;  // the same in float, for the single-arithmetic RBF kernel
 };
 
 /// Kernel rows in a solver's variable order: row r of the kernel read at the solver's positions,
@@ -142,7 +161,8 @@ class OrderedRows {
   OrderedRows(KernelCache& q, const std::int32_t* index, std::size_t length,
               std::size_t kernel_rows, double cache_mb, KeptBlocks* kept, bool direct = false)
       : q_(q), index_(index), length_(length), slot_of_row_(kernel_rows, -1) {
-    if (direct) direct_ = std::make_unique<DataInOrder>(q.training_set(), q.kernel());
+    if (direct)
+      direct_ = std::make_unique<DataInOrder>(q.training_set(), q.kernel(), q.arithmetic());
     const double slot_bytes = static_cast<double>(length) * sizeof(float);
     capacity_ = static_cast<std::size_t>(std::max(
         2.0,

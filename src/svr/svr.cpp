@@ -93,7 +93,8 @@ FitResult fit_unchecked(const TrainingSet& set, const Params& params, const Dual
                         Workspace* workspace) {
   const auto start = std::chrono::steady_clock::now();
   const double share = computed_rows_share(set, params);
-  KernelCache cache(set, params.kernel, params.cache_mb * share, workspace);
+  KernelCache cache(set, params.kernel, params.cache_mb * share, workspace,
+                    params.kernel_arithmetic);
   FitResult r = fit_with(set, cache, params, share, warm);
   r.summary.seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -198,7 +199,8 @@ double lane_sum(const double* b, const float* k, std::size_t n) {
 }  // namespace
 
 std::vector<double> path_predictions(const TrainingSet& set, std::span<const FitResult> path,
-                                     const Data& data, std::span<const std::size_t> rows) {
+                                     const Data& data, std::span<const std::size_t> rows,
+                                     KernelArithmetic arithmetic) {
   const std::size_t l = set.size(), models = path.size();
   if (data.cols != set.dims())
     throw std::invalid_argument(fmt::format(
@@ -230,18 +232,27 @@ std::vector<double> path_predictions(const TrainingSet& set, std::span<const Fit
         for (std::size_t c = 0; c < d; ++c)
           w[m * d + c] += beta[m * n_used + u] * set.data().row(used[u])[c];
   }
-  // RBF: the support vectors alone, feature-major, so that a row costs one kernel value per
-  // support vector rather than per training sample (a quarter of them in a typical search). Each
-  // value is the float TrainingSet::kernel_row_of computes for that sample: the loops compute
-  // every entry from its own column alone.
+  // RBF: the support vectors alone, feature-major (in float for the single arithmetic), so that
+  // a row costs one kernel value per support vector rather than per training sample (a quarter
+  // of them in a typical search). Each value is the float TrainingSet::kernel_row_of computes for
+  // that sample in that arithmetic: the loops compute every entry from its own column alone.
+  const bool in_float =
+      kernel.type != KernelType::linear && arithmetic == KernelArithmetic::single;
   std::vector<double> xt, sq;
-  std::vector<float> k;
+  std::vector<float> xt_f32, x_f32, k;
   if (kernel.type != KernelType::linear) {
-    xt.resize(n_used * d);
-    sq.resize(n_used);
-    for (std::size_t u = 0; u < n_used; ++u) {
-      for (std::size_t c = 0; c < d; ++c) xt[c * n_used + u] = set.data().row(used[u])[c];
-      sq[u] = set.squared_norm(used[u]);
+    if (in_float) {
+      xt_f32.resize(n_used * d);
+      x_f32.resize(d);
+      for (std::size_t u = 0; u < n_used; ++u)
+        for (std::size_t c = 0; c < d; ++c) xt_f32[c * n_used + u] = set.row_f32(used[u])[c];
+    } else {
+      xt.resize(n_used * d);
+      sq.resize(n_used);
+      for (std::size_t u = 0; u < n_used; ++u) {
+        for (std::size_t c = 0; c < d; ++c) xt[c * n_used + u] = set.data().row(used[u])[c];
+        sq[u] = set.squared_norm(used[u]);
+      }
     }
     k.resize(n_used);
   }
@@ -256,9 +267,15 @@ std::vector<double> path_predictions(const TrainingSet& set, std::span<const Fit
       for (std::size_t m = 0; m < models; ++m)
         for (std::size_t c = 0; c < d; ++c) f[m] += w[m * d + c] * x[c];
     } else if (n_used > 0) {
-      double sq_x = 0;  // summed in feature order, as the set's own norms
-      for (std::size_t c = 0; c < d; ++c) sq_x += x[c] * x[c];
-      loops.rbf_row(x, sq_x, xt.data(), n_used, sq.data(), n_used, d, kernel.gamma, k.data());
+      if (in_float) {
+        for (std::size_t c = 0; c < d; ++c) x_f32[c] = static_cast<float>(x[c]);
+        loops.rbf_row(x_f32.data(), xt_f32.data(), n_used, n_used, d, kernel.gamma, k.data());
+      } else {
+        double sq_x = 0;  // summed in feature order, as the set's own norms
+        for (std::size_t c = 0; c < d; ++c) sq_x += x[c] * x[c];
+        loops.libsvm_rbf_row(x, sq_x, xt.data(), n_used, sq.data(), n_used, d, kernel.gamma,
+                             k.data());
+      }
       for (std::size_t j = 0; j < models; ++j)
         f[j] = lane_sum(beta.data() + j * n_used, k.data(), n_used);
     }
@@ -268,8 +285,9 @@ std::vector<double> path_predictions(const TrainingSet& set, std::span<const Fit
 }
 
 std::vector<double> path_squared_errors(const TrainingSet& set, std::span<const FitResult> path,
-                                        const Data& data, std::span<const std::size_t> rows) {
-  const std::vector<double> f = path_predictions(set, path, data, rows);
+                                        const Data& data, std::span<const std::size_t> rows,
+                                        KernelArithmetic arithmetic) {
+  const std::vector<double> f = path_predictions(set, path, data, rows, arithmetic);
   const std::size_t models = path.size();
   std::vector<double> sse(models, 0.0);
   for (std::size_t r = 0; r < rows.size(); ++r)
@@ -332,7 +350,7 @@ std::vector<FitResult> fit_c_path(const TrainingSet& set, const Params& base,
   const double share = computed_rows_share(set, base);
   // One cache for the path: each fit leaves its sample order and rows in the cache's workspace
   // for the next.
-  KernelCache cache(set, base.kernel, base.cache_mb * share, workspace);
+  KernelCache cache(set, base.kernel, base.cache_mb * share, workspace, base.kernel_arithmetic);
   for (double c : c_values) {
     Params p = base;
     p.c = c;

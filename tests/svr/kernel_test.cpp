@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cfloat>
 #include <cmath>
 #include <cstring>
@@ -16,13 +17,17 @@ namespace fogdrift::svr {
 namespace {
 
 TEST(KernelRows, MatchLibsvmsFormulaInDouble) {
+  // The libsvm arithmetic gives LIBSVM's floats; the single one agrees with the exact kernel of
+  // the float-rounded features to a few float steps (scored in float steps: loops_test).
   const Data d = testing::smooth(300, 5, 0.0, 2);
   const TrainingSet set(d);
   for (const Kernel k : {Kernel::rbf_sigma(0.8), Kernel::linear()}) {
-    std::vector<float> row(d.rows);
+    std::vector<float> row(d.rows), single(d.rows);
     int differ = 0;
+    double worst_single = 0;
     for (std::size_t i = 0; i < d.rows; i += 13) {
       set.kernel_row(k, i, row.data());
+      set.kernel_row(k, i, single.data(), KernelArithmetic::single);
       double sq_i = 0;
       for (std::size_t f = 0; f < d.cols; ++f) sq_i += d.row(i)[f] * d.row(i)[f];
       for (std::size_t j = 0; j < d.rows; ++j) {
@@ -35,9 +40,28 @@ TEST(KernelRows, MatchLibsvmsFormulaInDouble) {
             k.type == KernelType::linear ? dot : std::exp(-k.gamma * ((sq_i + sq_j) - 2 * dot));
         if (static_cast<float>(v) != row[j]) ++differ;
         EXPECT_NEAR(row[j], v, 1e-6);
+        if (k.type == KernelType::linear) {
+          EXPECT_EQ(single[j], row[j]);
+        } else {
+          double dist = 0;
+          for (std::size_t f = 0; f < d.cols; ++f) {
+            const double diff = static_cast<double>(static_cast<float>(d.row(i)[f])) -
+                                static_cast<float>(d.row(j)[f]);
+            dist += diff * diff;
+          }
+          const double y = -static_cast<float>(k.gamma) * dist;
+          const double exact = std::exp(y);
+          // Relative to a float step per unit of |y|, which multiplies the distance's rounding.
+          worst_single = std::max(worst_single, std::fabs(single[j] - exact) / exact / (1.0 - y));
+        }
+      }
+      if (k.type != KernelType::linear) {
+        EXPECT_EQ(single[i], 1.0f);
+        EXPECT_EQ(set.kernel_diagonal(k, i, KernelArithmetic::single), 1.0);
       }
     }
     EXPECT_LE(differ, 1);
+    EXPECT_LT(worst_single, 5e-7);
   }
 }
 
@@ -70,6 +94,8 @@ TEST(KernelRows, ThePointsOwnRowIsTheSamplesRow) {
 }
 
 TEST(KernelRows, DistanceMatrixGivesTheSameRowsToFloatRounding) {
+  // The matrix holds the float arithmetic's distances: its rows are that arithmetic's rows, float
+  // for float; LIBSVM's arithmetic computes its rows from the features either way.
   const Data d = testing::smooth(200, 30, 0.0, 3);
   const TrainingSet direct(d, TrainingSet::Options{0, 24, nullptr});
   const TrainingSet with_distances(d);
@@ -79,9 +105,12 @@ TEST(KernelRows, DistanceMatrixGivesTheSameRowsToFloatRounding) {
   for (double sigma : {1.0, 3.0, 10.0}) {
     const Kernel k = Kernel::rbf_sigma(sigma);
     for (std::size_t i = 0; i < d.rows; i += 17) {
+      direct.kernel_row(k, i, a.data(), KernelArithmetic::single);
+      with_distances.kernel_row(k, i, b.data(), KernelArithmetic::single);
+      EXPECT_EQ(std::memcmp(a.data(), b.data(), d.rows * sizeof(float)), 0) << sigma;
       direct.kernel_row(k, i, a.data());
       with_distances.kernel_row(k, i, b.data());
-      for (std::size_t j = 0; j < d.rows; ++j) EXPECT_NEAR(a[j], b[j], 1e-5) << sigma;
+      EXPECT_EQ(std::memcmp(a.data(), b.data(), d.rows * sizeof(float)), 0) << sigma;
     }
   }
 }

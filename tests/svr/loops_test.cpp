@@ -1,11 +1,12 @@
-// The SVR engine's inner loops (src/svr/loops.hpp): the fast exponential against std::exp, every
-// function of every instruction set's table bit for bit against the portable table, a closed-form
-// case, and the choice of the table through FOGDRIFT_ISA.
+// The SVR engine's inner loops (src/svr/loops.hpp): both kernels' exponentials against std::exp,
+// every function of every instruction set's table bit for bit against the portable table, a
+// closed-form case, and the choice of the table through FOGDRIFT_ISA.
 #include "svr/loops.hpp"
 #include "svr/loops_scalar.hpp"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <string>
@@ -49,6 +50,93 @@ TEST(FastExp, ItsTableIsTheNearestDoubles) {
         << j;
 }
 
+/// How many floats lie between a and b (0 when equal).
+long float_steps(float a, float b) {
+  long steps = 0;
+  while (a != b && steps < 1000) {
+    a = std::nextafter(a, b);
+    ++steps;
+  }
+  return steps;
+}
+
+TEST(KernelExp, IsWithinTwoFloatStepsOfStdExp) {
+  // The reference is std::exp in double, rounded to float: the float the kernel would hold if
+  // every step were exact. Scored by agreeing floats: most equal, none more than two steps off.
+  Rng rng(3);
+  const int n = 400000;
+  int same = 0;
+  long worst = 0;
+  for (int k = 0; k < n; ++k) {
+    const float y = static_cast<float>(-rng.uniform(0, 87));
+    const float a = detail::kernel_exp(y);
+    const float b = static_cast<float>(std::exp(static_cast<double>(y)));
+    same += a == b;
+    worst = std::max(worst, float_steps(a, b));
+  }
+  EXPECT_LE(worst, 2);
+  EXPECT_GE(same, n * 2 / 3) << "of " << n;  // 72 % when written
+  RecordProperty("same_float_as_std_exp", std::to_string(same) + " of " + std::to_string(n));
+  EXPECT_EQ(detail::kernel_exp(0.0f), 1.0f);
+  EXPECT_EQ(detail::kernel_exp(-0.0f), 1.0f);
+  // Far points: clamped at e^−87, below float's smallest normal e^−87.34 × 1.4, never infinite
+  // or negative.
+  const float far = detail::kernel_exp(-1e30f);
+  EXPECT_GT(far, 0.0f);
+  EXPECT_LT(far, 2e-38f);
+}
+
+TEST(KernelExp, ItsTableIsTheNearestFloats) {
+  // 2^(j/8) in long double rounded to float, twice over.
+  for (std::size_t j = 0; j < 16; ++j)
+    EXPECT_EQ(detail::scalar::kExp2Eighths[j],
+              static_cast<float>(std::exp2(static_cast<long double>(j % 8) / 8.0L)))
+        << j;
+  EXPECT_EQ(detail::scalar::kEighthsPerNat, static_cast<float>(8.0L / std::log(2.0L)));
+  // ln 2 / 8 as a high part of twelve fractional bits (so n·high is exact in float for
+  // |n| < 2^15) and a low part whose
+  // sum is ln 2 / 8 to within the low part's own rounding.
+  const float high = detail::scalar::kLn2HiEighth;
+  EXPECT_EQ(std::ldexp(high, 15) - std::floor(std::ldexp(high, 15)), 0.0f);
+  EXPECT_NEAR(static_cast<double>(static_cast<long double>(high) + detail::scalar::kLn2LoEighth),
+              static_cast<double>(std::log(2.0L) / 8.0L), 2e-12);
+}
+
+TEST(KernelExp, RowsAgreeWithTheKernelInDouble) {
+  // A row in float against exp(−γ·‖x_i − x_j‖²) in double from the same (float-rounded)
+  // features: relative error within a few float steps, near points and far ones.
+  Rng rng(5);
+  const std::size_t n = 300, d = 12;
+  std::vector<float> x(n * d), xt(n * d);
+  for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t f = 0; f < d; ++f)
+      xt[f * n + i] = x[i * d + f] = static_cast<float>(rng.normal() * (i % 2 ? 1.0 : 1e-2));
+  std::vector<float> row(n);
+  double worst = 0;
+  for (const double gamma : {1e-3, 0.02, 0.5, 20.0}) {
+    for (std::size_t i = 0; i < n; i += 7) {
+      detail::loops().rbf_row(&x[i * d], xt.data(), n, n, d, gamma, row.data());
+      for (std::size_t j = 0; j < n; ++j) {
+        double dist = 0;
+        for (std::size_t f = 0; f < d; ++f) {
+          const double diff = static_cast<double>(x[i * d + f]) - x[j * d + f];
+          dist += diff * diff;
+        }
+        const double y = -static_cast<double>(static_cast<float>(gamma)) * dist;
+        const double exact = std::exp(y);
+        if (exact < 1e-30) continue;
+        // The distance's relative rounding error is multiplied by |y| in the exponential's.
+        worst = std::max(worst, std::fabs(row[j] - exact) / exact / (1.0 - y));
+      }
+      EXPECT_EQ(row[i], 1.0f);
+    }
+  }
+  // float's step is 1.2e-7 relative: the distance's and the exponential's roundings stay within
+  // a few steps per unit of |y| = γ·d² (which multiplies the distance's relative error).
+  EXPECT_LT(worst, 5e-7);
+  RecordProperty("worst_relative_error", std::to_string(worst));
+}
+
 /// The vector tables this processor has, each to be compared with the portable one.
 std::vector<const Loops*> vector_tables() {
   std::vector<const Loops*> out;
@@ -77,36 +165,43 @@ TEST(Loops, KernelRowsAreBitForBitThePortableOnes) {
     for (const std::size_t d : {std::size_t{1}, std::size_t{9}, std::size_t{17}}) {
       for (const std::size_t n : {1, 3, 4, 7, 8, 9, 15, 16, 17, 100, 257, 600}) {
         std::vector<double> x(n * d), xt(n * d), sq(n);
+        std::vector<float> x32(n * d), xt32(n * d);
         for (std::size_t i = 0; i < n; ++i) {
           const double spread = i % 3 == 0 ? 1e-3 : (i % 3 == 1 ? 1.0 : 30.0);
           for (std::size_t f = 0; f < d; ++f) {
             x[i * d + f] = rng.normal() * spread;
             xt[f * n + i] = x[i * d + f];
+            xt32[f * n + i] = x32[i * d + f] = static_cast<float>(x[i * d + f]);
             sq[i] += x[i * d + f] * x[i * d + f];
           }
         }
         std::vector<float> a(n), b(n), dist_a(n), dist_b(n);
         for (std::size_t i = 0; i < n; i += 1 + n / 5) {
           const double* xi = &x[i * d];
+          const float* xi32 = &x32[i * d];
           table->linear_row(xi, xt.data(), n, n, d, a.data());
           portable().linear_row(xi, xt.data(), n, n, d, b.data());
           ASSERT_TRUE(same_bits(a, b)) << "linear " << n << " " << d;
-          table->distance_row(xi, sq[i], xt.data(), sq.data(), n, d, dist_a.data());
-          portable().distance_row(xi, sq[i], xt.data(), sq.data(), n, d, dist_b.data());
+          table->distance_row(xi32, xt32.data(), n, n, d, dist_a.data());
+          portable().distance_row(xi32, xt32.data(), n, n, d, dist_b.data());
           ASSERT_TRUE(same_bits(dist_a, dist_b)) << "distances " << n << " " << d;
           for (const double gamma : {1e-3, 0.5, 20.0}) {
-            table->rbf_row(xi, sq[i], xt.data(), n, sq.data(), n, d, gamma, a.data());
-            portable().rbf_row(xi, sq[i], xt.data(), n, sq.data(), n, d, gamma, b.data());
+            table->libsvm_rbf_row(xi, sq[i], xt.data(), n, sq.data(), n, d, gamma, a.data());
+            portable().libsvm_rbf_row(xi, sq[i], xt.data(), n, sq.data(), n, d, gamma, b.data());
+            ASSERT_TRUE(same_bits(a, b)) << "libsvm rbf " << n << " " << d;
+            table->rbf_row(xi32, xt32.data(), n, n, d, gamma, a.data());
+            portable().rbf_row(xi32, xt32.data(), n, n, d, gamma, b.data());
             ASSERT_TRUE(same_bits(a, b)) << "rbf " << n << " " << d;
             // Columns [begin, n) alone, read with the full row's stride: the same floats.
             const std::size_t begin = n / 3;
             std::vector<float> part(n - begin);
-            table->rbf_row(xi, sq[i], xt.data() + begin, n, sq.data() + begin, n - begin, d, gamma,
-                           part.data());
+            table->rbf_row(xi32, xt32.data() + begin, n, n - begin, d, gamma, part.data());
             ASSERT_EQ(0, std::memcmp(part.data(), b.data() + begin, part.size() * sizeof(float)));
+            // From the distances: the same floats as the row.
             table->rbf_row_from_distances(dist_b.data(), n, gamma, a.data());
-            portable().rbf_row_from_distances(dist_b.data(), n, gamma, b.data());
             ASSERT_TRUE(same_bits(a, b)) << "rbf from distances " << n << " " << d;
+            portable().rbf_row_from_distances(dist_b.data(), n, gamma, a.data());
+            ASSERT_TRUE(same_bits(a, b)) << "portable rbf from distances " << n << " " << d;
             ++checked;
           }
         }

@@ -51,9 +51,24 @@ struct Kernel {
 using Data = fogdrift::Data;
 using fogdrift::validate;
 
-/// A data set prepared once for many fits: a feature-major copy for vectorised kernel rows, the
-/// squared norms, and, when it fits the memory budget and pays off, the matrix of pairwise
-/// squared distances, from which a row of any σ costs one exponential per entry.
+/// How the rows of the RBF kernel are computed (docs/svr.md, "The kernel in float"). Either way a
+/// row is stored in float.
+enum class KernelArithmetic {
+  /// In float: the features rounded to float, Σ_f (x_if − x_jf)² with fused multiply-adds, and an
+  /// exponential in float within two float steps of e^y; a row at about a third of the cost.
+  /// fogdrift's hyperparameter searches use it.
+  single,
+  /// As LIBSVM: (‖x_i‖² + ‖x_j‖²) − 2·x_i·x_j and the exponential in double, rounded to float, so
+  /// that a fit gives svm-train's and scikit-learn's model (the LIBSVM path: to the iteration).
+  /// The default.
+  libsvm,
+};
+
+/// A data set prepared once for many fits: feature-major copies for vectorised kernel rows (in
+/// double for the linear kernel, in float for the RBF kernel, whose rows are computed in float:
+/// docs/svr.md, "The kernel in float"), the squared norms, and, when it fits the memory budget
+/// and pays off, the matrix of pairwise squared distances, from which a row of any σ costs one
+/// exponential per entry.
 class TrainingSet {
  public:
   struct Options {
@@ -78,24 +93,32 @@ class TrainingSet {
   std::size_t size() const { return data_.rows; }
   std::size_t dims() const { return data_.cols; }
   bool has_distances() const { return !distances_.empty(); }
-  /// Bytes held (features twice, norms, distances).
+  /// Bytes held (features in double twice and in float twice, norms, distances).
   std::size_t bytes() const;
 
-  /// Writes row i of the kernel matrix (size() floats). Safe to call from several threads.
-  void kernel_row(const Kernel& kernel, std::size_t i, float* out) const;
+  /// Writes row i of the kernel matrix (size() floats). Safe to call from several threads. The
+  /// distance matrix, when kept, serves the single arithmetic.
+  void kernel_row(const Kernel& kernel, std::size_t i, float* out,
+                  KernelArithmetic arithmetic = KernelArithmetic::libsvm) const;
   /// The kernel between a point `x` (dims() values, not a sample of the set) and every sample,
   /// as kernel_row forms a row from the features (size() floats). Safe from several threads.
-  void kernel_row_of(const Kernel& kernel, const double* x, float* out) const;
-  /// K(x_i, x_i) in double, LIBSVM's QD.
-  double kernel_diagonal(const Kernel& kernel, std::size_t i) const;
+  void kernel_row_of(const Kernel& kernel, const double* x, float* out,
+                     KernelArithmetic arithmetic = KernelArithmetic::libsvm) const;
+  /// K(x_i, x_i) in double, LIBSVM's QD, as the rows of that arithmetic hold it.
+  double kernel_diagonal(const Kernel& kernel, std::size_t i,
+                         KernelArithmetic arithmetic = KernelArithmetic::libsvm) const;
   /// ‖x_i‖², summed over the features in order, as the kernel rows use it.
   double squared_norm(std::size_t i) const { return squared_norms_[i]; }
+  /// Sample i's features rounded to float, contiguous, as the RBF rows read them.
+  const float* row_f32(std::size_t i) const { return rows_f32_.data() + i * data_.cols; }
 
  private:
   Data data_;
   std::vector<double> feature_major_;  // cols × rows
   std::vector<double> squared_norms_;
-  std::vector<float> distances_;  // rows × rows, when kept
+  std::vector<float> rows_f32_;           // rows × cols
+  std::vector<float> feature_major_f32_;  // cols × rows
+  std::vector<float> distances_;          // rows × rows, when kept
 };
 
 /// Kernel rows for one fit, or for a sequence of fits of one kernel (fit_c_path), with a
@@ -106,13 +129,15 @@ class KernelCache {
   /// everything the solvers keep between fits on this cache, live in `workspace` when one is
   /// given (it must outlive the cache), or in a workspace of the cache's own.
   KernelCache(const TrainingSet& set, const Kernel& kernel, double cache_mb,
-              Workspace* workspace = nullptr);
+              Workspace* workspace = nullptr,
+              KernelArithmetic arithmetic = KernelArithmetic::libsvm);
   ~KernelCache();
   KernelCache(const KernelCache&) = delete;
   KernelCache& operator=(const KernelCache&) = delete;
 
   std::size_t size() const { return n_; }
   const Kernel& kernel() const { return kernel_; }
+  KernelArithmetic arithmetic() const { return arithmetic_; }
   const TrainingSet& training_set() const { return set_; }
   /// The workspace of the fits on this cache: the pair solver takes its arrays from it and leaves
   /// its sample order there for the next fit on this cache.
@@ -126,6 +151,7 @@ class KernelCache {
  private:
   const TrainingSet& set_;
   Kernel kernel_;
+  KernelArithmetic arithmetic_;
   std::size_t n_;
   std::size_t capacity_;
   std::vector<double> diagonal_;

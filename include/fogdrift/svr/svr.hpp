@@ -42,6 +42,11 @@ struct Params {
   double cache_mb = 200;
   std::int64_t max_iterations = 0;  ///< 0: LIBSVM's max(10⁷, 200·l)
   bool libsvm_path = false;  ///< SolverOptions::libsvm_path: LIBSVM's working sets one for one
+  /// How the RBF kernel's rows are computed (kernel.hpp): LIBSVM's floats by default, as
+  /// svm-train and scikit-learn compute them; `single` computes them in float at about a third
+  /// of the cost, which fogdrift's hyperparameter searches use (docs/svr.md, "The kernel in
+  /// float").
+  KernelArithmetic kernel_arithmetic = KernelArithmetic::libsvm;
   bool conjugate = true;     ///< SolverOptions::conjugate: the pair solver's conjugate steps
   bool newton = true;        ///< SolverOptions::newton: the pair solver's free-set Newton steps
 };
@@ -131,14 +136,17 @@ void validate_c_values(std::span<const double> c_values, const std::string& name
 /// in float as the solver's rows are (TrainingSet::kernel_row_of), so the sums are
 /// Model::predict's to float rounding of the kernel (measured: 3e-6 relative at C = 50);
 /// linear: from each model's primal weights, in double. Rows in order, one thread.
+/// `arithmetic` is the kernel's, as the fits' Params::kernel_arithmetic.
 std::vector<double> path_squared_errors(const TrainingSet& set, std::span<const FitResult> path,
-                                        const Data& data, std::span<const std::size_t> rows);
+                                        const Data& data, std::span<const std::size_t> rows,
+                                        KernelArithmetic arithmetic = KernelArithmetic::libsvm);
 
 /// The predictions behind path_squared_errors: f_k(x) for each of `rows` (outer) and each fit k
 /// of `path` (inner), rows.size() × path.size(), computed as it computes them (any scorer can
 /// then score a path: fogdrift.SVRGridSearchCV).
 std::vector<double> path_predictions(const TrainingSet& set, std::span<const FitResult> path,
-                                     const Data& data, std::span<const std::size_t> rows);
+                                     const Data& data, std::span<const std::size_t> rows,
+                                     KernelArithmetic arithmetic = KernelArithmetic::libsvm);
 
 /// The instruction set the engine's inner loops run with: "avx512", "avx2" or "portable". The
 /// fastest this processor has, or the one the environment variable FOGDRIFT_ISA names
