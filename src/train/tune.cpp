@@ -103,6 +103,8 @@ svr::Params params_at(std::span<const double> point, const TuneOptions& options)
   p.tolerance = options.tolerance;
   p.cache_mb = options.cache_mb;
   p.newton = options.newton;
+  // The kernel in float: a row at a third of the cost (docs/svr.md, "The kernel in float").
+  p.kernel_arithmetic = svr::KernelArithmetic::single;
   return p;
 }
 
