@@ -43,7 +43,7 @@ def test_every_example_on_the_page_runs(tmp_path, monkeypatch, capsys):
     printed = capsys.readouterr().out
     assert "STD" in printed and "removed" in printed
     # The figures step 6's prose quotes are the ones its example prints.
-    assert "causal, guard off: STD compensated 0.0038 °/h (centred 0.0036)" in printed
-    assert "STD 0.0038 against\n0.0036 °/h here" in DOC.read_text()
+    assert "causal, guard off: STD compensated 0.0037 °/h (centred 0.0036)" in printed
+    assert "STD 0.0037 against\n0.0036 °/h here" in DOC.read_text()
     assert "centred model streamed: 0.011 °/h RMS from predict's, drift STD 0.018" in printed
     assert "by 0.011 °/h RMS on this recording, against a\ndrift STD of 0.018 °/h" in DOC.read_text()
