@@ -79,15 +79,15 @@ std::string_view isa_name(Isa isa);
 struct Loops {
   Isa isa;
 
-  /// One row of the RBF kernel as LIBSVM computes it, for the solver that follows LIBSVM's path
-  /// (Params::libsvm_path): out[j] = (float) exp(−γ·((‖x_i‖² + ‖x_j‖²) − 2·x_i·x_j)) in double,
+  /// One row of the RBF kernel as LIBSVM computes it (KernelArithmetic::libsvm, the default):
+  /// out[j] = (float) exp(−γ·((‖x_i‖² + ‖x_j‖²) − 2·x_i·x_j)) in double,
   /// the expression and rounding LIBSVM uses, from the double features `xt` and their squared
   /// norms `sq`. A row of a subset of columns is the same floats as the full row's.
   void (*libsvm_rbf_row)(const double* xi, double sq_i, const double* xt, std::size_t stride,
                          const double* sq, std::size_t n, std::size_t d, double gamma, float* out);
-  /// One row of the RBF kernel over n columns, for every other fit: out[j] = kernel_exp(−γ·Σ_f
-  /// (x_if − x_jf)²), all in float (γ rounded to float; loops_scalar.hpp). A row of a subset of
-  /// columns is the same floats as the full row's.
+  /// One row of the RBF kernel in float (KernelArithmetic::single, the searches'): out[j] =
+  /// kernel_exp(−γ·Σ_f (x_if − x_jf)²), all in float (γ rounded to float; loops_scalar.hpp). A row
+  /// of a subset of columns is the same floats as the full row's.
   void (*rbf_row)(const float* xi, const float* xt, std::size_t stride, std::size_t n,
                   std::size_t d, double gamma, float* out);
   /// One row of the linear kernel: out[j] = (float) x_i·x_j.
