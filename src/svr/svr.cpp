@@ -142,6 +142,10 @@ void validate(const Params& p, const ParamNames& names) {
           "a finite number ≥ 0");
   require(p.max_iterations >= 0, names.max_iterations, static_cast<double>(p.max_iterations),
           "≥ 0");
+  require(p.kernel_arithmetic == KernelArithmetic::single ||
+              p.kernel_arithmetic == KernelArithmetic::libsvm,
+          names.kernel_arithmetic, static_cast<double>(p.kernel_arithmetic),
+          "KernelArithmetic::single or KernelArithmetic::libsvm");
 }
 
 double Model::predict(const double* x) const noexcept {
@@ -236,8 +240,7 @@ std::vector<double> path_predictions(const TrainingSet& set, std::span<const Fit
   // a row costs one kernel value per support vector rather than per training sample (a quarter
   // of them in a typical search). Each value is the float TrainingSet::kernel_row_of computes for
   // that sample in that arithmetic: the loops compute every entry from its own column alone.
-  const bool in_float =
-      kernel.type != KernelType::linear && arithmetic == KernelArithmetic::single;
+  const bool in_float = kernel.type != KernelType::linear && arithmetic == KernelArithmetic::single;
   std::vector<double> xt, sq;
   std::vector<float> xt_f32, x_f32, k;
   if (kernel.type != KernelType::linear) {

@@ -6,8 +6,8 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numeric>
 #include <limits>
+#include <numeric>
 #include <string>
 #include <utility>
 #include <vector>
@@ -518,6 +518,11 @@ TEST(SvrParams, ValidationNamesTheOption) {
   p = Params{};
   p.tolerance = std::nan("");
   EXPECT_EQ(message(p), "option -e: must be a finite number > 0 (got nan)");
+  p = Params{};
+  p.kernel_arithmetic = static_cast<KernelArithmetic>(7);
+  EXPECT_EQ(message(p),
+            "option kernel_arithmetic: must be KernelArithmetic::single or "
+            "KernelArithmetic::libsvm (got 7)");
 }
 
 TEST(SvrData, RejectsNonFiniteValuesNamingTheSample) {

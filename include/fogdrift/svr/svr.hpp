@@ -47,18 +47,20 @@ struct Params {
   /// of the cost, which fogdrift's hyperparameter searches use (docs/svr.md, "The kernel in
   /// float").
   KernelArithmetic kernel_arithmetic = KernelArithmetic::libsvm;
-  bool conjugate = true;     ///< SolverOptions::conjugate: the pair solver's conjugate steps
-  bool newton = true;        ///< SolverOptions::newton: the pair solver's free-set Newton steps
+  bool conjugate = true;  ///< SolverOptions::conjugate: the pair solver's conjugate steps
+  bool newton = true;     ///< SolverOptions::newton: the pair solver's free-set Newton steps
 };
 
 /// Names to use for each parameter in error messages (the CLI passes its flags).
 struct ParamNames {
   std::string c = "C", gamma = "gamma", epsilon = "epsilon", tolerance = "tolerance",
-              cache_mb = "cache_mb", max_iterations = "max_iterations";
+              cache_mb = "cache_mb", max_iterations = "max_iterations",
+              kernel_arithmetic = "kernel_arithmetic";
 };
 
 /// Throws OptionError naming the parameter: C ≤ 0, γ ≤ 0 (σ ≤ 0), ε < 0, tolerance ≤ 0, a cache
-/// below 0 MB or a negative iteration limit, or any of them not finite.
+/// below 0 MB or a negative iteration limit, or any of them not finite; a kernel arithmetic that is
+/// neither `single` nor `libsvm` (a value cast from elsewhere).
 void validate(const Params& params, const ParamNames& names = {});
 
 /// A trained regressor. predict() needs no allocation and is safe from several threads.
