@@ -63,6 +63,9 @@ struct SelectionJ {
 /// finite values; far below any gradient (|f| < 1e50 by far for finite C and targets).
 constexpr double kNoVariable = -1e100;
 
+/// The rows rbf_rows computes side by side: each column read feeds this many rows.
+constexpr std::size_t kRowsAtOnce = 4;
+
 /// The instruction sets the loops are built for.
 enum class Isa { portable, avx2, avx512 };
 
@@ -90,6 +93,11 @@ struct Loops {
   /// of a subset of columns is the same floats as the full row's.
   void (*rbf_row)(const float* xi, const float* xt, std::size_t stride, std::size_t n,
                   std::size_t d, double gamma, float* out);
+  /// `m` rows of rbf_row over the same columns (row r: the d features at xs + r·d, its values at
+  /// out + r·ld), the same floats as m calls of rbf_row; the columns are read once for every
+  /// kRowsAtOnce rows rather than once a row (the held-out predictions of a search, svr.cpp).
+  void (*rbf_rows)(const float* xs, std::size_t m, const float* xt, std::size_t stride,
+                   std::size_t n, std::size_t d, double gamma, float* out, std::size_t ld);
   /// One row of the linear kernel: out[j] = (float) x_i·x_j.
   void (*linear_row)(const double* xi, const double* xt, std::size_t stride, std::size_t n,
                      std::size_t d, float* out);

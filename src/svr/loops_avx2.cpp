@@ -185,6 +185,58 @@ FOGDRIFT_AVX2_FMA void rbf_row_avx2(const float* xi, const float* xt, std::size_
   scalar::rbf_row(xi, xt + j, stride, n - j, d, gamma, out + j);
 }
 
+// 8G columns of R rows (xs + r·d) side by side: each column vector loaded once for the R rows,
+// each entry computed as rbf_columns_avx2 computes it.
+template <std::size_t R, std::size_t G>
+FOGDRIFT_AVX2_FMA inline void rbf_columns_of_rows_avx2(const float* xs, const float* xt,
+                                                       std::size_t stride, std::size_t d,
+                                                       __m256 minus_gamma, float* out,
+                                                       std::size_t ld) {
+  __m256 x[R][G];
+  for (std::size_t r = 0; r < R; ++r)
+    for (std::size_t g = 0; g < G; ++g) x[r][g] = _mm256_setzero_ps();
+  for (std::size_t f = 0; f < d; ++f) {
+    const float* column = xt + f * stride;
+    __m256 c[G];
+    for (std::size_t g = 0; g < G; ++g) c[g] = _mm256_loadu_ps(column + 8 * g);
+    for (std::size_t r = 0; r < R; ++r) {
+      const __m256 a = _mm256_set1_ps(xs[r * d + f]);
+      for (std::size_t g = 0; g < G; ++g) {
+        const __m256 diff = _mm256_sub_ps(a, c[g]);
+        x[r][g] = _mm256_fmadd_ps(diff, diff, x[r][g]);
+      }
+    }
+  }
+  for (std::size_t r = 0; r < R; ++r) {
+    for (std::size_t g = 0; g < G; ++g) x[r][g] = _mm256_mul_ps(minus_gamma, x[r][g]);
+    kernel_exp_avx2(x[r]);
+    for (std::size_t g = 0; g < G; ++g) _mm256_storeu_ps(out + r * ld + 8 * g, x[r][g]);
+  }
+}
+
+template <std::size_t R>
+FOGDRIFT_AVX2_FMA void rbf_rows_of_avx2(const float* xs, const float* xt, std::size_t stride,
+                                        std::size_t n, std::size_t d, double gamma, float* out,
+                                        std::size_t ld) {
+  const __m256 minus_gamma = _mm256_set1_ps(-static_cast<float>(gamma));
+  std::size_t j = 0;
+  for (; j + 16 <= n; j += 16)
+    rbf_columns_of_rows_avx2<R, 2>(xs, xt + j, stride, d, minus_gamma, out + j, ld);
+  for (; j + 8 <= n; j += 8)
+    rbf_columns_of_rows_avx2<R, 1>(xs, xt + j, stride, d, minus_gamma, out + j, ld);
+  for (std::size_t r = 0; r < R; ++r)
+    scalar::rbf_row(xs + r * d, xt + j, stride, n - j, d, gamma, out + r * ld + j);
+}
+
+// Up to kRowsAtOnce rows side by side, by how many are left (scalar::rbf_rows_by).
+constexpr scalar::RowsOf kRowsOfAVX2[kRowsAtOnce] = {rbf_rows_of_avx2<1>, rbf_rows_of_avx2<2>,
+                                                     rbf_rows_of_avx2<3>, rbf_rows_of_avx2<4>};
+
+void rbf_rows_avx2(const float* xs, std::size_t m, const float* xt, std::size_t stride,
+                   std::size_t n, std::size_t d, double gamma, float* out, std::size_t ld) {
+  scalar::rbf_rows_by(kRowsOfAVX2, xs, m, xt, stride, n, d, gamma, out, ld);
+}
+
 FOGDRIFT_AVX2_FMA void distance_row_avx2(const float* xi, const float* xt, std::size_t stride,
                                          std::size_t n, std::size_t d, float* out) {
   scalar::distance_row(xi, xt, stride, n, d, out);
@@ -499,6 +551,7 @@ const Loops* avx2_loops() {
       .isa = Isa::avx2,
       .libsvm_rbf_row = libsvm_rbf_row_avx2,
       .rbf_row = rbf_row_avx2,
+      .rbf_rows = rbf_rows_avx2,
       .linear_row = linear_row_avx2,
       .distance_row = distance_row_avx2,
       .rbf_row_from_distances = rbf_row_from_distances_avx2,

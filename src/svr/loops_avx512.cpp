@@ -1,6 +1,7 @@
 // The AVX-512 table of the SVR engine's inner loops (loops.hpp): the RBF rows on sixteen lanes of
-// floats and the pair solver's loops on eight lanes of doubles, written with AVX-512F intrinsics;
-// LIBSVM's selections and the elementwise loops are the AVX2 ones (loops_avx2.cpp). Every function
+// floats and the pair solver's loops (add_row among them) on eight lanes of doubles, written with
+// AVX-512F intrinsics; LIBSVM's selections and the other elementwise loops are the AVX2 ones
+// (loops_avx2.cpp). Every function
 // computes what its portable version computes, bit for bit (see loops_avx2.cpp); loops_test
 // checks each against the portable one.
 #include "svr/loops.hpp"
@@ -209,6 +210,60 @@ FOGDRIFT_AVX512 void rbf_row_avx512(const float* xi, const float* xt, std::size_
   }
 }
 
+// 16G columns from j of R rows (xs + r·d) side by side: each column vector loaded once for the
+// R rows, each entry computed as rbf_columns_avx512 computes it.
+template <std::size_t R, std::size_t G>
+FOGDRIFT_AVX512 inline void rbf_columns_of_rows_avx512(const float* xs, const float* xt,
+                                                       std::size_t stride, std::size_t d,
+                                                       __m512 minus_gamma, std::size_t j,
+                                                       __mmask16 mask, float* out, std::size_t ld) {
+  __m512 x[R][G];
+  for (std::size_t r = 0; r < R; ++r)
+    for (std::size_t g = 0; g < G; ++g) x[r][g] = _mm512_setzero_ps();
+  for (std::size_t f = 0; f < d; ++f) {
+    const float* column = xt + f * stride + j;
+    __m512 c[G];
+    for (std::size_t g = 0; g < G; ++g) c[g] = _mm512_maskz_loadu_ps(mask, column + 16 * g);
+    for (std::size_t r = 0; r < R; ++r) {
+      const __m512 a = _mm512_set1_ps(xs[r * d + f]);
+      for (std::size_t g = 0; g < G; ++g) {
+        const __m512 diff = _mm512_sub_ps(a, c[g]);
+        x[r][g] = _mm512_fmadd_ps(diff, diff, x[r][g]);
+      }
+    }
+  }
+  for (std::size_t r = 0; r < R; ++r) {
+    for (std::size_t g = 0; g < G; ++g) x[r][g] = _mm512_mul_ps(minus_gamma, x[r][g]);
+    kernel_exp_avx512(x[r]);
+    for (std::size_t g = 0; g < G; ++g)
+      _mm512_mask_storeu_ps(out + r * ld + j + 16 * g, mask, x[r][g]);
+  }
+}
+
+template <std::size_t R>
+FOGDRIFT_AVX512 void rbf_rows_of_avx512(const float* xs, const float* xt, std::size_t stride,
+                                        std::size_t n, std::size_t d, double gamma, float* out,
+                                        std::size_t ld) {
+  const __m512 minus_gamma = _mm512_set1_ps(-static_cast<float>(gamma));
+  std::size_t j = 0;
+  for (; j + 32 <= n; j += 32)
+    rbf_columns_of_rows_avx512<R, 2>(xs, xt, stride, d, minus_gamma, j, 0xFFFF, out, ld);
+  for (; j + 16 <= n; j += 16)
+    rbf_columns_of_rows_avx512<R, 1>(xs, xt, stride, d, minus_gamma, j, 0xFFFF, out, ld);
+  if (j < n)
+    rbf_columns_of_rows_avx512<R, 1>(xs, xt, stride, d, minus_gamma, j,
+                                     static_cast<__mmask16>((1u << (n - j)) - 1u), out, ld);
+}
+
+// Up to kRowsAtOnce rows side by side, by how many are left (scalar::rbf_rows_by).
+constexpr scalar::RowsOf kRowsOfAVX512[kRowsAtOnce] = {
+    rbf_rows_of_avx512<1>, rbf_rows_of_avx512<2>, rbf_rows_of_avx512<3>, rbf_rows_of_avx512<4>};
+
+void rbf_rows_avx512(const float* xs, std::size_t m, const float* xt, std::size_t stride,
+                     std::size_t n, std::size_t d, double gamma, float* out, std::size_t ld) {
+  scalar::rbf_rows_by(kRowsOfAVX512, xs, m, xt, stride, n, d, gamma, out, ld);
+}
+
 FOGDRIFT_AVX512 void rbf_row_from_distances_avx512(const float* dist, std::size_t n, double gamma,
                                                    float* out) {
   const __m512 minus_gamma = _mm512_set1_ps(-static_cast<float>(gamma));
@@ -360,6 +415,20 @@ FOGDRIFT_AVX512 SelectionJ select_low_avx512(const double* f, const double* low,
   return out;
 }
 
+// g += a·K over [begin, end), eight lanes a vector, two vectors an iteration: the product and
+// the sum rounded apart, as scalar::add_row rounds them.
+FOGDRIFT_AVX512 void add_row_avx512(double* g, const float* k_row, double a, std::size_t begin,
+                                    std::size_t end) {
+  const __m512d av = _mm512_set1_pd(a);
+  std::size_t k = begin;
+  for (; k + 16 <= end; k += 16)
+    for (std::size_t s = 0; s < 16; s += 8) {
+      const __m512d kk = _mm512_cvtps_pd(_mm256_loadu_ps(k_row + k + s));
+      _mm512_storeu_pd(g + k + s, _mm512_add_pd(_mm512_loadu_pd(g + k + s), _mm512_mul_pd(av, kk)));
+    }
+  scalar::add_row(g, k_row, a, k, end);
+}
+
 FOGDRIFT_AVX512 Selection select_up_avx512(const double* f, const double* up, std::size_t len) {
   return update_and_select_up_avx512<false>(f, up, nullptr, nullptr, 0.0, 0.0, len);
 }
@@ -372,11 +441,13 @@ const Loops* avx512_loops() {
     table.isa = Isa::avx512;
     table.libsvm_rbf_row = libsvm_rbf_row_avx512;
     table.rbf_row = rbf_row_avx512;
+    table.rbf_rows = rbf_rows_avx512;
     table.rbf_row_from_distances = rbf_row_from_distances_avx512;
     table.select_up = select_up_avx512;
     table.update_and_select_up = update_and_select_up_avx512<true>;
     table.conjugate_update_and_select_up = conjugate_avx512;
     table.select_low = select_low_avx512;
+    table.add_row = add_row_avx512;
     return table;
   }();
   __builtin_cpu_init();

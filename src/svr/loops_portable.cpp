@@ -18,6 +18,7 @@ const Loops& portable_loops() {
       .isa = Isa::portable,
       .libsvm_rbf_row = scalar::libsvm_rbf_row,
       .rbf_row = scalar::rbf_row,
+      .rbf_rows = scalar::rbf_rows,
       .linear_row = scalar::linear_row,
       .distance_row = scalar::distance_row,
       .rbf_row_from_distances = scalar::rbf_row_from_distances,

@@ -165,6 +165,25 @@ FOGDRIFT_INLINE void rbf_row(const float* xi, const float* xt, std::size_t strid
   }
 }
 
+/// A vector table's rows of R + 1 rows side by side (entry R), for rbf_rows_by.
+using RowsOf = void (*)(const float* xs, const float* xt, std::size_t stride, std::size_t n,
+                        std::size_t d, double gamma, float* out, std::size_t ld);
+
+/// rbf_rows by groups of up to kRowsAtOnce rows, each group by `rows_of`'s entry for its size.
+inline void rbf_rows_by(const RowsOf (&rows_of)[kRowsAtOnce], const float* xs, std::size_t m,
+                        const float* xt, std::size_t stride, std::size_t n, std::size_t d,
+                        double gamma, float* out, std::size_t ld) {
+  for (std::size_t r = 0; r < m; r += kRowsAtOnce)
+    rows_of[std::min(kRowsAtOnce, m - r) - 1](xs + r * d, xt, stride, n, d, gamma, out + r * ld,
+                                              ld);
+}
+
+FOGDRIFT_INLINE void rbf_rows(const float* xs, std::size_t m, const float* xt, std::size_t stride,
+                              std::size_t n, std::size_t d, double gamma, float* out,
+                              std::size_t ld) {
+  for (std::size_t r = 0; r < m; ++r) rbf_row(xs + r * d, xt, stride, n, d, gamma, out + r * ld);
+}
+
 FOGDRIFT_INLINE void linear_row(const double* xi, const double* xt, std::size_t stride,
                                 std::size_t n, std::size_t d, float* out) {
   double acc[kBlock];

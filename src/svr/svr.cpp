@@ -246,7 +246,6 @@ std::vector<double> path_predictions(const TrainingSet& set, std::span<const Fit
   if (kernel.type != KernelType::linear) {
     if (in_float) {
       xt_f32.resize(n_used * d);
-      x_f32.resize(d);
       for (std::size_t u = 0; u < n_used; ++u)
         for (std::size_t c = 0; c < d; ++c) xt_f32[c * n_used + u] = set.row_f32(used[u])[c];
     } else {
@@ -260,29 +259,45 @@ std::vector<double> path_predictions(const TrainingSet& set, std::span<const Fit
     k.resize(n_used);
   }
   const detail::Loops& loops = detail::loops();
-  for (std::size_t r = 0; r < rows.size(); ++r) {
-    const std::size_t row = rows[r];
+  for (const std::size_t row : rows)
     if (row >= data.rows)
       throw std::invalid_argument("path_predictions: a row index is out of range");
-    const double* x = data.row(row);
-    std::fill(f.begin(), f.end(), 0.0);
-    if (kernel.type == KernelType::linear) {
-      for (std::size_t m = 0; m < models; ++m)
-        for (std::size_t c = 0; c < d; ++c) f[m] += w[m * d + c] * x[c];
-    } else if (n_used > 0) {
-      if (in_float) {
-        for (std::size_t c = 0; c < d; ++c) x_f32[c] = static_cast<float>(x[c]);
-        loops.rbf_row(x_f32.data(), xt_f32.data(), n_used, n_used, d, kernel.gamma, k.data());
-      } else {
-        double sq_x = 0;  // summed in feature order, as the set's own norms
-        for (std::size_t c = 0; c < d; ++c) sq_x += x[c] * x[c];
-        loops.libsvm_rbf_row(x, sq_x, xt.data(), n_used, sq.data(), n_used, d, kernel.gamma,
-                             k.data());
+  // In float, kRowsAtOnce held-out rows at a time, so that each support vector's features are
+  // read once for all of them (loops.hpp, rbf_rows): the same floats as row by row.
+  const std::size_t at_once = in_float ? detail::kRowsAtOnce : 1;
+  if (in_float) {
+    x_f32.resize(at_once * d);
+    k.resize(at_once * n_used);
+  }
+  for (std::size_t r0 = 0; r0 < rows.size(); r0 += at_once) {
+    const std::size_t m = std::min(at_once, rows.size() - r0);
+    if (in_float && n_used > 0) {
+      for (std::size_t r = 0; r < m; ++r)
+        for (std::size_t c = 0; c < d; ++c)
+          x_f32[r * d + c] = static_cast<float>(data.row(rows[r0 + r])[c]);
+      loops.rbf_rows(x_f32.data(), m, xt_f32.data(), n_used, n_used, d, kernel.gamma, k.data(),
+                     n_used);
+    }
+    for (std::size_t r = 0; r < m; ++r) {
+      const double* x = data.row(rows[r0 + r]);
+      std::fill(f.begin(), f.end(), 0.0);
+      if (kernel.type == KernelType::linear) {
+        for (std::size_t j = 0; j < models; ++j)
+          for (std::size_t c = 0; c < d; ++c) f[j] += w[j * d + c] * x[c];
+      } else if (n_used > 0) {
+        if (!in_float) {
+          double sq_x = 0;  // summed in feature order, as the set's own norms
+          for (std::size_t c = 0; c < d; ++c) sq_x += x[c] * x[c];
+          loops.libsvm_rbf_row(x, sq_x, xt.data(), n_used, sq.data(), n_used, d, kernel.gamma,
+                               k.data());
+        }
+        const float* kr = k.data() + (in_float ? r * n_used : 0);
+        for (std::size_t j = 0; j < models; ++j)
+          f[j] = lane_sum(beta.data() + j * n_used, kr, n_used);
       }
       for (std::size_t j = 0; j < models; ++j)
-        f[j] = lane_sum(beta.data() + j * n_used, k.data(), n_used);
+        out[(r0 + r) * models + j] = f[j] - path[j].model.rho;
     }
-    for (std::size_t m = 0; m < models; ++m) out[r * models + m] = f[m] - path[m].model.rho;
   }
   return out;
 }

@@ -211,6 +211,39 @@ TEST(Loops, KernelRowsAreBitForBitThePortableOnes) {
   RecordProperty("vectorised_rows_checked", checked);
 }
 
+TEST(Loops, RowsAtOnceAreTheRowsOneByOne) {
+  // rbf_rows reads each column once for several rows; every row must be the floats rbf_row gives
+  // it, in every table (the portable one included): row counts around kRowsAtOnce, lengths
+  // around the vector widths, a leading dimension wider than the row, columns read at a stride.
+  Rng rng(13);
+  std::vector<const Loops*> tables = vector_tables();
+  tables.push_back(&portable());
+  for (const Loops* table : tables) {
+    SCOPED_TRACE(std::string(detail::isa_name(table->isa)));
+    for (const std::size_t d : {std::size_t{1}, std::size_t{12}}) {
+      for (const std::size_t n : {1, 7, 8, 15, 16, 17, 31, 32, 33, 100, 257}) {
+        const std::size_t stride = n + 5, ld = n + 3;
+        std::vector<float> xt(stride * d);
+        for (float& v : xt) v = static_cast<float>(rng.normal());
+        for (const std::size_t m : {1, 2, 3, 4, 5, 9}) {
+          std::vector<float> xs(m * d);
+          for (float& v : xs) v = static_cast<float>(rng.normal() * (m % 2 == 0 ? 0.1 : 3.0));
+          const float sentinel = -7.0f;
+          std::vector<float> at_once(m * ld, sentinel), one(n);
+          table->rbf_rows(xs.data(), m, xt.data(), stride, n, d, 0.3, at_once.data(), ld);
+          for (std::size_t r = 0; r < m; ++r) {
+            portable().rbf_row(xs.data() + r * d, xt.data(), stride, n, d, 0.3, one.data());
+            ASSERT_EQ(0, std::memcmp(one.data(), at_once.data() + r * ld, n * sizeof(float)))
+                << "row " << r << " of " << m << ", n " << n << ", d " << d;
+            for (std::size_t j = n; j < ld; ++j)  // nothing written past a row's n entries
+              ASSERT_EQ(sentinel, at_once[r * ld + j]) << "row " << r << " of " << m;
+          }
+        }
+      }
+    }
+  }
+}
+
 TEST(Loops, GradientUpdatesAreBitForBitThePortableOnes) {
   Rng rng(12);
   for (const Loops* table : vector_tables()) {
