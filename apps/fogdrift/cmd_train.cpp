@@ -105,6 +105,11 @@ void print_summary(const TrainArgs& a, const CampaignTrainResult& trained,
           "racing), {} SVR fits\n",
           svr->tuning.optimizer.brief_report(), svr->tuning.candidates, svr->tuning.raced,
           svr->tuning.fits);
+    if (svr && svr->tuning.near_repeats > 0)
+      std::cout << fmt::format(
+          "  {} candidates within {:g} decade of one fitted took its loss "
+          "(--candidate-resolution)\n",
+          svr->tuning.near_repeats, a.options.train.tune.candidate_resolution);
     if (svr && svr->tuning.capped_fits > 0)
       std::cout << fmt::format(
           "  {} fits stopped unfinished at {} SMO iterations a row (--smo-iterations-per-row); "

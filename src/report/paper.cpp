@@ -91,6 +91,7 @@ TrainOptions train_options(const PaperOptions& o, Method method, std::uint64_t s
   to.tune.optimizer.run.stall_iterations = 0;  // the paper's fixed budget, every iteration
   to.tune.search_rows = 0;                     // on every row
   to.tune.smo_iterations_per_row = 0;          // every fit to the end
+  to.tune.candidate_resolution = 0;            // every distinct candidate fitted
   to.tune.pool = o.pool;
   to.tune.space.epsilon = o.epsilon;
   to.tune.space.search_epsilon = o.search_epsilon;

@@ -91,6 +91,26 @@ class SvrObjective {
         slot[i] = SIZE_MAX;
         continue;
       }
+      // Within the resolution of a candidate measured in an earlier batch, or of a new one
+      // earlier in this batch: the same candidate (TuneOptions::candidate_resolution).
+      if (options_.candidate_resolution > 0 && !in_batch.contains(key)) {
+        const std::vector<double>* near = nearest_within(measured_, key);
+        const std::vector<double>* near_fresh = nearest_within(fresh, key);
+        if (near_fresh != nullptr &&
+            (near == nullptr || chebyshev(*near_fresh, key) < chebyshev(*near, key))) {
+          stand_in_.emplace(key, *near_fresh);
+          ++near_repeats_;
+          slot[i] = in_batch.at(*near_fresh);
+          continue;
+        }
+        if (near != nullptr) {
+          stand_in_.emplace(key, *near);
+          memo_.emplace(key, memo_.at(*near));
+          ++near_repeats_;
+          slot[i] = SIZE_MAX;
+          continue;
+        }
+      }
       auto [it, inserted] = in_batch.try_emplace(key, fresh.size());
       if (inserted)
         fresh.push_back(key);
@@ -229,6 +249,15 @@ class SvrObjective {
       }
     }
     candidates_ += fresh.size();
+    measured_.insert(measured_.end(), fresh.begin(), fresh.end());
+  }
+
+  /// The candidate whose loss the optimizer saw for `point`: the point itself, or the measured
+  /// candidate it stood within the resolution of.
+  std::vector<double> measured(std::span<const double> point) const {
+    std::vector<double> key(point.begin(), point.end());
+    const auto it = stand_in_.find(key);
+    return it == stand_in_.end() ? key : it->second;
   }
 
   /// The loss of history_[index], a complete capped candidate, with its capped fits run to the
@@ -259,6 +288,7 @@ class SvrObjective {
   }
 
   std::size_t candidates_ = 0, repeats_ = 0, fits_ = 0, warm_fits_ = 0, raced_ = 0;
+  std::size_t near_repeats_ = 0;  // candidates within the resolution of a measured one
   std::size_t capped_fits_ = 0;
   std::vector<Candidate> history_;
   double fit_seconds_ = 0;
@@ -330,6 +360,28 @@ class SvrObjective {
     return s ? s->seconds : INFINITY;
   }
 
+  static double chebyshev(const std::vector<double>& a, const std::vector<double>& b) {
+    double d = 0;
+    for (std::size_t k = 0; k < a.size(); ++k) d = std::max(d, std::fabs(a[k] - b[k]));
+    return d;
+  }
+
+  // The point of `points` nearest `key` (largest coordinate difference, in decades) if within
+  // the resolution, the first of equals; nullptr when none is.
+  const std::vector<double>* nearest_within(const std::vector<std::vector<double>>& points,
+                                            const std::vector<double>& key) const {
+    const std::vector<double>* out = nullptr;
+    double best = options_.candidate_resolution;
+    for (const std::vector<double>& p : points) {
+      const double d = chebyshev(p, key);
+      if (d <= best && (out == nullptr || d < chebyshev(*out, key))) {
+        out = &p;
+        best = d;
+      }
+    }
+    return out;
+  }
+
   // The folds by the best candidate's squared error on them, largest first (ties: in order):
   // the fold most likely to take a poor candidate past the bound runs first.
   std::vector<std::size_t> fold_order() const {
@@ -354,6 +406,9 @@ class SvrObjective {
   svr::WorkspacePool workspaces_;
   std::vector<std::string> fold_names_;
   std::map<std::vector<double>, double> memo_;
+  std::vector<std::vector<double>> measured_;  // every candidate fitted, in order
+  // A candidate within the resolution of a measured one, and that one.
+  std::map<std::vector<double>, std::vector<double>> stand_in_;
   std::int64_t max_iterations_ = 0;               // of each fit (smo_iterations_per_row); 0: no cap
   std::map<std::size_t, Unfinished> unfinished_;  // by index in history_
 };

@@ -99,6 +99,7 @@ nlohmann::ordered_json to_json(const SvrTrainer::Record& r) {
                  {"evaluations", u.optimizer.evaluations},
                  {"candidates", u.candidates},
                  {"repeats", u.repeats},
+                 {"near_repeats", u.near_repeats},
                  {"fits", u.fits},
                  {"raced", u.raced},
                  {"capped_fits", u.capped_fits},

@@ -247,6 +247,18 @@ OptionTable<O> make_train_table() {
        "(docs/tuning.md). Spares the slow fits of the over-fitting corner",
        {}},
       [](auto& o) -> auto& { return o.train.tune.smo_iterations_per_row; }));
+  t.push_back(number_option<O>(
+      {"candidate_resolution",
+       "--candidate-resolution",
+       {},
+       "",
+       between(0, tune::kMaxCandidateResolution).with("0 fits every distinct candidate"),
+       "Decades of C and σ (and ε) within which two of the search's candidates are one: the "
+       "later takes the loss of the one fitted, and the answer is always a fitted candidate. A "
+       "candidate's loss is known only to its fits' tolerance, which moves it more than such a "
+       "step does (docs/tuning.md)",
+       {}},
+      [](auto& o) -> auto& { return o.train.tune.candidate_resolution; }));
   t.push_back(whole_option<O>(
       {"seed", "--seed", {}, "", "", "Seed of the search (and of bp's weights)", {}},
       [](auto& o) -> auto& { return o.train.tune.optimizer.run.seed; }));

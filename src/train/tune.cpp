@@ -76,6 +76,12 @@ void validate(const TuneOptions& options) {
         "smo_iterations_per_row",
         fmt::format("{} is above {}: LIBSVM's own limit is 200 a row (at least 10⁷); 0 sets no cap",
                     options.smo_iterations_per_row, kMaxSmoIterationsPerRow));
+  if (!(options.candidate_resolution >= 0 &&
+        options.candidate_resolution <= kMaxCandidateResolution))
+    throw OptionError("candidate_resolution",
+                      fmt::format("{} is outside [0, {}] decades: candidates farther apart are "
+                                  "not the same candidate; 0 fits every distinct one",
+                                  options.candidate_resolution, kMaxCandidateResolution));
   if ((options.cv.scheme == CvScheme::recording || options.cv.scheme == CvScheme::temperature) &&
       options.cv.folds < 2)
     throw OptionError("folds", fmt::format("{} is below 2", options.cv.folds));
@@ -212,7 +218,7 @@ TuneSummary tune_svr(const Dataset& data, const TuneOptions& options) {
 
   TuneSummary out;
   out.optimizer = opt::minimize(problem, options.optimizer);
-  out.best = params_at(out.optimizer.best_point, options);
+  out.best = params_at(objective.measured(out.optimizer.best_point), options);
   out.best_fitness = out.optimizer.best_fitness;
   if (stride == 1 && objective.capped_fits_ > 0) {
     double loss = 0;
@@ -226,6 +232,7 @@ TuneSummary tune_svr(const Dataset& data, const TuneOptions& options) {
   out.folds = objective.fold_names();
   out.candidates = objective.candidates_;
   out.repeats = objective.repeats_;
+  out.near_repeats = objective.near_repeats_;
   out.fits = objective.fits_;
   out.warm_fits = objective.warm_fits_;
   out.raced = objective.raced_;

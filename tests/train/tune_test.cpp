@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <set>
 
@@ -13,6 +14,7 @@
 #include "fogdrift/base/thread_pool.hpp"
 #include "svr/libsvm_oracle.hpp"
 #include "synthetic_dataset.hpp"
+#include "train/svr_objective.hpp"
 
 namespace fogdrift::tune {
 namespace {
@@ -145,6 +147,18 @@ TEST(TuneSvr, RacingStopsOnlyCandidatesThatCannotWin) {
 // steer the search, but the answer's loss is that of fits run to the end. Every capped candidate
 // that looked better than the answer was finished and is worse than it; racing stopped only
 // candidates whose finished loss is above the answer; and the thread count changes nothing.
+// The search `o` again on `pool`: the same answer, loss and fits as `s` (checked); returned for
+// further checks.
+TuneSummary same_search_on(ThreadPool& pool, const Dataset& d, TuneOptions o,
+                           const TuneSummary& s) {
+  o.pool = &pool;
+  TuneSummary again = tune_svr(d, o);
+  EXPECT_EQ(again.best_fitness, s.best_fitness);
+  EXPECT_EQ(again.best.c, s.best.c);
+  EXPECT_EQ(again.fits, s.fits);
+  return again;
+}
+
 TEST(TuneSvr, ACappedSearchNeverAnswersWithAnUnfinishedFit) {
   const Dataset d = synthetic();
   ThreadPool one(1), two(2);
@@ -191,12 +205,7 @@ TEST(TuneSvr, ACappedSearchNeverAnswersWithAnUnfinishedFit) {
   EXPECT_GT(capped, 0u);
   EXPECT_LE(capped, s.capped_fits);
 
-  TuneOptions serial = o;
-  serial.pool = &one;
-  const TuneSummary s1 = tune_svr(d, serial);
-  EXPECT_EQ(s1.best_fitness, s.best_fitness);
-  EXPECT_EQ(s1.best.c, s.best.c);
-  EXPECT_EQ(s1.fits, s.fits);
+  const TuneSummary s1 = same_search_on(one, d, o, s);
   EXPECT_EQ(s1.capped_fits, s.capped_fits);
   EXPECT_EQ(s1.finished.size(), s.finished.size());
 
@@ -211,6 +220,76 @@ TEST(TuneSvr, ACappedSearchNeverAnswersWithAnUnfinishedFit) {
 
 // The search ends at least as low as the best point of a 9 × 9 grid over the same box (up to
 // the solver tolerance), and well below LIBSVM's default parameters.
+TEST(TuneSvr, CandidatesWithinTheResolutionAreOneAndTheAnswerWasFitted) {
+  // A search that treats candidates within 0.01 decade as one: no two candidates it fitted are
+  // that close, evaluations were answered by a neighbour, the answer is a fitted complete
+  // candidate with its own loss, and the thread count changes nothing.
+  const Dataset d = synthetic();
+  ThreadPool one(1), two(2);
+  TuneOptions o = small_search(opt::Algorithm::ssa, &two);
+  o.optimizer.run.iterations = 20;
+  o.candidate_resolution = kMaxCandidateResolution;
+  const TuneSummary s = tune_svr(d, o);
+  ASSERT_GT(s.near_repeats, 0u);
+  auto at = [](const svr::Params& p) {
+    return std::array<double, 2>{std::log10(p.c), std::log10(p.kernel.sigma())};
+  };
+  bool answer_fitted = false;
+  for (std::size_t i = 0; i < s.history.size(); ++i) {
+    const auto a = at(s.history[i].params);
+    for (std::size_t j = 0; j < i; ++j) {
+      const auto b = at(s.history[j].params);
+      EXPECT_GT(std::max(std::fabs(a[0] - b[0]), std::fabs(a[1] - b[1])),
+                o.candidate_resolution * (1 - 1e-12))
+          << "candidates " << j << " and " << i;
+    }
+    const Candidate& c = s.history[i];
+    if (c.complete) EXPECT_GE(c.loss, s.best_fitness);
+    answer_fitted = answer_fitted || (c.complete && c.params.c == s.best.c &&
+                                      c.params.kernel == s.best.kernel && c.loss == s.best_fitness);
+  }
+  EXPECT_TRUE(answer_fitted);
+  TuneOptions whole = o;
+  whole.pool = nullptr;
+  EXPECT_NEAR(svr_loss(d, s.best, whole), s.best_fitness, 3e-3 * s.best_fitness);
+
+  const TuneSummary s1 = same_search_on(one, d, o, s);
+  EXPECT_EQ(s1.near_repeats, s.near_repeats);
+
+  // Resolution 0: only equal points are one candidate.
+  TuneOptions exact = o;
+  exact.candidate_resolution = 0;
+  const TuneSummary e = tune_svr(d, exact);
+  EXPECT_EQ(e.near_repeats, 0u);
+  EXPECT_GT(e.candidates, s.candidates);
+}
+
+TEST(SvrObjective, APointWithinTheResolutionTakesTheLossOfTheOneFitted) {
+  // Within a batch and across batches: the nearer point within the resolution (in decades, in
+  // every coordinate) answers for a new one, and measured() names the candidate fitted.
+  const Dataset d = synthetic();
+  TuneOptions o;
+  o.candidate_resolution = 0.01;
+  SvrObjective f(d, o, [&o](std::span<const double> x) { return params_at(x, o); });
+  std::vector<double> points = {0.0, 0.0, 0.004, -0.003, 1.0, 0.3}, fitness(3);
+  f.evaluate(points, fitness, 2);
+  EXPECT_EQ(fitness[1], fitness[0]);
+  EXPECT_NE(fitness[2], fitness[0]);
+  EXPECT_EQ(f.candidates_, 2u);
+  EXPECT_EQ(f.near_repeats_, 1u);
+  EXPECT_EQ(f.measured(std::vector<double>{0.004, -0.003}), (std::vector<double>{0.0, 0.0}));
+
+  points = {1.006, 0.295, 0.011, 0.0};
+  std::vector<double> later(2);
+  f.evaluate(points, later, 2);
+  EXPECT_EQ(later[0], fitness[2]);  // within 0.01 of (1.0, 0.3), fitted in the first batch
+  EXPECT_EQ(f.candidates_, 3u);     // (0.011, 0) is 0.011 from (0, 0): a candidate of its own
+  EXPECT_EQ(f.near_repeats_, 2u);
+  EXPECT_EQ(f.measured(std::vector<double>{1.006, 0.295}), (std::vector<double>{1.0, 0.3}));
+  EXPECT_EQ(f.measured(std::vector<double>{0.011, 0.0}), (std::vector<double>{0.011, 0.0}));
+  ASSERT_EQ(f.history_.size(), 3u);
+}
+
 TEST(TuneSvr, MatchesAFineGrid) {
   const Dataset d = synthetic();
   ThreadPool pool(2);
@@ -341,6 +420,11 @@ TEST(TuneSvr, RejectsImpossibleOptions) {
   o = {};
   o.smo_iterations_per_row = kMaxSmoIterationsPerRow + 1;
   expect_option(o, "smo_iterations_per_row");
+  for (const double r : {-1e-3, kMaxCandidateResolution * 1.5, static_cast<double>(NAN)}) {
+    o = {};
+    o.candidate_resolution = r;
+    expect_option(o, "candidate_resolution");
+  }
   EXPECT_THROW(parse_fitness("loo"), OptionError);
   EXPECT_EQ(parse_cv_scheme("recording"), CvScheme::recording);
   EXPECT_EQ(parse_cv_scheme("temperature"), CvScheme::temperature);

@@ -116,8 +116,17 @@ struct TuneOptions {
   /// answer is fitted to the end first (docs/tuning.md, "A cap on the search's fits"). 0: no
   /// cap beyond the solver's own (LIBSVM's). At most kMaxSmoIterationsPerRow.
   std::size_t smo_iterations_per_row = 0;
+  /// Candidates closer than this in every coordinate of the search (decades of C, σ and ε) are
+  /// one candidate: the later one takes the loss of the one fitted, and the search's answer is
+  /// always a fitted candidate. A loss is known only to its fits' tolerance, which moves it
+  /// more than such a step does (docs/tuning.md, "One candidate within a resolution"). 0: only
+  /// equal points are one candidate.
+  double candidate_resolution = 0;
   ThreadPool* pool = nullptr;  ///< fits a population in parallel when given
 };
+
+/// The largest TuneOptions::candidate_resolution, in decades (2.3 % of C or σ).
+inline constexpr double kMaxCandidateResolution = 0.01;
 
 /// The largest TuneOptions::smo_iterations_per_row; LIBSVM's own limit is 200 a row (at least
 /// 10⁷ in all).
@@ -160,6 +169,8 @@ struct TuneSummary {
   std::vector<std::string> folds;  ///< fold names (empty for the training loss)
   std::size_t candidates = 0;      ///< distinct candidates evaluated
   std::size_t repeats = 0;         ///< evaluations answered from the memo
+  /// evaluations answered by a candidate within TuneOptions::candidate_resolution
+  std::size_t near_repeats = 0;
   std::size_t fits = 0;            ///< SVR fits made, the rescored candidates' included
   std::size_t warm_fits = 0;       ///< of which warm-started
   std::size_t raced = 0;           ///< candidates stopped by racing before their last fold
