@@ -1,9 +1,8 @@
 // The AVX-512 table of the SVR engine's inner loops (loops.hpp): the RBF rows on sixteen lanes of
 // floats and the pair solver's loops (add_row among them) on eight lanes of doubles, written with
 // AVX-512F intrinsics; LIBSVM's selections and the other elementwise loops are the AVX2 ones
-// (loops_avx2.cpp). Every function
-// computes what its portable version computes, bit for bit (see loops_avx2.cpp); loops_test
-// checks each against the portable one.
+// (loops_avx2.cpp). Every function computes what its portable version computes, bit for bit (see
+// loops_avx2.cpp); loops_test checks each against the portable one.
 #include "svr/loops.hpp"
 #include "svr/loops_scalar.hpp"
 

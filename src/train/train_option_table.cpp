@@ -255,8 +255,8 @@ OptionTable<O> make_train_table() {
        between(0, tune::kMaxCandidateResolution).with("0 fits every distinct candidate"),
        "Decades of C and σ (and ε) within which two of the search's candidates are one: the "
        "later takes the loss of the one fitted, and the answer is always a fitted candidate. A "
-       "candidate's loss is known only to its fits' tolerance, which moves it more than such a "
-       "step does (docs/tuning.md)",
+       "candidate's loss is known only to its fits' tolerance, which moves it by about as much as "
+       "such a step does; 0.005 halves some searches (docs/tuning.md)",
        {}},
       [](auto& o) -> auto& { return o.train.tune.candidate_resolution; }));
   t.push_back(whole_option<O>(

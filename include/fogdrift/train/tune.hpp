@@ -116,11 +116,11 @@ struct TuneOptions {
   /// answer is fitted to the end first (docs/tuning.md, "A cap on the search's fits"). 0: no
   /// cap beyond the solver's own (LIBSVM's). At most kMaxSmoIterationsPerRow.
   std::size_t smo_iterations_per_row = 0;
-  /// Candidates closer than this in every coordinate of the search (decades of C, σ and ε) are
-  /// one candidate: the later one takes the loss of the one fitted, and the search's answer is
-  /// always a fitted candidate. A loss is known only to its fits' tolerance, which moves it
-  /// more than such a step does (docs/tuning.md, "One candidate within a resolution"). 0: only
-  /// equal points are one candidate.
+  /// Candidates within this distance in every coordinate of the search (decades of C, σ and ε)
+  /// are one candidate: the later one takes the loss of the one fitted, and the search's answer
+  /// is always a fitted candidate. A loss is known only to its fits' tolerance, which moves it
+  /// by about as much as such a step does (docs/tuning.md, "One candidate within a
+  /// resolution"). 0: only equal points are one candidate.
   double candidate_resolution = 0;
   ThreadPool* pool = nullptr;  ///< fits a population in parallel when given
 };
