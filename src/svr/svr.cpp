@@ -246,6 +246,7 @@ std::vector<double> path_predictions(const TrainingSet& set, std::span<const Fit
   if (kernel.type != KernelType::linear) {
     if (in_float) {
       xt_f32.resize(n_used * d);
+      x_f32.resize(detail::kRowsAtOnce * d);
       for (std::size_t u = 0; u < n_used; ++u)
         for (std::size_t c = 0; c < d; ++c) xt_f32[c * n_used + u] = set.row_f32(used[u])[c];
     } else {
@@ -256,7 +257,7 @@ std::vector<double> path_predictions(const TrainingSet& set, std::span<const Fit
         sq[u] = set.squared_norm(used[u]);
       }
     }
-    k.resize(n_used);
+    k.resize((in_float ? detail::kRowsAtOnce : 1) * n_used);
   }
   const detail::Loops& loops = detail::loops();
   for (const std::size_t row : rows)
@@ -265,10 +266,6 @@ std::vector<double> path_predictions(const TrainingSet& set, std::span<const Fit
   // In float, kRowsAtOnce held-out rows at a time, so that each support vector's features are
   // read once for all of them (loops.hpp, rbf_rows): the same floats as row by row.
   const std::size_t at_once = in_float ? detail::kRowsAtOnce : 1;
-  if (in_float) {
-    x_f32.resize(at_once * d);
-    k.resize(at_once * n_used);
-  }
   for (std::size_t r0 = 0; r0 < rows.size(); r0 += at_once) {
     const std::size_t m = std::min(at_once, rows.size() - r0);
     if (in_float && n_used > 0) {

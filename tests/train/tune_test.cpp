@@ -244,7 +244,9 @@ TEST(TuneSvr, CandidatesWithinTheResolutionAreOneAndTheAnswerWasFitted) {
           << "candidates " << j << " and " << i;
     }
     const Candidate& c = s.history[i];
-    if (c.complete) EXPECT_GE(c.loss, s.best_fitness);
+    if (c.complete) {
+      EXPECT_GE(c.loss, s.best_fitness);
+    }
     answer_fitted = answer_fitted || (c.complete && c.params.c == s.best.c &&
                                       c.params.kernel == s.best.kernel && c.loss == s.best_fitness);
   }
