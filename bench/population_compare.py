@@ -10,11 +10,18 @@ then the distribution (median / 10th percentile / worst) of
   - each study;
   - "average": the two models averaged, emulated by averaging the compensated azimuth error of
     each finding (the correction enters the four-position azimuth almost linearly);
-  - "lower cv": of the two models, the one with the lower cv RMSE (a search run twice).
+  - "lower cv": of the two models, the one with the lower cv RMSE (a search run twice);
+then, instrument by instrument, B's share minus A's: the median and mean difference in points,
+how many instruments B leaves better, the same (within half a point) and worse, and the sign
+test's two-sided p on the better and worse ones (a change with no effect gives either sign with
+probability 1/2). The 10th percentiles of two studies move by several points with the search's
+luck alone; the paired differences show whether a change moves instruments one way.
+Several pairs (WORK_A WORK_B WORK_A2 WORK_B2 …: one change measured with several search seeds)
+are each printed, then their paired differences pooled.
 The shares are computed as the study computes them (fogdrift northfind's table3): from the mean
 over temperatures of each temperature's RMSE, raw, compensated and with the true drift
 subtracted (the floor).
-Usage: python3 bench/population_compare.py WORK_A WORK_B
+Usage: python3 bench/population_compare.py WORK_A WORK_B [WORK_A2 WORK_B2 ...]
 """
 import json
 import math
@@ -46,6 +53,40 @@ def quantile(values, q):
     return v[i] if i + 1 >= len(v) else v[i] + (x - i) * (v[i + 1] - v[i])
 
 
+def sign_test(better, worse):
+    """Two-sided p of `better` successes in better + worse fair coin tosses (exact binomial)."""
+    n = better + worse
+    if n == 0:
+        return 1.0
+    k = min(better, worse)
+    return min(1.0, 2 * sum(math.comb(n, i) for i in range(k + 1)) / 2**n)
+
+
+# Two shares closer than this (half a point) count as the same instrument result.
+SAME_POINTS = 0.5
+
+
+def print_differences(title, differences):
+    """differences[(path, c)]: B − A per instrument, in points."""
+    print(title)
+    print()
+    print("| path | " + " | ".join(CONDITIONS) + " |")
+    print("|---|" + "---|" * len(CONDITIONS))
+    for path in PATHS:
+        cells = []
+        for c in CONDITIONS:
+            d = [x for x in differences[(path, c)] if not math.isnan(x)]
+            if not d:
+                cells.append("n/a")
+                continue
+            better = sum(x > SAME_POINTS for x in d)
+            worse = sum(x < -SAME_POINTS for x in d)
+            cells.append(f"{quantile(d, .5):+.1f} / {sum(d) / len(d):+.1f}; {better} / "
+                         f"{len(d) - better - worse} / {worse}, p = {sign_test(better, worse):.2f}")
+        print(f"| {path} | " + " | ".join(cells) + " |")
+    print()
+
+
 def instruments(work):
     return sorted(int(p.name[5:]) for p in pathlib.Path(work).glob("unit_*") if p.is_dir())
 
@@ -55,7 +96,8 @@ def load(work, unit, name):
         return json.load(f)
 
 
-def main(a, b):
+def main(a, b, differences):
+    """Prints the two studies side by side; appends B − A per instrument to differences."""
     units = instruments(a)
     if not units or units != instruments(b):
         sys.exit(f"population_compare.py: {a} and {b} must hold the same instruments "
@@ -87,6 +129,7 @@ def main(a, b):
                 s["lower cv"] = s[lower]
                 for k in kinds:
                     shares[k][(path, c)].append(s[k])
+                differences[(path, c)].append(100 * (s["B"] - s["A"]))
                 cells.append(f"{100 * s['A']:.0f} / {100 * s['B']:.0f} / {100 * s['average']:.0f}")
             hp = [f"{t['hyperparameters']['C']:.4g}, {t['hyperparameters']['sigma']:.3g}, "
                   f"{t['fitness_rmse']:.4f}" for t in (ta, tb)]
@@ -106,9 +149,21 @@ def main(a, b):
                 cells.append(f"{100 * quantile(v, .5):.0f} / {100 * quantile(v, .1):.0f} / "
                              f"{100 * min(v):.0f} (n = {len(v)})" if v else "n/a")
             print(f"| {k} | {path} | " + " | ".join(cells) + f" | {worse} |")
+    print()
 
 
 if __name__ == "__main__":
-    if len(sys.argv) != 3:
+    works = sys.argv[1:]
+    if len(works) < 2 or len(works) % 2:
         sys.exit(__doc__)
-    main(sys.argv[1], sys.argv[2])
+    pooled = {(p, c): [] for p in PATHS for c in CONDITIONS}
+    for i in range(0, len(works), 2):
+        these = {(p, c): [] for p in PATHS for c in CONDITIONS}
+        main(works[i], works[i + 1], these)
+        print_differences(f"B − A instrument by instrument, points: median / mean; instruments "
+                          f"better / the same (within {SAME_POINTS}) / worse, sign test:", these)
+        for key, d in these.items():
+            pooled[key] += d
+    if len(works) > 2:
+        print_differences(f"Pooled over the {len(works) // 2} pairs, B − A, points: median / "
+                          f"mean; better / the same / worse, sign test:", pooled)
