@@ -256,7 +256,8 @@ OptionTable<O> make_train_table() {
        "Decades of C and σ (and ε) within which two of the search's candidates are one: the "
        "later takes the loss of the one fitted, and the answer is always a fitted candidate. A "
        "candidate's loss is known only to its fits' tolerance, which moves it by about as much as "
-       "such a step does; 0.005 halves some searches (docs/tuning.md)",
+       "such a step does; the default halves some searches and moved no population study's "
+       "shares one way (docs/tuning.md)",
        {}},
       [](auto& o) -> auto& { return o.train.tune.candidate_resolution; }));
   t.push_back(whole_option<O>(

@@ -27,7 +27,7 @@ std::string another_value(const Option<O>& option, const std::string& current) {
     case OptionType::whole:
       return test::allowed_other(option.spec, current, {"7", "8", "2", "3", "100", "200"});
     case OptionType::number:
-      return test::allowed_other(option.spec, current, {"0.25", "0.5", "0.005"});
+      return test::allowed_other(option.spec, current, {"0.25", "0.5", "0.005", "0.002"});
     case OptionType::seconds_or_auto:
       return current == "30" ? "40" : "30";
     case OptionType::whole_or_auto:
