@@ -54,13 +54,16 @@ def test_false_shows_nothing_and_a_callable_is_called(campaign, capsys):
 
 
 def test_ctrl_c_stops_a_search_with_the_default_progress(campaign):
-    # SIGINT as the terminal sends it, to this process, a second into a search of minutes.
+    # SIGINT as the terminal sends it, to this process, a second into a search of minutes: the
+    # whole budget (no stall rule) and every distinct candidate fitted, so that no default that
+    # shortens a search can end it before the signal arrives.
     timer = threading.Timer(1.0, lambda: os.kill(os.getpid(), signal.SIGINT))
     start = time.monotonic()
     timer.start()
     try:
         with pytest.raises(KeyboardInterrupt):
-            fogdrift.train(campaign, population=100, iterations=500)
+            fogdrift.train(campaign, population=100, iterations=500, stall_iterations=0,
+                           candidate_resolution=0)
     finally:
         timer.cancel()
     assert time.monotonic() - start < 1.0 + 1.5
