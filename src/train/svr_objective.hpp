@@ -15,6 +15,7 @@
 #include <numeric>
 #include <span>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "fogdrift/base/thread_pool.hpp"
@@ -94,10 +95,9 @@ class SvrObjective {
       // Within the resolution of a candidate measured in an earlier batch, or of a new one
       // earlier in this batch: the same candidate (TuneOptions::candidate_resolution).
       if (options_.candidate_resolution > 0 && !in_batch.contains(key)) {
-        const std::vector<double>* near = nearest_within(measured_, key);
-        const std::vector<double>* near_fresh = nearest_within(fresh, key);
-        if (near_fresh != nullptr &&
-            (near == nullptr || chebyshev(*near_fresh, key) < chebyshev(*near, key))) {
+        const auto [near, near_d] = nearest_within(measured_, key);
+        const auto [near_fresh, near_fresh_d] = nearest_within(fresh, key);
+        if (near_fresh != nullptr && (near == nullptr || near_fresh_d < near_d)) {
           stand_in_.emplace(key, *near_fresh);
           ++near_repeats_;
           slot[i] = in_batch.at(*near_fresh);
@@ -367,19 +367,19 @@ class SvrObjective {
   }
 
   // The point of `points` nearest `key` (largest coordinate difference, in decades) if within
-  // the resolution, the first of equals; nullptr when none is.
-  const std::vector<double>* nearest_within(const std::vector<std::vector<double>>& points,
-                                            const std::vector<double>& key) const {
+  // the resolution, the first of equals, and its distance; nullptr when none is.
+  std::pair<const std::vector<double>*, double> nearest_within(
+      const std::vector<std::vector<double>>& points, const std::vector<double>& key) const {
     const std::vector<double>* out = nullptr;
     double best = options_.candidate_resolution;
     for (const std::vector<double>& p : points) {
       const double d = chebyshev(p, key);
-      if (d <= best && (out == nullptr || d < chebyshev(*out, key))) {
+      if (out == nullptr ? d <= best : d < best) {
         out = &p;
         best = d;
       }
     }
-    return out;
+    return {out, best};
   }
 
   // The folds by the best candidate's squared error on them, largest first (ties: in order):

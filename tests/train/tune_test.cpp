@@ -143,10 +143,6 @@ TEST(TuneSvr, RacingStopsOnlyCandidatesThatCannotWin) {
   EXPECT_LE(raced.best_fitness, full.best_fitness * 1.01);
 }
 
-// A cap on the search's fits (docs/tuning.md, "A cap on the search's fits"): capped candidates
-// steer the search, but the answer's loss is that of fits run to the end. Every capped candidate
-// that looked better than the answer was finished and is worse than it; racing stopped only
-// candidates whose finished loss is above the answer; and the thread count changes nothing.
 // The search `o` again on `pool`: the same answer, loss and fits as `s` (checked); returned for
 // further checks.
 TuneSummary same_search_on(ThreadPool& pool, const Dataset& d, TuneOptions o,
@@ -159,6 +155,10 @@ TuneSummary same_search_on(ThreadPool& pool, const Dataset& d, TuneOptions o,
   return again;
 }
 
+// A cap on the search's fits (docs/tuning.md, "A cap on the search's fits"): capped candidates
+// steer the search, but the answer's loss is that of fits run to the end. Every capped candidate
+// that looked better than the answer was finished and is worse than it; racing stopped only
+// candidates whose finished loss is above the answer; and the thread count changes nothing.
 TEST(TuneSvr, ACappedSearchNeverAnswersWithAnUnfinishedFit) {
   const Dataset d = synthetic();
   ThreadPool one(1), two(2);
@@ -218,12 +218,10 @@ TEST(TuneSvr, ACappedSearchNeverAnswersWithAnUnfinishedFit) {
   for (const Candidate& c : u.history) EXPECT_FALSE(c.capped);
 }
 
-// The search ends at least as low as the best point of a 9 × 9 grid over the same box (up to
-// the solver tolerance), and well below LIBSVM's default parameters.
+// A search that treats candidates within 0.01 decade as one: no two candidates it fitted are
+// that close, evaluations were answered by a neighbour, the answer is a fitted complete
+// candidate with its own loss, and the thread count changes nothing.
 TEST(TuneSvr, CandidatesWithinTheResolutionAreOneAndTheAnswerWasFitted) {
-  // A search that treats candidates within 0.01 decade as one: no two candidates it fitted are
-  // that close, evaluations were answered by a neighbour, the answer is a fitted complete
-  // candidate with its own loss, and the thread count changes nothing.
   const Dataset d = synthetic();
   ThreadPool one(1), two(2);
   TuneOptions o = small_search(opt::Algorithm::ssa, &two);
@@ -266,9 +264,9 @@ TEST(TuneSvr, CandidatesWithinTheResolutionAreOneAndTheAnswerWasFitted) {
   EXPECT_GT(e.candidates, s.candidates);
 }
 
+// Within a batch and across batches: the nearer point within the resolution (in decades, in
+// every coordinate) answers for a new one, and measured() names the candidate fitted.
 TEST(SvrObjective, APointWithinTheResolutionTakesTheLossOfTheOneFitted) {
-  // Within a batch and across batches: the nearer point within the resolution (in decades, in
-  // every coordinate) answers for a new one, and measured() names the candidate fitted.
   const Dataset d = synthetic();
   TuneOptions o;
   o.candidate_resolution = 0.01;
@@ -292,6 +290,8 @@ TEST(SvrObjective, APointWithinTheResolutionTakesTheLossOfTheOneFitted) {
   ASSERT_EQ(f.history_.size(), 3u);
 }
 
+// The search ends at least as low as the best point of a 9 × 9 grid over the same box (up to
+// the solver tolerance), and well below LIBSVM's default parameters.
 TEST(TuneSvr, MatchesAFineGrid) {
   const Dataset d = synthetic();
   ThreadPool pool(2);
