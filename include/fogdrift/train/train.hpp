@@ -37,13 +37,14 @@ inline constexpr std::size_t kTrainThinFromRows = 5000;
 /// within a point. fogdrift paper fits every candidate to the end, as the paper did.
 inline constexpr std::size_t kTrainSmoIterationsPerRow = 20;
 /// Decades of C, σ and ε within which train's search takes two candidates for one (tune::
-/// TuneOptions::candidate_resolution; docs/tuning.md, "One candidate within a resolution"):
-/// SSA's scroungers crowd the best, and the loss of points 1.2 % apart is known only to the
-/// fits' tolerance. Over three population studies with other search seeds, 60 models a
-/// condition, it moved no condition's share one way (mean at most 0.5 point lower, sign test
-/// p ≥ 0.18), and the eleven paper-sized searches of bench/RESULTS.md took 240 s instead of
-/// 283 s. fogdrift paper fits every distinct candidate, as the paper did.
-inline constexpr double kTrainCandidateResolution = 0.005;
+/// TuneOptions::candidate_resolution; docs/tuning.md, "One candidate within a resolution"): SSA's
+/// scroungers crowd the best, where a loss is known only to its fits' tolerance (about 0.1 % of
+/// it), and 0.01 decade is 2.3 % of C or σ. Against 0.005 decade and against fitting every
+/// candidate, over three population studies with other search seeds, 60 models a condition, it
+/// moved no condition's share one way (mean at most 0.7 point lower, sign test p ≥ 0.21), and the
+/// eleven paper-sized searches of bench/RESULTS.md took 189 s instead of 221 s, each under 30 s.
+/// fogdrift paper fits every distinct candidate, as the paper did.
+inline constexpr double kTrainCandidateResolution = 0.01;
 
 /// The search train runs unless told otherwise: TuneOptions' defaults, stopping on a stall,
 /// thinning a fold of kTrainThinFromRows or more to no fewer than kTrainSearchRows rows,
