@@ -147,9 +147,10 @@ struct Loops {
                                               std::size_t len);
   /// Second-order selection over samples: with G_max from select_up, a k with
   /// G_max + f_k + low_k > 0 that maximises the gain (G_max + f_k + low_k)² / (QD_i + QD_k −
-  /// 2·K_ik) (τ for a non-positive denominator), compared by cross-multiplication (so among
-  /// equal gains it is not always the last); also returns max_k f_k + low_k for the stopping
-  /// rule.
+  /// 2·K_ik) (τ for a denominator not above τ: scalar::pair_curvature), compared by
+  /// cross-multiplication (so among equal gains it is not always the last); also returns
+  /// max_k f_k + low_k for the stopping rule. `qd` may be null when every QD_k equals QD_i (the
+  /// RBF kernel's diagonal is 1): one array fewer to read.
   SelectionJ (*select_low)(const double* f, const double* low, const float* k_i, const double* qd,
                            double qd_i, double g_max, double tau, std::size_t len);
 };

@@ -490,18 +490,21 @@ struct GainLanes {
   __m256d num, den, index;
 };
 
-FOGDRIFT_AVX2 inline void gain_block(const double* f, const double* low, const float* k_i,
-                                     const double* qd, std::size_t k, __m256d gm, __m256d qdi,
-                                     __m256d tau, __m256d& g_max2, GainLanes& best) {
+// QD_i + QD_k is `qd_sum` when every QD_k equals QD_i (kUniform), else read from qd.
+template <bool kUniform>
+FOGDRIFT_AVX2_FMA inline void gain_block(const double* f, const double* low, const float* k_i,
+                                         const double* qd, std::size_t k, __m256d gm,
+                                         __m256d qd_sum, __m256d tau, __m256d& g_max2,
+                                         GainLanes& best) {
   const __m256d two = _mm256_set1_pd(2.0);
   const __m256d zero = _mm256_setzero_pd();
   const __m256d yg = _mm256_add_pd(_mm256_loadu_pd(f + k), _mm256_loadu_pd(low + k));
   g_max2 = _mm256_max_pd(g_max2, yg);
   const __m256d gd = _mm256_add_pd(gm, yg);
   const __m256d kik = _mm256_cvtps_pd(_mm_loadu_ps(k_i + k));
-  const __m256d quad =
-      _mm256_sub_pd(_mm256_add_pd(qdi, _mm256_loadu_pd(qd + k)), _mm256_mul_pd(two, kik));
-  const __m256d den = _mm256_blendv_pd(tau, quad, _mm256_cmp_pd(quad, zero, _CMP_GT_OQ));
+  const __m256d sum = kUniform ? qd_sum : _mm256_add_pd(qd_sum, _mm256_loadu_pd(qd + k));
+  // scalar::pair_curvature: 2·K_ik is exact, so the fused form rounds as the two steps do.
+  const __m256d den = _mm256_max_pd(_mm256_fnmadd_pd(two, kik, sum), tau);
   const __m256d num = _mm256_mul_pd(gd, gd);
   const __m256d better =
       _mm256_cmp_pd(_mm256_mul_pd(num, best.den), _mm256_mul_pd(best.num, den), _CMP_GE_OQ);
@@ -513,11 +516,13 @@ FOGDRIFT_AVX2 inline void gain_block(const double* f, const double* low, const f
   best.index = _mm256_blendv_pd(best.index, index, take);
 }
 
-FOGDRIFT_AVX2 SelectionJ select_low_avx2(const double* f, const double* low, const float* k_i,
-                                         const double* qd, double qd_i, double g_max, double tau,
-                                         std::size_t len) {
+template <bool kUniform>
+FOGDRIFT_AVX2_FMA SelectionJ select_low_lanes_avx2(const double* f, const double* low,
+                                                   const float* k_i, const double* qd, double qd_i,
+                                                   double g_max, double tau, std::size_t len) {
   const __m256d gm = _mm256_set1_pd(g_max);
-  const __m256d qdi = _mm256_set1_pd(qd_i);
+  // With a uniform diagonal QD_i + QD_k is one number, QD_i + QD_i as the portable loop forms it.
+  const __m256d qd_sum = _mm256_set1_pd(kUniform ? qd_i + qd_i : qd_i);
   __m256d g_max2[4];
   GainLanes best[4];
   for (int s = 0; s < 4; ++s) {
@@ -528,7 +533,7 @@ FOGDRIFT_AVX2 SelectionJ select_low_avx2(const double* f, const double* low, con
   std::size_t k = 0;
   for (; k + 16 <= len; k += 16)
     for (int s = 0; s < 4; ++s)
-      gain_block(f, low, k_i, qd, k + 4 * s, gm, qdi, tau4, g_max2[s], best[s]);
+      gain_block<kUniform>(f, low, k_i, qd, k + 4 * s, gm, qd_sum, tau4, g_max2[s], best[s]);
   SelectionJ out;
   out.g_max2 = -DBL_MAX;
   double num_max = 0, den_max = 1;
@@ -542,6 +547,12 @@ FOGDRIFT_AVX2 SelectionJ select_low_avx2(const double* f, const double* low, con
   }
   scalar::select_low_tail(f, low, k_i, qd, qd_i, g_max, tau, k, len, out, num_max, den_max);
   return out;
+}
+
+SelectionJ select_low_avx2(const double* f, const double* low, const float* k_i, const double* qd,
+                           double qd_i, double g_max, double tau, std::size_t len) {
+  return qd == nullptr ? select_low_lanes_avx2<true>(f, low, k_i, qd, qd_i, g_max, tau, len)
+                       : select_low_lanes_avx2<false>(f, low, k_i, qd, qd_i, g_max, tau, len);
 }
 
 }  // namespace

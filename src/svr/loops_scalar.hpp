@@ -243,6 +243,14 @@ inline double curvature(double qd_i, double qd_j, float k_ij, double tau) {
   return quad > 0 ? quad : tau;
 }
 
+/// The pair solver's curvature, from QD_i + QD_k: τ when it is not above τ (a curvature in
+/// (0, τ] is as degenerate as zero; this is what a vector max computes in one instruction, NaN
+/// included). 2·K_ik is exact, so a fused multiply-add computes the same difference.
+inline double pair_curvature(double qd_sum, float k_ik, double tau) {
+  const double quad = qd_sum - 2.0 * static_cast<double>(k_ik);
+  return quad > tau ? quad : tau;
+}
+
 inline double objective_decrease(double grad_diff, double qd_i, double qd_j, float k_ij,
                                  double tau) {
   return -(grad_diff * grad_diff) / curvature(qd_i, qd_j, k_ij, tau);
@@ -392,7 +400,8 @@ inline void select_low_tail(const double* f, const double* low, const float* k_i
     out.g_max2 = yg > out.g_max2 ? yg : out.g_max2;
     const double grad_diff = g_max + yg;
     if (!(grad_diff > 0)) continue;
-    const double num = grad_diff * grad_diff, den = curvature(qd_i, qd[k], k_i[k], tau);
+    const double num = grad_diff * grad_diff,
+                 den = pair_curvature(qd_i + (qd != nullptr ? qd[k] : qd_i), k_i[k], tau);
     if (num * best_den >= best_num * den) {
       best_num = num;
       best_den = den;

@@ -69,6 +69,7 @@ class PairLayout {
       qd_[k] = q.diagonal(sample);
       cap_[k] = c * data.weight_of(sample);
     }
+    uniform_qd_ = std::all_of(qd_.begin(), qd_.end(), [&](double v) { return v == qd_[0]; });
     std::fill(a_.begin(), a_.end(), 0.0);
     std::fill(b_.begin(), b_.end(), 0.0);
     for (std::size_t k = 0; k < n_; ++k) f_[k] = -z_[k];
@@ -148,8 +149,9 @@ class PairLayout {
     if (up.index < 0) return false;
     ws.i = static_cast<std::size_t>(up.index);
     ws.k_i = rows_.row(index_[ws.i], active);
-    const SelectionJ low = loops_.select_low(f_.data(), low_.data(), ws.k_i, qd_.data(), qd_[ws.i],
-                                             up.value, kTau, active);
+    const SelectionJ low =
+        loops_.select_low(f_.data(), low_.data(), ws.k_i, uniform_qd_ ? nullptr : qd_.data(),
+                          qd_[ws.i], up.value, kTau, active);
     if (up.value + low.g_max2 < tolerance_ || low.index < 0) return false;
     ws.j = static_cast<std::size_t>(low.index);
     return true;
@@ -272,7 +274,8 @@ class PairLayout {
   std::int64_t rows_before_;  // rows_.rows_computed() when this fit began
   // The per-sample arrays are views of the workspace's (take_arrays).
   std::span<double> z_, qd_;
-  std::span<double> cap_;  // C·weight of the sample: the bound of both its variables
+  bool uniform_qd_ = false;  // every QD_k the same (the RBF kernel's 1): select_low skips qd_
+  std::span<double> cap_;    // C·weight of the sample: the bound of both its variables
   std::span<double> a_, b_;
   std::span<double> f_;     // (Kβ)_k − z_k
   std::span<double> gbar_;  // Σ over variables at the upper bound of C·y·K: LIBSVM's Ḡ⁺

@@ -321,15 +321,21 @@ TEST(Loops, PairLoopsAgreeWithThePortableOnesIncludingTies) {
       const std::size_t len = 1 + static_cast<std::size_t>(rng.uniform(0, 200));
       std::vector<double> f(len), up(len), low(len), qd(len, 1.0);
       std::vector<float> k_i(len), k_j(len);
+      // Every third trial a diagonal that is not uniform (a linear kernel's); the others give
+      // select_low no diagonal, as the pair solver does for the RBF kernel's 1.
+      const bool uniform = trial % 3 != 0;
       for (std::size_t t = 0; t < len; ++t) {
         // Halves and quarters, few distinct values: the best is tied in most trials, several
-        // times per vector lane, and every product is exact.
+        // times per vector lane, and every product is exact. K_ik reaches 1.25, so that the
+        // curvature QD_i + QD_k − 2·K_ik is zero or negative for some k (τ instead).
         f[t] = std::round(rng.uniform(-4, 4)) / 2;
         up[t] = offsets[static_cast<int>(rng.uniform(0, 3))];
         low[t] = offsets[static_cast<int>(rng.uniform(0, 3))];
-        k_i[t] = static_cast<float>(std::round(rng.uniform(0, 2)) / 4);
+        k_i[t] = static_cast<float>(std::round(rng.uniform(0, 5)) / 4);
         k_j[t] = static_cast<float>(std::round(rng.uniform(0, 2)) / 4);
+        if (!uniform) qd[t] = std::round(rng.uniform(1, 6)) / 4;
       }
+      const double* diagonal = uniform ? nullptr : qd.data();
       std::vector<double> f2 = f;
       const auto a =
           table->update_and_select_up(f.data(), up.data(), k_i.data(), k_j.data(), 0.5, -0.25, len);
@@ -342,11 +348,16 @@ TEST(Loops, PairLoopsAgreeWithThePortableOnesIncludingTies) {
       if (a.index < 0) continue;
       ASSERT_EQ(a.value, b.value);
       const auto c =
-          table->select_low(f.data(), low.data(), k_i.data(), qd.data(), 1.0, a.value, 1e-12, len);
-      const auto e = portable().select_low(f.data(), low.data(), k_i.data(), qd.data(), 1.0,
-                                           a.value, 1e-12, len);
+          table->select_low(f.data(), low.data(), k_i.data(), diagonal, 1.0, a.value, 1e-12, len);
+      const auto e = portable().select_low(f.data(), low.data(), k_i.data(), diagonal, 1.0, a.value,
+                                           1e-12, len);
       ASSERT_EQ(c.index, e.index);
       ASSERT_EQ(c.g_max2, e.g_max2);
+      if (uniform) {  // no diagonal means QD_k = QD_i for every k
+        const auto ones = portable().select_low(f.data(), low.data(), k_i.data(), qd.data(), 1.0,
+                                                a.value, 1e-12, len);
+        ASSERT_EQ(ones.index, e.index);
+      }
       // The conjugate step's loop: K·d in place, f along it, the next select_up.
       std::vector<double> kd(len), kd2;
       for (std::size_t t = 0; t < len; ++t) kd[t] = std::round(rng.uniform(-4, 4)) / 4;
