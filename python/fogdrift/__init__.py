@@ -20,7 +20,8 @@ The package wraps fogdrift's C++ library (docs/python.md):
 * ``fogdrift.train_fleet(campaigns, client=...)`` — one model per unit's campaign, in parallel on
   a Dask cluster (``fogdrift.fleet``), the same bytes as a serial run.
 * ``fogdrift.release_memory()`` — fits keep their kernel-row memory for the next fit in the
-  process (about ``cache_size`` per thread that fits); this gives it back and returns the bytes.
+  process (about ``cache_size`` per thread that fits, and at most 1 GiB of blocks from fits and
+  searches that ended); this gives it back and returns the bytes.
 """
 from ._fogdrift import (Model, StreamingCompensator, __version__, allan_deviation, denoise,
                         denoise_options, evaluate, evaluate_options, features, find_north,

@@ -304,8 +304,9 @@ void bind_svr(py::module_& m) {
   m.def(
       "release_memory",
       [] {
-        const std::size_t bytes = workspaces().clear();
-        return bytes;
+        // The workspaces of this module's fits, and the blocks of fits that ended (train's
+        // searches among them) kept in the process's reserve.
+        return workspaces().clear() + svr::release_reserved_rows();
       },
       "Frees the memory kept from earlier fits for later ones; returns the bytes freed.");
   m.def("svr_predict", &predict, py::arg("support_vectors"), py::arg("dual_coef"), py::arg("rho"),

@@ -1,4 +1,5 @@
-// The row stores of rows.hpp: RowArena's blocks, and the blocks a workspace keeps between fits.
+// The row stores of rows.hpp: RowArena's blocks, the blocks a workspace keeps between fits, and
+// the process's reserve of the others.
 #include "svr/rows.hpp"
 
 #include <sys/mman.h>
@@ -6,6 +7,7 @@
 #include <algorithm>
 #include <cstddef>
 #include <cstdint>
+#include <mutex>
 #include <new>
 #include <utility>
 #include <vector>
@@ -19,16 +21,24 @@ float* rows_start(void* map) {
   const auto start = reinterpret_cast<std::uintptr_t>(map);
   return reinterpret_cast<float*>((start + kHugePage - 1) & ~(kHugePage - 1));
 }
+// The smallest of `blocks` of at least `bytes`, removed from them; a null block when none is.
+KeptBlocks::Block take_smallest(std::vector<KeptBlocks::Block>& blocks, std::size_t bytes) {
+  auto best = blocks.end();
+  for (auto b = blocks.begin(); b != blocks.end(); ++b)
+    if (b->bytes >= bytes && (best == blocks.end() || b->bytes < best->bytes)) best = b;
+  if (best == blocks.end()) return {};
+  const KeptBlocks::Block out = *best;
+  blocks.erase(best);
+  return out;
+}
 }  // namespace
 
 KeptBlocks::Block KeptBlocks::take(std::size_t bytes) {
-  auto best = blocks_.end();
-  for (auto b = blocks_.begin(); b != blocks_.end(); ++b)
-    if (b->bytes >= bytes && (best == blocks_.end() || b->bytes < best->bytes)) best = b;
-  if (best == blocks_.end()) return {};
-  const Block out = *best;
-  blocks_.erase(best);
-  return out;
+  return take_smallest(blocks_, bytes);
+}
+
+KeptBlocks::~KeptBlocks() {
+  for (const Block& b : blocks_) BlockReserve::process().give(b);
 }
 
 void KeptBlocks::give(Block block) noexcept {
@@ -40,7 +50,7 @@ void KeptBlocks::give(Block block) noexcept {
       std::min_element(blocks_.begin(), blocks_.end(),
                        [](const Block& a, const Block& b) { return a.bytes < b.bytes; });
   if (smallest->bytes < block.bytes) std::swap(*smallest, block);
-  munmap(block.map, block.bytes);
+  BlockReserve::process().give(block);
 }
 
 std::size_t KeptBlocks::bytes() const {
@@ -54,20 +64,67 @@ void KeptBlocks::clear() noexcept {
   blocks_.clear();
 }
 
+BlockReserve& BlockReserve::process() {
+  // Never destroyed: an arena or workspace of a static object may end after any static would.
+  static BlockReserve* const reserve = new BlockReserve;
+  return *reserve;
+}
+
+BlockReserve::Block BlockReserve::take(std::size_t bytes) {
+  const std::lock_guard lock(mutex_);
+  return take_smallest(blocks_, bytes);
+}
+
+void BlockReserve::give(Block block) noexcept {
+  if (block.bytes > kMostBytes) {
+    munmap(block.map, block.bytes);
+    return;
+  }
+  const std::lock_guard lock(mutex_);
+  blocks_.push_back(block);  // within the capacity reserved: no allocation
+  std::size_t sum = 0;
+  for (const Block& b : blocks_) sum += b.bytes;
+  while (blocks_.size() > kMostBlocks || sum > kMostBytes) {
+    auto smallest =
+        std::min_element(blocks_.begin(), blocks_.end(),
+                         [](const Block& a, const Block& b) { return a.bytes < b.bytes; });
+    sum -= smallest->bytes;
+    munmap(smallest->map, smallest->bytes);
+    blocks_.erase(smallest);
+  }
+}
+
+std::size_t BlockReserve::bytes() const {
+  const std::lock_guard lock(mutex_);
+  std::size_t sum = 0;
+  for (const Block& b : blocks_) sum += b.bytes;
+  return sum;
+}
+
+std::size_t BlockReserve::release() noexcept {
+  const std::lock_guard lock(mutex_);
+  std::size_t sum = 0;
+  for (const Block& b : blocks_) {
+    sum += b.bytes;
+    munmap(b.map, b.bytes);
+  }
+  blocks_.clear();
+  return sum;
+}
+
 RowArena::RowArena(std::size_t rows, std::size_t row_floats, KeptBlocks* kept)
     : kept_(kept), rows_(rows), row_floats_(row_floats) {
   const std::size_t bytes = rows * row_floats * sizeof(float);
   if (bytes == 0) return;
   // One huge page more than needed, so that the rows can start on a huge-page boundary.
   const std::size_t need = bytes + kHugePage;
-  if (kept_ != nullptr) {
-    const KeptBlocks::Block block = kept_->take(need);
-    if (block.map != nullptr) {
-      map_ = block.map;
-      map_bytes_ = block.bytes;
-      base_ = rows_start(map_);
-      return;
-    }
+  KeptBlocks::Block block = kept_ != nullptr ? kept_->take(need) : KeptBlocks::Block{};
+  if (block.map == nullptr) block = BlockReserve::process().take(need);
+  if (block.map != nullptr) {
+    map_ = block.map;
+    map_bytes_ = block.bytes;
+    base_ = rows_start(map_);
+    return;
   }
   map_bytes_ = need;
   map_ = mmap(nullptr, map_bytes_, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
@@ -90,7 +147,7 @@ void RowArena::release() noexcept {
     if (kept_ != nullptr)
       kept_->give({map_, map_bytes_});
     else
-      munmap(map_, map_bytes_);
+      BlockReserve::process().give({map_, map_bytes_});
   }
   map_ = nullptr;
   base_ = nullptr;

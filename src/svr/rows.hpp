@@ -1,6 +1,7 @@
 // Every store of kernel rows the solvers use, in one unit (docs/svr.md, "Memory"):
 //  * RowArena — the memory: one block per store, reserved up front, in transparent huge pages;
 //  * KeptBlocks — blocks a Workspace (workspace.hpp) keeps from one fit for the next;
+//  * BlockReserve — blocks no workspace or arena holds any more, for the process's later fits;
 //  * DataInOrder — the features in a solver's sample order, to compute rows straight into it;
 //  * OrderedRows — kernel rows in a solver's variable order, least recently used evicted;
 //  * SampleOrder — a pair solver's order and its rows, kept from one fit to the next.
@@ -13,6 +14,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <memory>
+#include <mutex>
 #include <utility>
 #include <vector>
 
@@ -32,13 +34,14 @@ class KeptBlocks {
   };
 
   KeptBlocks() { blocks_.reserve(kMost); }
-  ~KeptBlocks() { clear(); }
+  ~KeptBlocks();  // the blocks go to the process's BlockReserve
   KeptBlocks(const KeptBlocks&) = delete;
   KeptBlocks& operator=(const KeptBlocks&) = delete;
 
   /// The smallest kept block of at least `bytes`, no longer kept; a null block when none is.
   Block take(std::size_t bytes);
-  /// Keeps `block`; when two are kept already, unmaps the smallest of the three.
+  /// Keeps `block`; when two are kept already, the smallest of the three goes to the process's
+  /// BlockReserve.
   void give(Block block) noexcept;
   /// Bytes mapped by the kept blocks.
   std::size_t bytes() const;
@@ -50,18 +53,51 @@ class KeptBlocks {
   std::vector<Block> blocks_;
 };
 
+/// The row blocks of a process that no workspace keeps and no arena uses any more: a workspace's
+/// when it ends, a plain fit's when it ends, the smaller ones a workspace gives up. A later
+/// RowArena of any thread takes one before it maps a new block, so a process commits its row
+/// memory about once, at the most it uses at one time, instead of once per search or per fit
+/// (docs/svr.md, "Memory": a page freed to the system and taken again seconds later can cost as
+/// much as one never touched). At most kMostBlocks blocks and kMostBytes are kept, the largest;
+/// svr::release_reserved_rows (workspace.hpp) unmaps them. Thread-safe.
+class BlockReserve {
+ public:
+  using Block = KeptBlocks::Block;
+  static constexpr std::size_t kMostBlocks = 8;
+  static constexpr std::size_t kMostBytes = std::size_t{1} << 30;
+
+  /// The process's reserve.
+  static BlockReserve& process();
+
+  /// The smallest block of at least `bytes`, no longer kept; a null block when none is.
+  Block take(std::size_t bytes);
+  /// Keeps `block`, then unmaps the smallest blocks while more than kMostBlocks or kMostBytes
+  /// are kept; a block larger than kMostBytes is unmapped at once.
+  void give(Block block) noexcept;
+  std::size_t bytes() const;
+  /// Unmaps every block kept; returns their bytes.
+  std::size_t release() noexcept;
+
+ private:
+  BlockReserve() { blocks_.reserve(kMostBlocks + 1); }
+  mutable std::mutex mutex_;
+  std::vector<Block> blocks_;
+};
+
 /// One block of row memory, reserved up front and backed by the kernel's transparent huge pages
 /// where it allows them. A fit touches up to hundreds of megabytes of fresh row memory, and on
 /// the virtual machines this was measured on, the page faults of 4 KiB pages were a third of a
 /// cold fit's time; pages of 2 MiB take 512 times fewer faults. Pages are committed when a row
 /// is first written, so an unused budget costs no memory. The block comes from, and goes back
-/// to, the KeptBlocks given, so that the next fit of a workspace reuses its committed pages.
+/// to, the KeptBlocks given, so that the next fit of a workspace reuses its committed pages;
+/// without one, or when it has no block large enough, from the process's BlockReserve.
 class RowArena {
  public:
   RowArena() = default;
   /// Room for `rows` rows of `row_floats` floats each, from `kept` when it holds a large enough
-  /// block (and back to it at the end), or freshly mapped; `kept` may be null (no reuse) and
-  /// must outlive the arena. Throws std::bad_alloc.
+  /// block (and back to it at the end), else from the BlockReserve, else freshly mapped; `kept`
+  /// may be null (the block goes back to the reserve) and must outlive the arena. Throws
+  /// std::bad_alloc.
   RowArena(std::size_t rows, std::size_t row_floats, KeptBlocks* kept);
   ~RowArena();
   RowArena(RowArena&& other) noexcept;

@@ -15,6 +15,7 @@
 #include "fogdrift/base/memory.hpp"
 #include "fogdrift/base/text_file.hpp"
 #include "fogdrift/base/thread_pool.hpp"
+#include "fogdrift/svr/workspace.hpp"
 #include "svr/loops.hpp"
 
 namespace fogdrift::svr {
@@ -105,12 +106,21 @@ FitResult fit_unchecked(const TrainingSet& set, const Params& params, const Dual
 
 void require_fit_memory(const TrainingSet& set, const Params& params, std::size_t concurrent) {
   const std::uint64_t need = fit_bytes(set.size(), set.dims(), params) * concurrent;
-  require_memory(
-      need,
-      fmt::format("{} of {} rows with a {} MB kernel cache{}",
-                  concurrent == 1 ? "an SVR fit" : fmt::format("{} SVR fits at once", concurrent),
-                  set.size(), params.cache_mb, concurrent == 1 ? "" : " each"),
-      "A smaller kernel cache, fewer threads or fewer rows would fit.");
+  const auto check = [&] {
+    require_memory(
+        need,
+        fmt::format("{} of {} rows with a {} MB kernel cache{}",
+                    concurrent == 1 ? "an SVR fit" : fmt::format("{} SVR fits at once", concurrent),
+                    set.size(), params.cache_mb, concurrent == 1 ? "" : " each"),
+        "A smaller kernel cache, fewer threads or fewer rows would fit.");
+  };
+  try {
+    check();
+  } catch (const ResourceError&) {
+    // The rows the process keeps for later fits count as used; give them back and look again.
+    if (release_reserved_rows() == 0) throw;
+    check();
+  }
 }
 
 std::uint64_t fit_bytes(std::size_t rows, std::size_t dims, const Params& params) {

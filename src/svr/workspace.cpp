@@ -67,4 +67,12 @@ std::size_t WorkspacePool::clear() {
   return freed;
 }
 
+std::size_t reserved_row_bytes() {
+  return detail::BlockReserve::process().bytes();
+}
+
+std::size_t release_reserved_rows() {
+  return detail::BlockReserve::process().release();
+}
+
 }  // namespace fogdrift::svr

@@ -213,6 +213,17 @@ def test_fits_reuse_memory_until_it_is_released(rng):
     np.testing.assert_array_equal(a, b)
 
 
+def test_a_training_runs_row_memory_is_released_too(tmp_path):
+    # train's search ends its workspaces; their row blocks stay in the process for later fits
+    # until release_memory gives them back.
+    d = tmp_path / "cal"
+    fogdrift.simulate("calibration", out=d, seed=5, temps_degc=[-20, 10, 40], repetitions=2)
+    fogdrift.release_memory()
+    fogdrift.train(d, population=5, iterations=2, progress=False)
+    assert fogdrift.release_memory() > 1 << 20
+    assert fogdrift.release_memory() == 0
+
+
 def test_grid_search_scores_and_chooses_as_grid_search_cv(rng):
     from sklearn.model_selection import KFold
     X, y = startup_like(rng, 500)

@@ -58,6 +58,7 @@ TEST(OrderedRows, RowsCatchUpWithEveryRoundOfSwaps) {
 }
 
 TEST(RowArena, ReusesTheBlocksKeptForItAndKeepsAtMostTheTwoLargest) {
+  release_reserved_rows();  // no block of an earlier test serves these arenas
   detail::KeptBlocks kept;
   float* first = nullptr;
   {
@@ -75,10 +76,12 @@ TEST(RowArena, ReusesTheBlocksKeptForItAndKeepsAtMostTheTwoLargest) {
     EXPECT_EQ(again.row(0), first);
     EXPECT_EQ(again.row(3)[999], 3.0f);  // the same committed pages
     EXPECT_EQ(kept.bytes(), 0u);
-    detail::RowArena alone(8, 1000, nullptr);  // no reuse: a block of its own, never kept
+    detail::RowArena alone(8, 1000, nullptr);  // no workspace: a block of its own
     EXPECT_NE(alone.row(0), first);
   }
-  EXPECT_EQ(kept.bytes(), one);
+  EXPECT_EQ(kept.bytes(), one);  // `alone`'s block went to the process's reserve
+  EXPECT_EQ(reserved_row_bytes(), one);
+  release_reserved_rows();
   {
     detail::RowArena larger(1 << 20, 1, &kept);  // too large for the kept block: a new one
     EXPECT_NE(larger.row(0), first);
@@ -89,9 +92,10 @@ TEST(RowArena, ReusesTheBlocksKeptForItAndKeepsAtMostTheTwoLargest) {
     detail::RowArena moved = std::move(third);  // a moved arena still gives its block back
   }
   // Three blocks came back; the two largest are kept: `larger` (its rows and the huge page of
-  // alignment room) and `second`'s.
+  // alignment room) and `second`'s. The third went to the reserve.
   const std::size_t larger_bytes = (std::size_t{4} << 20) + (std::size_t{2} << 20);
   EXPECT_EQ(kept.bytes(), larger_bytes + one);
+  EXPECT_EQ(reserved_row_bytes(), (std::size_t{2} << 20) + 2 * 1000 * sizeof(float));
   const detail::KeptBlocks::Block big = kept.take(std::size_t{4} << 20);
   ASSERT_NE(big.map, nullptr);
   EXPECT_EQ(kept.bytes(), one);
@@ -101,6 +105,51 @@ TEST(RowArena, ReusesTheBlocksKeptForItAndKeepsAtMostTheTwoLargest) {
   EXPECT_EQ(kept.take(1).map, nullptr);
   detail::RowArena empty(0, 1000, &kept);  // nothing reserved
   EXPECT_EQ(empty.rows(), 0u);
+  release_reserved_rows();
+}
+
+TEST(BlockReserve, ServesLaterArenasOfAnyWorkspaceAndKeepsTheLargestWithinItsBounds) {
+  using detail::BlockReserve;
+  release_reserved_rows();
+  EXPECT_EQ(reserved_row_bytes(), 0u);
+  const std::size_t room = std::size_t{2} << 20;  // each block's alignment room
+  float* first = nullptr;
+  {
+    detail::KeptBlocks kept;  // a workspace's blocks, which go to the reserve when it ends
+    detail::RowArena a(4, 1000, &kept);
+    first = a.row(0);
+    a.row(1)[999] = 3.0f;
+  }
+  const std::size_t one = reserved_row_bytes();
+  EXPECT_EQ(one, room + 4 * 1000 * sizeof(float));
+  {
+    detail::KeptBlocks other;  // another workspace, or a fit of its own, takes that block
+    detail::RowArena b(2, 1000, &other);
+    EXPECT_EQ(b.row(0), first);
+    EXPECT_EQ(b.row(1)[999], 3.0f);  // the same committed pages
+    EXPECT_EQ(reserved_row_bytes(), 0u);
+    detail::RowArena c(2, 1000, nullptr);  // nothing left: a new block
+    EXPECT_NE(c.row(0), first);
+  }
+  EXPECT_EQ(reserved_row_bytes(), one + room + 2 * 1000 * sizeof(float));
+  // At most kMostBlocks blocks: the smallest go first. The first two arenas take the blocks of
+  // `c` and `a`, of room for 2 and 4 rows; the others map blocks of 3 to 11 rows.
+  {
+    std::vector<detail::RowArena> arenas;
+    for (std::size_t k = 0; k < BlockReserve::kMostBlocks + 3; ++k)
+      arenas.emplace_back(k + 1, 1000, nullptr);
+  }
+  EXPECT_EQ(reserved_row_bytes(), BlockReserve::kMostBlocks * room +
+                                      (4 + 5 + 6 + 7 + 8 + 9 + 10 + 11) * 1000 * sizeof(float));
+  // At most kMostBytes: a block larger than that is not kept at all, and the others stay.
+  const std::size_t before = reserved_row_bytes();
+  {
+    detail::RowArena large(1, BlockReserve::kMostBytes / sizeof(float), nullptr);
+    large.row(0)[0] = 1.0f;  // commits one page
+  }
+  EXPECT_EQ(reserved_row_bytes(), before);
+  EXPECT_EQ(release_reserved_rows(), before);
+  EXPECT_EQ(reserved_row_bytes(), 0u);
 }
 
 }  // namespace

@@ -3,7 +3,11 @@
 
 #include <gtest/gtest.h>
 
+#include <sys/resource.h>
+#include <unistd.h>
+
 #include <cstring>
+#include <fstream>
 #include <set>
 #include <thread>
 #include <vector>
@@ -11,6 +15,7 @@
 #include "fogdrift/base/thread_pool.hpp"
 #include "fogdrift/svr/svr.hpp"
 #include "svr/datasets.hpp"
+#include "svr/rows.hpp"
 
 namespace fogdrift::svr {
 namespace {
@@ -123,6 +128,39 @@ TEST(Workspace, AnOrderLeftOnACacheEndsWithThatCache) {
   solve_epsilon_svr(q, b.y, 10, 0.1, options, out);
   EXPECT_EQ(out.alpha, alpha_alone);
 }
+
+#if !defined(__SANITIZE_ADDRESS__)
+// In a child process: the reserve holds a 200 MB block (mapped, not written), the address space
+// is limited to 100 MB above the current size, and a fit needs about 152 MB. The check must give
+// the reserve back rather than refuse the fit. Exit status 0 when all holds.
+[[noreturn]] void a_fit_that_fits_only_without_the_reserve() {
+  const Data d = testing::startup_like(7000, 3);
+  const TrainingSet set(d);
+  Params p;
+  p.cache_mb = 150;  // below the whole matrix (196 MB): the fit needs the cache and a little
+  release_reserved_rows();
+  { detail::RowArena block(1, 50'000'000, nullptr); }  // goes to the reserve at its end
+  if (reserved_row_bytes() < 200'000'000) std::_Exit(3);
+  std::ifstream statm("/proc/self/statm");
+  std::uint64_t pages = 0;
+  statm >> pages;
+  rlimit r{};
+  r.rlim_cur = r.rlim_max =
+      pages * static_cast<std::uint64_t>(sysconf(_SC_PAGESIZE)) + (std::uint64_t{100} << 20);
+  if (setrlimit(RLIMIT_AS, &r) != 0) std::_Exit(4);
+  try {
+    require_fit_memory(set, p, 1);
+  } catch (const std::exception&) {
+    std::_Exit(5);
+  }
+  std::_Exit(reserved_row_bytes() == 0 ? 0 : 6);
+}
+
+TEST(WorkspaceDeathTest, AFitsMemoryCheckGivesTheReservedRowsBackFirst) {
+  GTEST_FLAG_SET(death_test_style, "threadsafe");
+  EXPECT_EXIT(a_fit_that_fits_only_without_the_reserve(), ::testing::ExitedWithCode(0), "");
+}
+#endif
 
 TEST(WorkspacePool, LendsOneWorkspaceToEachTaskRunningAtOnce) {
   WorkspacePool pool;

@@ -5,8 +5,9 @@
 // cost a third of a cold fit. A Workspace keeps the row blocks and the solver's arrays of its
 // last fit for the next one, so a search of many fits pays for its pages once per workspace.
 // Whoever runs fits one after another owns one: fit_c_path for its path, fit_batch and the
-// tuner one per running task (WorkspacePool). A workspace changes no result: every array is
-// written before it is read.
+// tuner one per running task (WorkspacePool). When a workspace ends, its row blocks go to the
+// process's reserve for later fits (reserved_row_bytes below). A workspace changes no result:
+// every array is written before it is read.
 #pragma once
 
 #include <cstddef>
@@ -80,5 +81,12 @@ class WorkspacePool {
   std::vector<std::unique_ptr<Workspace>> idle_;
   std::size_t made_ = 0;
 };
+
+/// Row memory the process keeps for its later fits after the workspaces and fits that used it
+/// have ended (docs/svr.md, "Memory"): at most eight blocks and 1 GiB, committed as far as fits
+/// wrote them.
+std::size_t reserved_row_bytes();
+/// Gives that memory back to the system; returns the bytes freed. Workspaces keep theirs.
+std::size_t release_reserved_rows();
 
 }  // namespace fogdrift::svr
