@@ -11,6 +11,7 @@
 #include "fogdrift/base/error.hpp"
 #include "fogdrift/base/memory.hpp"
 #include "fogdrift/model/decimate.hpp"
+#include "fogdrift/svr/workspace.hpp"
 
 namespace fogdrift {
 namespace {
@@ -173,7 +174,7 @@ std::vector<RecordingInput> read_inputs(const Campaign& campaign, std::optional<
   // Checked before the first recording is read, so that a campaign too large for this machine
   // fails at once instead of after minutes of reading (docs/reliability.md, "Size limits").
   const std::uint64_t need = kMemoryPerCsvByte * file_bytes;
-  require_memory(
+  svr::require_memory_beside_reserve(
       need,
       fmt::format("{}: {} {} recording{} ({} of CSV)", (campaign.dir / "campaign.json").string(),
                   chosen.size(), to_string(scenario), chosen.size() == 1 ? "" : "s",

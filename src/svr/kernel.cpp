@@ -10,6 +10,7 @@
 #include "fogdrift/base/error.hpp"
 #include "fogdrift/base/memory.hpp"
 #include "fogdrift/base/thread_pool.hpp"
+#include "fogdrift/svr/workspace.hpp"
 #include "svr/loops.hpp"
 #include "svr/rows.hpp"
 #include "svr/workspace_state.hpp"
@@ -63,8 +64,8 @@ TrainingSet::TrainingSet(Data data, const Options& options) : data_(std::move(da
   // The feature-major copy and the norms, and the distance matrix when it is kept.
   const std::uint64_t need = 8 * static_cast<std::uint64_t>(n) * (2 * d + 1) +
                              (distances ? 4 * static_cast<std::uint64_t>(n) * n : 0);
-  require_memory(need, fmt::format("a training set of {} rows × {} features", n, d),
-                 "Fewer rows or features would fit.");
+  require_memory_beside_reserve(need, fmt::format("a training set of {} rows × {} features", n, d),
+                                "Fewer rows or features would fit.");
   feature_major_.resize(n * d);
   squared_norms_.resize(n);
   rows_f32_.resize(n * d);

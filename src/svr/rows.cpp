@@ -21,8 +21,22 @@ float* rows_start(void* map) {
   const auto start = reinterpret_cast<std::uintptr_t>(map);
   return reinterpret_cast<float*>((start + kHugePage - 1) & ~(kHugePage - 1));
 }
+
+using Blocks = std::vector<KeptBlocks::Block>;
+
+std::size_t total_bytes(const Blocks& blocks) {
+  std::size_t sum = 0;
+  for (const KeptBlocks::Block& b : blocks) sum += b.bytes;
+  return sum;
+}
+
+Blocks::iterator smallest(Blocks& blocks) {
+  return std::min_element(blocks.begin(), blocks.end(),
+                          [](const auto& a, const auto& b) { return a.bytes < b.bytes; });
+}
+
 // The smallest of `blocks` of at least `bytes`, removed from them; a null block when none is.
-KeptBlocks::Block take_smallest(std::vector<KeptBlocks::Block>& blocks, std::size_t bytes) {
+KeptBlocks::Block take_smallest(Blocks& blocks, std::size_t bytes) {
   auto best = blocks.end();
   for (auto b = blocks.begin(); b != blocks.end(); ++b)
     if (b->bytes >= bytes && (best == blocks.end() || b->bytes < best->bytes)) best = b;
@@ -46,17 +60,13 @@ void KeptBlocks::give(Block block) noexcept {
     blocks_.push_back(block);  // within the capacity reserved: no allocation
     return;
   }
-  auto smallest =
-      std::min_element(blocks_.begin(), blocks_.end(),
-                       [](const Block& a, const Block& b) { return a.bytes < b.bytes; });
-  if (smallest->bytes < block.bytes) std::swap(*smallest, block);
+  const auto least = smallest(blocks_);
+  if (least->bytes < block.bytes) std::swap(*least, block);
   BlockReserve::process().give(block);
 }
 
 std::size_t KeptBlocks::bytes() const {
-  std::size_t sum = 0;
-  for (const Block& b : blocks_) sum += b.bytes;
-  return sum;
+  return total_bytes(blocks_);
 }
 
 void KeptBlocks::clear() noexcept {
@@ -82,32 +92,24 @@ void BlockReserve::give(Block block) noexcept {
   }
   const std::lock_guard lock(mutex_);
   blocks_.push_back(block);  // within the capacity reserved: no allocation
-  std::size_t sum = 0;
-  for (const Block& b : blocks_) sum += b.bytes;
+  std::size_t sum = total_bytes(blocks_);
   while (blocks_.size() > kMostBlocks || sum > kMostBytes) {
-    auto smallest =
-        std::min_element(blocks_.begin(), blocks_.end(),
-                         [](const Block& a, const Block& b) { return a.bytes < b.bytes; });
-    sum -= smallest->bytes;
-    munmap(smallest->map, smallest->bytes);
-    blocks_.erase(smallest);
+    const auto least = smallest(blocks_);
+    sum -= least->bytes;
+    munmap(least->map, least->bytes);
+    blocks_.erase(least);
   }
 }
 
 std::size_t BlockReserve::bytes() const {
   const std::lock_guard lock(mutex_);
-  std::size_t sum = 0;
-  for (const Block& b : blocks_) sum += b.bytes;
-  return sum;
+  return total_bytes(blocks_);
 }
 
 std::size_t BlockReserve::release() noexcept {
   const std::lock_guard lock(mutex_);
-  std::size_t sum = 0;
-  for (const Block& b : blocks_) {
-    sum += b.bytes;
-    munmap(b.map, b.bytes);
-  }
+  const std::size_t sum = total_bytes(blocks_);
+  for (const Block& b : blocks_) munmap(b.map, b.bytes);
   blocks_.clear();
   return sum;
 }

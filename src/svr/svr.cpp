@@ -106,21 +106,12 @@ FitResult fit_unchecked(const TrainingSet& set, const Params& params, const Dual
 
 void require_fit_memory(const TrainingSet& set, const Params& params, std::size_t concurrent) {
   const std::uint64_t need = fit_bytes(set.size(), set.dims(), params) * concurrent;
-  const auto check = [&] {
-    require_memory(
-        need,
-        fmt::format("{} of {} rows with a {} MB kernel cache{}",
-                    concurrent == 1 ? "an SVR fit" : fmt::format("{} SVR fits at once", concurrent),
-                    set.size(), params.cache_mb, concurrent == 1 ? "" : " each"),
-        "A smaller kernel cache, fewer threads or fewer rows would fit.");
-  };
-  try {
-    check();
-  } catch (const ResourceError&) {
-    // The rows the process keeps for later fits count as used; give them back and look again.
-    if (release_reserved_rows() == 0) throw;
-    check();
-  }
+  require_memory_beside_reserve(
+      need,
+      fmt::format("{} of {} rows with a {} MB kernel cache{}",
+                  concurrent == 1 ? "an SVR fit" : fmt::format("{} SVR fits at once", concurrent),
+                  set.size(), params.cache_mb, concurrent == 1 ? "" : " each"),
+      "A smaller kernel cache, fewer threads or fewer rows would fit.");
 }
 
 std::uint64_t fit_bytes(std::size_t rows, std::size_t dims, const Params& params) {

@@ -4,6 +4,8 @@
 #include <utility>
 #include <vector>
 
+#include "fogdrift/base/error.hpp"
+#include "fogdrift/base/memory.hpp"
 #include "svr/workspace_state.hpp"
 
 namespace fogdrift::svr {
@@ -73,6 +75,16 @@ std::size_t reserved_row_bytes() {
 
 std::size_t release_reserved_rows() {
   return detail::BlockReserve::process().release();
+}
+
+void require_memory_beside_reserve(std::uint64_t need_bytes, std::string_view what,
+                                   std::string_view advice) {
+  try {
+    require_memory(need_bytes, what, advice);
+  } catch (const ResourceError&) {
+    if (release_reserved_rows() == 0) throw;
+    require_memory(need_bytes, what, advice);
+  }
 }
 
 }  // namespace fogdrift::svr

@@ -130,17 +130,23 @@ TEST(Workspace, AnOrderLeftOnACacheEndsWithThatCache) {
 }
 
 #if !defined(__SANITIZE_ADDRESS__)
-// In a child process: the reserve holds a 200 MB block (mapped, not written), the address space
-// is limited to 100 MB above the current size, and a fit needs about 152 MB. The check must give
-// the reserve back rather than refuse the fit. Exit status 0 when all holds.
-[[noreturn]] void a_fit_that_fits_only_without_the_reserve() {
+// A 200 MB block (mapped, not written) for the reserve; exit status 3 when it is not there.
+void fill_the_reserve() {
+  release_reserved_rows();
+  { detail::RowArena block(1, 50'000'000, nullptr); }  // goes to the reserve at its end
+  if (reserved_row_bytes() < 200'000'000) std::_Exit(3);
+}
+
+// In a child process: the reserve holds 200 MB, the address space is limited to 100 MB above the
+// current size, and a fit needs about 152 MB. The check must give the reserve back rather than
+// refuse the fit; so must the same check of any other need (a training set's, a campaign's).
+// Exit status 0 when all holds.
+[[noreturn]] void needs_that_fit_only_without_the_reserve() {
   const Data d = testing::startup_like(7000, 3);
   const TrainingSet set(d);
   Params p;
   p.cache_mb = 150;  // below the whole matrix (196 MB): the fit needs the cache and a little
-  release_reserved_rows();
-  { detail::RowArena block(1, 50'000'000, nullptr); }  // goes to the reserve at its end
-  if (reserved_row_bytes() < 200'000'000) std::_Exit(3);
+  fill_the_reserve();
   std::ifstream statm("/proc/self/statm");
   std::uint64_t pages = 0;
   statm >> pages;
@@ -153,12 +159,19 @@ TEST(Workspace, AnOrderLeftOnACacheEndsWithThatCache) {
   } catch (const std::exception&) {
     std::_Exit(5);
   }
-  std::_Exit(reserved_row_bytes() == 0 ? 0 : 6);
+  if (reserved_row_bytes() != 0) std::_Exit(6);
+  fill_the_reserve();
+  try {
+    require_memory_beside_reserve(std::uint64_t{150} << 20, "a 150 MB job", "");
+  } catch (const std::exception&) {
+    std::_Exit(7);
+  }
+  std::_Exit(reserved_row_bytes() == 0 ? 0 : 8);
 }
 
-TEST(WorkspaceDeathTest, AFitsMemoryCheckGivesTheReservedRowsBackFirst) {
+TEST(WorkspaceDeathTest, AMemoryCheckGivesTheReservedRowsBackFirst) {
   GTEST_FLAG_SET(death_test_style, "threadsafe");
-  EXPECT_EXIT(a_fit_that_fits_only_without_the_reserve(), ::testing::ExitedWithCode(0), "");
+  EXPECT_EXIT(needs_that_fit_only_without_the_reserve(), ::testing::ExitedWithCode(0), "");
 }
 #endif
 

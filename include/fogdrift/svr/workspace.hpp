@@ -11,8 +11,10 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <memory>
 #include <mutex>
+#include <string_view>
 #include <vector>
 
 namespace fogdrift::svr {
@@ -88,5 +90,10 @@ class WorkspacePool {
 std::size_t reserved_row_bytes();
 /// Gives that memory back to the system; returns the bytes freed. Workspaces keep theirs.
 std::size_t release_reserved_rows();
+/// require_memory (fogdrift/base/memory.hpp) counting the reserved rows as free: when the need
+/// does not fit, they are given back and the need checked again. Every check of memory a job
+/// of the process will hold goes through it.
+void require_memory_beside_reserve(std::uint64_t need_bytes, std::string_view what,
+                                   std::string_view advice);
 
 }  // namespace fogdrift::svr
