@@ -132,7 +132,10 @@ class SvrObjective {
     // chain, the fold where the best candidate errs most first, and a candidate whose squared
     // errors so far already exceed the best's total leaves the race. Before that, every fold
     // of every candidate runs. A chain goes on as soon as its own fold is scored, without
-    // waiting for the other candidates' (fold_paths.hpp, run_path_chains).
+    // waiting for the other candidates' (fold_paths.hpp, run_path_chains). Only the errors of
+    // fits that finished count towards the bound: a capped fit's errors are not its
+    // parameters' and may lie above them, so they never stop a candidate (docs/tuning.md, "A cap
+    // on the search's fits").
     const double stop_above = options_.racing && folds > 1 && std::isfinite(best_loss_)
                                   ? best_loss_ * best_loss_ * static_cast<double>(test_rows_)
                                   : INFINITY;
@@ -161,7 +164,8 @@ class SvrObjective {
         svr::run_path_chains(scoring_, paths, racing ? folds : 1, options_.pool, workspaces_,
                              [&](std::size_t k, const svr::PathScores& s) {
                                const std::size_t c = k / folds;
-                               partial[c] += s.sse[0];
+                               if (s.status[0] != svr::SolverStatus::iteration_limit)
+                                 partial[c] += s.sse[0];
                                if (partial[c] > stop_above) alive[c] = 0;
                                return alive[c] != 0;
                              });

@@ -32,11 +32,12 @@
 //
 // A cap on the fits (TuneOptions::smo_iterations_per_row): a fit stops after so many SMO
 // iterations a training row, unfinished. Its candidate's loss is what the optimizer sees, but it
-// never bounds a race, and before the search answers, a capped candidate whose loss is the
-// lowest has its capped fits run to the end (from where they stopped) and competes with its
-// finished loss; this repeats until the lowest is a finished candidate. The answer is therefore
-// the best of the visited candidates as finished fits score them, among those the optimizer's
-// unfinished losses did not steer it away from (docs/tuning.md, "A cap on the search's fits").
+// never bounds a race nor counts towards stopping one, and before the search answers, a capped
+// candidate whose loss is the lowest has its capped fits run to the end (from where they
+// stopped) and competes with its finished loss; this repeats until the lowest is a finished
+// candidate. The answer is therefore the best of the visited candidates as finished fits score
+// them, among those the optimizer's unfinished losses did not steer it away from
+// (docs/tuning.md, "A cap on the search's fits").
 #pragma once
 
 #include <cstdint>
