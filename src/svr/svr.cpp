@@ -104,13 +104,17 @@ FitResult fit_unchecked(const TrainingSet& set, const Params& params, const Dual
 
 }  // namespace
 
-void require_fit_memory(const TrainingSet& set, const Params& params, std::size_t concurrent) {
-  const std::uint64_t need = fit_bytes(set.size(), set.dims(), params) * concurrent;
+void require_fit_memory(const TrainingSet& set, const Params& params, std::size_t concurrent,
+                        std::uint64_t kept_bytes) {
+  const std::uint64_t need = fit_bytes(set.size(), set.dims(), params) * concurrent + kept_bytes;
   require_memory_beside_reserve(
       need,
-      fmt::format("{} of {} rows with a {} MB kernel cache{}",
+      fmt::format("{} of {} rows with a {} MB kernel cache{}{}",
                   concurrent == 1 ? "an SVR fit" : fmt::format("{} SVR fits at once", concurrent),
-                  set.size(), params.cache_mb, concurrent == 1 ? "" : " each"),
+                  set.size(), params.cache_mb, concurrent == 1 ? "" : " each",
+                  kept_bytes == 0 ? std::string()
+                                  : fmt::format(", and {} of solutions kept as warm starts",
+                                                format_bytes(kept_bytes))),
       "A smaller kernel cache, fewer threads or fewer rows would fit.");
 }
 

@@ -9,9 +9,11 @@
 #include <cstring>
 #include <fstream>
 #include <set>
+#include <string>
 #include <thread>
 #include <vector>
 
+#include "fogdrift/base/memory.hpp"
 #include "fogdrift/base/thread_pool.hpp"
 #include "fogdrift/svr/svr.hpp"
 #include "svr/datasets.hpp"
@@ -174,6 +176,24 @@ TEST(WorkspaceDeathTest, AMemoryCheckGivesTheReservedRowsBackFirst) {
   EXPECT_EXIT(needs_that_fit_only_without_the_reserve(), ::testing::ExitedWithCode(0), "");
 }
 #endif
+
+// A search's memory check counts the solutions it keeps as warm starts beside its fits, and
+// names them when they are what does not fit.
+TEST(Workspace, AMemoryCheckCountsTheSolutionsACallerKeeps) {
+  const TrainingSet set(testing::startup_like(300, 3));
+  const Params p;
+  EXPECT_NO_THROW(require_fit_memory(set, p, 2));
+  try {
+    require_fit_memory(set, p, 2, std::uint64_t{1} << 62);
+    ADD_FAILURE() << "4 EiB of kept solutions were not refused";
+  } catch (const ResourceError& e) {
+    EXPECT_NE(std::string(e.what()).find("2 SVR fits at once of 300 rows with a 200 MB kernel "
+                                         "cache each, and 4 EiB of solutions kept as warm "
+                                         "starts needs about 4 EiB"),
+              std::string::npos)
+        << e.what();
+  }
+}
 
 TEST(WorkspacePool, LendsOneWorkspaceToEachTaskRunningAtOnce) {
   WorkspacePool pool;

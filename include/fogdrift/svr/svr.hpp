@@ -101,9 +101,11 @@ struct FitResult {
 /// ResourceError when it does not fit. docs/svr.md, "Memory", compares it with measured peaks.
 std::uint64_t fit_bytes(std::size_t rows, std::size_t dims, const Params& params);
 
-/// Throws ResourceError when `concurrent` fits of `params` on `set` (fit_bytes each) do not fit
-/// in available_memory(). A search calls it once before its first batch.
-void require_fit_memory(const TrainingSet& set, const Params& params, std::size_t concurrent);
+/// Throws ResourceError when `concurrent` fits of `params` on `set` (fit_bytes each), and the
+/// `kept_bytes` of solutions the caller keeps beside them (a search's warm starts), do not fit in
+/// available_memory(). A search calls it once before its first batch.
+void require_fit_memory(const TrainingSet& set, const Params& params, std::size_t concurrent,
+                        std::uint64_t kept_bytes = 0);
 
 /// Fits one model; Data::weight, when given, bounds sample i's variables by C·weight_i. `warm`
 /// (optional) is a previous fit of the same TrainingSet. `workspace`

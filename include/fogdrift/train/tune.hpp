@@ -16,7 +16,8 @@
 // with vectorised kernel rows over the support vectors; and a new fit is warm-started from the
 // nearest candidate (in log coordinates) already solved on that fold with the same σ, whose dual
 // solution is rescaled to the new C (smo_solver.hpp), or else from the nearest one when it lies
-// within a tenth of a decade in C and σ (its gradient rebuilt). Warm starts come only from
+// within 0.3 decade in C and σ (its gradient rebuilt). Each fold keeps its solutions up to 48 MiB
+// (every one of a paper-sized search on the paper's campaign). Warm starts come only from
 // earlier batches, so results do not depend on the thread count.
 //
 // Racing: the loss is sqrt(Σ squared errors / held-out rows), so a candidate whose errors on the
