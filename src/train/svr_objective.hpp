@@ -67,15 +67,19 @@ class SvrObjective {
       scoring_.push_back({f.set.get(), &f.test, f.test_rows, {}});
     }
     // Every thread may run a fit of the largest fold at once, and every fold keeps up to
-    // kKeptBytesPerFold of warm starts: checked once, here, so that a search too large for this
-    // machine fails before its first batch.
+    // kKeptBytesPerFold of warm starts, about one a candidate of the optimizer's budget
+    // (population × (iterations + 1)) at the most: checked once, here, so that a search too
+    // large for this machine fails before its first batch.
     const auto largest = std::max_element(folds_.begin(), folds_.end(), [](auto& a, auto& b) {
       return a.set->size() < b.set->size();
     });
     svr::Params p;
     p.cache_mb = options.cache_mb;
+    const opt::RunOptions& run = options.optimizer.run;
+    const std::size_t candidates = run.population * (run.iterations + 1);
     std::uint64_t kept = 0;
-    for (const FoldState& f : folds_) kept += kept_solutions(*f.set) * solution_bytes(*f.set);
+    for (const FoldState& f : folds_)
+      kept += std::min(kept_solutions(*f.set), candidates) * solution_bytes(*f.set);
     svr::require_fit_memory(*largest->set, p, options.pool ? options.pool->size() : 1, kept);
   }
 
