@@ -24,11 +24,11 @@ def trained(tmp_path_factory, cli):
 
 def test_the_axis_without_temperature_signal_is_flagged_as_it_harms(trained, cli):
     # The z gyro has no temperature signal: its model removes the bias, as the line does, and
-    # leaves a millionth of a °/h more variation than the recording mean, which is a harm and
-    # is said with the digits that show it.
+    # leaves a few millionths of a °/h more variation than the recording mean, which is a harm
+    # and is said with the digits that show it.
     z = fogdrift.Model.load(trained / "m.json", target="gyro_z_dph")
     with pytest.warns(UserWarning, match=r"the model harms .*unit_05.csv: adds variation: STD "
-                                         r"0\.049472 °/h after against 0\.049471 before"):
+                                         r"0\.04948 °/h after against 0\.04947 before"):
         got = fogdrift.evaluate(z, trained / "camp")
     assert got["verdict"] == "harms"
     assert len(got["harmed"]) == 1 and got["no_better"] == []
